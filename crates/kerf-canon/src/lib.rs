@@ -1,0 +1,257 @@
+//! The boundary between what a part program *means* and what the machine
+//! *does*: canonical commands, axis positions, source references and alarms.
+//!
+//! Everything downstream of the interpreter (planner, simulator, toolpath
+//! writers, plotters) consumes [`Event`]s and never re-reads G-code. This
+//! crate holds types only; there is no logic here beyond small helpers.
+//!
+//! Units are fixed: millimetres, degrees, seconds, mm/min. Lathe X is the
+//! physical radius (distance from the spindle centre line) whatever the
+//! program's diameter/radius mode was.
+
+use std::fmt;
+
+/// Number of axis slots carried in a [`Pos`]: X Y Z A B C.
+pub const NAXES: usize = 6;
+
+/// Axis index in a [`Pos`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Axis {
+    /// Linear X (lathe: radius from the spindle centre line).
+    X = 0,
+    /// Linear Y.
+    Y = 1,
+    /// Linear Z.
+    Z = 2,
+    /// Rotary A.
+    A = 3,
+    /// Rotary B.
+    B = 4,
+    /// Rotary C.
+    C = 5,
+}
+
+impl Axis {
+    /// All axes in slot order.
+    pub const ALL: [Axis; NAXES] = [Axis::X, Axis::Y, Axis::Z, Axis::A, Axis::B, Axis::C];
+
+    /// The axis for an address letter (`b'X'` …), if it is one.
+    pub fn from_letter(c: u8) -> Option<Axis> {
+        Some(match c {
+            b'X' => Axis::X,
+            b'Y' => Axis::Y,
+            b'Z' => Axis::Z,
+            b'A' => Axis::A,
+            b'B' => Axis::B,
+            b'C' => Axis::C,
+            _ => return None,
+        })
+    }
+
+    /// Lower-case name used in the output formats (`"x"` …).
+    pub fn name(self) -> &'static str {
+        ["x", "y", "z", "a", "b", "c"][self as usize]
+    }
+
+    /// True for the rotary axes A, B, C.
+    pub fn is_rotary(self) -> bool {
+        matches!(self, Axis::A | Axis::B | Axis::C)
+    }
+}
+
+/// A position of all axis slots, mm / degrees.
+pub type Pos = [f64; NAXES];
+
+/// Where in the source a block (or a word of it) came from.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct SrcRef {
+    /// Index into the interpreter's file table (see `Interp::file_name`).
+    pub file: u32,
+    /// 1-based line.
+    pub line: u32,
+    /// 1-based column (byte column within the line).
+    pub col: u32,
+}
+
+/// Direction of an arc seen from the positive end of the plane normal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ArcDir {
+    /// Clockwise (G02).
+    Cw,
+    /// Counter-clockwise (G03).
+    Ccw,
+}
+
+impl ArcDir {
+    /// `"cw"` or `"ccw"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            ArcDir::Cw => "cw",
+            ArcDir::Ccw => "ccw",
+        }
+    }
+}
+
+/// Working plane; the first two axes are the arc plane, the third the normal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Plane {
+    /// G17: X-Y, normal Z.
+    XY,
+    /// G18: Z-X, normal Y.
+    ZX,
+    /// G19: Y-Z, normal X.
+    YZ,
+}
+
+impl Plane {
+    /// (first, second, normal) axis indices, right-handed.
+    pub fn axes(self) -> (usize, usize, usize) {
+        match self {
+            Plane::XY => (0, 1, 2),
+            Plane::ZX => (2, 0, 1),
+            Plane::YZ => (1, 2, 0),
+        }
+    }
+}
+
+/// Spindle rotation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SpindleDir {
+    /// M03.
+    Cw,
+    /// M04.
+    Ccw,
+    /// M05 (or not yet started).
+    Stop,
+}
+
+/// A linear or circular motion of the tool control point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Motion {
+    /// End point in the active work coordinate system (what the ABSOLUTE
+    /// position page shows), after all compensation.
+    pub to: Pos,
+    /// End point in machine coordinates.
+    pub mto: Pos,
+}
+
+/// A canonical command: one thing the machine is told to do.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Canon {
+    /// Positioning at rapid traverse. `linear` is false for the HX
+    /// non-linear (dog-leg) positioning where each axis moves at its own rate.
+    Rapid { m: Motion, linear: bool },
+    /// Linear interpolation at `feed` mm/min (per-revolution feeds are
+    /// converted by the planner using the spindle speed; `per_rev` is then
+    /// the mm/rev value).
+    Feed { m: Motion, feed: Feed },
+    /// Circular (or helical) interpolation.
+    Arc {
+        m: Motion,
+        /// Centre in work coordinates (the plane's two axes are meaningful;
+        /// the normal coordinate is the start's).
+        center: Pos,
+        /// Centre in machine coordinates.
+        mcenter: Pos,
+        dir: ArcDir,
+        plane: Plane,
+        /// Extra full turns (0 for an ordinary arc).
+        turns: u32,
+        feed: Feed,
+    },
+    /// Spindle-synchronised threading move with a lead in mm/rev.
+    Thread { m: Motion, lead: f64 },
+    /// Dwell: `seconds`, or spindle `revolutions` when the control counts
+    /// dwell in revolutions.
+    Dwell { seconds: f64, revolutions: f64 },
+    /// Spindle state change. `rpm` is the commanded speed; `css` is the
+    /// surface speed in m/min when constant surface speed is active.
+    Spindle { dir: SpindleDir, rpm: f64, css: Option<f64> },
+    /// Coolant on (`M07` mist / `M08` flood) or off (`M09`).
+    Coolant { mist: bool, flood: bool },
+    /// Tool selected (T word) and/or changed (M06, or a turret index).
+    Tool { tool: u32, offset: u32, change: bool },
+    /// Program stop M00 or optional stop M01 (only emitted when the optional
+    /// stop switch is on).
+    Stop { optional: bool },
+    /// An auxiliary function the interpreter does not model further: the M
+    /// number and the manual's name for it.
+    Aux { m: u32, name: &'static str },
+    /// A modal setting the planner needs (exact stop, feed mode, …).
+    Mode(ModeChange),
+    /// An operator message (comment shown on the screen, `#3006`, …).
+    Message(String),
+    /// End of program (M02/M30/M99 at the top level/end of text).
+    End { code: u32 },
+}
+
+/// A feed rate as programmed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Feed {
+    /// mm/min.
+    PerMin(f64),
+    /// mm per spindle revolution.
+    PerRev(f64),
+    /// G93 inverse time: the move takes 1/`value` minutes.
+    InverseTime(f64),
+}
+
+/// Modal changes reported for the planner.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ModeChange {
+    /// G09: exact stop at the end of this block only.
+    ExactStopBlock,
+    /// G61 exact stop mode (true) / back to cutting mode.
+    ExactStopMode(bool),
+    /// G64 cutting mode.
+    CuttingMode,
+    /// G62 automatic corner override.
+    CornerOverride,
+    /// G63 tapping mode.
+    TappingMode,
+    /// G10.3 (true) / G11.3 (false) high-speed machining mode.
+    HighSpeed(bool),
+}
+
+/// A canonical command with the source position of the block that made it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Event {
+    pub src: SrcRef,
+    /// Tool number in the spindle / active turret station.
+    pub tool: u32,
+    pub cmd: Canon,
+}
+
+impl Event {
+    /// The motion carried by this event, if it moves the axes.
+    pub fn motion(&self) -> Option<&Motion> {
+        match &self.cmd {
+            Canon::Rapid { m, .. } | Canon::Feed { m, .. } | Canon::Arc { m, .. } | Canon::Thread { m, .. } => Some(m),
+            _ => None,
+        }
+    }
+}
+
+/// An alarm: the control's number, a message, and where in the program.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Alarm {
+    /// The control's alarm code, e.g. `F_82001` or `PS0010`.
+    pub code: String,
+    pub message: String,
+    pub src: SrcRef,
+}
+
+impl Alarm {
+    /// Builds an alarm.
+    pub fn new(code: impl Into<String>, message: impl Into<String>, src: SrcRef) -> Alarm {
+        Alarm { code: code.into(), message: message.into(), src }
+    }
+}
+
+impl fmt::Display for Alarm {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "alarm {}: {}", self.code, self.message)
+    }
+}
+
+impl std::error::Error for Alarm {}

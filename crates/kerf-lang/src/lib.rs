@@ -1,0 +1,21 @@
+//! kerf-lang: the NC language of the three controls, as text.
+//!
+//! [`LineSource`] streams logical blocks from a seekable reader (so a
+//! 10-million-block file is never held in memory), and [`parse_block`]
+//! turns one block's text into a reusable [`Block`] of words, a macro
+//! statement, comments, block-delete markers and Hurco loop commands.
+//!
+//! This crate knows nothing of execution, machines or units: a word's value
+//! is the number as written (with a flag telling whether it had a decimal
+//! point); what `X100` means is the interpreter's business.
+
+pub mod block;
+pub mod parse;
+pub mod source;
+
+pub use block::{Addr, BinOp, Block, Expr, ExprId, Func, LoopCmd, Num, Stmt, Val, Word};
+pub use parse::{loop_command, parse_block, LexError, LexErrorKind, LexOptions};
+pub use source::{LineSource, Mark, ProgramRead, RawBlock};
+
+#[cfg(test)]
+mod tests;

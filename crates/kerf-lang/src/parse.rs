@@ -1,0 +1,688 @@
+//! The block parser: text of one logical block → [`Block`].
+//!
+//! Works on bytes, one pass, no allocation beyond the reused vectors of the
+//! output block. Spaces and tabs are ignored everywhere outside comments
+//! (`G0 1` is `G01`, `X 10.` is `X10.`), as on the controls.
+
+use crate::block::*;
+
+/// What the parser accepts; set by the interpreter from the dialect.
+#[derive(Clone, Copy, Debug)]
+pub struct LexOptions {
+    /// Multi-letter parameter names (Hurco G78 `angIn`, `ZEnd`, `minD` …),
+    /// matched case-insensitively; empty when the dialect has none.
+    pub long_names: &'static [&'static str],
+    /// Recognise Hurco loop (repeat) commands inside comments.
+    pub loop_comments: bool,
+    /// Maximum digits in one number.
+    pub max_digits: u8,
+    /// Maximum bracket nesting depth in expressions.
+    pub max_nesting: u8,
+}
+
+impl Default for LexOptions {
+    fn default() -> LexOptions {
+        LexOptions { long_names: &[], loop_comments: false, max_digits: 12, max_nesting: 5 }
+    }
+}
+
+/// Why a block could not be parsed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LexErrorKind {
+    /// A character that is not part of the language (e.g. `@`).
+    UnexpectedChar(u8),
+    /// An address with no value after it.
+    MissingValue,
+    /// `(` without `)`.
+    UnterminatedComment,
+    /// `[` without `]`, or `]` without `[`.
+    UnbalancedBracket,
+    /// Brackets nested deeper than the control allows.
+    NestingTooDeep,
+    /// A number with more digits than the control reads.
+    TooManyDigits,
+    /// A sequence or program number that is not a plain integer.
+    BadNumber,
+    /// Malformed macro expression.
+    BadExpression,
+    /// Malformed macro statement (IF/WHILE/GOTO/END, assignment).
+    BadStatement,
+    /// Text after a complete macro statement.
+    TrailingText,
+    /// A second N or program number in the block.
+    DuplicateNumber,
+}
+
+impl LexErrorKind {
+    /// Human-readable message.
+    pub fn message(&self) -> String {
+        match self {
+            LexErrorKind::UnexpectedChar(c) => {
+                if c.is_ascii_graphic() {
+                    format!("unexpected character '{}'", *c as char)
+                } else {
+                    format!("unexpected byte 0x{c:02x}")
+                }
+            }
+            LexErrorKind::MissingValue => "address without a value".into(),
+            LexErrorKind::UnterminatedComment => "comment not closed: '(' without ')'".into(),
+            LexErrorKind::UnbalancedBracket => "unbalanced '[' ']'".into(),
+            LexErrorKind::NestingTooDeep => "brackets nested too deeply".into(),
+            LexErrorKind::TooManyDigits => "number has too many digits".into(),
+            LexErrorKind::BadNumber => "sequence or program number must be a plain integer".into(),
+            LexErrorKind::BadExpression => "malformed expression".into(),
+            LexErrorKind::BadStatement => "malformed macro statement".into(),
+            LexErrorKind::TrailingText => "unexpected text after the statement".into(),
+            LexErrorKind::DuplicateNumber => "more than one sequence/program number in the block".into(),
+        }
+    }
+}
+
+/// A parse error at a byte index of the block text.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LexError {
+    pub kind: LexErrorKind,
+    /// Byte index in the block text.
+    pub at: u32,
+}
+
+type R<T> = Result<T, LexError>;
+
+struct P<'a> {
+    t: &'a [u8],
+    i: usize,
+    o: LexOptions,
+    depth: u8,
+}
+
+fn err<T>(kind: LexErrorKind, at: usize) -> R<T> {
+    Err(LexError { kind, at: at as u32 })
+}
+
+/// Parses one block of text into `out` (which is cleared first).
+pub fn parse_block(text: &[u8], opts: &LexOptions, out: &mut Block) -> Result<(), LexError> {
+    out.clear();
+    let mut p = P { t: text, i: 0, o: *opts, depth: 0 };
+    p.block(out)
+}
+
+#[inline]
+fn is_blank(c: u8) -> bool {
+    c == b' ' || c == b'\t' || c == b'\r' || c == 0x0c
+}
+
+impl<'a> P<'a> {
+    #[inline]
+    fn skip(&mut self) {
+        while self.i < self.t.len() && is_blank(self.t[self.i]) {
+            self.i += 1;
+        }
+    }
+
+    #[inline]
+    fn peek(&mut self) -> Option<u8> {
+        self.skip();
+        self.t.get(self.i).copied()
+    }
+
+    fn block(&mut self, b: &mut Block) -> R<()> {
+        if self.peek() == Some(b'%') {
+            // Tape start/end mark; whatever follows on the line is ignored.
+            b.percent = true;
+            return Ok(());
+        }
+        loop {
+            let Some(c) = self.peek() else { return Ok(()) };
+            let start = self.i;
+            match c {
+                b'(' => self.comment(b)?,
+                b';' => {
+                    // End of block; the rest of the line is a remark.
+                    return Ok(());
+                }
+                b'/' => {
+                    self.i += 1;
+                    let level = match self.peek() {
+                        Some(d @ b'0'..=b'9') => {
+                            self.i += 1;
+                            (d - b'0') as u16
+                        }
+                        _ => 1,
+                    };
+                    let idx = b.words.len() as u16;
+                    match b.deletes.last_mut() {
+                        Some((at, mask)) if *at == idx => *mask |= 1 << level,
+                        _ => b.deletes.push((idx, 1 << level)),
+                    }
+                }
+                b':' if b.words.is_empty() && b.stmt.is_none() => {
+                    self.i += 1;
+                    self.program_number(b, start)?;
+                }
+                b'#' if b.words.is_empty() && b.stmt.is_none() => {
+                    b.stmt_at = start as u32;
+                    let var = self.var_target(b)?;
+                    if self.peek() != Some(b'=') {
+                        return err(LexErrorKind::BadStatement, self.i);
+                    }
+                    self.i += 1;
+                    let value = self.expr(b)?;
+                    b.stmt = Some(Stmt::Assign { var, value });
+                    self.after_stmt(b)?;
+                    return Ok(());
+                }
+                b',' => {
+                    self.i += 1;
+                    match self.peek() {
+                        Some(l) if l.is_ascii_alphabetic() => {
+                            self.i += 1;
+                            let val = self.value(b, start)?;
+                            b.words.push(Word { addr: Addr::Comma(l.to_ascii_uppercase()), val, at: start as u32 });
+                        }
+                        _ => return err(LexErrorKind::UnexpectedChar(b','), start),
+                    }
+                }
+                c if c.is_ascii_alphabetic() => self.letters(b, start)?,
+                c => return err(LexErrorKind::UnexpectedChar(c), start),
+            }
+        }
+    }
+
+    fn comment(&mut self, b: &mut Block) -> R<()> {
+        let open = self.i;
+        let close = match memchr::memchr(b')', &self.t[open + 1..]) {
+            Some(k) => open + 1 + k,
+            None => return err(LexErrorKind::UnterminatedComment, open),
+        };
+        b.comments.push(((open + 1) as u32, close as u32));
+        if self.o.loop_comments {
+            if let Some(l) = loop_command(&self.t[open + 1..close]) {
+                b.loop_cmd = Some(l);
+            }
+        }
+        self.i = close + 1;
+        Ok(())
+    }
+
+    fn program_number(&mut self, b: &mut Block, start: usize) -> R<()> {
+        if b.program.is_some() {
+            return err(LexErrorKind::DuplicateNumber, start);
+        }
+        b.program = Some(self.integer(start, 8)?);
+        Ok(())
+    }
+
+    /// A plain unsigned integer (spaces allowed between digits).
+    fn integer(&mut self, start: usize, max: usize) -> R<u32> {
+        let mut v: u64 = 0;
+        let mut n = 0;
+        while let Some(c) = self.peek() {
+            if c.is_ascii_digit() {
+                v = v * 10 + (c - b'0') as u64;
+                n += 1;
+                self.i += 1;
+                if n > max {
+                    return err(LexErrorKind::TooManyDigits, start);
+                }
+            } else {
+                break;
+            }
+        }
+        if n == 0 {
+            return err(LexErrorKind::MissingValue, start);
+        }
+        if matches!(self.peek(), Some(b'.')) {
+            return err(LexErrorKind::BadNumber, self.i);
+        }
+        Ok(v as u32)
+    }
+
+    /// A run of letters: a keyword, a long name, or a one-letter address.
+    fn letters(&mut self, b: &mut Block, start: usize) -> R<()> {
+        let mut j = self.i;
+        while j < self.t.len() && self.t[j].is_ascii_alphabetic() {
+            j += 1;
+        }
+        let run = &self.t[self.i..j];
+        if run.len() >= 2 {
+            if b.words.is_empty() && b.stmt.is_none() {
+                let mut up = [0u8; 8];
+                if run.len() <= 8 {
+                    for (k, c) in run.iter().enumerate() {
+                        up[k] = c.to_ascii_uppercase();
+                    }
+                    let kw = &up[..run.len()];
+                    let is_kw = matches!(kw, b"IF" | b"WHILE" | b"GOTO" | b"END" | b"DO");
+                    if is_kw {
+                        self.i = j;
+                        b.stmt_at = start as u32;
+                        self.statement(b, kw.to_vec().as_slice(), start)?;
+                        return self.after_stmt(b);
+                    }
+                }
+            }
+            if !self.o.long_names.is_empty() {
+                if let Some((k, len)) = self.long_name(run) {
+                    self.i += len;
+                    let val = self.value(b, start)?;
+                    b.words.push(Word { addr: Addr::Long(k as u16), val, at: start as u32 });
+                    return Ok(());
+                }
+            }
+        }
+        let l = self.t[self.i].to_ascii_uppercase();
+        self.i += 1;
+        match l {
+            b'N' => {
+                if b.n.is_some() {
+                    return err(LexErrorKind::DuplicateNumber, start);
+                }
+                b.n = Some(self.integer(start, 9)?);
+            }
+            b'O' if b.words.is_empty() && b.stmt.is_none() => self.program_number(b, start)?,
+            _ => {
+                let val = self.value(b, start)?;
+                b.words.push(Word { addr: Addr::L(l), val, at: start as u32 });
+            }
+        }
+        Ok(())
+    }
+
+    /// The longest long name that is a (case-insensitive) prefix of `run`.
+    fn long_name(&self, run: &[u8]) -> Option<(usize, usize)> {
+        let mut best: Option<(usize, usize)> = None;
+        for (k, name) in self.o.long_names.iter().enumerate() {
+            let n = name.as_bytes();
+            if n.len() >= 2 && n.len() <= run.len() && run[..n.len()].eq_ignore_ascii_case(n) && best.is_none_or(|(_, l)| n.len() > l) {
+                best = Some((k, n.len()));
+            }
+        }
+        best
+    }
+
+    fn statement(&mut self, b: &mut Block, kw: &[u8], start: usize) -> R<()> {
+        match kw {
+            b"GOTO" => {
+                let t = self.operand(b)?;
+                b.stmt = Some(Stmt::Goto(t));
+            }
+            b"IF" => {
+                if self.peek() != Some(b'[') {
+                    return err(LexErrorKind::BadStatement, self.i);
+                }
+                let cond = self.primary(b)?;
+                let at = self.i;
+                match self.keyword().as_deref() {
+                    Some(b"GOTO") => {
+                        let target = self.operand(b)?;
+                        b.stmt = Some(Stmt::IfGoto { cond, target });
+                    }
+                    Some(b"THEN") => {
+                        if self.peek() != Some(b'#') {
+                            return err(LexErrorKind::BadStatement, self.i);
+                        }
+                        let var = self.var_target(b)?;
+                        if self.peek() != Some(b'=') {
+                            return err(LexErrorKind::BadStatement, self.i);
+                        }
+                        self.i += 1;
+                        let value = self.expr(b)?;
+                        b.stmt = Some(Stmt::IfThen { cond, var, value });
+                    }
+                    _ => return err(LexErrorKind::BadStatement, at),
+                }
+            }
+            b"WHILE" => {
+                if self.peek() != Some(b'[') {
+                    return err(LexErrorKind::BadStatement, self.i);
+                }
+                let cond = self.primary(b)?;
+                let at = self.i;
+                if self.keyword().as_deref() != Some(b"DO") {
+                    return err(LexErrorKind::BadStatement, at);
+                }
+                let label = self.integer(at, 9)?;
+                b.stmt = Some(Stmt::While { cond, label });
+            }
+            b"DO" => {
+                let label = self.integer(start, 9)?;
+                b.stmt = Some(Stmt::Do { label });
+            }
+            b"END" => {
+                let label = self.integer(start, 9)?;
+                b.stmt = Some(Stmt::End { label });
+            }
+            _ => return err(LexErrorKind::BadStatement, start),
+        }
+        Ok(())
+    }
+
+    /// Reads an upper-cased alphabetic keyword at the cursor.
+    fn keyword(&mut self) -> Option<Vec<u8>> {
+        self.skip();
+        let s = self.i;
+        while self.i < self.t.len() && self.t[self.i].is_ascii_alphabetic() {
+            self.i += 1;
+        }
+        if self.i == s {
+            return None;
+        }
+        Some(self.t[s..self.i].to_ascii_uppercase())
+    }
+
+    fn after_stmt(&mut self, b: &mut Block) -> R<()> {
+        loop {
+            match self.peek() {
+                None | Some(b';') => return Ok(()),
+                Some(b'(') => self.comment(b)?,
+                Some(_) => return err(LexErrorKind::TrailingText, self.i),
+            }
+        }
+    }
+
+    fn push(&self, b: &mut Block, e: Expr) -> ExprId {
+        b.exprs.push(e);
+        (b.exprs.len() - 1) as ExprId
+    }
+
+    /// `#n` or `#[expr]` as an assignment target: returns the index expression.
+    fn var_target(&mut self, b: &mut Block) -> R<ExprId> {
+        let at = self.i;
+        let v = self.primary(b)?;
+        match b.exprs[v as usize] {
+            Expr::Var(idx) => Ok(idx),
+            _ => err(LexErrorKind::BadStatement, at),
+        }
+    }
+
+    /// A GOTO target: a number, a variable or a bracketed expression.
+    fn operand(&mut self, b: &mut Block) -> R<ExprId> {
+        match self.peek() {
+            Some(b'#' | b'[' | b'0'..=b'9' | b'.') => self.unary(b),
+            _ => err(LexErrorKind::BadStatement, self.i),
+        }
+    }
+
+    /// The value of a word.
+    fn value(&mut self, b: &mut Block, addr_at: usize) -> R<Val> {
+        let save = self.i;
+        let mut neg = false;
+        match self.peek() {
+            Some(b'-') => {
+                neg = true;
+                self.i += 1;
+            }
+            Some(b'+') => self.i += 1,
+            _ => {}
+        }
+        match self.peek() {
+            Some(b'#' | b'[') => {
+                let e = self.primary(b)?;
+                let e = if neg { self.push(b, Expr::Neg(e)) } else { e };
+                Ok(Val::Expr(e))
+            }
+            Some(b'0'..=b'9' | b'.') => {
+                let mut n = self.number(addr_at)?;
+                if neg {
+                    n.value = -n.value;
+                }
+                Ok(Val::Num(n))
+            }
+            _ => {
+                self.i = save;
+                err(LexErrorKind::MissingValue, addr_at)
+            }
+        }
+    }
+
+    /// Unsigned decimal number; spaces between digits are ignored.
+    fn number(&mut self, at: usize) -> R<Num> {
+        let mut mant: u64 = 0;
+        let mut digits: u32 = 0;
+        let mut frac: i32 = 0;
+        let mut point = false;
+        while let Some(c) = self.peek() {
+            match c {
+                b'0'..=b'9' => {
+                    digits += 1;
+                    if digits > self.o.max_digits as u32 || digits > 18 {
+                        return err(LexErrorKind::TooManyDigits, at);
+                    }
+                    mant = mant * 10 + (c - b'0') as u64;
+                    if point {
+                        frac += 1;
+                    }
+                }
+                b'.' if !point => point = true,
+                _ => break,
+            }
+            self.i += 1;
+        }
+        if digits == 0 {
+            return err(LexErrorKind::MissingValue, at);
+        }
+        let value = if frac == 0 { mant as f64 } else { mant as f64 / POW10[frac as usize] };
+        Ok(Num { value, point, digits: digits as u8 })
+    }
+
+    // ---- expressions ---------------------------------------------------
+
+    fn expr(&mut self, b: &mut Block) -> R<ExprId> {
+        let l = self.additive(b)?;
+        let save = self.i;
+        let op = match self.keyword().as_deref() {
+            Some(b"EQ") => BinOp::Eq,
+            Some(b"NE") => BinOp::Ne,
+            Some(b"GT") => BinOp::Gt,
+            Some(b"LT") => BinOp::Lt,
+            Some(b"GE") => BinOp::Ge,
+            Some(b"LE") => BinOp::Le,
+            _ => {
+                self.i = save;
+                return Ok(l);
+            }
+        };
+        let r = self.additive(b)?;
+        Ok(self.push(b, Expr::Bin(op, l, r)))
+    }
+
+    fn additive(&mut self, b: &mut Block) -> R<ExprId> {
+        let mut l = self.multiplicative(b)?;
+        loop {
+            let save = self.i;
+            let op = match self.peek() {
+                Some(b'+') => {
+                    self.i += 1;
+                    BinOp::Add
+                }
+                Some(b'-') => {
+                    self.i += 1;
+                    BinOp::Sub
+                }
+                Some(c) if c.is_ascii_alphabetic() => match self.keyword().as_deref() {
+                    Some(b"OR") => BinOp::Or,
+                    Some(b"XOR") => BinOp::Xor,
+                    _ => {
+                        self.i = save;
+                        return Ok(l);
+                    }
+                },
+                _ => return Ok(l),
+            };
+            let r = self.multiplicative(b)?;
+            l = self.push(b, Expr::Bin(op, l, r));
+        }
+    }
+
+    fn multiplicative(&mut self, b: &mut Block) -> R<ExprId> {
+        let mut l = self.unary(b)?;
+        loop {
+            let save = self.i;
+            let op = match self.peek() {
+                Some(b'*') => {
+                    self.i += 1;
+                    BinOp::Mul
+                }
+                Some(b'/') => {
+                    self.i += 1;
+                    BinOp::Div
+                }
+                Some(c) if c.is_ascii_alphabetic() => match self.keyword().as_deref() {
+                    Some(b"AND") => BinOp::And,
+                    Some(b"MOD") => BinOp::Mod,
+                    _ => {
+                        self.i = save;
+                        return Ok(l);
+                    }
+                },
+                _ => return Ok(l),
+            };
+            let r = self.unary(b)?;
+            l = self.push(b, Expr::Bin(op, l, r));
+        }
+    }
+
+    fn unary(&mut self, b: &mut Block) -> R<ExprId> {
+        match self.peek() {
+            Some(b'-') => {
+                self.i += 1;
+                self.enter()?;
+                let e = self.unary(b)?;
+                self.depth -= 1;
+                Ok(self.push(b, Expr::Neg(e)))
+            }
+            Some(b'+') => {
+                self.i += 1;
+                self.enter()?;
+                let e = self.unary(b);
+                self.depth -= 1;
+                e
+            }
+            _ => self.primary(b),
+        }
+    }
+
+    fn enter(&mut self) -> R<()> {
+        self.depth += 1;
+        if self.depth > self.o.max_nesting.saturating_mul(4).max(8) {
+            return err(LexErrorKind::NestingTooDeep, self.i);
+        }
+        Ok(())
+    }
+
+    fn bracketed(&mut self, b: &mut Block) -> R<ExprId> {
+        // cursor on '['
+        let open = self.i;
+        self.i += 1;
+        self.depth += 1;
+        if self.depth > self.o.max_nesting {
+            return err(LexErrorKind::NestingTooDeep, open);
+        }
+        let e = self.expr(b)?;
+        if self.peek() != Some(b']') {
+            return err(LexErrorKind::UnbalancedBracket, open);
+        }
+        self.i += 1;
+        self.depth -= 1;
+        Ok(e)
+    }
+
+    fn primary(&mut self, b: &mut Block) -> R<ExprId> {
+        let at = self.i;
+        match self.peek() {
+            Some(b'[') => self.bracketed(b),
+            Some(b'#') => {
+                self.i += 1;
+                let idx = match self.peek() {
+                    Some(b'[') => self.bracketed(b)?,
+                    Some(b'0'..=b'9') => {
+                        let n = self.number(at)?;
+                        if n.point {
+                            return err(LexErrorKind::BadExpression, at);
+                        }
+                        self.push(b, Expr::Num(n.value))
+                    }
+                    _ => return err(LexErrorKind::BadExpression, at),
+                };
+                Ok(self.push(b, Expr::Var(idx)))
+            }
+            Some(b'0'..=b'9' | b'.') => {
+                let n = self.number(at)?;
+                Ok(self.push(b, Expr::Num(n.value)))
+            }
+            Some(c) if c.is_ascii_alphabetic() => {
+                let name = self.keyword().unwrap_or_default();
+                let Some(f) = Func::from_name(&name) else {
+                    return err(LexErrorKind::BadExpression, at);
+                };
+                if self.peek() != Some(b'[') {
+                    return err(LexErrorKind::BadExpression, self.i);
+                }
+                let open = self.i;
+                self.i += 1;
+                self.depth += 1;
+                if self.depth > self.o.max_nesting {
+                    return err(LexErrorKind::NestingTooDeep, open);
+                }
+                let a = self.expr(b)?;
+                let mut second = None;
+                if self.peek() == Some(b',') {
+                    self.i += 1;
+                    second = Some(self.expr(b)?);
+                }
+                if self.peek() != Some(b']') {
+                    return err(LexErrorKind::UnbalancedBracket, open);
+                }
+                self.i += 1;
+                self.depth -= 1;
+                if f == Func::Atan && second.is_none() {
+                    // ATAN[a]/[b] form.
+                    let save = self.i;
+                    if self.peek() == Some(b'/') {
+                        self.i += 1;
+                        if self.peek() == Some(b'[') {
+                            second = Some(self.bracketed(b)?);
+                        } else {
+                            self.i = save;
+                        }
+                    }
+                }
+                if second.is_some() && !matches!(f, Func::Atan | Func::Pow) {
+                    return err(LexErrorKind::BadExpression, at);
+                }
+                if f == Func::Pow && second.is_none() {
+                    return err(LexErrorKind::BadExpression, at);
+                }
+                Ok(self.push(b, Expr::Call(f, a, second)))
+            }
+            Some(b']') => err(LexErrorKind::UnbalancedBracket, at),
+            _ => err(LexErrorKind::BadExpression, at),
+        }
+    }
+}
+
+const POW10: [f64; 19] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18,
+];
+
+/// Recognises a Hurco loop command in comment text: `LOOP n` / `REPEAT n`
+/// (optionally followed by `TIMES`) starts a section, `END LOOP`, `ENDLOOP`,
+/// `END REPEAT`, `LOOP END` or `END` ends it. Case and spacing are free.
+pub fn loop_command(text: &[u8]) -> Option<LoopCmd> {
+    let s: Vec<u8> = text.iter().filter(|c| !is_blank(**c)).map(|c| c.to_ascii_uppercase()).collect();
+    let s = s.as_slice();
+    if matches!(s, b"ENDLOOP" | b"ENDREPEAT" | b"LOOPEND" | b"REPEATEND" | b"END") {
+        return Some(LoopCmd::End);
+    }
+    for kw in [&b"LOOP"[..], b"REPEAT"] {
+        if let Some(rest) = s.strip_prefix(kw) {
+            let rest = rest.strip_prefix(b"=").unwrap_or(rest);
+            let rest = rest.strip_suffix(b"TIMES").unwrap_or(rest);
+            if !rest.is_empty() && rest.len() <= 9 && rest.iter().all(|c| c.is_ascii_digit()) {
+                let count = std::str::from_utf8(rest).ok()?.parse().ok()?;
+                return Some(LoopCmd::Start { count });
+            }
+        }
+    }
+    None
+}

@@ -1,0 +1,245 @@
+//! Streaming line source: reads a program one logical block at a time from
+//! any `Read + Seek`, never holding more than one block (plus the read
+//! buffer) in memory. Supports seeking back to a remembered position, which
+//! the interpreter uses for GOTO, WHILE loops and repeat commands.
+
+use std::io::{self, BufRead, BufReader, Read, Seek, SeekFrom};
+
+/// Anything a program can be read from.
+pub trait ProgramRead: Read + Seek {}
+impl<T: Read + Seek> ProgramRead for T {}
+
+/// A position in a source that can be returned to with [`LineSource::seek`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Mark {
+    /// Byte offset of the start of a physical line.
+    pub offset: u64,
+    /// 1-based number of that line.
+    pub line: u32,
+}
+
+/// One logical block of text as read from the source.
+#[derive(Debug, Default)]
+pub struct RawBlock {
+    /// The text with line ends (and continuation backslashes) removed.
+    pub text: Vec<u8>,
+    /// Where the block starts.
+    pub mark: Mark,
+    /// For continued blocks: (byte index in `text`, line number) of each
+    /// physical line after the first.
+    pub continuations: Vec<(u32, u32)>,
+    /// True when the block was longer than the reader's limit; `text` then
+    /// holds only the first `max_len` bytes.
+    pub overlong: bool,
+}
+
+impl RawBlock {
+    /// Maps a byte index of `text` to (line, 1-based column).
+    pub fn line_col(&self, idx: usize) -> (u32, u32) {
+        let mut line = self.mark.line;
+        let mut start = 0usize;
+        for &(at, l) in &self.continuations {
+            if (at as usize) <= idx {
+                line = l;
+                start = at as usize;
+            }
+        }
+        (line, (idx - start) as u32 + 1)
+    }
+}
+
+/// Reads logical blocks from a seekable byte stream.
+pub struct LineSource {
+    inner: BufReader<Box<dyn ProgramRead>>,
+    offset: u64,
+    line: u32,
+    max_len: usize,
+    continuation: bool,
+    eof: bool,
+}
+
+impl LineSource {
+    /// Wraps a reader. `max_len` bounds the bytes kept per block (longer
+    /// blocks are flagged, not stored); `continuation` enables the Hurco
+    /// trailing-backslash line continuation.
+    pub fn new(r: Box<dyn ProgramRead>, max_len: usize, continuation: bool) -> LineSource {
+        LineSource {
+            inner: BufReader::with_capacity(64 * 1024, r),
+            offset: 0,
+            line: 0,
+            max_len,
+            continuation,
+            eof: false,
+        }
+    }
+
+    /// The position of the next line to be read.
+    pub fn tell(&self) -> Mark {
+        Mark { offset: self.offset, line: self.line + 1 }
+    }
+
+    /// Returns to a position previously obtained from [`LineSource::tell`] or
+    /// [`RawBlock::mark`].
+    pub fn seek(&mut self, m: Mark) -> io::Result<()> {
+        self.inner.seek(SeekFrom::Start(m.offset))?;
+        self.offset = m.offset;
+        self.line = m.line.saturating_sub(1);
+        self.eof = false;
+        Ok(())
+    }
+
+    /// Reads one physical line into `out`, appending at most `room` bytes.
+    /// Returns (bytes consumed from the stream, hit end of stream, truncated).
+    fn read_physical(&mut self, out: &mut Vec<u8>, room: usize) -> io::Result<(u64, bool)> {
+        let mut consumed = 0u64;
+        let mut truncated = false;
+        loop {
+            let buf = self.inner.fill_buf()?;
+            if buf.is_empty() {
+                self.eof = true;
+                break;
+            }
+            let (chunk, found) = match memchr::memchr(b'\n', buf) {
+                Some(i) => (&buf[..i], Some(i)),
+                None => (buf, None),
+            };
+            let space = room.saturating_sub(out.len());
+            if chunk.len() > space {
+                truncated = true;
+                out.extend_from_slice(&chunk[..space]);
+            } else {
+                out.extend_from_slice(chunk);
+            }
+            let used = match found {
+                Some(i) => i + 1,
+                None => buf.len(),
+            };
+            self.inner.consume(used);
+            consumed += used as u64;
+            if found.is_some() {
+                break;
+            }
+        }
+        if out.last() == Some(&b'\r') {
+            out.pop();
+        }
+        Ok((consumed, truncated))
+    }
+
+    /// Reads the next logical block into `raw`. Returns false at end of text.
+    pub fn next_block(&mut self, raw: &mut RawBlock) -> io::Result<bool> {
+        raw.text.clear();
+        raw.continuations.clear();
+        raw.overlong = false;
+        if self.eof {
+            return Ok(false);
+        }
+        raw.mark = self.tell();
+        let (n, trunc) = self.read_physical(&mut raw.text, self.max_len)?;
+        if n == 0 && self.eof {
+            return Ok(false);
+        }
+        self.offset += n;
+        self.line += 1;
+        raw.overlong |= trunc;
+        if self.continuation {
+            while !self.eof && ends_with_backslash(&raw.text) {
+                // Drop the backslash (and blanks after it) and join the next line.
+                while matches!(raw.text.last(), Some(b' ' | b'\t')) {
+                    raw.text.pop();
+                }
+                raw.text.pop();
+                raw.text.push(b' ');
+                let at = raw.text.len() as u32;
+                let (n, trunc) = self.read_physical(&mut raw.text, self.max_len)?;
+                if n == 0 {
+                    break;
+                }
+                self.offset += n;
+                self.line += 1;
+                raw.overlong |= trunc;
+                raw.continuations.push((at, self.line));
+            }
+        }
+        Ok(true)
+    }
+}
+
+fn ends_with_backslash(t: &[u8]) -> bool {
+    // A backslash inside a comment does not continue the line.
+    let trimmed = t.iter().rposition(|&c| c != b' ' && c != b'\t');
+    match trimmed {
+        Some(i) if t[i] == b'\\' => {
+            let opens = t[..i].iter().filter(|&&c| c == b'(').count();
+            let closes = t[..i].iter().filter(|&&c| c == b')').count();
+            opens <= closes
+        }
+        _ => false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::io::Cursor;
+
+    fn src(s: &str, cont: bool) -> LineSource {
+        LineSource::new(Box::new(Cursor::new(s.as_bytes().to_vec())), 256, cont)
+    }
+
+    #[test]
+    fn reads_lines_crlf_and_last_without_newline() {
+        let mut s = src("G00 X1\r\nG01 Y2\nM30", false);
+        let mut b = RawBlock::default();
+        assert!(s.next_block(&mut b).unwrap());
+        assert_eq!(b.text, b"G00 X1");
+        assert_eq!(b.mark, Mark { offset: 0, line: 1 });
+        assert!(s.next_block(&mut b).unwrap());
+        assert_eq!(b.text, b"G01 Y2");
+        assert_eq!(b.mark, Mark { offset: 8, line: 2 });
+        assert!(s.next_block(&mut b).unwrap());
+        assert_eq!(b.text, b"M30");
+        assert!(!s.next_block(&mut b).unwrap());
+    }
+
+    #[test]
+    fn seek_returns_to_a_line() {
+        let mut s = src("A\nB\nC\n", false);
+        let mut b = RawBlock::default();
+        s.next_block(&mut b).unwrap();
+        let m = s.tell();
+        s.next_block(&mut b).unwrap();
+        s.next_block(&mut b).unwrap();
+        assert!(!s.next_block(&mut b).unwrap());
+        s.seek(m).unwrap();
+        s.next_block(&mut b).unwrap();
+        assert_eq!(b.text, b"B");
+        assert_eq!(b.mark.line, 2);
+    }
+
+    #[test]
+    fn backslash_continues_a_hurco_block() {
+        let mut s = src("G78 X1 \\\n Z2\nM30\n", true);
+        let mut b = RawBlock::default();
+        s.next_block(&mut b).unwrap();
+        assert_eq!(b.text, b"G78 X1  Z2");
+        assert_eq!(b.line_col(8), (2, 1));
+        assert_eq!(b.line_col(2), (1, 3));
+        s.next_block(&mut b).unwrap();
+        assert_eq!(b.text, b"M30");
+        assert_eq!(b.mark.line, 3);
+    }
+
+    #[test]
+    fn overlong_line_is_truncated_and_flagged() {
+        let long = "X".repeat(1000) + "\nM30\n";
+        let mut s = LineSource::new(Box::new(Cursor::new(long.into_bytes())), 16, false);
+        let mut b = RawBlock::default();
+        s.next_block(&mut b).unwrap();
+        assert!(b.overlong);
+        assert_eq!(b.text.len(), 16);
+        s.next_block(&mut b).unwrap();
+        assert_eq!(b.text, b"M30");
+        assert_eq!(b.mark.line, 2);
+    }
+}
