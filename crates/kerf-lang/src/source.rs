@@ -149,7 +149,6 @@ impl LineSource {
                     raw.text.pop();
                 }
                 raw.text.pop();
-                raw.text.push(b' ');
                 let at = raw.text.len() as u32;
                 let (n, trunc) = self.read_physical(&mut raw.text, self.max_len)?;
                 if n == 0 {
