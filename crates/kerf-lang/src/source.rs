@@ -222,7 +222,7 @@ mod tests {
         let mut b = RawBlock::default();
         s.next_block(&mut b).unwrap();
         assert_eq!(b.text, b"G78 X1  Z2");
-        assert_eq!(b.line_col(8), (2, 1));
+        assert_eq!(b.line_col(8), (2, 2));
         assert_eq!(b.line_col(2), (1, 3));
         s.next_block(&mut b).unwrap();
         assert_eq!(b.text, b"M30");
