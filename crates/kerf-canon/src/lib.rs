@@ -166,11 +166,19 @@ pub enum Canon {
     Dwell { seconds: f64, revolutions: f64 },
     /// Spindle state change. `rpm` is the commanded speed; `css` is the
     /// surface speed in m/min when constant surface speed is active.
-    Spindle { dir: SpindleDir, rpm: f64, css: Option<f64> },
+    Spindle {
+        dir: SpindleDir,
+        rpm: f64,
+        css: Option<f64>,
+    },
     /// Coolant on (`M07` mist / `M08` flood) or off (`M09`).
     Coolant { mist: bool, flood: bool },
     /// Tool selected (T word) and/or changed (M06, or a turret index).
-    Tool { tool: u32, offset: u32, change: bool },
+    Tool {
+        tool: u32,
+        offset: u32,
+        change: bool,
+    },
     /// Program stop M00 or optional stop M01 (only emitted when the optional
     /// stop switch is on).
     Stop { optional: bool },
@@ -226,7 +234,10 @@ impl Event {
     /// The motion carried by this event, if it moves the axes.
     pub fn motion(&self) -> Option<&Motion> {
         match &self.cmd {
-            Canon::Rapid { m, .. } | Canon::Feed { m, .. } | Canon::Arc { m, .. } | Canon::Thread { m, .. } => Some(m),
+            Canon::Rapid { m, .. }
+            | Canon::Feed { m, .. }
+            | Canon::Arc { m, .. }
+            | Canon::Thread { m, .. } => Some(m),
             _ => None,
         }
     }
@@ -244,7 +255,11 @@ pub struct Alarm {
 impl Alarm {
     /// Builds an alarm.
     pub fn new(code: impl Into<String>, message: impl Into<String>, src: SrcRef) -> Alarm {
-        Alarm { code: code.into(), message: message.into(), src }
+        Alarm {
+            code: code.into(),
+            message: message.into(),
+            src,
+        }
     }
 }
 

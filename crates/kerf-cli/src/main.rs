@@ -1,1 +1,278 @@
-fn main() {}
+//! The `kerf` command: run or check a part program against a machine
+//! profile, and list the built-in machines. Exit status: 0 the program ran
+//! to its end, 1 it stopped on an alarm, 2 usage or I/O error.
+
+mod offsets;
+mod plot;
+mod report;
+mod settings;
+mod toolpath;
+
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use kerf_canon::{Alarm, Axis, Canon, NAXES};
+use kerf_interp::{machine::BUILTIN, Interp, Profile, Step};
+use kerf_motion::{Dynamics, Estimator};
+
+#[derive(Parser)]
+#[command(
+    name = "kerf",
+    version,
+    about = "A software CNC control: runs Fanuc-family part programs as the real control would"
+)]
+struct Cli {
+    #[command(subcommand)]
+    cmd: Cmd,
+}
+
+#[derive(clap::Args, Clone)]
+struct Common {
+    /// The part program.
+    program: PathBuf,
+    /// Machine profile: a built-in name (see `kerf machines`) or a TOML file.
+    #[arg(long, default_value = "hx-mc")]
+    machine: String,
+    /// Folder of library programs (subprograms, macros); may repeat.
+    #[arg(long = "lib")]
+    lib: Vec<PathBuf>,
+    /// Operator switches and parameters: block_skip=1,2 optional_stop=on
+    /// single_block=on dry_run=on, "PI 144=1" … (see docs/formats.md).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    set: Vec<String>,
+    /// Work offsets file (TOML, see docs/formats.md).
+    #[arg(long)]
+    offsets: Option<PathBuf>,
+}
+
+#[derive(Subcommand)]
+enum Cmd {
+    /// Run a program and write what it does.
+    Run {
+        #[command(flatten)]
+        common: Common,
+        /// Write every motion as JSON Lines.
+        #[arg(long)]
+        toolpath: Option<PathBuf>,
+        /// Write a JSON summary of the run.
+        #[arg(long)]
+        report: Option<PathBuf>,
+        /// Write an SVG plot of the toolpath.
+        #[arg(long)]
+        plot: Option<PathBuf>,
+    },
+    /// Check a program: run it without writing outputs; report alarms.
+    Check {
+        #[command(flatten)]
+        common: Common,
+    },
+    /// List the built-in machine profiles.
+    Machines,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.cmd {
+        Cmd::Machines => {
+            for (name, _) in BUILTIN {
+                let p = Profile::builtin(name).expect("built-in profile");
+                println!("{name:<12} {}", p.description);
+            }
+            ExitCode::SUCCESS
+        }
+        Cmd::Run {
+            common,
+            toolpath,
+            report,
+            plot,
+        } => run(&common, toolpath, report, plot, false),
+        Cmd::Check { common } => run(&common, None, None, None, true),
+    }
+}
+
+fn usage_error(msg: impl std::fmt::Display) -> ExitCode {
+    eprintln!("kerf: {msg}");
+    ExitCode::from(2)
+}
+
+fn load_profile(name: &str) -> Result<Profile, String> {
+    if let Some(p) = Profile::builtin(name) {
+        return Ok(p);
+    }
+    if name.ends_with(".toml") || Path::new(name).exists() {
+        let text = std::fs::read_to_string(name).map_err(|e| format!("{name}: {e}"))?;
+        return Profile::from_toml(&text).map_err(|e| format!("{name}: {e}"));
+    }
+    let names: Vec<&str> = BUILTIN.iter().map(|(n, _)| *n).collect();
+    Err(format!(
+        "unknown machine '{name}' (built-in: {})",
+        names.join(", ")
+    ))
+}
+
+fn run(
+    c: &Common,
+    toolpath: Option<PathBuf>,
+    report_path: Option<PathBuf>,
+    plot_path: Option<PathBuf>,
+    check: bool,
+) -> ExitCode {
+    let mut profile = match load_profile(&c.machine) {
+        Ok(p) => p,
+        Err(e) => return usage_error(e),
+    };
+    let settings = match settings::parse(&c.set, &mut profile) {
+        Ok(s) => s,
+        Err(e) => return usage_error(e),
+    };
+    let file = match File::open(&c.program) {
+        Ok(f) => f,
+        Err(e) => return usage_error(format!("{}: {e}", c.program.display())),
+    };
+    let name = c.program.display().to_string();
+    let dynamics = dynamics_of(&profile);
+    let kind = profile.kind;
+    let axes: Vec<Axis> = Axis::ALL
+        .iter()
+        .copied()
+        .filter(|a| profile.has_axis(*a))
+        .collect();
+    let mut it = Interp::new(profile, settings);
+    if let Some(path) = &c.offsets {
+        if let Err(e) = offsets::load(path, &mut it) {
+            return usage_error(e);
+        }
+    }
+    it.load_main(&name, Box::new(file));
+
+    let mut tp = match toolpath.as_ref().map(File::create).transpose() {
+        Ok(f) => {
+            f.map(|f| toolpath::Writer::new(BufWriter::with_capacity(1 << 16, f), axes.clone()))
+        }
+        Err(e) => return usage_error(format!("{}: {e}", toolpath.unwrap().display())),
+    };
+    let mut rep = report::Summary::new(&axes);
+    let mut plotter = plot_path.as_ref().map(|_| plot::Plot::new(kind));
+    let mut est = Estimator::new(dynamics, it.machine_position());
+    let mut start_work = it.work_position();
+    let mut alarm: Option<Alarm> = None;
+    loop {
+        match it.step() {
+            Step::Event(e) => {
+                let from = start_work;
+                let t = est.push(&e);
+                if let Some(m) = e.motion() {
+                    rep.motion(&e, &from, m);
+                    if let Some(p) = plotter.as_mut() {
+                        p.add(&e, &from);
+                    }
+                    start_work = m.to;
+                }
+                if let Canon::Tool { tool, .. } = e.cmd {
+                    rep.tool(tool);
+                }
+                if let Some(w) = tp.as_mut() {
+                    if let Err(err) = w.write(&e, it.file_name(e.src.file), &start_work, t, &est) {
+                        return usage_error(format!("toolpath: {err}"));
+                    }
+                }
+            }
+            Step::End => break,
+            Step::Alarm(a) => {
+                alarm = Some(a);
+                break;
+            }
+        }
+    }
+    if let Some(w) = tp.as_mut() {
+        if let Err(e) = w.finish() {
+            return usage_error(format!("toolpath: {e}"));
+        }
+    }
+    if let Some(a) = &alarm {
+        print_alarm(a, it.file_name(a.src.file));
+    }
+    if let Some(path) = report_path {
+        let r = rep.finish(&it, &est, alarm.as_ref());
+        let text = serde_json::to_string_pretty(&r).expect("report serialises");
+        if let Err(e) = std::fs::write(&path, text + "\n") {
+            return usage_error(format!("{}: {e}", path.display()));
+        }
+    }
+    if let (Some(p), Some(path)) = (plotter, plot_path) {
+        if let Err(e) = std::fs::write(&path, p.svg()) {
+            return usage_error(format!("{}: {e}", path.display()));
+        }
+    }
+    if check && alarm.is_none() {
+        let mut out = std::io::stdout().lock();
+        let _ = writeln!(out, "{name}: ok ({} blocks)", it.blocks());
+    }
+    if alarm.is_some() {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+fn dynamics_of(p: &Profile) -> Dynamics {
+    let mut rapid = [0.0; NAXES];
+    for a in Axis::ALL {
+        if let Some(d) = p.axis(a) {
+            rapid[a as usize] = d.rapid;
+        }
+    }
+    Dynamics {
+        rapid,
+        linear_rapid: p.dialect == kerf_interp::DialectId::Hurco,
+        max_feed: p.feed.max_cutting,
+        tool_change_s: p.tools.change_time_s,
+    }
+}
+
+/// `FILE:LINE:COL: alarm CODE: MESSAGE`, the source line, a caret.
+fn print_alarm(a: &Alarm, file: &str) {
+    let mut err = std::io::stderr().lock();
+    let _ = writeln!(
+        err,
+        "{}:{}:{}: alarm {}: {}",
+        file, a.src.line, a.src.col, a.code, a.message
+    );
+    if let Some(line) = source_line(file, a.src.line) {
+        let shown: String = line
+            .chars()
+            .map(|c| if c == '\t' { ' ' } else { c })
+            .collect();
+        let _ = writeln!(err, "  {shown}");
+        let col = (a.src.col as usize).saturating_sub(1).min(shown.len());
+        let _ = writeln!(err, "  {}^", " ".repeat(col));
+    }
+}
+
+fn source_line(file: &str, line: u32) -> Option<String> {
+    use std::io::{BufRead, Read};
+    let f = File::open(file).ok()?;
+    let mut r = std::io::BufReader::new(f);
+    let mut buf = Vec::new();
+    for n in 1..=line {
+        buf.clear();
+        // Bound what one line may cost: read at most 4 KiB of it.
+        let got = (&mut r).take(4096).read_until(b'\n', &mut buf).ok()?;
+        if got == 0 {
+            return None;
+        }
+        if n == line {
+            let s = String::from_utf8_lossy(&buf);
+            return Some(s.trim_end_matches(['\n', '\r']).to_string());
+        }
+        if buf.last() != Some(&b'\n') {
+            // The rest of an over-long line.
+            let mut sink = Vec::new();
+            r.read_until(b'\n', &mut sink).ok()?;
+        }
+    }
+    None
+}

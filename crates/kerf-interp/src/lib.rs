@@ -1,1 +1,69 @@
-//! placeholder
+//! kerf-interp: executes NC part programs as the real control would.
+//!
+//! The [`Interp`] is a resumable step machine: each [`Interp::step`] call
+//! reads and executes blocks until it has the next canonical command
+//! ([`kerf_canon::Event`]), an alarm, or the end. A batch run is a loop over
+//! `step()`; single block, feed hold and the like fall out of that shape.
+//!
+//! Module map:
+//! - [`dialect`]: per-control G/M tables and language switches (data);
+//! - [`machine`]: machine profiles (TOML) and the built-in ones;
+//! - [`interp`]: the step machine, modal state, motion, coordinates;
+//! - [`words`]: a block's evaluated words in fixed tables;
+//! - [`arc`]: circular interpolation geometry;
+//! - [`macros`]: variables and expression evaluation;
+//! - [`alarms`]: every alarm and its code per control.
+
+pub mod alarms;
+pub mod arc;
+pub mod dialect;
+pub mod interp;
+pub mod machine;
+pub mod macros;
+pub mod words;
+
+pub use dialect::{Dialect, DialectId};
+pub use interp::{Interp, Settings, Step};
+pub use machine::{MachineKind, Profile};
+
+use kerf_canon::{Alarm, Event};
+
+/// The outcome of running a whole program in memory (tests, tools).
+#[derive(Debug)]
+pub struct Run {
+    /// Every canonical command in execution order.
+    pub events: Vec<Event>,
+    /// The alarm that stopped the run, if any.
+    pub alarm: Option<Alarm>,
+    /// Blocks executed.
+    pub blocks: u64,
+}
+
+/// Runs program text to its end on a built-in or given profile.
+pub fn run_text(profile: Profile, settings: Settings, name: &str, text: &str) -> Run {
+    let mut it = Interp::new(profile, settings);
+    it.load_main(
+        name,
+        Box::new(std::io::Cursor::new(text.as_bytes().to_vec())),
+    );
+    let mut events = Vec::new();
+    loop {
+        match it.step() {
+            Step::Event(e) => events.push(e),
+            Step::End => {
+                return Run {
+                    events,
+                    alarm: None,
+                    blocks: it.blocks(),
+                }
+            }
+            Step::Alarm(a) => {
+                return Run {
+                    events,
+                    alarm: Some(a),
+                    blocks: it.blocks(),
+                }
+            }
+        }
+    }
+}

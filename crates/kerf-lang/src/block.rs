@@ -138,7 +138,11 @@ pub enum Stmt {
     /// `IF [cond] GOTO n`.
     IfGoto { cond: ExprId, target: ExprId },
     /// `IF [cond] THEN #i = expr`.
-    IfThen { cond: ExprId, var: ExprId, value: ExprId },
+    IfThen {
+        cond: ExprId,
+        var: ExprId,
+        value: ExprId,
+    },
     /// `WHILE [cond] DO m`.
     While { cond: ExprId, label: u32 },
     /// `DO m` without WHILE (an endless loop).
@@ -200,6 +204,10 @@ impl Block {
 
     /// True when nothing executable is in the block.
     pub fn is_empty(&self) -> bool {
-        self.words.is_empty() && self.stmt.is_none() && self.loop_cmd.is_none() && self.program.is_none() && !self.percent
+        self.words.is_empty()
+            && self.stmt.is_none()
+            && self.loop_cmd.is_none()
+            && self.program.is_none()
+            && !self.percent
     }
 }

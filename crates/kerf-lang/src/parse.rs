@@ -22,7 +22,12 @@ pub struct LexOptions {
 
 impl Default for LexOptions {
     fn default() -> LexOptions {
-        LexOptions { long_names: &[], loop_comments: false, max_digits: 12, max_nesting: 5 }
+        LexOptions {
+            long_names: &[],
+            loop_comments: false,
+            max_digits: 12,
+            max_nesting: 5,
+        }
     }
 }
 
@@ -73,7 +78,9 @@ impl LexErrorKind {
             LexErrorKind::BadExpression => "malformed expression".into(),
             LexErrorKind::BadStatement => "malformed macro statement".into(),
             LexErrorKind::TrailingText => "unexpected text after the statement".into(),
-            LexErrorKind::DuplicateNumber => "more than one sequence/program number in the block".into(),
+            LexErrorKind::DuplicateNumber => {
+                "more than one sequence/program number in the block".into()
+            }
         }
     }
 }
@@ -96,13 +103,21 @@ struct P<'a> {
 }
 
 fn err<T>(kind: LexErrorKind, at: usize) -> R<T> {
-    Err(LexError { kind, at: at as u32 })
+    Err(LexError {
+        kind,
+        at: at as u32,
+    })
 }
 
 /// Parses one block of text into `out` (which is cleared first).
 pub fn parse_block(text: &[u8], opts: &LexOptions, out: &mut Block) -> Result<(), LexError> {
     out.clear();
-    let mut p = P { t: text, i: 0, o: *opts, depth: 0 };
+    let mut p = P {
+        t: text,
+        i: 0,
+        o: *opts,
+        depth: 0,
+    };
     p.block(out)
 }
 
@@ -177,7 +192,11 @@ impl<'a> P<'a> {
                         Some(l) if l.is_ascii_alphabetic() => {
                             self.i += 1;
                             let val = self.value(b, start)?;
-                            b.words.push(Word { addr: Addr::Comma(l.to_ascii_uppercase()), val, at: start as u32 });
+                            b.words.push(Word {
+                                addr: Addr::Comma(l.to_ascii_uppercase()),
+                                val,
+                                at: start as u32,
+                            });
                         }
                         _ => return err(LexErrorKind::UnexpectedChar(b','), start),
                     }
@@ -265,7 +284,11 @@ impl<'a> P<'a> {
                 if let Some((k, len)) = self.long_name(run) {
                     self.i += len;
                     let val = self.value(b, start)?;
-                    b.words.push(Word { addr: Addr::Long(k as u16), val, at: start as u32 });
+                    b.words.push(Word {
+                        addr: Addr::Long(k as u16),
+                        val,
+                        at: start as u32,
+                    });
                     return Ok(());
                 }
             }
@@ -282,7 +305,11 @@ impl<'a> P<'a> {
             b'O' if b.words.is_empty() && b.stmt.is_none() => self.program_number(b, start)?,
             _ => {
                 let val = self.value(b, start)?;
-                b.words.push(Word { addr: Addr::L(l), val, at: start as u32 });
+                b.words.push(Word {
+                    addr: Addr::L(l),
+                    val,
+                    at: start as u32,
+                });
             }
         }
         Ok(())
@@ -293,7 +320,11 @@ impl<'a> P<'a> {
         let mut best: Option<(usize, usize)> = None;
         for (k, name) in self.o.long_names.iter().enumerate() {
             let n = name.as_bytes();
-            if n.len() >= 2 && n.len() <= run.len() && run[..n.len()].eq_ignore_ascii_case(n) && best.is_none_or(|(_, l)| n.len() > l) {
+            if n.len() >= 2
+                && n.len() <= run.len()
+                && run[..n.len()].eq_ignore_ascii_case(n)
+                && best.is_none_or(|(_, l)| n.len() > l)
+            {
                 best = Some((k, n.len()));
             }
         }
@@ -461,8 +492,16 @@ impl<'a> P<'a> {
         if digits == 0 {
             return err(LexErrorKind::MissingValue, at);
         }
-        let value = if frac == 0 { mant as f64 } else { mant as f64 / POW10[frac as usize] };
-        Ok(Num { value, point, digits: digits as u8 })
+        let value = if frac == 0 {
+            mant as f64
+        } else {
+            mant as f64 / POW10[frac as usize]
+        };
+        Ok(Num {
+            value,
+            point,
+            digits: digits as u8,
+        })
     }
 
     // ---- expressions ---------------------------------------------------
@@ -662,16 +701,24 @@ impl<'a> P<'a> {
 }
 
 const POW10: [f64; 19] = [
-    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18,
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18,
 ];
 
 /// Recognises a Hurco loop command in comment text: `LOOP n` / `REPEAT n`
 /// (optionally followed by `TIMES`) starts a section, `END LOOP`, `ENDLOOP`,
 /// `END REPEAT`, `LOOP END` or `END` ends it. Case and spacing are free.
 pub fn loop_command(text: &[u8]) -> Option<LoopCmd> {
-    let s: Vec<u8> = text.iter().filter(|c| !is_blank(**c)).map(|c| c.to_ascii_uppercase()).collect();
+    let s: Vec<u8> = text
+        .iter()
+        .filter(|c| !is_blank(**c))
+        .map(|c| c.to_ascii_uppercase())
+        .collect();
     let s = s.as_slice();
-    if matches!(s, b"ENDLOOP" | b"ENDREPEAT" | b"LOOPEND" | b"REPEATEND" | b"END") {
+    if matches!(
+        s,
+        b"ENDLOOP" | b"ENDREPEAT" | b"LOOPEND" | b"REPEATEND" | b"END"
+    ) {
         return Some(LoopCmd::End);
     }
     for kw in [&b"LOOP"[..], b"REPEAT"] {

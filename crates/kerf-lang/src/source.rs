@@ -75,7 +75,10 @@ impl LineSource {
 
     /// The position of the next line to be read.
     pub fn tell(&self) -> Mark {
-        Mark { offset: self.offset, line: self.line + 1 }
+        Mark {
+            offset: self.offset,
+            line: self.line + 1,
+        }
     }
 
     /// Returns to a position previously obtained from [`LineSource::tell`] or

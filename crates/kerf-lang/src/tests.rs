@@ -90,7 +90,13 @@ fn comments_anywhere_and_semicolon() {
     let b = parse("(ONLY A COMMENT)");
     assert!(b.words.is_empty());
     let e = fail("G00 (OPEN");
-    assert_eq!(e, LexError { kind: LexErrorKind::UnterminatedComment, at: 4 });
+    assert_eq!(
+        e,
+        LexError {
+            kind: LexErrorKind::UnterminatedComment,
+            at: 4
+        }
+    );
 }
 
 #[test]
@@ -114,38 +120,68 @@ fn macro_forms_in_words() {
         assert!(matches!(w.val, Val::Expr(_)), "{w:?}");
     }
     // Z-#110 is Neg(Var(110))
-    let Val::Expr(e) = b.words[1].val else { unreachable!() };
-    let Expr::Neg(v) = b.exprs[e as usize] else { panic!() };
-    let Expr::Var(i) = b.exprs[v as usize] else { panic!() };
+    let Val::Expr(e) = b.words[1].val else {
+        unreachable!()
+    };
+    let Expr::Neg(v) = b.exprs[e as usize] else {
+        panic!()
+    };
+    let Expr::Var(i) = b.exprs[v as usize] else {
+        panic!()
+    };
     assert_eq!(b.exprs[i as usize], Expr::Num(110.0));
     // Y#[#100] is Var(Var(100))
-    let Val::Expr(e) = b.words[4].val else { unreachable!() };
-    let Expr::Var(i) = b.exprs[e as usize] else { panic!() };
+    let Val::Expr(e) = b.words[4].val else {
+        unreachable!()
+    };
+    let Expr::Var(i) = b.exprs[e as usize] else {
+        panic!()
+    };
     assert!(matches!(b.exprs[i as usize], Expr::Var(_)));
 }
 
 #[test]
 fn assignment_and_precedence() {
     let b = parse("#1=#2+#3*2");
-    let Some(Stmt::Assign { var, value }) = b.stmt else { panic!() };
+    let Some(Stmt::Assign { var, value }) = b.stmt else {
+        panic!()
+    };
     assert_eq!(b.exprs[var as usize], Expr::Num(1.0));
-    let Expr::Bin(BinOp::Add, _, r) = b.exprs[value as usize] else { panic!("{:?}", b.exprs) };
+    let Expr::Bin(BinOp::Add, _, r) = b.exprs[value as usize] else {
+        panic!("{:?}", b.exprs)
+    };
     assert!(matches!(b.exprs[r as usize], Expr::Bin(BinOp::Mul, _, _)));
     let b = parse("N5 #[#1+1] = SIN[30.] + ATAN[1]/[2] OR 3 AND 1");
     assert_eq!(b.n, Some(5));
-    let Some(Stmt::Assign { value, .. }) = b.stmt else { panic!() };
+    let Some(Stmt::Assign { value, .. }) = b.stmt else {
+        panic!()
+    };
     // OR is additive level, AND multiplicative: (SIN + ATAN) OR (3 AND 1)
-    let Expr::Bin(BinOp::Or, l, r) = b.exprs[value as usize] else { panic!("{:?}", b.exprs) };
+    let Expr::Bin(BinOp::Or, l, r) = b.exprs[value as usize] else {
+        panic!("{:?}", b.exprs)
+    };
     assert!(matches!(b.exprs[l as usize], Expr::Bin(BinOp::Add, _, _)));
     assert!(matches!(b.exprs[r as usize], Expr::Bin(BinOp::And, _, _)));
 }
 
 #[test]
 fn control_statements() {
-    assert!(matches!(parse("IF [#1 EQ 0] GOTO 10").stmt, Some(Stmt::IfGoto { .. })));
-    assert!(matches!(parse("IF[#1GT#2]THEN#3=1").stmt, Some(Stmt::IfThen { .. })));
-    assert!(matches!(parse("WHILE [#1 LT 10] DO1").stmt, Some(Stmt::While { label: 1, .. })));
-    assert!(matches!(parse("WHILE [#1 LT 10] DO 210").stmt, Some(Stmt::While { label: 210, .. })));
+    assert!(matches!(
+        parse("IF [#1 EQ 0] GOTO 10").stmt,
+        Some(Stmt::IfGoto { .. })
+    ));
+    assert!(matches!(
+        parse("IF[#1GT#2]THEN#3=1").stmt,
+        Some(Stmt::IfThen { .. })
+    ));
+    assert!(matches!(
+        parse("WHILE [#1 LT 10] DO1").stmt,
+        Some(Stmt::While { label: 1, .. })
+    ));
+    assert!(matches!(
+        parse("WHILE [#1 LT 10] DO 210").stmt,
+        Some(Stmt::While { label: 210, .. })
+    ));
     assert_eq!(parse("END1").stmt, Some(Stmt::End { label: 1 }));
     assert_eq!(parse("END 210").stmt, Some(Stmt::End { label: 210 }));
     assert!(matches!(parse("GOTO 99").stmt, Some(Stmt::Goto(_))));
@@ -165,21 +201,36 @@ fn hx_comma_chamfer_and_corner() {
 #[test]
 fn hurco_long_names() {
     const NAMES: &[&str] = &["angIn", "ZEnd", "minD", "XEnd"];
-    let o = LexOptions { long_names: NAMES, loop_comments: true, ..LexOptions::default() };
+    let o = LexOptions {
+        long_names: NAMES,
+        loop_comments: true,
+        ..LexOptions::default()
+    };
     let b = parse_with("G78 angIn30 ZEnd3.1 minD.01 X1.", &o);
     assert_eq!(b.words[1].addr, Addr::Long(0));
     assert_eq!(b.words[2].addr, Addr::Long(1));
     assert_eq!(b.words[3].addr, Addr::Long(2));
     assert_eq!(b.words[4].addr, Addr::L(b'X'));
-    let Val::Num(n) = b.words[2].val else { panic!() };
+    let Val::Num(n) = b.words[2].val else {
+        panic!()
+    };
     assert_eq!(n.value, 3.1);
 }
 
 #[test]
 fn hurco_loop_commands() {
-    let o = LexOptions { loop_comments: true, ..LexOptions::default() };
-    assert_eq!(parse_with("(LOOP 3)", &o).loop_cmd, Some(LoopCmd::Start { count: 3 }));
-    assert_eq!(parse_with("(repeat 12 times)", &o).loop_cmd, Some(LoopCmd::Start { count: 12 }));
+    let o = LexOptions {
+        loop_comments: true,
+        ..LexOptions::default()
+    };
+    assert_eq!(
+        parse_with("(LOOP 3)", &o).loop_cmd,
+        Some(LoopCmd::Start { count: 3 })
+    );
+    assert_eq!(
+        parse_with("(repeat 12 times)", &o).loop_cmd,
+        Some(LoopCmd::Start { count: 12 })
+    );
     assert_eq!(parse_with("(END LOOP)", &o).loop_cmd, Some(LoopCmd::End));
     assert_eq!(parse_with("(A COMMENT)", &o).loop_cmd, None);
     assert_eq!(parse("(LOOP 3)").loop_cmd, None);
@@ -187,9 +238,27 @@ fn hurco_loop_commands() {
 
 #[test]
 fn errors_carry_the_column() {
-    assert_eq!(fail("G00 X"), LexError { kind: LexErrorKind::MissingValue, at: 4 });
-    assert_eq!(fail("G00 @"), LexError { kind: LexErrorKind::UnexpectedChar(b'@'), at: 4 });
-    assert_eq!(fail("X[#1+2"), LexError { kind: LexErrorKind::UnbalancedBracket, at: 1 });
+    assert_eq!(
+        fail("G00 X"),
+        LexError {
+            kind: LexErrorKind::MissingValue,
+            at: 4
+        }
+    );
+    assert_eq!(
+        fail("G00 @"),
+        LexError {
+            kind: LexErrorKind::UnexpectedChar(b'@'),
+            at: 4
+        }
+    );
+    assert_eq!(
+        fail("X[#1+2"),
+        LexError {
+            kind: LexErrorKind::UnbalancedBracket,
+            at: 1
+        }
+    );
     assert_eq!(fail("X1234567890123").kind, LexErrorKind::TooManyDigits);
     assert_eq!(fail("X[[[[[[1]]]]]]").kind, LexErrorKind::NestingTooDeep);
     assert_eq!(fail("XY1").kind, LexErrorKind::MissingValue);

@@ -1,0 +1,131 @@
+//! SVG plot of the toolpath: the XY view for mills, the XZ half-section for
+//! lathes (Z to the right, radius X up). Rapids dashed, cuts solid.
+
+use kerf_canon::{Canon, Event, Pos};
+use kerf_interp::MachineKind;
+
+/// Collects path segments in view coordinates.
+pub struct Plot {
+    kind: MachineKind,
+    /// (rapid?, SVG path data) per segment.
+    segs: Vec<(bool, String)>,
+    min: (f64, f64),
+    max: (f64, f64),
+}
+
+impl Plot {
+    pub fn new(kind: MachineKind) -> Plot {
+        Plot {
+            kind,
+            segs: Vec::new(),
+            min: (f64::MAX, f64::MAX),
+            max: (f64::MIN, f64::MIN),
+        }
+    }
+
+    /// View coordinates (SVG y grows downward, so v is negated).
+    fn view(&self, p: &Pos) -> (f64, f64) {
+        match self.kind {
+            MachineKind::Mill => (p[0], -p[1]),
+            MachineKind::Lathe => (p[2], -p[0]),
+        }
+    }
+
+    fn grow(&mut self, q: (f64, f64)) {
+        self.min = (self.min.0.min(q.0), self.min.1.min(q.1));
+        self.max = (self.max.0.max(q.0), self.max.1.max(q.1));
+    }
+
+    /// Adds a motion starting at `from` (work coordinates).
+    pub fn add(&mut self, e: &Event, from: &Pos) {
+        let a = self.view(from);
+        let Some(m) = e.motion() else { return };
+        let b = self.view(&m.to);
+        self.grow(a);
+        self.grow(b);
+        let d = match &e.cmd {
+            Canon::Arc {
+                center, dir, plane, ..
+            } => {
+                let c = self.view(center);
+                let r = (a.0 - c.0).hypot(a.1 - c.1);
+                let (p1, p2, _) = plane.axes();
+                let in_view = match self.kind {
+                    MachineKind::Mill => (p1, p2) == (0, 1),
+                    MachineKind::Lathe => (p1, p2) == (2, 0),
+                };
+                if !in_view || r < 1e-9 {
+                    format!("M{:.4} {:.4}L{:.4} {:.4}", a.0, a.1, b.0, b.1)
+                } else {
+                    let ccw = matches!(dir, kerf_canon::ArcDir::Ccw);
+                    let sw = kerf_interp::arc::sweep(
+                        (from[p1], from[p2]),
+                        (m.to[p1], m.to[p2]),
+                        (center[p1], center[p2]),
+                        ccw,
+                    );
+                    self.grow((c.0 - r, c.1 - r));
+                    self.grow((c.0 + r, c.1 + r));
+                    // The view flips v, so CCW in the plane is clockwise on screen (sweep flag 0).
+                    let sweep_flag = if ccw { 0 } else { 1 };
+                    if sw > std::f64::consts::PI * 1.999 {
+                        let mid = (2.0 * c.0 - a.0, 2.0 * c.1 - a.1);
+                        format!("M{:.4} {:.4}A{r:.4} {r:.4} 0 0 {sweep_flag} {:.4} {:.4}A{r:.4} {r:.4} 0 0 {sweep_flag} {:.4} {:.4}", a.0, a.1, mid.0, mid.1, b.0, b.1)
+                    } else {
+                        let large = if sw > std::f64::consts::PI { 1 } else { 0 };
+                        format!(
+                            "M{:.4} {:.4}A{r:.4} {r:.4} 0 {large} {sweep_flag} {:.4} {:.4}",
+                            a.0, a.1, b.0, b.1
+                        )
+                    }
+                }
+            }
+            _ => format!("M{:.4} {:.4}L{:.4} {:.4}", a.0, a.1, b.0, b.1),
+        };
+        self.segs.push((matches!(e.cmd, Canon::Rapid { .. }), d));
+    }
+
+    /// The SVG document.
+    pub fn svg(&self) -> String {
+        let (min, max) = if self.segs.is_empty() {
+            ((0.0, 0.0), (1.0, 1.0))
+        } else {
+            (self.min, self.max)
+        };
+        let w = (max.0 - min.0).max(1.0);
+        let h = (max.1 - min.1).max(1.0);
+        let pad = 0.05 * w.max(h);
+        let stroke = 0.003 * w.max(h);
+        let mut s = format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"{:.4} {:.4} {:.4} {:.4}\" width=\"800\" height=\"{:.0}\">\n",
+            min.0 - pad,
+            min.1 - pad,
+            w + 2.0 * pad,
+            h + 2.0 * pad,
+            800.0 * (h + 2.0 * pad) / (w + 2.0 * pad)
+        );
+        s.push_str(&format!("<g fill=\"none\" stroke-width=\"{stroke:.4}\">\n"));
+        if self.kind == MachineKind::Lathe {
+            s.push_str(&format!(
+                "<line x1=\"{:.4}\" y1=\"0\" x2=\"{:.4}\" y2=\"0\" stroke=\"#888\" stroke-dasharray=\"{:.4} {:.4}\"/>\n",
+                min.0 - pad,
+                max.0 + pad,
+                stroke * 8.0,
+                stroke * 3.0
+            ));
+        }
+        for (rapid, d) in &self.segs {
+            if *rapid {
+                s.push_str(&format!(
+                    "<path d=\"{d}\" stroke=\"#d33\" stroke-dasharray=\"{:.4} {:.4}\"/>\n",
+                    stroke * 4.0,
+                    stroke * 3.0
+                ));
+            } else {
+                s.push_str(&format!("<path d=\"{d}\" stroke=\"#036\"/>\n"));
+            }
+        }
+        s.push_str("</g>\n</svg>\n");
+        s
+    }
+}

@@ -1,0 +1,173 @@
+//! The run report (JSON): status, alarm, counts, lengths, bounding box of
+//! cutting moves, final positions, tools, cycle time. Format: docs/formats.md.
+
+use std::collections::BTreeMap;
+
+use kerf_canon::{Alarm, Axis, Canon, Event, Motion, Pos};
+use kerf_interp::Interp;
+use kerf_motion::Estimator;
+use serde::Serialize;
+
+/// Accumulates what the report needs while the run streams past.
+pub struct Summary {
+    axes: Vec<Axis>,
+    motions: u64,
+    bbox: Option<(Pos, Pos)>,
+    tools: Vec<u32>,
+}
+
+#[derive(Serialize)]
+pub struct AlarmOut {
+    code: String,
+    message: String,
+    file: String,
+    line: u32,
+    col: u32,
+}
+
+#[derive(Serialize)]
+pub struct BBox {
+    min: BTreeMap<&'static str, f64>,
+    max: BTreeMap<&'static str, f64>,
+}
+
+#[derive(Serialize)]
+pub struct Final {
+    work: BTreeMap<&'static str, f64>,
+    machine: BTreeMap<&'static str, f64>,
+}
+
+#[derive(Serialize)]
+pub struct TimeOut {
+    rapid: f64,
+    cutting: f64,
+    dwell: f64,
+    tool_change: f64,
+}
+
+#[derive(Serialize)]
+pub struct Report {
+    status: &'static str,
+    alarm: Option<AlarmOut>,
+    blocks: u64,
+    motions: u64,
+    feed_length_mm: f64,
+    rapid_length_mm: f64,
+    bbox: Option<BBox>,
+    #[serde(rename = "final")]
+    final_: Final,
+    tools: Vec<u32>,
+    cycle_time_s: f64,
+    time_s: TimeOut,
+}
+
+fn r6(v: f64) -> f64 {
+    let r = (v * 1e6).round() / 1e6;
+    if r == 0.0 {
+        0.0
+    } else {
+        r
+    }
+}
+
+impl Summary {
+    pub fn new(axes: &[Axis]) -> Summary {
+        Summary {
+            axes: axes.to_vec(),
+            motions: 0,
+            bbox: None,
+            tools: Vec::new(),
+        }
+    }
+
+    /// Counts a motion; cutting moves grow the bounding box (work coordinates).
+    pub fn motion(&mut self, e: &Event, from: &Pos, m: &Motion) {
+        self.motions += 1;
+        let cutting = matches!(
+            e.cmd,
+            Canon::Feed { .. } | Canon::Arc { .. } | Canon::Thread { .. }
+        );
+        if !cutting {
+            return;
+        }
+        let mut pts = vec![*from, m.to];
+        if let Canon::Arc {
+            center, plane, dir, ..
+        } = &e.cmd
+        {
+            let (a1, a2, _) = plane.axes();
+            let (u0, v0, u1, v1) = kerf_interp::arc::bbox(
+                (from[a1], from[a2]),
+                (m.to[a1], m.to[a2]),
+                (center[a1], center[a2]),
+                matches!(dir, kerf_canon::ArcDir::Ccw),
+            );
+            let mut p = m.to;
+            p[a1] = u0;
+            p[a2] = v0;
+            pts.push(p);
+            p[a1] = u1;
+            p[a2] = v1;
+            pts.push(p);
+        }
+        for p in pts {
+            let b = self.bbox.get_or_insert((p, p));
+            for i in 0..p.len() {
+                b.0[i] = b.0[i].min(p[i]);
+                b.1[i] = b.1[i].max(p[i]);
+            }
+        }
+    }
+
+    /// Records a tool used.
+    pub fn tool(&mut self, t: u32) {
+        if t != 0 && !self.tools.contains(&t) {
+            self.tools.push(t);
+        }
+    }
+
+    fn map(&self, p: &Pos) -> BTreeMap<&'static str, f64> {
+        self.axes
+            .iter()
+            .map(|a| (a.name(), r6(p[*a as usize])))
+            .collect()
+    }
+
+    /// The report.
+    pub fn finish(&self, it: &Interp, est: &Estimator, alarm: Option<&Alarm>) -> Report {
+        Report {
+            status: if alarm.is_some() {
+                "alarm"
+            } else {
+                "completed"
+            },
+            alarm: alarm.map(|a| AlarmOut {
+                code: a.code.clone(),
+                message: a.message.clone(),
+                file: it.file_name(a.src.file).to_string(),
+                line: a.src.line,
+                col: a.src.col,
+            }),
+            blocks: it.blocks(),
+            motions: self.motions,
+            feed_length_mm: r6(est.feed_length),
+            rapid_length_mm: r6(est.rapid_length),
+            bbox: self.bbox.map(|(lo, hi)| BBox {
+                min: self.map(&lo),
+                max: self.map(&hi),
+            }),
+            final_: Final {
+                work: self.map(&it.work_position()),
+                machine: self.map(&it.machine_position()),
+            },
+            tools: self.tools.clone(),
+            cycle_time_s: r6(est.now()),
+            time_s: TimeOut {
+                rapid: r6(est.time.rapid),
+                cutting: r6(est.time.cutting),
+                dwell: r6(est.time.dwell),
+                tool_change: r6(est.time.tool_change),
+            },
+        }
+    }
+}

@@ -1,0 +1,111 @@
+//! Every alarm a program can cause, with the code each control shows for
+//! it. HX codes are the manual's `F_8xxxx` numbers where 000 names one;
+//! the PUMA (Fanuc 0-T) codes are the Fanuc P/S alarm numbers; the Hurco
+//! manual names no numbers, so Hurco alarms use kerf's own `HU-` codes.
+//! docs/alarms.md lists them all; keep the two in step.
+
+use kerf_canon::{Alarm, SrcRef};
+
+use crate::dialect::DialectId;
+
+/// The kinds of alarm the interpreter raises.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AlarmKind {
+    /// A character or address the control does not accept.
+    IllegalAddress,
+    /// An address with no value.
+    MissingValue,
+    /// Too many digits.
+    TooManyDigits,
+    /// Comment not closed.
+    UnterminatedComment,
+    /// Brackets unbalanced or too deep, malformed expression or statement.
+    BadExpression,
+    /// Sequence or program number malformed or repeated.
+    BadSequenceNumber,
+    /// Block longer than the control allows.
+    BlockTooLong,
+    /// G code not in the control's table.
+    UnknownG,
+    /// M code not in the control's table.
+    UnknownM,
+    /// An axis word for an axis the machine does not have.
+    NoSuchAxis,
+    /// The same address twice in a block.
+    DuplicateAddress,
+    /// A value outside the control's range.
+    OutOfRange,
+    /// G01/G02/G03 without any feedrate commanded.
+    NoFeed,
+    /// Arc end point not on the circle.
+    ArcEndPoint,
+    /// Arc radius too small for the chord, or zero.
+    ArcRadius,
+    /// Arc without centre or radius.
+    ArcNoCenter,
+    /// Move beyond the machine's travel.
+    Overtravel,
+    /// A recognised code whose implementation is in a later issue.
+    NotYetSupported,
+    /// A G code that needs a value it did not get (e.g. G04 without time).
+    MissingArgument,
+    /// Macro variable problems (bad number, write to read-only, …).
+    BadVariable,
+    /// Division by zero or a math domain error in an expression.
+    MathError,
+    /// Too many blocks executed without progress (loop guard).
+    LoopLimit,
+    /// Jump target not found.
+    SequenceNotFound,
+    /// WHILE/DO/END mismatch.
+    BadLoop,
+    /// M-code restrictions in one block (too many, or illegal combination).
+    MCodeConflict,
+    /// I/O error while reading the program.
+    Io,
+}
+
+impl AlarmKind {
+    /// The control's code for this alarm.
+    pub fn code(self, d: DialectId) -> &'static str {
+        use AlarmKind::*;
+        let (hx, fanuc, hurco) = match self {
+            IllegalAddress => ("F_82001", "PS009", "HU-001"),
+            MissingValue => ("F_82004", "PS005", "HU-002"),
+            TooManyDigits => ("F_82002", "PS003", "HU-003"),
+            UnterminatedComment => ("F_82001", "PS009", "HU-004"),
+            BadExpression => ("F_82005", "PS114", "HU-005"),
+            BadSequenceNumber => ("F_82018", "PS009", "HU-006"),
+            BlockTooLong => ("F_82003", "PS009", "HU-007"),
+            UnknownG => ("F_82030", "PS010", "HU-010"),
+            UnknownM => ("F_82031", "PS010", "HU-011"),
+            NoSuchAxis => ("F_82001", "PS009", "HU-012"),
+            DuplicateAddress => ("F_82006", "PS009", "HU-013"),
+            OutOfRange => ("F_82007", "PS003", "HU-014"),
+            NoFeed => ("F_84020", "PS011", "HU-020"),
+            ArcEndPoint => ("F_82101", "PS020", "HU-021"),
+            ArcRadius => ("F_82100", "PS023", "HU-022"),
+            ArcNoCenter => ("F_82102", "PS021", "HU-023"),
+            Overtravel => ("F_84100", "OT510", "HU-030"),
+            NotYetSupported => ("KERF-0100", "KERF-0100", "KERF-0100"),
+            MissingArgument => ("F_82008", "PS004", "HU-015"),
+            BadVariable => ("F_82200", "PS115", "HU-040"),
+            MathError => ("F_82201", "PS112", "HU-041"),
+            LoopLimit => ("KERF-0101", "KERF-0101", "KERF-0101"),
+            SequenceNotFound => ("F_82021", "PS060", "HU-042"),
+            BadLoop => ("F_82202", "PS128", "HU-043"),
+            MCodeConflict => ("F_82032", "PS009", "HU-016"),
+            Io => ("KERF-0001", "KERF-0001", "KERF-0001"),
+        };
+        match d {
+            DialectId::Hx => hx,
+            DialectId::Puma => fanuc,
+            DialectId::Hurco => hurco,
+        }
+    }
+
+    /// Builds the alarm for a dialect.
+    pub fn at(self, d: DialectId, src: SrcRef, msg: impl Into<String>) -> Alarm {
+        Alarm::new(self.code(d), msg, src)
+    }
+}

@@ -1,0 +1,185 @@
+//! Circular interpolation geometry in a plane: centre from R, end-point
+//! checks, sweep angle and extreme points (for travel checks and bounding
+//! boxes). Coordinates are (u, v) in the plane's (first, second) axes; CCW
+//! is counter-clockwise seen from the positive end of the plane normal.
+
+use std::f64::consts::{PI, TAU};
+
+/// Why an arc cannot be made.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ArcError {
+    /// |R| smaller than half the chord (beyond tolerance), or zero.
+    RadiusTooSmall { r: f64, half_chord: f64 },
+    /// Start and end radii differ by more than the tolerance.
+    EndNotOnCircle { r_start: f64, r_end: f64 },
+    /// Centre coincides with the start point.
+    ZeroRadius,
+}
+
+/// The centre of an arc from start `s`, end `e`, signed radius `r`
+/// (negative: the arc of more than 180°) and direction (`ccw`).
+/// A radius up to `tol` shorter than half the chord is accepted as a
+/// half circle.
+pub fn center_from_radius(
+    s: (f64, f64),
+    e: (f64, f64),
+    r: f64,
+    ccw: bool,
+    tol: f64,
+) -> Result<(f64, f64), ArcError> {
+    let (dx, dy) = (e.0 - s.0, e.1 - s.1);
+    let chord = (dx * dx + dy * dy).sqrt();
+    let half = chord / 2.0;
+    let ra = r.abs();
+    if ra == 0.0 || ra < half - tol {
+        return Err(ArcError::RadiusTooSmall {
+            r,
+            half_chord: half,
+        });
+    }
+    let h = if ra <= half {
+        0.0
+    } else {
+        (ra * ra - half * half).sqrt()
+    };
+    let (mx, my) = ((s.0 + e.0) / 2.0, (s.1 + e.1) / 2.0);
+    // Unit normal to the left of the chord direction.
+    let (nx, ny) = (-dy / chord, dx / chord);
+    // Minor arc CCW: centre on the left; CW: on the right. R < 0 flips.
+    let mut side = if ccw { 1.0 } else { -1.0 };
+    if r < 0.0 {
+        side = -side;
+    }
+    Ok((mx + side * h * nx, my + side * h * ny))
+}
+
+/// Checks that `e` lies on the circle through `s` about `c` within `tol`;
+/// returns the start radius.
+pub fn check_end(s: (f64, f64), e: (f64, f64), c: (f64, f64), tol: f64) -> Result<f64, ArcError> {
+    let r1 = (s.0 - c.0).hypot(s.1 - c.1);
+    let r2 = (e.0 - c.0).hypot(e.1 - c.1);
+    if r1 < 1e-9 {
+        return Err(ArcError::ZeroRadius);
+    }
+    if (r1 - r2).abs() > tol {
+        return Err(ArcError::EndNotOnCircle {
+            r_start: r1,
+            r_end: r2,
+        });
+    }
+    Ok(r1)
+}
+
+/// Swept angle (radians, > 0) from `s` to `e` about `c`. Coincident start
+/// and end make a full circle.
+pub fn sweep(s: (f64, f64), e: (f64, f64), c: (f64, f64), ccw: bool) -> f64 {
+    let a0 = (s.1 - c.1).atan2(s.0 - c.0);
+    let a1 = (e.1 - c.1).atan2(e.0 - c.0);
+    let mut d = if ccw { a1 - a0 } else { a0 - a1 };
+    while d <= 1e-12 {
+        d += TAU;
+    }
+    while d > TAU + 1e-12 {
+        d -= TAU;
+    }
+    // Coincident points: the loop above turns 0 into a full turn.
+    if (s.0 - e.0).hypot(s.1 - e.1) < 1e-9 {
+        return TAU;
+    }
+    d
+}
+
+/// Bounding box (min u, min v, max u, max v) of the arc.
+pub fn bbox(s: (f64, f64), e: (f64, f64), c: (f64, f64), ccw: bool) -> (f64, f64, f64, f64) {
+    let r = (s.0 - c.0).hypot(s.1 - c.1);
+    let mut b = (s.0.min(e.0), s.1.min(e.1), s.0.max(e.0), s.1.max(e.1));
+    let a0 = (s.1 - c.1).atan2(s.0 - c.0);
+    let sw = sweep(s, e, c, ccw);
+    for k in 0..4 {
+        let q = k as f64 * PI / 2.0;
+        // Angle travelled from the start to reach direction q.
+        let mut d = if ccw { q - a0 } else { a0 - q };
+        d = d.rem_euclid(TAU);
+        if d <= sw {
+            let (px, py) = (c.0 + r * q.cos(), c.1 + r * q.sin());
+            b = (b.0.min(px), b.1.min(py), b.2.max(px), b.3.max(py));
+        }
+    }
+    b
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: (f64, f64), b: (f64, f64)) -> bool {
+        (a.0 - b.0).abs() < 1e-9 && (a.1 - b.1).abs() < 1e-9
+    }
+
+    #[test]
+    fn radius_sign_picks_the_arc() {
+        // Quarter circle of radius 10 from (10,0) to (0,10): centres (0,0) or (10,10).
+        let s = (10.0, 0.0);
+        let e = (0.0, 10.0);
+        assert!(close(
+            center_from_radius(s, e, 10.0, true, 0.0).unwrap(),
+            (0.0, 0.0)
+        ));
+        assert!(close(
+            center_from_radius(s, e, -10.0, true, 0.0).unwrap(),
+            (10.0, 10.0)
+        ));
+        assert!(close(
+            center_from_radius(s, e, 10.0, false, 0.0).unwrap(),
+            (10.0, 10.0)
+        ));
+        assert!(close(
+            center_from_radius(s, e, -10.0, false, 0.0).unwrap(),
+            (0.0, 0.0)
+        ));
+    }
+
+    #[test]
+    fn half_circle_and_too_small_radius() {
+        let c = center_from_radius((0.0, 0.0), (20.0, 0.0), 10.0, false, 0.0).unwrap();
+        assert!(close(c, (10.0, 0.0)));
+        assert!(matches!(
+            center_from_radius((0.0, 0.0), (20.0, 0.0), 9.0, false, 0.01),
+            Err(ArcError::RadiusTooSmall { .. })
+        ));
+        // Within tolerance: a half circle.
+        let c = center_from_radius((0.0, 0.0), (20.0, 0.0), 9.995, false, 0.01).unwrap();
+        assert!(close(c, (10.0, 0.0)));
+    }
+
+    #[test]
+    fn sweep_angles() {
+        let c = (0.0, 0.0);
+        assert!((sweep((10.0, 0.0), (0.0, 10.0), c, true) - PI / 2.0).abs() < 1e-12);
+        assert!((sweep((10.0, 0.0), (0.0, 10.0), c, false) - 3.0 * PI / 2.0).abs() < 1e-12);
+        assert!((sweep((10.0, 0.0), (10.0, 0.0), c, false) - TAU).abs() < 1e-12);
+    }
+
+    #[test]
+    fn end_point_check() {
+        assert!(check_end((10.0, 0.0), (0.0, 10.0), (0.0, 0.0), 0.01).is_ok());
+        assert!(matches!(
+            check_end((10.0, 0.0), (0.0, 10.5), (0.0, 0.0), 0.01),
+            Err(ArcError::EndNotOnCircle { .. })
+        ));
+        assert_eq!(
+            check_end((0.0, 0.0), (0.0, 0.0), (0.0, 0.0), 0.01),
+            Err(ArcError::ZeroRadius)
+        );
+    }
+
+    #[test]
+    fn bbox_includes_quadrant_points() {
+        // CCW half circle from (10,0) to (-10,0) passes (0,10).
+        let b = bbox((10.0, 0.0), (-10.0, 0.0), (0.0, 0.0), true);
+        assert!((b.3 - 10.0).abs() < 1e-12 && b.1.abs() < 1e-12);
+        // CW the other way passes (0,-10).
+        let b = bbox((10.0, 0.0), (-10.0, 0.0), (0.0, 0.0), false);
+        assert!((b.1 + 10.0).abs() < 1e-12 && b.3.abs() < 1e-12);
+    }
+}

@@ -1,0 +1,1691 @@
+//! The interpreter: a resumable step machine. [`Interp::step`] reads and
+//! executes blocks until it has the next canonical command, an alarm, or
+//! the end of the program. A block's commands are queued in execution
+//! order and handed out one per call.
+
+use std::collections::VecDeque;
+
+use kerf_canon::*;
+use kerf_lang::{
+    parse_block, Addr, Block, LexErrorKind, LexOptions, LineSource, Mark, ProgramRead, RawBlock,
+    Stmt, Val,
+};
+
+use crate::alarms::AlarmKind;
+use crate::arc::{self, ArcError};
+use crate::dialect::{Dialect, DialectId, MAction, MWhen, Support};
+use crate::machine::{MachineKind, Profile};
+use crate::macros::Vars;
+use crate::words::{WVal, Words, MAX_CODES};
+
+/// Operator-panel switches and run options.
+#[derive(Clone, Debug, Default)]
+pub struct Settings {
+    /// Block delete levels switched on (bit n = `/n`; a bare `/` is level 1).
+    pub block_skip: u16,
+    /// Optional stop (M01) switch.
+    pub optional_stop: bool,
+    /// Single block switch (recorded; a batch run does not pause).
+    pub single_block: bool,
+    /// Dry run switch (recorded for the planner).
+    pub dry_run: bool,
+    /// Most blocks executed before the loop guard stops the run
+    /// (0 = no limit).
+    pub max_blocks: u64,
+}
+
+/// What one call of [`Interp::step`] produced.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Step {
+    /// The next canonical command.
+    Event(Event),
+    /// The program has ended (M02/M30, end of tape, end of text).
+    End,
+    /// The program stopped on an alarm.
+    Alarm(Alarm),
+}
+
+/// Feed mode (group 05).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum FeedMode {
+    PerMin,
+    PerRev,
+    Inverse,
+}
+
+/// Modal state that the words of a block act on.
+#[derive(Clone, Debug)]
+struct State {
+    /// Active code (×10) per modal group.
+    modal: [u16; 32],
+    /// Current position, machine coordinates.
+    pos: Pos,
+    /// Work offsets G54…G59 (machine coordinates of each work zero).
+    wcs: [Pos; 6],
+    /// Active work system index.
+    wcs_idx: usize,
+    /// G92 / G50 shift.
+    shift: Pos,
+    metric: bool,
+    absolute: bool,
+    plane: Plane,
+    diameter: bool,
+    feed_mode: FeedMode,
+    /// Programmed feed in mm/min or mm/rev (None until an F is given).
+    feed: Option<f64>,
+    spindle: SpindleDir,
+    /// S as programmed (rpm, or surface speed in G96), in program units.
+    s: f64,
+    css: bool,
+    s_clamp: Option<f64>,
+    /// Emitted spindle state, to avoid repeating events.
+    last_rpm: f64,
+    tool: u32,
+    next_tool: u32,
+    offset: u32,
+    mist: bool,
+    flood: bool,
+}
+
+/// The interpreter.
+pub struct Interp {
+    profile: Profile,
+    dialect: &'static Dialect,
+    lex: LexOptions,
+    settings: Settings,
+    files: Vec<String>,
+    src: Option<LineSource>,
+    file_id: u32,
+    program_start: Mark,
+    raw: RawBlock,
+    block: Block,
+    words: Words,
+    queue: VecDeque<Event>,
+    finished: bool,
+    tape_started: bool,
+    st: State,
+    vars: Vars,
+    loops: Vec<(u32, Mark)>,
+    hurco_loops: Vec<(u32, Mark)>,
+    blocks: u64,
+    jumps: u64,
+    cur: SrcRef,
+    arc_tol: f64,
+}
+
+type R<T> = Result<T, Alarm>;
+
+impl Interp {
+    /// A new interpreter for a machine, positioned at the machine's start
+    /// position with the power-on modal state.
+    pub fn new(profile: Profile, settings: Settings) -> Interp {
+        let dialect = Dialect::get(profile.dialect);
+        let lex = LexOptions {
+            long_names: dialect.long_names,
+            loop_comments: dialect.hurco_syntax,
+            max_digits: profile.max_digits,
+            max_nesting: 5,
+        };
+        let mut modal = [0u16; 32];
+        for g in dialect.gcodes.iter().filter(|g| g.default) {
+            modal[g.group as usize] = g.code10;
+        }
+        let mut wcs = [[0.0; NAXES]; 6];
+        for (i, w) in wcs.iter_mut().enumerate() {
+            let key = format!("g5{}", 4 + i);
+            if let Some(m) = profile
+                .work_offsets
+                .get(&key)
+                .or_else(|| profile.work_offsets.get("g54"))
+            {
+                *w = Profile::pos_of(m);
+            }
+        }
+        let hx = dialect.id == DialectId::Hx;
+        let mut st = State {
+            modal,
+            pos: profile.start_position(),
+            wcs,
+            wcs_idx: 0,
+            shift: [0.0; NAXES],
+            metric: true,
+            absolute: true,
+            plane: if profile.kind == MachineKind::Lathe {
+                Plane::ZX
+            } else {
+                Plane::XY
+            },
+            diameter: dialect.diameter_default,
+            feed_mode: FeedMode::PerMin,
+            feed: None,
+            spindle: SpindleDir::Stop,
+            s: 0.0,
+            css: false,
+            s_clamp: None,
+            last_rpm: 0.0,
+            tool: 0,
+            next_tool: 0,
+            offset: 0,
+            mist: false,
+            flood: false,
+        };
+        // Apply the group defaults (and, on the HX, PI 144-150).
+        for grp in 1..32 {
+            let code = st.modal[grp];
+            if code != 0
+                || dialect
+                    .gcodes
+                    .iter()
+                    .any(|g| g.group as usize == grp && g.default && g.code10 == 0)
+            {
+                Self::apply_modal(&mut st, dialect.id, code);
+            }
+        }
+        if hx {
+            let p = |n: &str, d: f64| profile.param(n, d) as i64;
+            if p("PI 144", 0.0) == 1 {
+                st.modal[1] = 10;
+            }
+            match p("PI 145", 0.0) {
+                1 => st.plane = Plane::ZX,
+                2 => st.plane = Plane::YZ,
+                _ => {}
+            }
+            st.modal[16] = match st.plane {
+                Plane::XY => 170,
+                Plane::ZX => 180,
+                Plane::YZ => 190,
+            };
+            if p("PI 146", 0.0) == 1 {
+                st.absolute = false;
+                st.modal[3] = 910;
+            }
+            if p("PI 147", 1.0) == 0 {
+                st.metric = false;
+                st.modal[6] = 200;
+            }
+        }
+        let arc_tol = profile.param("arc_tolerance_mm", 0.02);
+        Interp {
+            profile,
+            dialect,
+            lex,
+            settings,
+            files: Vec::new(),
+            src: None,
+            file_id: 0,
+            program_start: Mark::default(),
+            raw: RawBlock::default(),
+            block: Block::default(),
+            words: Words::default(),
+            queue: VecDeque::with_capacity(16),
+            finished: false,
+            tape_started: false,
+            st,
+            vars: Vars::new(),
+            loops: Vec::new(),
+            hurco_loops: Vec::new(),
+            blocks: 0,
+            jumps: 0,
+            cur: SrcRef::default(),
+            arc_tol,
+        }
+    }
+
+    /// Loads the main program from a reader; `name` is used in source
+    /// references and messages.
+    pub fn load_main(&mut self, name: &str, reader: Box<dyn ProgramRead>) {
+        self.files.push(name.to_string());
+        self.file_id = (self.files.len() - 1) as u32;
+        let max = self.profile.max_block_chars.max(1);
+        self.src = Some(LineSource::new(reader, max, self.dialect.hurco_syntax));
+        self.program_start = Mark { offset: 0, line: 1 };
+    }
+
+    /// Sets the work offset of G54+`idx` (machine coordinates of its zero),
+    /// as loaded with `--offsets`.
+    pub fn set_work_offset(&mut self, idx: usize, origin: Pos) {
+        if idx < 6 {
+            self.st.wcs[idx] = origin;
+        }
+    }
+
+    /// The name of a file in source references.
+    pub fn file_name(&self, id: u32) -> &str {
+        self.files
+            .get(id as usize)
+            .map(String::as_str)
+            .unwrap_or("?")
+    }
+
+    /// The machine profile.
+    pub fn profile(&self) -> &Profile {
+        &self.profile
+    }
+
+    /// Blocks executed so far.
+    pub fn blocks(&self) -> u64 {
+        self.blocks
+    }
+
+    /// Current position in machine coordinates.
+    pub fn machine_position(&self) -> Pos {
+        self.st.pos
+    }
+
+    /// Current position in the active work coordinate system.
+    pub fn work_position(&self) -> Pos {
+        let o = self.origin();
+        let mut p = self.st.pos;
+        for i in 0..NAXES {
+            p[i] -= o[i];
+        }
+        p
+    }
+
+    /// The settings in force.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    fn origin(&self) -> Pos {
+        let w = &self.st.wcs[self.st.wcs_idx];
+        let mut o = [0.0; NAXES];
+        for i in 0..NAXES {
+            o[i] = w[i] + self.st.shift[i];
+        }
+        o
+    }
+
+    /// Runs until the next canonical command, an alarm or the end.
+    pub fn step(&mut self) -> Step {
+        loop {
+            if let Some(e) = self.queue.pop_front() {
+                return Step::Event(e);
+            }
+            if self.finished {
+                return Step::End;
+            }
+            match self.next_block() {
+                Ok(true) => {}
+                Ok(false) => {
+                    self.finished = true;
+                }
+                Err(a) => {
+                    self.finished = true;
+                    self.queue.clear();
+                    return Step::Alarm(a);
+                }
+            }
+        }
+    }
+
+    fn alarm(&self, k: AlarmKind, at: u32, msg: impl Into<String>) -> Alarm {
+        let (line, col) = self.raw.line_col(at as usize);
+        k.at(
+            self.dialect.id,
+            SrcRef {
+                file: self.file_id,
+                line,
+                col,
+            },
+            msg,
+        )
+    }
+
+    fn emit(&mut self, cmd: Canon) {
+        self.queue.push_back(Event {
+            src: self.cur,
+            tool: self.st.tool,
+            cmd,
+        });
+    }
+
+    /// Reads and executes one block. Ok(false) at the end of the program.
+    fn next_block(&mut self) -> R<bool> {
+        let src = match self.src.as_mut() {
+            Some(s) => s,
+            None => return Ok(false),
+        };
+        match src.next_block(&mut self.raw) {
+            Ok(true) => {}
+            Ok(false) => {
+                self.emit_end(0);
+                return Ok(false);
+            }
+            Err(e) => {
+                return Err(AlarmKind::Io.at(
+                    self.dialect.id,
+                    SrcRef {
+                        file: self.file_id,
+                        line: src.tell().line,
+                        col: 1,
+                    },
+                    format!("read error: {e}"),
+                ))
+            }
+        }
+        self.cur = SrcRef {
+            file: self.file_id,
+            line: self.raw.mark.line,
+            col: 1,
+        };
+        if self.raw.overlong {
+            let max = self.profile.max_block_chars;
+            return Err(self.alarm(
+                AlarmKind::BlockTooLong,
+                max as u32,
+                format!("block longer than {max} characters"),
+            ));
+        }
+        if let Err(e) = parse_block(&self.raw.text, &self.lex, &mut self.block) {
+            let kind = match e.kind {
+                LexErrorKind::UnexpectedChar(_) => AlarmKind::IllegalAddress,
+                LexErrorKind::MissingValue => AlarmKind::MissingValue,
+                LexErrorKind::UnterminatedComment => AlarmKind::UnterminatedComment,
+                LexErrorKind::TooManyDigits => AlarmKind::TooManyDigits,
+                LexErrorKind::BadNumber | LexErrorKind::DuplicateNumber => {
+                    AlarmKind::BadSequenceNumber
+                }
+                _ => AlarmKind::BadExpression,
+            };
+            return Err(self.alarm(kind, e.at, e.kind.message()));
+        }
+        if self.block.percent {
+            if self.tape_started {
+                self.emit_end(0);
+                return Ok(false);
+            }
+            self.tape_started = true;
+            return Ok(true);
+        }
+        self.tape_started = true;
+        // Block delete: a marker whose level is switched on skips the rest.
+        let mut nwords = self.block.words.len();
+        for &(idx, mask) in &self.block.deletes {
+            if mask & self.settings.block_skip != 0 {
+                if idx == 0 {
+                    return Ok(true);
+                }
+                nwords = nwords.min(idx as usize);
+                break;
+            }
+        }
+        self.blocks += 1;
+        if self.settings.max_blocks != 0 && self.blocks > self.settings.max_blocks {
+            return Err(self.alarm(
+                AlarmKind::LoopLimit,
+                0,
+                format!(
+                    "more than {} blocks executed (loop guard)",
+                    self.settings.max_blocks
+                ),
+            ));
+        }
+        if let Some(l) = self.block.loop_cmd {
+            self.hurco_loop(l)?;
+        }
+        if let Some(stmt) = self.block.stmt {
+            return self.statement(stmt);
+        }
+        if nwords == 0 {
+            return Ok(true);
+        }
+        self.collect(nwords)?;
+        self.execute()
+    }
+
+    fn emit_end(&mut self, code: u32) {
+        self.emit(Canon::End { code });
+    }
+
+    // ---- words -----------------------------------------------------------
+
+    /// Evaluates the block's words into `self.words`, checking addresses.
+    fn collect(&mut self, nwords: usize) -> R<()> {
+        self.words.clear();
+        for i in 0..nwords {
+            let w = self.block.words[i];
+            let (v, point) = match w.val {
+                Val::Num(n) => (Some(n.value), n.point),
+                Val::Expr(e) => (self.eval(e, w.at)?, true),
+            };
+            // A word whose value is vacant is omitted.
+            let Some(v) = v else { continue };
+            let wv = WVal { v, point, at: w.at };
+            match w.addr {
+                Addr::L(b'G') => {
+                    if self.words.ng >= MAX_CODES {
+                        return Err(self.alarm(
+                            AlarmKind::OutOfRange,
+                            w.at,
+                            "too many G codes in one block",
+                        ));
+                    }
+                    let c10 = (v * 10.0).round();
+                    if !(0.0..=65535.0).contains(&c10) || ((v * 10.0) - c10).abs() > 1e-6 {
+                        return Err(self.alarm(
+                            AlarmKind::UnknownG,
+                            w.at,
+                            format!("G{} is not a G code of this control", fmt_num(v)),
+                        ));
+                    }
+                    self.words.g[self.words.ng] = (c10 as u16, w.at);
+                    self.words.ng += 1;
+                }
+                Addr::L(b'M') => {
+                    let max_m = if self.dialect.id == DialectId::Hurco {
+                        MAX_CODES
+                    } else {
+                        3
+                    };
+                    if self.words.nm >= max_m {
+                        return Err(self.alarm(
+                            AlarmKind::MCodeConflict,
+                            w.at,
+                            format!("more than {max_m} M codes in one block"),
+                        ));
+                    }
+                    if v < 0.0 || v.fract() != 0.0 || v > 65535.0 {
+                        return Err(self.alarm(
+                            AlarmKind::UnknownM,
+                            w.at,
+                            format!("M{} is not an M code of this control", fmt_num(v)),
+                        ));
+                    }
+                    self.words.m[self.words.nm] = (v as u32, w.at);
+                    self.words.nm += 1;
+                }
+                Addr::L(l) => {
+                    if !self.dialect.letters.contains(&l) {
+                        return Err(self.alarm(
+                            AlarmKind::IllegalAddress,
+                            w.at,
+                            format!("address {} is not used by this control", l as char),
+                        ));
+                    }
+                    if let Some(ax) = Axis::from_letter(l) {
+                        if !self.profile.has_axis(ax) && !self.letter_is_argument(l) {
+                            return Err(self.alarm(
+                                AlarmKind::NoSuchAxis,
+                                w.at,
+                                format!("this machine has no {} axis", l as char),
+                            ));
+                        }
+                    }
+                    let slot = &mut self.words.letters[(l - b'A') as usize];
+                    if slot.is_some() {
+                        return Err(self.alarm(
+                            AlarmKind::DuplicateAddress,
+                            w.at,
+                            format!("address {} twice in one block", l as char),
+                        ));
+                    }
+                    *slot = Some(wv);
+                }
+                Addr::Comma(c) => {
+                    if self.dialect.id != DialectId::Hx || !matches!(c, b'C' | b'R') {
+                        return Err(self.alarm(
+                            AlarmKind::IllegalAddress,
+                            w.at,
+                            format!("address ,{} is not used by this control", c as char),
+                        ));
+                    }
+                    return Err(self.alarm(
+                        AlarmKind::NotYetSupported,
+                        w.at,
+                        format!(
+                            ",{} chamfer/corner rounding is not yet supported (issue 4)",
+                            c as char
+                        ),
+                    ));
+                }
+                Addr::Long(k) => {
+                    if self.words.nlong >= self.words.long.len() {
+                        return Err(self.alarm(
+                            AlarmKind::OutOfRange,
+                            w.at,
+                            "too many parameters in one block",
+                        ));
+                    }
+                    self.words.long[self.words.nlong] = (k, wv);
+                    self.words.nlong += 1;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Letters that name an axis but are arguments of a code on machines
+    /// without that axis (a lathe's C as a chamfer, B in some cycles …).
+    fn letter_is_argument(&self, l: u8) -> bool {
+        self.profile.kind == MachineKind::Lathe && matches!(l, b'C' | b'A' | b'B')
+    }
+
+    // ---- execution ---------------------------------------------------------
+
+    fn execute(&mut self) -> R<bool> {
+        let d = self.dialect;
+        // Classify G codes.
+        let mut motion: Option<(u16, u32)> = None;
+        let mut one_shot: [(u16, u32); MAX_CODES] = [(0, 0); MAX_CODES];
+        let mut n_one = 0;
+        for i in 0..self.words.ng {
+            let (c, at) = self.words.g[i];
+            let Some(g) = d.gcode(c) else {
+                return Err(self.alarm(
+                    AlarmKind::UnknownG,
+                    at,
+                    format!("G{} is not a G code of this control", fmt_code(c)),
+                ));
+            };
+            if let Support::Later(which) = g.support {
+                return Err(self.alarm(
+                    AlarmKind::NotYetSupported,
+                    at,
+                    format!(
+                        "G{} ({}) is not yet supported: {which}",
+                        fmt_code(c),
+                        g.name
+                    ),
+                ));
+            }
+            if g.group == 1 {
+                motion = Some((c, at));
+            } else if g.group == 0 {
+                one_shot[n_one] = (c, at);
+                n_one += 1;
+            }
+        }
+        // Classify M codes.
+        for i in 0..self.words.nm {
+            let (m, at) = self.words.m[i];
+            if self.mcode(m).is_none() {
+                return Err(self.alarm(
+                    AlarmKind::UnknownM,
+                    at,
+                    format!("M{m:02} is not an M code of this control"),
+                ));
+            }
+            if let Some(mc) = self.mcode(m) {
+                if matches!(mc.action, MAction::SubCall | MAction::SubReturn) {
+                    return Err(self.alarm(AlarmKind::NotYetSupported, at, format!("M{m} ({}) is not yet supported: custom macro B and subprograms (issue 3)", mc.name)));
+                }
+            }
+        }
+        let hurco = d.hurco_order;
+        // Hurco: job-sync M codes first.
+        if hurco {
+            self.run_m(|m| (100..=199).contains(&m.0) && m.1 != MWhen::After, true)?;
+        }
+        // Modal (and specific) G codes.
+        for i in 0..self.words.ng {
+            let (c, _) = self.words.g[i];
+            let g = d.gcode(c).expect("checked");
+            if g.group != 0 && g.group != 1 {
+                self.st.modal[g.group as usize] = c;
+                Self::apply_modal(&mut self.st, d.id, c);
+                self.mode_event(c);
+            }
+        }
+        if let Some((c, _)) = motion {
+            self.st.modal[1] = c;
+        }
+        // Coordinate-setting one-shots (G92 / G50 / G59) act before motion.
+        let mut g53 = false;
+        let mut dwell = false;
+        let mut g09 = false;
+        for &(c, at) in &one_shot[..n_one] {
+            match (d.id, c) {
+                (_, 40) => dwell = true,
+                (_, 90) => g09 = true,
+                (_, 530) => g53 = true,
+                (DialectId::Hx, 920) | (DialectId::Hurco, 920) | (DialectId::Puma, 500) => {
+                    self.coordinate_setting(at)?
+                }
+                (DialectId::Hurco, 590) => self.st.shift = [0.0; NAXES],
+                _ => {}
+            }
+        }
+        if hurco {
+            self.run_m(|m| matches!(m.0, 48 | 49), true)?;
+            self.run_m(|m| matches!(m.0, 7 | 8), true)?;
+            self.t_word()?;
+            self.spindle_words()?;
+            if dwell {
+                self.dwell()?;
+            }
+            self.f_word(dwell)?;
+        } else {
+            self.f_word(dwell)?;
+            self.t_word()?;
+            self.spindle_words()?;
+            self.run_m(
+                |m| {
+                    m.1 == MWhen::Before && !matches!(m.2, MAction::SpindleCw | MAction::SpindleCcw)
+                },
+                true,
+            )?;
+            if dwell {
+                self.dwell()?;
+            }
+        }
+        if g09 {
+            self.emit(Canon::Mode(ModeChange::ExactStopBlock));
+        }
+        let no_motion = dwell
+            || n_one > 0
+                && one_shot[..n_one].iter().any(|&(c, _)| {
+                    matches!(
+                        (d.id, c),
+                        (DialectId::Hx, 920) | (DialectId::Hurco, 920) | (DialectId::Puma, 500)
+                    )
+                });
+        if !no_motion {
+            if g53 {
+                self.g53()?;
+            } else {
+                self.motion()?;
+            }
+        }
+        // After-motion M codes, then the end-of-block system codes.
+        self.run_m(
+            |m| {
+                m.1 == MWhen::After
+                    && !matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End)
+            },
+            false,
+        )?;
+        self.run_m(
+            |m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End),
+            false,
+        )?;
+        Ok(!self.finished_by_end())
+    }
+
+    fn finished_by_end(&self) -> bool {
+        self.queue
+            .back()
+            .is_some_and(|e| matches!(e.cmd, Canon::End { .. }))
+    }
+
+    fn mcode(&self, m: u32) -> Option<crate::dialect::MCode> {
+        if let Some(mc) = self.dialect.mcode(m.min(65535) as u16) {
+            return Some(*mc);
+        }
+        if self.dialect.id == DialectId::Hurco && (100..=199).contains(&m) {
+            return Some(crate::dialect::MCode {
+                code: m as u16,
+                name: "job syncing",
+                when: MWhen::Before,
+                action: MAction::Aux,
+            });
+        }
+        None
+    }
+
+    /// Executes the block's M codes selected by `pick(code, when, action)`
+    /// (skipping spindle start codes, which `spindle_words` handles).
+    fn run_m(&mut self, pick: impl Fn((u32, MWhen, MAction)) -> bool, _before: bool) -> R<()> {
+        for i in 0..self.words.nm {
+            let (m, _) = self.words.m[i];
+            let mc = self.mcode(m).expect("checked");
+            if matches!(mc.action, MAction::SpindleCw | MAction::SpindleCcw) {
+                continue;
+            }
+            if !pick((m, mc.when, mc.action)) {
+                continue;
+            }
+            match mc.action {
+                MAction::SpindleStop => {
+                    if self.st.spindle != SpindleDir::Stop {
+                        self.st.spindle = SpindleDir::Stop;
+                        self.emit(Canon::Spindle {
+                            dir: SpindleDir::Stop,
+                            rpm: 0.0,
+                            css: None,
+                        });
+                    }
+                    self.st.last_rpm = 0.0;
+                }
+                MAction::CoolantMist | MAction::CoolantFlood | MAction::CoolantOff => {
+                    match mc.action {
+                        MAction::CoolantMist => self.st.mist = true,
+                        MAction::CoolantFlood => self.st.flood = true,
+                        _ => {
+                            self.st.mist = false;
+                            self.st.flood = false;
+                        }
+                    }
+                    self.emit(Canon::Coolant {
+                        mist: self.st.mist,
+                        flood: self.st.flood,
+                    });
+                }
+                MAction::ToolChange => {
+                    self.st.tool = self.st.next_tool;
+                    self.emit(Canon::Tool {
+                        tool: self.st.tool,
+                        offset: self.st.offset,
+                        change: true,
+                    });
+                }
+                MAction::Stop => self.emit(Canon::Stop { optional: false }),
+                MAction::OptionalStop => {
+                    if self.settings.optional_stop {
+                        self.emit(Canon::Stop { optional: true });
+                    }
+                }
+                MAction::End => {
+                    self.emit_end(m);
+                    self.finished = true;
+                }
+                MAction::Aux => self.emit(Canon::Aux { m, name: mc.name }),
+                MAction::SpindleCw
+                | MAction::SpindleCcw
+                | MAction::SubCall
+                | MAction::SubReturn => {}
+            }
+        }
+        Ok(())
+    }
+
+    fn apply_modal(st: &mut State, d: DialectId, c: u16) {
+        match c {
+            170 => st.plane = Plane::XY,
+            180 => st.plane = Plane::ZX,
+            190 => st.plane = Plane::YZ,
+            200 => st.metric = false,
+            210 => st.metric = true,
+            540..=590 if d != DialectId::Hurco => st.wcs_idx = ((c - 540) / 10) as usize,
+            900 if d != DialectId::Puma => st.absolute = true,
+            910 if d != DialectId::Puma => st.absolute = false,
+            930 => st.feed_mode = FeedMode::Inverse,
+            940 => st.feed_mode = FeedMode::PerMin,
+            950 => st.feed_mode = FeedMode::PerRev,
+            980 if d == DialectId::Puma => st.feed_mode = FeedMode::PerMin,
+            990 if d == DialectId::Puma => st.feed_mode = FeedMode::PerRev,
+            960 => st.css = true,
+            970 => st.css = false,
+            70 if d == DialectId::Hurco => st.diameter = false,
+            80 if d == DialectId::Hurco => st.diameter = true,
+            _ => {}
+        }
+    }
+
+    fn mode_event(&mut self, c: u16) {
+        let m = match c {
+            610 => ModeChange::ExactStopMode(true),
+            620 => ModeChange::CornerOverride,
+            630 => ModeChange::TappingMode,
+            640 => ModeChange::CuttingMode,
+            103 => ModeChange::HighSpeed(true),
+            113 => ModeChange::HighSpeed(false),
+            _ => return,
+        };
+        self.emit(Canon::Mode(m));
+    }
+
+    // ---- numbers -------------------------------------------------------------
+
+    fn unit(&self) -> f64 {
+        if self.st.metric {
+            1.0
+        } else {
+            25.4
+        }
+    }
+
+    /// A linear dimension in mm (least-input-increment rule applied).
+    fn linear(&self, w: WVal) -> f64 {
+        let mut v = w.v;
+        if !w.point && !self.profile.calculator_decimal {
+            v *= if self.st.metric { 0.001 } else { 0.0001 };
+        }
+        v * self.unit()
+    }
+
+    /// A rotary dimension in degrees.
+    fn angular(&self, w: WVal) -> f64 {
+        if !w.point && !self.profile.calculator_decimal {
+            w.v * 0.001
+        } else {
+            w.v
+        }
+    }
+
+    /// Seconds from a dwell-time word (X/U: least increment 0.001 s).
+    fn seconds(&self, w: WVal) -> f64 {
+        if !w.point && !self.profile.calculator_decimal {
+            w.v * 0.001
+        } else {
+            w.v
+        }
+    }
+
+    /// Range check of 002 Tables 2-3 for Hurco geometric words.
+    fn check_range(&self, l: u8, w: WVal) -> R<()> {
+        if self.dialect.id != DialectId::Hurco {
+            return Ok(());
+        }
+        let limit = match l {
+            b'X' | b'Z' | b'I' | b'K' | b'R' | b'U' | b'W' => {
+                if self.st.metric {
+                    21463.0
+                } else {
+                    845.0
+                }
+            }
+            b'F' => {
+                if self.st.metric {
+                    21463.0
+                } else {
+                    845.0
+                }
+            }
+            b'E' => 9999.0,
+            b'T' | b'N' => 999_999_999.0,
+            b'S' => 2e9,
+            _ => return Ok(()),
+        };
+        if w.v.abs() > limit {
+            return Err(self.alarm(
+                AlarmKind::OutOfRange,
+                w.at,
+                format!(
+                    "{} value {} out of range (±{})",
+                    l as char,
+                    fmt_num(w.v),
+                    fmt_num(limit)
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    // ---- F S T ---------------------------------------------------------------
+
+    fn f_word(&mut self, dwell: bool) -> R<()> {
+        if dwell && self.dialect.id == DialectId::Hurco {
+            return Ok(());
+        }
+        if let Some(f) = self.words.get(b'F') {
+            self.check_range(b'F', f)?;
+            if f.v < 0.0 {
+                return Err(self.alarm(AlarmKind::OutOfRange, f.at, "negative feedrate"));
+            }
+            let v = if self.st.feed_mode == FeedMode::Inverse {
+                f.v
+            } else {
+                f.v * self.unit()
+            };
+            self.st.feed = Some(v);
+        }
+        Ok(())
+    }
+
+    fn t_word(&mut self) -> R<()> {
+        let Some(t) = self.words.get(b'T') else {
+            return Ok(());
+        };
+        self.check_range(b'T', t)?;
+        if t.v < 0.0 || t.v.fract() != 0.0 || t.v > 999_999_999.0 {
+            return Err(self.alarm(
+                AlarmKind::OutOfRange,
+                t.at,
+                format!("T{} is not a tool code", fmt_num(t.v)),
+            ));
+        }
+        let v = t.v as u32;
+        match self.profile.kind {
+            MachineKind::Mill => {
+                if v > self.profile.tools.count {
+                    return Err(self.alarm(
+                        AlarmKind::OutOfRange,
+                        t.at,
+                        format!(
+                            "T{v}: the tool changer has {} pockets",
+                            self.profile.tools.count
+                        ),
+                    ));
+                }
+                self.st.next_tool = v;
+                self.emit(Canon::Tool {
+                    tool: v,
+                    offset: self.st.offset,
+                    change: false,
+                });
+            }
+            MachineKind::Lathe => {
+                // Turret: T(tool)(offset), the last two digits the offset.
+                let (tool, off) = (v / 100, v % 100);
+                if tool > self.profile.tools.count {
+                    return Err(self.alarm(
+                        AlarmKind::OutOfRange,
+                        t.at,
+                        format!("T{v}: the turret has {} stations", self.profile.tools.count),
+                    ));
+                }
+                let change = tool != 0 && tool != self.st.tool;
+                if tool != 0 {
+                    self.st.tool = tool;
+                }
+                self.st.next_tool = self.st.tool;
+                self.st.offset = off;
+                self.emit(Canon::Tool {
+                    tool: self.st.tool,
+                    offset: off,
+                    change,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// S word and spindle start codes, combined into one spindle event.
+    fn spindle_words(&mut self) -> R<()> {
+        let mut dir = self.st.spindle;
+        for i in 0..self.words.nm {
+            let (m, _) = self.words.m[i];
+            match self.mcode(m).map(|c| c.action) {
+                Some(MAction::SpindleCw) => dir = SpindleDir::Cw,
+                Some(MAction::SpindleCcw) => dir = SpindleDir::Ccw,
+                _ => {}
+            }
+        }
+        if let Some(s) = self.words.get(b'S') {
+            self.check_range(b'S', s)?;
+            if s.v < 0.0 {
+                return Err(self.alarm(AlarmKind::OutOfRange, s.at, "negative spindle speed"));
+            }
+            self.st.s = s.v;
+        }
+        let changed_dir = dir != self.st.spindle;
+        self.st.spindle = dir;
+        if dir == SpindleDir::Stop {
+            return Ok(());
+        }
+        let rpm = self.rpm();
+        if changed_dir || (rpm - self.st.last_rpm).abs() > 1e-9 {
+            self.st.last_rpm = rpm;
+            let css = if self.st.css {
+                Some(self.st.s * if self.st.metric { 1.0 } else { 0.3048 })
+            } else {
+                None
+            };
+            self.emit(Canon::Spindle { dir, rpm, css });
+        }
+        Ok(())
+    }
+
+    /// Spindle rpm for the programmed S at the current position.
+    fn rpm(&self) -> f64 {
+        let mut rpm = if self.st.css {
+            // Surface speed in m/min (ft/min in inch) at the current radius.
+            let vc = self.st.s * if self.st.metric { 1000.0 } else { 304.8 };
+            let r = self.work_position()[0].abs().max(1e-3);
+            vc / (std::f64::consts::TAU * r)
+        } else {
+            self.st.s
+        };
+        if let Some(c) = self.st.s_clamp {
+            rpm = rpm.min(c);
+        }
+        rpm.min(self.profile.spindle.max_rpm)
+    }
+
+    // ---- one-shots -------------------------------------------------------------
+
+    fn dwell(&mut self) -> R<()> {
+        let w = &self.words;
+        let (secs, revs) = if self.dialect.id == DialectId::Hurco {
+            match w.get(b'F') {
+                Some(f) if self.st.feed_mode == FeedMode::PerRev => (0.0, f.v),
+                Some(f) => (f.v, 0.0),
+                None => {
+                    return Err(self.alarm(
+                        AlarmKind::MissingArgument,
+                        self.words.g[0].1,
+                        "G04 needs F (dwell time)",
+                    ))
+                }
+            }
+        } else if let Some(p) = w.get(b'P') {
+            if p.point {
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    p.at,
+                    "G04 P is in milliseconds without a decimal point",
+                ));
+            }
+            (p.v / 1000.0, 0.0)
+        } else if let Some(x) = w.get(b'X').or(w.get(b'U')) {
+            (self.seconds(x), 0.0)
+        } else {
+            (0.0, 0.0)
+        };
+        if secs < 0.0 || revs < 0.0 {
+            return Err(self.alarm(AlarmKind::OutOfRange, 0, "negative dwell"));
+        }
+        self.emit(Canon::Dwell {
+            seconds: secs,
+            revolutions: revs,
+        });
+        Ok(())
+    }
+
+    /// G92 (HX, Hurco) / G50 (PUMA): make the current position read as the
+    /// given values; an S alone sets the spindle speed clamp.
+    fn coordinate_setting(&mut self, at: u32) -> R<()> {
+        if let Some(s) = self.words.get(b'S') {
+            if self.dialect.id != DialectId::Hurco {
+                self.st.s_clamp = Some(s.v);
+                self.words.take(b'S');
+            }
+        }
+        let cur = self.work_position();
+        let mut any = false;
+        for ax in Axis::ALL {
+            let l = ax_letter(ax);
+            let mut target = None;
+            if let Some(w) = self.words.get(l) {
+                target = Some(self.axis_value(ax, w));
+            } else if let Some(inc) = self.uvw(ax) {
+                let w = self.words.get(inc).expect("present");
+                target = Some(cur[ax as usize] + self.axis_value(ax, w));
+            }
+            if let Some(t) = target {
+                any = true;
+                // New shift so that pos - (wcs + shift) = t.
+                let i = ax as usize;
+                self.st.shift[i] = self.st.pos[i] - self.st.wcs[self.st.wcs_idx][i] - t;
+            }
+        }
+        let _ = (any, at);
+        Ok(())
+    }
+
+    fn g53(&mut self) -> R<()> {
+        let mut to = self.st.pos;
+        let mut any = false;
+        for ax in Axis::ALL {
+            if let Some(w) = self.words.get(ax_letter(ax)) {
+                to[ax as usize] = self.axis_value(ax, w);
+                any = true;
+            }
+        }
+        if !any {
+            return Ok(());
+        }
+        let at = self
+            .words
+            .g
+            .iter()
+            .take(self.words.ng)
+            .find(|g| g.0 == 530)
+            .map(|g| g.1)
+            .unwrap_or(0);
+        self.check_travel(&to, at)?;
+        let m = Motion {
+            to: self.work_of(&to),
+            mto: to,
+        };
+        self.st.pos = to;
+        self.emit(Canon::Rapid {
+            m,
+            linear: self.linear_rapid(),
+        });
+        Ok(())
+    }
+
+    fn linear_rapid(&self) -> bool {
+        self.dialect.id == DialectId::Hurco
+    }
+
+    fn work_of(&self, mpos: &Pos) -> Pos {
+        let o = self.origin();
+        let mut p = *mpos;
+        for i in 0..NAXES {
+            p[i] -= o[i];
+        }
+        p
+    }
+
+    /// The value of an axis word in mm (X as a radius on lathes).
+    fn axis_value(&self, ax: Axis, w: WVal) -> f64 {
+        let mut v = if ax.is_rotary() {
+            self.angular(w)
+        } else {
+            self.linear(w)
+        };
+        if ax == Axis::X && self.profile.kind == MachineKind::Lathe && self.st.diameter {
+            v /= 2.0;
+        }
+        v
+    }
+
+    /// The incremental letter for an axis, if present (PUMA U/W).
+    fn uvw(&self, ax: Axis) -> Option<u8> {
+        if !self.dialect.uvw_incremental {
+            return None;
+        }
+        let l = match ax {
+            Axis::X => b'U',
+            Axis::Y => b'V',
+            Axis::Z => b'W',
+            Axis::C => b'H',
+            _ => return None,
+        };
+        self.words.has(l).then_some(l)
+    }
+
+    // ---- motion ------------------------------------------------------------------
+
+    /// The block's end point in work coordinates, and whether any axis moved.
+    fn target(&self) -> R<(Pos, bool)> {
+        let cur = self.work_position();
+        let mut t = cur;
+        let mut any = false;
+        for ax in Axis::ALL {
+            let l = ax_letter(ax);
+            let i = ax as usize;
+            let abs_w = self.words.get(l).filter(|_| self.profile.has_axis(ax));
+            let inc_l = self.uvw(ax);
+            if let (Some(w), Some(_)) = (abs_w, inc_l) {
+                return Err(self.alarm(
+                    AlarmKind::DuplicateAddress,
+                    w.at,
+                    format!("{} and its incremental address in one block", l as char),
+                ));
+            }
+            if let Some(w) = abs_w {
+                self.check_range(l, w)?;
+                let v = self.axis_value(ax, w);
+                t[i] = if self.st.absolute { v } else { cur[i] + v };
+                any = true;
+            } else if let Some(il) = inc_l {
+                let w = self.words.get(il).expect("present");
+                self.check_range(il, w)?;
+                t[i] = cur[i] + self.axis_value(ax, w);
+                any = true;
+            }
+        }
+        Ok((t, any))
+    }
+
+    fn to_machine(&self, w: &Pos) -> Pos {
+        let o = self.origin();
+        let mut m = *w;
+        for i in 0..NAXES {
+            m[i] += o[i];
+        }
+        m
+    }
+
+    fn check_travel(&self, m: &Pos, at: u32) -> R<()> {
+        for ax in Axis::ALL {
+            if let Some(a) = self.profile.axis(ax) {
+                let v = m[ax as usize];
+                if v < a.min - 1e-9 || v > a.max + 1e-9 {
+                    let side = if v > a.max { '+' } else { '-' };
+                    return Err(self.alarm(
+                        AlarmKind::Overtravel,
+                        at,
+                        format!(
+                            "overtravel {side}{}: machine {} = {:.3} outside [{}, {}]",
+                            ax.name().to_uppercase(),
+                            ax.name().to_uppercase(),
+                            v,
+                            a.min,
+                            a.max
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn motion_at(&self) -> u32 {
+        self.words
+            .gs()
+            .iter()
+            .find(|g| matches!(g.0, 0 | 10 | 20 | 30))
+            .map(|g| g.1)
+            .unwrap_or(0)
+    }
+
+    fn feed(&self, at: u32) -> R<Feed> {
+        match self.st.feed {
+            None => Err(self.alarm(
+                AlarmKind::NoFeed,
+                at,
+                "cutting move without a feedrate (no F commanded)",
+            )),
+            Some(f) if f <= 0.0 => Err(self.alarm(AlarmKind::NoFeed, at, "feedrate is zero")),
+            Some(f) => Ok(match self.st.feed_mode {
+                FeedMode::PerMin => Feed::PerMin(f.min(self.profile.feed.max_cutting)),
+                FeedMode::PerRev => Feed::PerRev(f),
+                FeedMode::Inverse => Feed::InverseTime(f),
+            }),
+        }
+    }
+
+    fn motion(&mut self) -> R<()> {
+        let mode = self.st.modal[1];
+        let (tw, any) = self.target()?;
+        let at = self.motion_at();
+        match mode {
+            0 | 10 => {
+                if !any {
+                    return Ok(());
+                }
+                let mto = self.to_machine(&tw);
+                self.check_travel(&mto, at)?;
+                let m = Motion { to: tw, mto };
+                let cmd = if mode == 0 {
+                    Canon::Rapid {
+                        m,
+                        linear: self.linear_rapid(),
+                    }
+                } else {
+                    Canon::Feed {
+                        m,
+                        feed: self.feed(at)?,
+                    }
+                };
+                self.st.pos = mto;
+                self.emit(cmd);
+            }
+            20 | 30 => self.arc(tw, any, mode == 30, at)?,
+            _ => {}
+        }
+        Ok(())
+    }
+
+    fn arc(&mut self, tw: Pos, any: bool, ccw: bool, at: u32) -> R<()> {
+        let plane = self.st.plane;
+        let (a1, a2, _) = plane.axes();
+        let cur = self.work_position();
+        let s = (cur[a1], cur[a2]);
+        let e = (tw[a1], tw[a2]);
+        let has_ijk = [b'I', b'J', b'K'].iter().any(|&l| self.words.has(l));
+        let center = if let Some(r) = self.words.get(b'R') {
+            self.check_range(b'R', r)?;
+            let rv = self.linear(r);
+            if !any || (s.0 - e.0).hypot(s.1 - e.1) < 1e-9 {
+                // R with the end at the start: no movement (Fanuc).
+                if any {
+                    self.linear_only(tw)?;
+                }
+                return Ok(());
+            }
+            match arc::center_from_radius(s, e, rv, ccw, self.arc_tol) {
+                Ok(c) => c,
+                Err(_) => {
+                    let half = (s.0 - e.0).hypot(s.1 - e.1) / 2.0;
+                    return Err(self.alarm(
+                        AlarmKind::ArcRadius,
+                        r.at,
+                        format!(
+                            "arc radius {:.4} is smaller than half the chord {:.4}",
+                            rv.abs(),
+                            half
+                        ),
+                    ));
+                }
+            }
+        } else if has_ijk {
+            let off = |l: u8| -> R<f64> {
+                match self.words.get(l) {
+                    Some(w) => {
+                        self.check_range(l, w)?;
+                        Ok(self.linear(w))
+                    }
+                    None => Ok(0.0),
+                }
+            };
+            // I, J, K belong to X, Y, Z; lathe I is a radius value.
+            let o = [off(b'I')?, off(b'J')?, off(b'K')?];
+            (s.0 + o[a1.min(2)], s.1 + o[a2.min(2)])
+        } else {
+            if !any {
+                return Ok(());
+            }
+            return Err(self.alarm(
+                AlarmKind::ArcNoCenter,
+                at,
+                "arc without centre (I/J/K) or radius (R)",
+            ));
+        };
+        let bad_at = [b'I', b'J', b'K', b'R']
+            .iter()
+            .find_map(|&l| self.words.get(l))
+            .map(|w| w.at)
+            .unwrap_or(at);
+        match arc::check_end(s, e, center, self.arc_tol) {
+            Ok(_) => {}
+            Err(ArcError::ZeroRadius) => return Err(self.alarm(AlarmKind::ArcNoCenter, bad_at, "arc centre coincides with the start point")),
+            Err(ArcError::EndNotOnCircle { r_start, r_end }) => {
+                return Err(self.alarm(
+                    AlarmKind::ArcEndPoint,
+                    bad_at,
+                    format!("arc end point is not on the circle: start radius {r_start:.4}, end radius {r_end:.4}"),
+                ))
+            }
+            Err(ArcError::RadiusTooSmall { .. }) => unreachable!(),
+        }
+        let feed = self.feed(at)?;
+        // Travel: the arc's extremes in the plane, the end point elsewhere.
+        let (u0, v0, u1, v1) = arc::bbox(s, e, center, ccw);
+        for (u, v) in [(u0, v0), (u1, v1)] {
+            let mut p = tw;
+            p[a1] = u;
+            p[a2] = v;
+            self.check_travel(&self.to_machine(&p), at)?;
+        }
+        let mto = self.to_machine(&tw);
+        self.check_travel(&mto, at)?;
+        let mut c = cur;
+        c[a1] = center.0;
+        c[a2] = center.1;
+        let mcenter = self.to_machine(&c);
+        let dir = if ccw { ArcDir::Ccw } else { ArcDir::Cw };
+        self.st.pos = mto;
+        self.emit(Canon::Arc {
+            m: Motion { to: tw, mto },
+            center: c,
+            mcenter,
+            dir,
+            plane,
+            turns: 0,
+            feed,
+        });
+        Ok(())
+    }
+
+    /// An arc with R whose plane end point equals its start: only the other
+    /// axes move (helical with zero sweep), as a feed.
+    fn linear_only(&mut self, tw: Pos) -> R<()> {
+        let at = self.motion_at();
+        let mto = self.to_machine(&tw);
+        if mto == self.st.pos {
+            return Ok(());
+        }
+        self.check_travel(&mto, at)?;
+        let feed = self.feed(at)?;
+        self.st.pos = mto;
+        self.emit(Canon::Feed {
+            m: Motion { to: tw, mto },
+            feed,
+        });
+        Ok(())
+    }
+
+    // ---- macro statements ----------------------------------------------------------
+
+    fn eval(&mut self, e: kerf_lang::ExprId, at: u32) -> R<Option<f64>> {
+        let r = crate::macros::eval(&self.block.exprs, e, &self.vars);
+        r.map_err(|m| self.alarm(m.kind, at, m.message))
+    }
+
+    fn statement(&mut self, stmt: Stmt) -> R<bool> {
+        let at = self.block.stmt_at;
+        match stmt {
+            Stmt::Assign { var, value } => {
+                let idx = self.eval(var, at)?;
+                let v = self.eval(value, at)?;
+                self.assign(idx, v, at)?;
+            }
+            Stmt::IfThen { cond, var, value } => {
+                if self.cond(cond, at)? {
+                    let idx = self.eval(var, at)?;
+                    let v = self.eval(value, at)?;
+                    self.assign(idx, v, at)?;
+                }
+            }
+            Stmt::Goto(t) => {
+                let n = self.eval(t, at)?;
+                self.goto(n, at)?;
+            }
+            Stmt::IfGoto { cond, target } => {
+                if self.cond(cond, at)? {
+                    let n = self.eval(target, at)?;
+                    self.goto(n, at)?;
+                }
+            }
+            Stmt::While { cond, label } => {
+                if label == 0 || label > 999 {
+                    return Err(self.alarm(
+                        AlarmKind::BadLoop,
+                        at,
+                        format!("DO{label}: loop label out of range"),
+                    ));
+                }
+                if self.cond(cond, at)? {
+                    if self.loops.last().map(|l| l.1) != Some(self.raw.mark) {
+                        if self.loops.len() >= 3 && self.dialect.id != DialectId::Hx {
+                            return Err(self.alarm(
+                                AlarmKind::BadLoop,
+                                at,
+                                "WHILE loops nested more than 3 deep",
+                            ));
+                        }
+                        if self.loops.len() >= 16 {
+                            return Err(self.alarm(
+                                AlarmKind::BadLoop,
+                                at,
+                                "WHILE loops nested too deeply",
+                            ));
+                        }
+                        self.loops.push((label, self.raw.mark));
+                    }
+                } else {
+                    if self.loops.last().map(|l| l.1) == Some(self.raw.mark) {
+                        self.loops.pop();
+                    }
+                    self.skip_to_end(label, at)?;
+                }
+            }
+            Stmt::Do { label } => {
+                return Err(self.alarm(
+                    AlarmKind::NotYetSupported,
+                    at,
+                    format!("DO{label} without WHILE is not yet supported (issue 3)"),
+                ));
+            }
+            Stmt::End { label } => match self.loops.last() {
+                Some(&(l, mark)) if l == label => {
+                    self.count_jump(at)?;
+                    self.seek(mark)?;
+                }
+                _ => {
+                    return Err(self.alarm(
+                        AlarmKind::BadLoop,
+                        at,
+                        format!("END{label} without a matching WHILE ... DO{label}"),
+                    ))
+                }
+            },
+        }
+        Ok(true)
+    }
+
+    fn cond(&mut self, c: kerf_lang::ExprId, at: u32) -> R<bool> {
+        Ok(self.eval(c, at)?.unwrap_or(0.0) != 0.0)
+    }
+
+    fn assign(&mut self, idx: Option<f64>, v: Option<f64>, at: u32) -> R<()> {
+        let Some(i) = idx else {
+            return Err(self.alarm(AlarmKind::BadVariable, at, "variable number is vacant"));
+        };
+        self.vars
+            .set(i, v)
+            .map_err(|m| self.alarm(m.kind, at, m.message))
+    }
+
+    fn count_jump(&mut self, at: u32) -> R<()> {
+        self.jumps += 1;
+        let limit = self.profile.param("max_jumps", 10_000_000.0) as u64;
+        if self.jumps > limit {
+            return Err(self.alarm(
+                AlarmKind::LoopLimit,
+                at,
+                format!("more than {limit} backward jumps (loop guard)"),
+            ));
+        }
+        Ok(())
+    }
+
+    fn seek(&mut self, m: Mark) -> R<()> {
+        let r = self.src.as_mut().map(|s| s.seek(m));
+        match r {
+            Some(Err(e)) => Err(self.alarm(AlarmKind::Io, 0, format!("seek failed: {e}"))),
+            _ => Ok(()),
+        }
+    }
+
+    /// GOTO n: search forward, then from the start of the program.
+    fn goto(&mut self, n: Option<f64>, at: u32) -> R<()> {
+        let Some(n) = n else {
+            return Err(self.alarm(AlarmKind::BadVariable, at, "GOTO target is vacant"));
+        };
+        if !(0.0..=99_999.0).contains(&n) {
+            return Err(self.alarm(
+                AlarmKind::SequenceNotFound,
+                at,
+                format!("GOTO {}: sequence number out of range", fmt_num(n)),
+            ));
+        }
+        let target = n.round() as u32;
+        let here = self.raw.mark;
+        let err_src = self.cur;
+        self.count_jump(at)?;
+        let mut raw = RawBlock::default();
+        let mut blk = Block::default();
+        let src = self.src.as_mut().expect("loaded");
+        let start = self.program_start;
+        for pass in 0..2 {
+            if pass == 1 {
+                let _ = src.seek(start);
+            }
+            loop {
+                let mark = src.tell();
+                match src.next_block(&mut raw) {
+                    Ok(true) => {}
+                    _ => break,
+                }
+                if pass == 1 && mark.offset > here.offset {
+                    break;
+                }
+                if parse_block(&raw.text, &self.lex, &mut blk).is_ok() && blk.n == Some(target) {
+                    let _ = src.seek(mark);
+                    return Ok(());
+                }
+            }
+        }
+        Err(AlarmKind::SequenceNotFound.at(
+            self.dialect.id,
+            SrcRef {
+                col: at + 1,
+                ..err_src
+            },
+            format!("GOTO {target}: sequence number N{target} not found"),
+        ))
+    }
+
+    /// Skips forward past the END matching a false WHILE.
+    fn skip_to_end(&mut self, label: u32, at: u32) -> R<()> {
+        let err_src = self.cur;
+        let src = self.src.as_mut().expect("loaded");
+        let mut raw = RawBlock::default();
+        let mut blk = Block::default();
+        let mut depth = 0u32;
+        loop {
+            match src.next_block(&mut raw) {
+                Ok(true) => {}
+                _ => break,
+            }
+            if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
+                continue;
+            }
+            match blk.stmt {
+                Some(Stmt::While { label: l, .. }) if l == label => depth += 1,
+                Some(Stmt::End { label: l }) if l == label => {
+                    if depth == 0 {
+                        return Ok(());
+                    }
+                    depth -= 1;
+                }
+                _ => {}
+            }
+        }
+        Err(AlarmKind::BadLoop.at(
+            self.dialect.id,
+            SrcRef {
+                col: at + 1,
+                ..err_src
+            },
+            format!("WHILE ... DO{label} without END{label}"),
+        ))
+    }
+
+    /// Hurco loop (repeat) commands.
+    fn hurco_loop(&mut self, l: kerf_lang::LoopCmd) -> R<()> {
+        match l {
+            kerf_lang::LoopCmd::Start { count } => {
+                if count == 0 {
+                    return Err(self.alarm(
+                        AlarmKind::OutOfRange,
+                        0,
+                        "loop count must be at least 1",
+                    ));
+                }
+                if self.hurco_loops.len() >= 8 {
+                    return Err(self.alarm(
+                        AlarmKind::BadLoop,
+                        0,
+                        "loop commands nested more than 8 deep",
+                    ));
+                }
+                let after = self.src.as_ref().expect("loaded").tell();
+                self.hurco_loops.push((count - 1, after));
+            }
+            kerf_lang::LoopCmd::End => match self.hurco_loops.last_mut() {
+                Some((left, mark)) => {
+                    if *left > 0 {
+                        *left -= 1;
+                        let m = *mark;
+                        self.count_jump(0)?;
+                        self.seek(m)?;
+                    } else {
+                        self.hurco_loops.pop();
+                    }
+                }
+                None => {
+                    return Err(self.alarm(AlarmKind::BadLoop, 0, "loop end without a loop start"))
+                }
+            },
+        }
+        Ok(())
+    }
+}
+
+fn ax_letter(a: Axis) -> u8 {
+    b"XYZABC"[a as usize]
+}
+
+/// Formats a number without trailing zeros.
+pub(crate) fn fmt_num(v: f64) -> String {
+    let s = format!("{v:.4}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    s.to_string()
+}
+
+fn fmt_code(c10: u16) -> String {
+    if c10 % 10 == 0 {
+        format!("{:02}", c10 / 10)
+    } else {
+        format!("{:02}.{}", c10 / 10, c10 % 10)
+    }
+}

@@ -1,0 +1,245 @@
+//! Machine profiles: dialect + machine data, loaded from TOML. The built-in
+//! profiles live in `machines/*.toml` at the workspace root and are
+//! embedded in the binary.
+
+use std::collections::BTreeMap;
+
+use kerf_canon::{Axis, Pos, NAXES};
+use serde::Deserialize;
+
+use crate::dialect::DialectId;
+
+/// Mill or lathe: decides plane defaults, plot view and X semantics.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum MachineKind {
+    Mill,
+    Lathe,
+}
+
+/// One axis of the machine.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AxisData {
+    /// Lower software travel limit, machine coordinates (mm / deg;
+    /// lathe X as a radius).
+    pub min: f64,
+    /// Upper software travel limit.
+    pub max: f64,
+    /// Rapid traverse rate, mm/min (deg/min for rotary axes).
+    pub rapid: f64,
+    /// Machine coordinate of the (first) reference position.
+    #[serde(default)]
+    pub reference: f64,
+    /// Machine position at power-on / program start (defaults to the
+    /// reference position: the machine has been homed).
+    pub start: Option<f64>,
+    /// Cutting-feed acceleration, mm/s² (used by the planner).
+    #[serde(default = "default_accel")]
+    pub accel: f64,
+}
+
+fn default_accel() -> f64 {
+    2000.0
+}
+
+/// Per-axis values keyed by lower-case axis name.
+pub type AxisMap = BTreeMap<String, f64>;
+
+/// Feed limits.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FeedData {
+    /// Maximum cutting feed, mm/min.
+    pub max_cutting: f64,
+}
+
+/// Spindle data.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SpindleData {
+    /// Highest speed, rpm.
+    pub max_rpm: f64,
+    /// Lowest speed, rpm.
+    #[serde(default)]
+    pub min_rpm: f64,
+}
+
+/// Tool changer / turret.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ToolData {
+    /// Number of pockets / turret stations.
+    pub count: u32,
+    /// Tool change or index time, seconds.
+    #[serde(default)]
+    pub change_time_s: f64,
+    /// Hurco: offsets of a T code take effect at once (true) or with the
+    /// next motion (false).
+    #[serde(default = "yes")]
+    pub immediate_offsets: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+/// A complete machine profile.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Profile {
+    /// Name used with `--machine`.
+    pub name: String,
+    /// One line for `kerf machines`.
+    pub description: String,
+    /// Which control's language.
+    pub dialect: DialectId,
+    pub kind: MachineKind,
+    /// "Calculator-type decimal point" input: `X100` means 100 mm (or inch)
+    /// rather than 100 least input increments.
+    #[serde(default)]
+    pub calculator_decimal: bool,
+    /// Longest block the control accepts, characters.
+    #[serde(default = "default_block_chars")]
+    pub max_block_chars: usize,
+    /// Most digits in one number.
+    #[serde(default = "default_digits")]
+    pub max_digits: u8,
+    /// Axes the machine has, by lower-case name (`x`, `y`, `z`, `c` …).
+    pub axes: BTreeMap<String, AxisData>,
+    pub feed: FeedData,
+    pub spindle: SpindleData,
+    pub tools: ToolData,
+    /// 2nd, 3rd, 4th reference positions in machine coordinates.
+    #[serde(default)]
+    pub reference: BTreeMap<String, AxisMap>,
+    /// Work coordinate systems: `g54` … `g59` (Hurco: `e1` …), the machine
+    /// coordinates of each work zero.
+    #[serde(default)]
+    pub work_offsets: BTreeMap<String, AxisMap>,
+    /// Control parameters the manuals name (`"PI 144" = 0`, `"PM 2097"` …).
+    #[serde(default)]
+    pub params: BTreeMap<String, f64>,
+}
+
+fn default_block_chars() -> usize {
+    256
+}
+
+fn default_digits() -> u8 {
+    12
+}
+
+/// The built-in profiles: (name, TOML text).
+pub const BUILTIN: &[(&str, &str)] = &[
+    ("hx-mc", include_str!("../../../machines/hx-mc.toml")),
+    (
+        "puma-lathe",
+        include_str!("../../../machines/puma-lathe.toml"),
+    ),
+    (
+        "hurco-lathe",
+        include_str!("../../../machines/hurco-lathe.toml"),
+    ),
+];
+
+impl Profile {
+    /// Parses a profile from TOML text.
+    pub fn from_toml(text: &str) -> Result<Profile, String> {
+        let p: Profile = toml::from_str(text).map_err(|e| e.to_string())?;
+        p.validate()?;
+        Ok(p)
+    }
+
+    /// A built-in profile by name.
+    pub fn builtin(name: &str) -> Option<Profile> {
+        BUILTIN
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, t)| Profile::from_toml(t).expect("built-in profile is valid"))
+    }
+
+    fn validate(&self) -> Result<(), String> {
+        for (k, a) in &self.axes {
+            if axis_by_name(k).is_none() {
+                return Err(format!("unknown axis '{k}' (use x y z a b c)"));
+            }
+            if !(a.min <= a.max) || !(a.rapid > 0.0) {
+                return Err(format!("axis '{k}': need min <= max and rapid > 0"));
+            }
+        }
+        for (w, m) in self.work_offsets.iter().chain(self.reference.iter()) {
+            for k in m.keys() {
+                if !self.axes.contains_key(k) {
+                    return Err(format!("'{w}' names axis '{k}' the machine does not have"));
+                }
+            }
+        }
+        if !(self.feed.max_cutting > 0.0) {
+            return Err("feed.max_cutting must be > 0".into());
+        }
+        Ok(())
+    }
+
+    /// True when the machine has this axis.
+    pub fn has_axis(&self, a: Axis) -> bool {
+        self.axes.contains_key(a.name())
+    }
+
+    /// Data of an axis, if the machine has it.
+    pub fn axis(&self, a: Axis) -> Option<&AxisData> {
+        self.axes.get(a.name())
+    }
+
+    /// A named parameter, or `default`.
+    pub fn param(&self, name: &str, default: f64) -> f64 {
+        self.params.get(name).copied().unwrap_or(default)
+    }
+
+    /// Converts a per-axis map to a position (missing axes 0).
+    pub fn pos_of(map: &AxisMap) -> Pos {
+        let mut p = [0.0; NAXES];
+        for (k, v) in map {
+            if let Some(a) = axis_by_name(k) {
+                p[a as usize] = *v;
+            }
+        }
+        p
+    }
+
+    /// Machine position at program start.
+    pub fn start_position(&self) -> Pos {
+        let mut p = [0.0; NAXES];
+        for (k, a) in &self.axes {
+            if let Some(ax) = axis_by_name(k) {
+                p[ax as usize] = a.start.unwrap_or(a.reference);
+            }
+        }
+        p
+    }
+}
+
+/// The axis for a lower-case name.
+pub fn axis_by_name(n: &str) -> Option<Axis> {
+    Axis::ALL.iter().copied().find(|a| a.name() == n)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn builtin_profiles_load() {
+        for (n, _) in BUILTIN {
+            let p = Profile::builtin(n).unwrap();
+            assert_eq!(&p.name, n);
+            assert!(p.has_axis(Axis::X) && p.has_axis(Axis::Z));
+        }
+    }
+
+    #[test]
+    fn bad_profile_is_an_error() {
+        let e = Profile::from_toml("name = 'x'").unwrap_err();
+        assert!(e.contains("missing"), "{e}");
+    }
+}

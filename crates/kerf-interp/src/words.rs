@@ -1,0 +1,104 @@
+//! The words of one block after evaluation: a fixed-size table per address
+//! letter plus the lists of G and M codes, filled without allocation.
+
+/// One evaluated word value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WVal {
+    /// The value (expressions evaluated; still in program units and, for
+    /// numbers without a decimal point, as written).
+    pub v: f64,
+    /// A decimal point was written (expressions count as having one).
+    pub point: bool,
+    /// Byte index of the address in the block text.
+    pub at: u32,
+}
+
+/// Most G codes (and M codes) one block may carry (002: 10 of each).
+pub const MAX_CODES: usize = 10;
+
+/// The evaluated words of a block.
+#[derive(Clone, Debug)]
+pub struct Words {
+    /// Single-letter addresses other than G and M, indexed by letter - 'A'.
+    pub letters: [Option<WVal>; 26],
+    /// G codes (value × 10, byte index) in order.
+    pub g: [(u16, u32); MAX_CODES],
+    pub ng: usize,
+    /// M codes (value, byte index) in order.
+    pub m: [(u32, u32); MAX_CODES],
+    pub nm: usize,
+    /// `,C` and `,R`.
+    pub comma_c: Option<WVal>,
+    pub comma_r: Option<WVal>,
+    /// Hurco multi-letter parameters (name index, value).
+    pub long: [(u16, WVal); 16],
+    pub nlong: usize,
+}
+
+impl Default for Words {
+    fn default() -> Words {
+        Words {
+            letters: [None; 26],
+            g: [(0, 0); MAX_CODES],
+            ng: 0,
+            m: [(0, 0); MAX_CODES],
+            nm: 0,
+            comma_c: None,
+            comma_r: None,
+            long: [(
+                0,
+                WVal {
+                    v: 0.0,
+                    point: false,
+                    at: 0,
+                },
+            ); 16],
+            nlong: 0,
+        }
+    }
+}
+
+impl Words {
+    /// Empties the table.
+    pub fn clear(&mut self) {
+        self.letters = [None; 26];
+        self.ng = 0;
+        self.nm = 0;
+        self.comma_c = None;
+        self.comma_r = None;
+        self.nlong = 0;
+    }
+
+    /// The value of a letter address.
+    #[inline]
+    pub fn get(&self, l: u8) -> Option<WVal> {
+        self.letters[(l - b'A') as usize]
+    }
+
+    /// True when the letter is present.
+    #[inline]
+    pub fn has(&self, l: u8) -> bool {
+        self.letters[(l - b'A') as usize].is_some()
+    }
+
+    /// Removes and returns a letter (so a code that consumed it can mark it).
+    #[inline]
+    pub fn take(&mut self, l: u8) -> Option<WVal> {
+        self.letters[(l - b'A') as usize].take()
+    }
+
+    /// The G codes of the block.
+    pub fn gs(&self) -> &[(u16, u32)] {
+        &self.g[..self.ng]
+    }
+
+    /// The M codes of the block.
+    pub fn ms(&self) -> &[(u32, u32)] {
+        &self.m[..self.nm]
+    }
+
+    /// True when the block carries G code `code10`.
+    pub fn has_g(&self, code10: u16) -> bool {
+        self.gs().iter().any(|&(g, _)| g == code10)
+    }
+}

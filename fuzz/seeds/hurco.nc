@@ -1,0 +1,11 @@
+%
+O1
+G21 G90 \
+  G00 X40. Z2.
+(REPEAT 3)
+G01 Z-10. F0.2
+G91 X-1.
+(END REPEAT)
+G78 angIn60. XEnd20. ZEnd-30. minD0.1
+M30
+%
