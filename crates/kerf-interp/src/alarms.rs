@@ -61,6 +61,8 @@ pub enum AlarmKind {
     BadLoop,
     /// M-code restrictions in one block (too many, or illegal combination).
     MCodeConflict,
+    /// G27: not at the reference position.
+    ReferenceCheck,
     /// I/O error while reading the program.
     Io,
 }
@@ -95,6 +97,7 @@ impl AlarmKind {
             SequenceNotFound => ("F_82021", "PS060", "HU-042"),
             BadLoop => ("F_82202", "PS128", "HU-043"),
             MCodeConflict => ("F_82032", "PS009", "HU-016"),
+            ReferenceCheck => ("F_82040", "PS092", "HU-044"),
             Io => ("KERF-0001", "KERF-0001", "KERF-0001"),
         };
         match d {

@@ -66,6 +66,12 @@ struct State {
     wcs_idx: usize,
     /// G92 / G50 shift.
     shift: Pos,
+    /// Tool length offset vector (G43/G44), added to the control point.
+    tlo: Pos,
+    /// Active H number (0 = none).
+    h: u32,
+    /// G28 intermediate point (programmed coordinates), per axis.
+    g28_mid: [Option<f64>; NAXES],
     metric: bool,
     absolute: bool,
     plane: Plane,
@@ -111,6 +117,7 @@ pub struct Interp {
     jumps: u64,
     cur: SrcRef,
     arc_tol: f64,
+    h_table: Vec<f64>,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -148,6 +155,9 @@ impl Interp {
             wcs,
             wcs_idx: 0,
             shift: [0.0; NAXES],
+            tlo: [0.0; NAXES],
+            h: 0,
+            g28_mid: [None; NAXES],
             metric: true,
             absolute: true,
             plane: if profile.kind == MachineKind::Lathe {
@@ -229,6 +239,7 @@ impl Interp {
             jumps: 0,
             cur: SrcRef::default(),
             arc_tol,
+            h_table: vec![0.0; 129],
         }
     }
 
@@ -247,6 +258,13 @@ impl Interp {
     pub fn set_work_offset(&mut self, idx: usize, origin: Pos) {
         if idx < 6 {
             self.st.wcs[idx] = origin;
+        }
+    }
+
+    /// Sets tool length offset H`n` (mm); H0 is always 0.
+    pub fn set_h(&mut self, n: usize, v: f64) {
+        if n > 0 && n < self.h_table.len() {
+            self.h_table[n] = v;
         }
     }
 
@@ -295,6 +313,26 @@ impl Interp {
             o[i] = w[i] + self.st.shift[i];
         }
         o
+    }
+
+    /// Origin of programmed coordinates: the work origin plus the tool
+    /// length offset.
+    fn prog_origin(&self) -> Pos {
+        let mut o = self.origin();
+        for i in 0..NAXES {
+            o[i] += self.st.tlo[i];
+        }
+        o
+    }
+
+    /// Current position in programmed coordinates (tool tip).
+    fn programmed_position(&self) -> Pos {
+        let o = self.prog_origin();
+        let mut p = self.st.pos;
+        for i in 0..NAXES {
+            p[i] -= o[i];
+        }
+        p
     }
 
     /// Runs until the next canonical command, an alarm or the end.
@@ -635,9 +673,14 @@ impl Interp {
         let mut g53 = false;
         let mut dwell = false;
         let mut g09 = false;
+        let mut refret: Option<(u16, u32)> = None;
+        if self.words.ng > 0 || self.words.has(b'H') {
+            self.tool_length()?;
+        }
         for &(c, at) in &one_shot[..n_one] {
             match (d.id, c) {
                 (_, 40) => dwell = true,
+                (_, 270 | 280 | 290 | 300) => refret = Some((c, at)),
                 (_, 90) => g09 = true,
                 (_, 530) => g53 = true,
                 (DialectId::Hx, 920) | (DialectId::Hurco, 920) | (DialectId::Puma, 500) => {
@@ -681,7 +724,9 @@ impl Interp {
                         (DialectId::Hx, 920) | (DialectId::Hurco, 920) | (DialectId::Puma, 500)
                     )
                 });
-        if !no_motion {
+        if let Some((c, at)) = refret {
+            self.reference_return(c, at)?;
+        } else if !no_motion {
             if g53 {
                 self.g53()?;
             } else {
@@ -1083,7 +1128,7 @@ impl Interp {
                 self.words.take(b'S');
             }
         }
-        let cur = self.work_position();
+        let cur = self.programmed_position();
         let mut any = false;
         for ax in Axis::ALL {
             let l = ax_letter(ax);
@@ -1096,9 +1141,10 @@ impl Interp {
             }
             if let Some(t) = target {
                 any = true;
-                // New shift so that pos - (wcs + shift) = t.
+                // New shift so that pos - (wcs + shift + tlo) = t.
                 let i = ax as usize;
-                self.st.shift[i] = self.st.pos[i] - self.st.wcs[self.st.wcs_idx][i] - t;
+                self.st.shift[i] =
+                    self.st.pos[i] - self.st.wcs[self.st.wcs_idx][i] - self.st.tlo[i] - t;
             }
         }
         let _ = (any, at);
@@ -1183,7 +1229,7 @@ impl Interp {
 
     /// The block's end point in work coordinates, and whether any axis moved.
     fn target(&self) -> R<(Pos, bool)> {
-        let cur = self.work_position();
+        let cur = self.programmed_position();
         let mut t = cur;
         let mut any = false;
         for ax in Axis::ALL {
@@ -1214,7 +1260,7 @@ impl Interp {
     }
 
     fn to_machine(&self, w: &Pos) -> Pos {
-        let o = self.origin();
+        let o = self.prog_origin();
         let mut m = *w;
         for i in 0..NAXES {
             m[i] += o[i];
@@ -1282,7 +1328,10 @@ impl Interp {
                 }
                 let mto = self.to_machine(&tw);
                 self.check_travel(&mto, at)?;
-                let m = Motion { to: tw, mto };
+                let m = Motion {
+                    to: self.work_of(&mto),
+                    mto,
+                };
                 let cmd = if mode == 0 {
                     Canon::Rapid {
                         m,
@@ -1306,7 +1355,7 @@ impl Interp {
     fn arc(&mut self, tw: Pos, any: bool, ccw: bool, at: u32) -> R<()> {
         let plane = self.st.plane;
         let (a1, a2, _) = plane.axes();
-        let cur = self.work_position();
+        let cur = self.programmed_position();
         let s = (cur[a1], cur[a2]);
         let e = (tw[a1], tw[a2]);
         let has_ijk = [b'I', b'J', b'K'].iter().any(|&l| self.words.has(l));
@@ -1390,10 +1439,14 @@ impl Interp {
         c[a1] = center.0;
         c[a2] = center.1;
         let mcenter = self.to_machine(&c);
+        let c = self.work_of(&mcenter);
         let dir = if ccw { ArcDir::Ccw } else { ArcDir::Cw };
         self.st.pos = mto;
         self.emit(Canon::Arc {
-            m: Motion { to: tw, mto },
+            m: Motion {
+                to: self.work_of(&mto),
+                mto,
+            },
             center: c,
             mcenter,
             dir,
@@ -1416,9 +1469,177 @@ impl Interp {
         let feed = self.feed(at)?;
         self.st.pos = mto;
         self.emit(Canon::Feed {
-            m: Motion { to: tw, mto },
+            m: Motion {
+                to: self.work_of(&mto),
+                mto,
+            },
             feed,
         });
+        Ok(())
+    }
+
+    // ---- tool length, reference returns ----------------------------------------
+
+    /// G43/G44/G49 with H: the tool length offset on Z (mills).
+    fn tool_length(&mut self) -> R<()> {
+        if self.profile.kind != MachineKind::Mill {
+            return Ok(());
+        }
+        if let Some(h) = self.words.get(b'H') {
+            if h.v < 0.0 || h.v.fract() != 0.0 || h.v as usize >= self.h_table.len() {
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    h.at,
+                    format!(
+                        "H{} is not an offset number (H00-H{})",
+                        fmt_num(h.v),
+                        self.h_table.len() - 1
+                    ),
+                ));
+            }
+            self.st.h = h.v as u32;
+        }
+        let grp = self
+            .dialect
+            .gcode(490)
+            .map(|g| g.group as usize)
+            .unwrap_or(8);
+        let sign = match self.st.modal[grp] {
+            430 => 1.0,
+            440 => -1.0,
+            _ => 0.0,
+        };
+        self.st.tlo = [0.0; NAXES];
+        self.st.tlo[Axis::Z as usize] = sign * self.h_table[self.st.h as usize];
+        Ok(())
+    }
+
+    /// The machine position of reference point `n` (1-4) for an axis.
+    fn reference_point(&self, n: u32, ax: Axis) -> f64 {
+        let key = match n {
+            2 => "second",
+            3 => "third",
+            4 => "fourth",
+            _ => return self.profile.axis(ax).map(|a| a.reference).unwrap_or(0.0),
+        };
+        self.profile
+            .reference
+            .get(key)
+            .and_then(|m| m.get(ax.name()))
+            .copied()
+            .unwrap_or_else(|| self.profile.axis(ax).map(|a| a.reference).unwrap_or(0.0))
+    }
+
+    /// G27 check, G28 / G30 return via an intermediate point, G29 return
+    /// from the reference point through the stored intermediate point.
+    fn reference_return(&mut self, c: u16, at: u32) -> R<()> {
+        let (tw, _) = self.target()?;
+        let mut named = [false; NAXES];
+        for ax in Axis::ALL {
+            named[ax as usize] = self.profile.has_axis(ax)
+                && (self.words.has(ax_letter(ax)) || self.uvw(ax).is_some());
+        }
+        let linear = self.linear_rapid();
+        let rapid_to = |me: &mut Self, mto: Pos| -> R<()> {
+            me.check_travel(&mto, at)?;
+            if mto != me.st.pos {
+                me.st.pos = mto;
+                let m = Motion {
+                    to: me.work_of(&mto),
+                    mto,
+                };
+                me.emit(Canon::Rapid { m, linear });
+            }
+            Ok(())
+        };
+        match c {
+            270 => {
+                let mto = self.to_machine(&tw);
+                rapid_to(self, mto)?;
+                for ax in Axis::ALL {
+                    let i = ax as usize;
+                    if named[i] && (self.st.pos[i] - self.reference_point(1, ax)).abs() > 1e-6 {
+                        return Err(self.alarm(
+                            AlarmKind::ReferenceCheck,
+                            at,
+                            format!(
+                                "G27: {} is not at the reference position",
+                                ax.name().to_uppercase()
+                            ),
+                        ));
+                    }
+                }
+            }
+            280 | 300 => {
+                let n = if c == 280 {
+                    1
+                } else {
+                    match self.words.get(b'P') {
+                        None => 2,
+                        Some(p) if matches!(p.v as i64, 2..=4) && p.v.fract() == 0.0 => p.v as u32,
+                        Some(p) => {
+                            return Err(self.alarm(
+                                AlarmKind::OutOfRange,
+                                p.at,
+                                "G30 P must be 2, 3 or 4",
+                            ))
+                        }
+                    }
+                };
+                // Intermediate point, then the reference point, named axes only.
+                let mid = self.to_machine(&tw);
+                rapid_to(self, mid)?;
+                for ax in Axis::ALL {
+                    let i = ax as usize;
+                    if named[i] {
+                        self.st.g28_mid[i] = Some(tw[i]);
+                    }
+                }
+                let mut r = self.st.pos;
+                for ax in Axis::ALL {
+                    if named[ax as usize] {
+                        r[ax as usize] = self.reference_point(n, ax);
+                    }
+                }
+                rapid_to(self, r)?;
+            }
+            290 => {
+                // Through the stored intermediate point to the commanded point.
+                let mut mid = self.programmed_position();
+                for ax in Axis::ALL {
+                    let i = ax as usize;
+                    if named[i] {
+                        match self.st.g28_mid[i] {
+                            Some(v) => mid[i] = v,
+                            None => {
+                                return Err(self.alarm(
+                                    AlarmKind::MissingArgument,
+                                    at,
+                                    "G29 without a preceding G28/G30 intermediate point",
+                                ))
+                            }
+                        }
+                    }
+                }
+                let mm = self.to_machine(&mid);
+                rapid_to(self, mm)?;
+                // The end point: absolute as given; incremental from the intermediate point.
+                let mut end = self.programmed_position();
+                for ax in Axis::ALL {
+                    let i = ax as usize;
+                    if let Some(w) = self.words.get(ax_letter(ax)).filter(|_| named[i]) {
+                        let v = self.axis_value(ax, w);
+                        end[i] = if self.st.absolute { v } else { mid[i] + v };
+                    } else if let Some(l) = self.uvw(ax) {
+                        let w = self.words.get(l).expect("present");
+                        end[i] = mid[i] + self.axis_value(ax, w);
+                    }
+                }
+                let me = self.to_machine(&end);
+                rapid_to(self, me)?;
+            }
+            _ => {}
+        }
         Ok(())
     }
 

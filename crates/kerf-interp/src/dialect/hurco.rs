@@ -1,5 +1,8 @@
 //! Hurco MAX turning-center control (002): its G codes, M codes with their
 //! execution categories (Table 1), and the G78 multi-letter parameter names.
+//!
+//! Where 002 is silent or kerf departs from it, the decision is recorded in
+//! docs/dialects.md.
 use super::MAction::*;
 use super::MWhen::*;
 use super::Support::*;
@@ -8,20 +11,33 @@ use super::*;
 const LATER_HURCO: Support = Later("Hurco cycles, probing, fixture offsets and loops (issue 7)");
 const LATER_COMP: Support = Later("tool compensation (issue 5)");
 
-/// G codes of 002.
+/// G codes 002 documents (pages 14-55), with the "(default)" marks of their
+/// headings: G00, G40, G90, G94, G97, G98. 002 prints no group numbers; the
+/// groups follow Fanuc where the code exists there, G07/G08 get kerf's
+/// group 24. G70 is not documented but opens every G78 sample program
+/// ("G70 G90 M03 S120") where it can only be Hurco's legacy inch code.
+/// Table 1 also names G58, G201 and G202, which 002 never defines; they are
+/// not in the table (see docs/dialects.md), nor are G85-G89, which 002
+/// mentions only as "G81-G89 drill cycles".
 pub static GCODES: &[GCode] = &[
-    g(0, 1, true, "rapid positioning", Yes),
-    g(10, 1, false, "linear interpolation", Yes),
-    g(20, 1, false, "circular interpolation CW", Yes),
-    g(30, 1, false, "circular interpolation CCW", Yes),
+    g(0, 1, true, "linear motion at rapid", Yes),
+    g(10, 1, false, "linear motion at feed", Yes),
+    g(20, 1, false, "clockwise circular motion at feed", Yes),
+    g(
+        30,
+        1,
+        false,
+        "counterclockwise circular motion at feed",
+        Yes,
+    ),
     g(40, 0, false, "dwell", Yes),
     g(70, 24, false, "radius programming", Yes),
-    g(80, 24, true, "diameter programming", Yes),
+    g(80, 24, true, "diameter programming", Yes), // default is a control setting; kerf: diameter
     g(90, 0, false, "exact stop", Yes),
     g(200, 6, false, "inch mode", Yes),
-    g(210, 6, true, "metric mode", Yes),
+    g(210, 6, true, "millimeter mode", Yes), // default is a control setting; kerf: mm
     g(330, 1, false, "threading", LATER_HURCO),
-    g(380, 0, false, "turret probe cycle", LATER_HURCO),
+    g(380, 0, false, "turret probe", LATER_HURCO),
     g(400, 7, true, "cutter radius compensation off", Yes),
     g(410, 7, false, "cutter radius compensation left", LATER_COMP),
     g(
@@ -31,53 +47,119 @@ pub static GCODES: &[GCode] = &[
         "cutter radius compensation right",
         LATER_COMP,
     ),
-    g(530, 0, false, "machine coordinates", Yes),
-    g(590, 0, false, "cancel G92 offsets", Yes),
-    g(730, 10, false, "chip break drilling cycle", LATER_HURCO),
-    g(740, 10, false, "left-hand tapping cycle", LATER_HURCO),
-    g(780, 0, false, "multi-pass threading cycle", LATER_HURCO),
-    g(800, 10, true, "drill cycle cancel", Yes),
-    g(810, 10, false, "drilling cycle", LATER_HURCO),
-    g(820, 10, false, "drilling with dwell cycle", LATER_HURCO),
-    g(830, 10, false, "peck drilling cycle", LATER_HURCO),
-    g(840, 10, false, "tapping cycle", LATER_HURCO),
-    g(900, 3, true, "absolute mode", Yes),
-    g(910, 3, false, "incremental mode", Yes),
-    g(920, 0, false, "set part zero (G92 offsets)", Yes),
+    g(530, 0, false, "program machine coordinates", Yes),
+    g(590, 0, false, "cancel work coordinate offsets", Yes),
+    g(
+        700,
+        6,
+        false,
+        "inch mode (legacy code of the G78 samples)",
+        LATER_HURCO,
+    ),
+    g(
+        730,
+        10,
+        false,
+        "peck drill with chip break drill cycle",
+        LATER_HURCO,
+    ),
+    g(740, 10, false, "left hand tapping", LATER_HURCO),
+    g(780, 0, false, "threading cycle", LATER_HURCO),
+    g(800, 10, true, "cancel drill cycle", Yes),
+    g(810, 10, false, "drill cycle", LATER_HURCO),
+    g(820, 10, false, "drill cycle with dwell", LATER_HURCO),
+    g(830, 10, false, "peck drill cycle", LATER_HURCO),
+    g(
+        840,
+        10,
+        false,
+        "right hand tapping and float tapping",
+        LATER_HURCO,
+    ),
+    g(900, 3, true, "absolute programming", Yes),
+    g(910, 3, false, "incremental programming", Yes),
+    g(
+        920,
+        0,
+        false,
+        "work coordinate offsets or spindle max speed",
+        Yes,
+    ),
     g(930, 5, false, "inverse time feed", Yes),
-    g(940, 5, false, "feed per minute", Yes),
-    g(950, 5, true, "feed per revolution", Yes),
-    g(960, 2, false, "constant surface speed", Yes),
-    g(970, 2, true, "constant spindle speed (rpm)", Yes),
-    g(980, 19, true, "drill cycle return to initial plane", Yes),
-    g(990, 19, false, "drill cycle return to R plane", Yes),
+    g(940, 5, true, "feed per minute", Yes),
+    g(950, 5, false, "feed per revolution", Yes),
+    g(960, 2, false, "constant surface speed (CSS)", Yes),
+    g(970, 2, true, "direct spindle speed", Yes),
+    g(980, 19, true, "drill cycle initial level return", Yes),
+    g(990, 19, false, "drill cycle R plane return", Yes),
 ];
 
-/// M codes of 002 with their execution categories (Table 1).
-pub static MCODES: &[MCode] = &[
-    m(0, "program stop", After, Stop),
-    m(1, "optional stop", After, OptionalStop),
-    m(2, "end of program", After, End),
-    m(3, "spindle CW", Before, SpindleCw),
-    m(4, "spindle CCW", Before, SpindleCcw),
-    m(5, "spindle stop", After, SpindleStop),
-    m(7, "coolant mist on", Before, CoolantMist),
-    m(8, "coolant flood on", Before, CoolantFlood),
-    m(9, "coolant off", After, CoolantOff),
-    m(30, "end of program, rewind", After, End),
-    m(48, "feedrate override enabled", Before, Aux),
-    m(49, "feedrate override disabled", Before, Aux),
+/// Number of job-syncing M codes (M100-M199, 002 Tables 1 and 3).
+const N_SYNC: usize = 100;
+
+/// M codes of 002 before the job-syncing range, with the execution category
+/// of Table 1 and the M-code descriptions.
+const M_LOW: [MCode; 12] = [
+    m(0, "program stop", After, Stop), // end of block system M code
+    m(1, "optional stop", After, OptionalStop), // end of block system M code
+    m(2, "end of program (no rewind)", After, End), // end of block system M code
+    m(3, "spindle clockwise", Before, SpindleCw), // after T, S and E, before motion
+    m(4, "spindle counterclockwise", Before, SpindleCcw),
+    m(5, "spindle off", After, SpindleStop), // spindle stop, after motion
+    m(7, "secondary coolant on", Before, CoolantMist), // beginning of block
+    m(8, "primary coolant on", Before, CoolantFlood), // beginning of block
+    m(9, "coolant off", After, CoolantOff),  // "usually ... at the end of the block"
+    m(30, "end of program (rewind)", After, End), // end of block system M code
+    m(48, "use feedrate override", Before, Aux), // feedrate override stage
+    m(49, "ignore feedrate override", Before, Aux),
 ];
 
-/// Hurco G78 multi-letter parameter names (002 Tables 5-13).
-pub static LONG_NAMES: &[&str] = &["angIn", "XEnd", "ZEnd", "minD"];
+/// M codes of 002 after the job-syncing range.
+const M_HIGH: [MCode; 1] = [
+    // Not in Table 1; Table 15 groups it with M00/M01 (waits for the
+    // look-ahead buffer to empty), so it is sequenced with the system codes.
+    m(200, "block delete synchronization", After, Aux),
+];
 
-/// The Hurco dialect.
+/// Builds the full M-code table: the low codes, M100-M199 (job syncing,
+/// first stage of Table 1), the high codes.
+const fn hurco_mcodes() -> [MCode; M_LOW.len() + N_SYNC + M_HIGH.len()] {
+    let mut out = [M_LOW[0]; M_LOW.len() + N_SYNC + M_HIGH.len()];
+    let mut i = 0;
+    while i < M_LOW.len() {
+        out[i] = M_LOW[i];
+        i += 1;
+    }
+    let mut k = 0;
+    while k < N_SYNC {
+        out[M_LOW.len() + k] = m(100 + k as u16, "job syncing", Before, Aux);
+        k += 1;
+    }
+    let mut j = 0;
+    while j < M_HIGH.len() {
+        out[M_LOW.len() + N_SYNC + j] = M_HIGH[j];
+        j += 1;
+    }
+    out
+}
+
+/// M codes of 002 with their execution categories (Table 1), including
+/// every job-syncing code M100-M199.
+pub static MCODES: &[MCode] = &hurco_mcodes();
+
+/// Hurco G78 multi-letter parameter names. 002 prints exactly four:
+/// `angIn` and `ZEnd` (G78 introduction, "angIn30, ZEnd3.1") and `minR`,
+/// `minD` (Table 6). The rest of the multi-letter column of Tables 5-13 did
+/// not survive the extraction. `XEnd` is not printed; kerf keeps it as the
+/// face-thread counterpart of `ZEnd` (Table 12: face thread end = X).
+pub static LONG_NAMES: &[&str] = &["angIn", "ZEnd", "minR", "minD", "XEnd"];
+
+/// The Hurco dialect. L, U and W are G78 parameters (Tables 8 and 11).
 pub static DIALECT: Dialect = Dialect {
     id: DialectId::Hurco,
     gcodes: GCODES,
     mcodes: MCODES,
-    letters: b"ABCDEFGHIJKMNPQRSTVXZ",
+    letters: b"ABCDEFGHIJKLMNPQRSTUVWXZ",
     long_names: LONG_NAMES,
     diameter_default: true,
     uvw_incremental: false,

@@ -1,6 +1,9 @@
 //! TurboTek HX machining-center control: the G-code table of 000 §3.1 with
-//! its modal groups, the reset defaults of §3.2 (PI 144-150 at their
-//! factory values), and the M codes of 000 §10.
+//! its modal groups as printed there, the reset defaults of §3.2 (PI 144-150
+//! at their factory values), and the general M codes of 000 §11.1.
+//!
+//! Where the extraction of 000 is unreadable or kerf departs from it, the
+//! decision is recorded in docs/dialects.md.
 use super::MAction::*;
 use super::MWhen::*;
 use super::Support::*;
@@ -10,25 +13,29 @@ const LATER_MACRO: Support = Later("custom macro B and subprograms (issue 3)");
 const LATER_HX: Support = Later("HX coordinate systems, transforms and canned cycles (issue 4)");
 const LATER_COMP: Support = Later("tool compensation (issue 5)");
 
-/// G codes of 000 §3.1.
+/// G codes of 000 §3.1. Group numbers are the ones the table prints (they
+/// are not Fanuc's: plane = 16, G43/G44/G49 = 13, G68/G69 = 18, …), with
+/// two exceptions recorded in docs/dialects.md: G31-G31.4 (printed 23, a
+/// group §3.2 counts as non-modal together with group 0) are one-shot here,
+/// and G63.1/G63.2 (§15.6, absent from §3.1) get kerf's group 24.
 pub static GCODES: &[GCode] = &[
-    g(0, 1, true, "rapid traverse positioning", Yes),
-    g(10, 1, false, "linear interpolation", Yes),
+    g(0, 1, true, "rapid traverse positioning", Yes), // default: PI 144 = 0
+    g(10, 1, false, "linear interpolation", Yes),     // default when PI 144 = 1
     g(20, 1, false, "circular/helical interpolation CW", Yes),
     g(30, 1, false, "circular/helical interpolation CCW", Yes),
     g(40, 0, false, "dwell", Yes),
     g(90, 0, false, "exact stop", Yes),
-    g(100, 0, false, "programmable data input", LATER_COMP),
+    g(100, 0, false, "setting data", LATER_COMP), // §13.1.3: G10 L10 (H) / L12 (D)
     g(103, 21, false, "high speed machining start", Yes),
     g(113, 21, true, "high speed machining end", Yes),
     g(150, 17, true, "polar coordinate command cancel", Yes),
     g(160, 17, false, "polar coordinate command", LATER_HX),
-    g(170, 16, true, "X-Y plane selection", Yes),
+    g(170, 16, true, "X-Y plane selection", Yes), // default: PI 145 = 0
     g(180, 16, false, "Z-X plane selection", Yes),
     g(190, 16, false, "Y-Z plane selection", Yes),
-    g(200, 6, false, "inch input", Yes),
-    g(210, 6, true, "metric input", Yes),
-    g(220, 9, true, "stored stroke check on", LATER_HX),
+    g(200, 6, false, "inch", Yes),
+    g(210, 6, true, "metric", Yes), // default: PI 147 = 1
+    g(220, 9, true, "stored stroke check on", LATER_HX), // default: PI 148 = 0 (§3.2 factory value)
     g(230, 9, false, "stored stroke check off", Yes),
     g(270, 0, false, "reference position return check", LATER_HX),
     g(280, 0, false, "reference position return", LATER_HX),
@@ -37,10 +44,10 @@ pub static GCODES: &[GCode] = &[
         300,
         0,
         false,
-        "2nd/3rd/4th reference position return",
+        "return to 2nd, 3rd, 4th reference position",
         LATER_HX,
     ),
-    g(310, 0, false, "skip function", LATER_HX),
+    g(310, 0, false, "skip function", LATER_HX), // §3.1 prints group 23 for G31-G31.4
     g(311, 0, false, "multi-step skip function 1", LATER_HX),
     g(312, 0, false, "multi-step skip function 2", LATER_HX),
     g(313, 0, false, "multi-step skip function 3", LATER_HX),
@@ -79,7 +86,7 @@ pub static GCODES: &[GCode] = &[
         390,
         0,
         false,
-        "tool diameter compensation corner arc",
+        "tool diameter compensation at corner arc",
         LATER_COMP,
     ),
     g(400, 7, true, "tool diameter compensation cancel", Yes),
@@ -91,41 +98,53 @@ pub static GCODES: &[GCode] = &[
         "tool diameter compensation right",
         LATER_COMP,
     ),
-    g(430, 8, false, "tool length compensation +", LATER_COMP),
-    g(440, 8, false, "tool length compensation -", LATER_COMP),
+    g(430, 13, false, "tool length compensation +", LATER_COMP),
+    g(440, 13, false, "tool length compensation -", LATER_COMP),
     g(450, 0, false, "tool offset increase", LATER_COMP),
     g(460, 0, false, "tool offset decrease", LATER_COMP),
     g(470, 0, false, "tool offset double increase", LATER_COMP),
     g(480, 0, false, "tool offset double decrease", LATER_COMP),
-    g(490, 8, true, "tool length compensation cancel", Yes),
-    g(500, 11, true, "scaling cancel, mirror image cancel", Yes),
+    g(490, 13, true, "tool length compensation cancel", Yes),
+    g(500, 11, true, "scaling cancel, mirror image cancel", Yes), // default: PI 149 = 0
     g(510, 11, false, "scaling, mirror image", LATER_HX),
     g(520, 0, false, "local coordinate system setting", LATER_HX),
     g(530, 0, false, "machine coordinate system selection", Yes),
-    g(540, 14, true, "work coordinate system 1 selection", Yes),
-    g(550, 14, false, "work coordinate system 2 selection", Yes),
-    g(560, 14, false, "work coordinate system 3 selection", Yes),
-    g(570, 14, false, "work coordinate system 4 selection", Yes),
-    g(580, 14, false, "work coordinate system 5 selection", Yes),
-    g(590, 14, false, "work coordinate system 6 selection", Yes),
+    g(540, 14, true, "work coordinate 1 selection", Yes),
+    g(550, 14, false, "work coordinate 2 selection", Yes),
+    g(560, 14, false, "work coordinate 3 selection", Yes),
+    g(570, 14, false, "work coordinate 4 selection", Yes),
+    g(580, 14, false, "work coordinate 5 selection", Yes),
+    g(590, 14, false, "work coordinate 6 selection", Yes),
     g(600, 0, false, "single direction positioning", LATER_HX),
     g(610, 15, false, "exact stop mode", Yes),
     g(620, 15, false, "automatic corner override mode", Yes),
     g(630, 15, false, "tapping mode", Yes),
     g(640, 15, true, "cutting mode", Yes),
-    g(631, 0, false, "stitch function on", LATER_HX),
-    g(632, 0, false, "stitch function off", LATER_HX),
+    g(631, 24, false, "stitch function mode on", LATER_HX), // §15.6; group is kerf's
+    g(632, 24, true, "stitch function mode off", LATER_HX),
     g(650, 0, false, "macro call", LATER_MACRO),
     g(660, 12, false, "macro modal call", LATER_MACRO),
     g(670, 12, true, "macro modal call cancel", Yes),
     g(680, 18, false, "coordinate system rotation", LATER_HX),
-    g(690, 18, true, "coordinate system rotation cancel", Yes),
+    g(690, 18, true, "coordinate system rotation cancel", Yes), // default: PI 150 = 0
     g(730, 10, false, "high speed peck drilling cycle", LATER_HX),
     g(740, 10, false, "counter tapping cycle", LATER_HX),
     g(760, 10, false, "fine boring cycle", LATER_HX),
     g(800, 10, true, "canned cycle cancel", Yes),
-    g(810, 10, false, "drilling cycle, spot drilling", LATER_HX),
-    g(820, 10, false, "drilling cycle, counter boring", LATER_HX),
+    g(
+        810,
+        10,
+        false,
+        "drilling cycle, spot drilling cycle",
+        LATER_HX,
+    ),
+    g(
+        820,
+        10,
+        false,
+        "drilling dwell cycle, counter boring cycle",
+        LATER_HX,
+    ),
     g(830, 10, false, "peck drilling cycle", LATER_HX),
     g(840, 10, false, "tapping cycle", LATER_HX),
     g(842, 10, false, "rigid tap cycle", LATER_HX),
@@ -135,7 +154,7 @@ pub static GCODES: &[GCode] = &[
     g(870, 10, false, "back boring cycle", LATER_HX),
     g(880, 10, false, "manual boring cycle", LATER_HX),
     g(890, 10, false, "boring dwell cycle", LATER_HX),
-    g(900, 3, true, "absolute command", Yes),
+    g(900, 3, true, "absolute command", Yes), // default: PI 146 = 0
     g(910, 3, false, "incremental command", Yes),
     g(
         920,
@@ -152,10 +171,10 @@ pub static GCODES: &[GCode] = &[
         980,
         19,
         true,
-        "return to initial point in canned cycle",
+        "return to initial point at a canned cycle",
         Yes,
     ),
-    g(990, 19, false, "return to R point in canned cycle", Yes),
+    g(990, 19, false, "return to R-point at a canned cycle", Yes),
     g(1070, 22, false, "cylindrical interpolation", LATER_HX),
     g(
         1120,
@@ -173,7 +192,11 @@ pub static GCODES: &[GCode] = &[
     ),
 ];
 
-/// M codes of 000 §10 (standard Fanuc machining-center assignments).
+/// M codes of 000 §11.1 ("Table of General M Codes"): M00-M06, M08, M09,
+/// M30, M98, M99. §11.1 leaves every other number (M00-M999) to the machine
+/// tool builder; kerf adds the two standard Fanuc machining-centre builder
+/// codes M07 and M19 (marked "assumed"). M29 is not an HX code: the HX taps
+/// rigidly with G84.2/G84.3 (§12.3.5), not with M29 + G84.
 pub static MCODES: &[MCode] = &[
     m(0, "program stop", After, Stop),
     m(1, "optional stop", After, OptionalStop),
@@ -181,15 +204,14 @@ pub static MCODES: &[MCode] = &[
     m(3, "spindle CW", Before, SpindleCw),
     m(4, "spindle CCW", Before, SpindleCcw),
     m(5, "spindle stop", After, SpindleStop),
-    m(6, "tool change", Before, ToolChange),
-    m(7, "coolant mist on", Before, CoolantMist),
+    m(6, "tool change (ATC)", Before, ToolChange),
+    m(7, "coolant mist on", Before, CoolantMist), // assumed (builder code, not in §11.1)
     m(8, "coolant on", Before, CoolantFlood),
     m(9, "coolant off", After, CoolantOff),
-    m(19, "spindle orientation", After, Aux),
-    m(29, "rigid tapping", Before, Aux),
-    m(30, "end of program and rewind", After, End),
-    m(98, "subprogram call", After, SubCall),
-    m(99, "end of subprogram", After, SubReturn),
+    m(19, "spindle orientation", After, Aux), // assumed (builder code, not in §11.1)
+    m(30, "end of tape", After, End),
+    m(98, "sub-program call", After, SubCall),
+    m(99, "end of sub-program", After, SubReturn),
 ];
 
 /// The HX dialect.

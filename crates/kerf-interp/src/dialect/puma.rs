@@ -1,6 +1,10 @@
 //! Daewoo PUMA 450 with a Fanuc 0-T control, G-code system A (001): the
-//! G-code table with modal groups and `#` power-on defaults, and the
-//! machine's M-code list.
+//! G-code table ("standard G code" column) with its modal groups and the
+//! power-on defaults 001 marks with `#`, and the machine's complete M-code
+//! list ("NC LATHE M-CODE LIST" and the M-function descriptions).
+//!
+//! Where 001 is garbled or kerf departs from it, the decision is recorded
+//! in docs/dialects.md.
 use super::MAction::*;
 use super::MWhen::*;
 use super::Support::*;
@@ -10,25 +14,46 @@ const LATER_MACRO: Support = Later("custom macro B and subprograms (issue 3)");
 const LATER_LATHE: Support = Later("PUMA lathe cycles, threading and reference returns (issue 6)");
 const LATER_COMP: Support = Later("tool compensation (issue 5)");
 
-/// G codes of 001 (system A).
+/// G codes of 001 (system A). G10, G31 and G65-G67 are not in 001's
+/// G-code table but are Fanuc 0-T codes (001 itself uses G31 in the M86
+/// example); they are kept so that programs reach the "not yet supported"
+/// alarm instead of "unknown G code".
 pub static GCODES: &[GCode] = &[
-    g(0, 1, true, "positioning (rapid traverse)", Yes),
-    g(10, 1, false, "linear interpolation (cutting feed)", Yes),
-    g(20, 1, false, "circular interpolation CW", Yes),
-    g(30, 1, false, "circular interpolation CCW", Yes),
+    g(0, 1, true, "positioning (rapid feed)", Yes), // # in 001
+    g(10, 1, false, "straight interpolation", Yes),
+    g(20, 1, false, "circular interpolation (CW)", Yes),
+    g(30, 1, false, "circular interpolation (CCW)", Yes),
     g(40, 0, false, "dwell", Yes),
-    g(100, 0, false, "offset value setting", LATER_COMP),
-    g(200, 6, false, "inch input", Yes),
-    g(210, 6, true, "metric input", Yes),
-    g(220, 4, false, "stored stroke check on", LATER_LATHE),
-    g(230, 4, true, "stored stroke check off", Yes),
-    g(270, 0, false, "reference point return check", LATER_LATHE),
-    g(280, 0, false, "return to reference point", LATER_LATHE),
-    g(290, 0, false, "return from reference point", LATER_LATHE),
-    g(300, 0, false, "return to 2nd reference point", LATER_LATHE),
-    g(310, 0, false, "skip cutting", LATER_LATHE),
-    g(320, 1, false, "thread cutting", LATER_LATHE),
-    g(400, 7, true, "tool nose radius compensation cancel", Yes),
+    g(100, 0, false, "offset value setting", LATER_COMP), // Fanuc 0-T, not in 001's table
+    g(200, 6, false, "data input (inch)", Yes),
+    g(210, 6, true, "data input (mm)", Yes), // # in 001
+    g(
+        220,
+        4,
+        true,
+        "stored distance limit effective (spindle interference check on)",
+        LATER_LATHE,
+    ), // # in 001
+    g(
+        230,
+        4,
+        false,
+        "stored distance limit ineffective (spindle interference check off)",
+        Yes,
+    ),
+    g(270, 0, false, "machine reference return check", LATER_LATHE),
+    g(280, 0, false, "automatic reference return", LATER_LATHE),
+    g(290, 0, false, "return from reference", LATER_LATHE),
+    g(300, 0, false, "2nd reference return", LATER_LATHE),
+    g(310, 0, false, "skip cutting", LATER_LATHE), // Fanuc 0-T; used in 001's M86 example
+    g(
+        320,
+        1,
+        false,
+        "thread process (thread cutting)",
+        LATER_LATHE,
+    ), // 001 prints "#G32": see docs/dialects.md
+    g(400, 7, true, "cancel of compensation", Yes), // not #-marked in 001; Fanuc reset state
     g(
         410,
         7,
@@ -47,41 +72,216 @@ pub static GCODES: &[GCode] = &[
         500,
         0,
         false,
-        "work coordinate system change, max spindle speed setting",
+        "coordinate system setting, max spindle speed setting",
         Yes,
     ),
-    g(650, 0, false, "user macro simple call", LATER_MACRO),
+    g(650, 0, false, "user macro simple call", LATER_MACRO), // Fanuc 0-T, not in 001's table
     g(660, 12, false, "user macro modal call", LATER_MACRO),
     g(670, 12, true, "user macro modal call cancel", Yes),
-    g(700, 0, false, "finishing cycle", LATER_LATHE),
-    g(710, 0, false, "stock removal in turning", LATER_LATHE),
-    g(720, 0, false, "stock removal in facing", LATER_LATHE),
-    g(730, 0, false, "pattern repeating", LATER_LATHE),
-    g(740, 0, false, "peck drilling in Z axis", LATER_LATHE),
-    g(750, 0, false, "grooving in X axis", LATER_LATHE),
-    g(760, 0, false, "multiple thread cutting cycle", LATER_LATHE),
-    g(900, 1, false, "cutting cycle A (OD/ID)", LATER_LATHE),
-    g(920, 1, false, "thread cutting cycle", LATER_LATHE),
-    g(940, 1, false, "cutting cycle B (end face)", LATER_LATHE),
+    g(
+        700,
+        0,
+        false,
+        "compound repeat cycle (finishing cycle)",
+        LATER_LATHE,
+    ),
+    g(
+        710,
+        0,
+        false,
+        "compound repeat cycle (stock removal in turning)",
+        LATER_LATHE,
+    ),
+    g(
+        720,
+        0,
+        false,
+        "compound repeat cycle (stock removal in facing)",
+        LATER_LATHE,
+    ),
+    g(
+        730,
+        0,
+        false,
+        "compound repeat cycle (pattern repeating cycle)",
+        LATER_LATHE,
+    ),
+    g(
+        740,
+        0,
+        false,
+        "compound repeat cycle (peck drilling in Z direction)",
+        LATER_LATHE,
+    ),
+    g(
+        750,
+        0,
+        false,
+        "compound repeat cycle (grooving in X direction)",
+        LATER_LATHE,
+    ),
+    g(
+        760,
+        0,
+        false,
+        "compound repeat cycle (thread cutting cycle)",
+        LATER_LATHE,
+    ),
+    g(
+        900,
+        1,
+        false,
+        "fixed cycle (process cycle in turning)",
+        LATER_LATHE,
+    ),
+    g(
+        920,
+        1,
+        false,
+        "fixed cycle (thread process cycle)",
+        LATER_LATHE,
+    ),
+    g(
+        940,
+        1,
+        false,
+        "fixed cycle (facing process cycle)",
+        LATER_LATHE,
+    ),
     g(960, 2, false, "constant surface speed control", Yes),
-    g(970, 2, true, "constant surface speed control cancel", Yes),
-    g(980, 5, false, "feed per minute", Yes),
-    g(990, 5, true, "feed per revolution", Yes),
+    g(
+        970,
+        2,
+        true,
+        "constant surface speed control cancel (rpm)",
+        Yes,
+    ), // # in 001
+    g(980, 5, false, "feed per minute (mm/min)", Yes),
+    g(990, 5, true, "feed per revolution (mm/rev)", Yes), // # in 001
 ];
 
-/// The PUMA 450 M-code list (001).
+/// The PUMA 450 M-code list of 001 (both pages of the list, plus M82/M83
+/// which only the M-function descriptions name). `when`: codes that switch
+/// something on, clamp, advance, select or prepare act before the block's
+/// motion; codes that stop, switch off, unclamp, retract, count or end act
+/// after it (the usual Fanuc PMC sequencing). Machine functions that kerf
+/// does not model are `Aux` events with the manual's name.
 pub static MCODES: &[MCode] = &[
     m(0, "program stop", After, Stop),
     m(1, "optional stop", After, OptionalStop),
-    m(2, "end of program", After, End),
-    m(3, "spindle CW", Before, SpindleCw),
-    m(4, "spindle CCW", Before, SpindleCcw),
-    m(5, "spindle stop", After, SpindleStop),
+    m(2, "program end", After, End),
+    m(3, "main spindle forward", Before, SpindleCw),
+    m(4, "main spindle reverse", Before, SpindleCcw),
+    m(5, "main spindle stop", After, SpindleStop),
+    m(7, "high pressure coolant on", Before, Aux), // option; not the mist coolant of a mill
     m(8, "coolant on", Before, CoolantFlood),
-    m(9, "coolant off", After, CoolantOff),
-    m(30, "end of program and rewind", After, End),
-    m(98, "subprogram call", After, SubCall),
-    m(99, "end of subprogram", After, SubReturn),
+    m(9, "coolant off", After, CoolantOff), // stops high pressure and normal coolant
+    m(10, "parts catcher advance", Before, Aux),
+    m(11, "parts catcher retract", After, Aux),
+    m(13, "turret air blow", Before, Aux),
+    m(14, "main spindle air blow", Before, Aux),
+    m(15, "air blow off", After, Aux),
+    m(17, "machine lock on (MDI only)", Before, Aux),
+    m(18, "machine lock off (MDI only)", After, Aux),
+    m(19, "main spindle orientation", After, Aux),
+    m(24, "chip conveyor run", Before, Aux),
+    m(25, "chip conveyor stop", After, Aux),
+    m(30, "program end and rewind", After, End),
+    m(31, "interlock by-pass (spindle and tailstock)", Before, Aux),
+    m(
+        32,
+        "interlock by-pass (spindle and steady rest)",
+        Before,
+        Aux,
+    ),
+    m(33, "revolving tool spindle forward", Before, Aux),
+    m(34, "revolving tool spindle reverse", Before, Aux),
+    m(35, "revolving tool spindle stop", After, Aux),
+    m(38, "steady rest 1 clamp", Before, Aux), // name lost in 001's list; from M39/M58/M59 and the text
+    m(39, "steady rest 1 unclamp", After, Aux),
+    m(40, "gear change neutral", Before, Aux),
+    m(41, "gear change low", Before, Aux),
+    m(42, "gear change middle", Before, Aux),
+    m(43, "gear change high", Before, Aux),
+    m(
+        46,
+        "programmable tailstock body unclamp and traction bar advance",
+        Before,
+        Aux,
+    ),
+    m(
+        47,
+        "programmable tailstock body clamp and traction bar retract",
+        After,
+        Aux,
+    ),
+    m(50, "bar feeder command 1", Before, Aux),
+    m(51, "bar feeder command 2", Before, Aux),
+    m(52, "splash guard door open", After, Aux),
+    m(53, "splash guard door close", Before, Aux),
+    m(54, "parts count", After, Aux),
+    m(58, "steady rest 2 clamp", Before, Aux),
+    m(59, "steady rest 2 unclamp", After, Aux),
+    m(
+        61,
+        "switching low speed (aP60 spindle motor, Y connection)",
+        Before,
+        Aux,
+    ),
+    m(
+        62,
+        "switching high speed (aP60 spindle motor, delta connection)",
+        Before,
+        Aux,
+    ),
+    m(63, "main spindle CW and coolant on", Before, SpindleCw), // coolant part not modelled
+    m(64, "main spindle CCW and coolant on", Before, SpindleCcw), // list: "coolant off"; text: "on"
+    m(65, "main spindle and coolant stop", After, SpindleStop),
+    m(66, "dual chucking low clamp", Before, Aux),
+    m(67, "dual chucking high clamp", Before, Aux),
+    m(68, "main chuck clamp", Before, Aux),
+    m(69, "main chuck unclamp", After, Aux),
+    m(70, "dual tailstock low advance", Before, Aux),
+    m(74, "error detect on", Before, Aux),
+    m(75, "error detect off", Before, Aux), // power-on state
+    m(76, "thread chamfering on", Before, Aux),
+    m(77, "thread chamfering off", Before, Aux), // modal; power-on state assumed
+    m(78, "tailstock quill advance", Before, Aux),
+    m(79, "tailstock quill retract", After, Aux),
+    m(80, "Q-setter swing arm down", Before, Aux),
+    m(81, "Q-setter swing arm up", After, Aux),
+    m(82, "mirror image on", Before, Aux), // M-function text only
+    m(83, "mirror image off", Before, Aux), // M-function text only
+    m(84, "turret CW rotation", Before, Aux), // non-modal, with the T code
+    m(85, "turret CCW rotation", Before, Aux), // non-modal, with the T code
+    m(86, "torque skip act", Before, Aux),
+    m(87, "torque skip cancel", After, Aux),
+    m(88, "C-axis low clamp", Before, Aux), // list: "spindle low clamp"
+    m(89, "C-axis high clamp", Before, Aux), // list: "spindle high clamp"
+    m(90, "C-axis unclamp", Before, Aux),   // list: "spindle unclamp"; before C motion
+    m(91, "external M91 command", Before, Aux),
+    m(92, "external M92 command", Before, Aux),
+    m(93, "external M93 command", Before, Aux),
+    m(94, "external M94 command", Before, Aux),
+    m(98, "sub-program call", After, SubCall),
+    m(99, "end of sub-program", After, SubReturn),
+    m(103, "sub-spindle forward", Before, Aux),
+    m(104, "sub-spindle reverse", Before, Aux),
+    m(105, "sub-spindle stop", After, Aux),
+    m(110, "parts catcher 2 advance (sub)", Before, Aux),
+    m(111, "parts catcher 2 retract (sub)", After, Aux),
+    m(114, "sub-spindle air blow", Before, Aux),
+    m(119, "sub-spindle orientation", After, Aux),
+    m(131, "interlock by-pass (sub-spindle)", Before, Aux),
+    m(163, "sub-spindle CW and coolant on", Before, Aux),
+    m(164, "sub-spindle CCW and coolant on", Before, Aux), // list: "coolant off"
+    m(165, "sub-spindle and coolant stop", After, Aux),
+    m(168, "sub-chuck clamp", Before, Aux),
+    m(169, "sub-chuck unclamp", After, Aux),
+    m(203, "forward synchronous command", Before, Aux),
+    m(204, "reverse synchronous command", Before, Aux),
+    m(205, "synchronous stop", After, Aux),
+    m(206, "spindle rotation release", Before, Aux),
 ];
 
 /// The PUMA dialect.

@@ -1,0 +1,159 @@
+//! Throughput benchmark (harness = false): `cargo bench -p kerf-cli --bench throughput`.
+//!
+//! Runs over one large program (default `bench-inputs/surface_1m.nc` at the
+//! workspace root, or the file named by `KERF_BENCH_INPUT`):
+//!
+//! - `parse`: the lexer/parser alone (`LineSource` + `parse_block`);
+//! - `interp`: the interpreter through its library API, every canonical
+//!   command taken from `step()` and dropped (no output sinks);
+//!
+//! each 3 times, printing the median blocks/s and MB/s. Generate the input
+//! with `python3 ../shared/bench/gen_programs.py --out bench-inputs` (see
+//! docs/benchmarks.md). Optional env: `KERF_BENCH_MACHINE` (default hx-mc),
+//! `KERF_BENCH_RUNS` (default 3).
+
+use std::fs::File;
+use std::hint::black_box;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use kerf_interp::{Interp, Profile, Settings, Step};
+use kerf_lang::{parse_block, Block, LexOptions, LineSource, RawBlock};
+
+struct Sample {
+    secs: f64,
+    blocks: u64,
+    /// Set when the run stopped before the end of the text (alarm).
+    note: String,
+}
+
+fn parse_only(path: &PathBuf) -> Sample {
+    let f = File::open(path).expect("open input");
+    let t = Instant::now();
+    let mut src = LineSource::new(Box::new(f), 4096, false);
+    let opts = LexOptions::default();
+    let mut raw = RawBlock::default();
+    let mut block = Block::default();
+    let mut blocks = 0u64;
+    let mut errors = 0u64;
+    let mut words = 0u64;
+    while src.next_block(&mut raw).expect("read") {
+        blocks += 1;
+        match parse_block(&raw.text, &opts, &mut block) {
+            Ok(()) => words += block.words.len() as u64,
+            Err(_) => errors += 1,
+        }
+    }
+    black_box(words);
+    let secs = t.elapsed().as_secs_f64();
+    if errors > 0 {
+        println!("        ({errors} blocks did not parse; timed all the same)");
+    }
+    Sample {
+        secs,
+        blocks,
+        note: String::new(),
+    }
+}
+
+fn interp(path: &PathBuf, machine: &str) -> Sample {
+    let profile =
+        Profile::builtin(machine).unwrap_or_else(|| panic!("no built-in machine {machine}"));
+    let f = File::open(path).expect("open input");
+    let t = Instant::now();
+    let mut it = Interp::new(profile, Settings::default());
+    let name = path.display().to_string();
+    it.load_main(&name, Box::new(f));
+    let mut events = 0u64;
+    let note = loop {
+        match it.step() {
+            Step::Event(e) => {
+                black_box(&e);
+                events += 1;
+            }
+            Step::End => break String::new(),
+            Step::Alarm(a) => break format!(
+                "STOPPED ON ALARM at line {} col {}: {} (figures cover only the blocks before it)",
+                a.src.line, a.src.col, a
+            ),
+        }
+    };
+    black_box(events);
+    let secs = t.elapsed().as_secs_f64();
+    Sample {
+        secs,
+        blocks: it.blocks(),
+        note,
+    }
+}
+
+fn median(mut v: Vec<Sample>) -> Sample {
+    v.sort_by(|a, b| a.secs.total_cmp(&b.secs));
+    let n = v.len();
+    v.swap_remove(n / 2)
+}
+
+fn report(what: &str, runs: Vec<Sample>, bytes: u64) {
+    let all: Vec<String> = runs.iter().map(|s| format!("{:.3}", s.secs)).collect();
+    let m = median(runs);
+    let bps = m.blocks as f64 / m.secs;
+    // MB/s only means something when the whole file was read.
+    let mbps = if m.note.is_empty() {
+        format!("{:>8.1} MB/s", bytes as f64 / 1e6 / m.secs)
+    } else {
+        "     n/a MB/s".into()
+    };
+    println!(
+        "{what:<7} median {:>7.3} s  {:>10} blocks  {:>12.0} blocks/s  {mbps}   (runs: {})",
+        m.secs,
+        m.blocks,
+        bps,
+        all.join(", ")
+    );
+    if !m.note.is_empty() {
+        println!("        note: {}", m.note);
+    }
+}
+
+fn main() {
+    // `cargo bench` passes `--bench`; a filter argument may follow.
+    let filter: Option<String> = std::env::args().skip(1).find(|a| !a.starts_with('-'));
+    let path = match std::env::var_os("KERF_BENCH_INPUT") {
+        Some(p) => PathBuf::from(p),
+        None => PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../bench-inputs/surface_1m.nc"),
+    };
+    if !path.is_file() {
+        println!("throughput: input {} not found; skipping.", path.display());
+        println!("Generate it from the workspace root with:");
+        println!("    python3 ../shared/bench/gen_programs.py --out bench-inputs");
+        println!("or point KERF_BENCH_INPUT at a program.");
+        return;
+    }
+    let machine = std::env::var("KERF_BENCH_MACHINE").unwrap_or_else(|_| "hx-mc".into());
+    let runs: usize = std::env::var("KERF_BENCH_RUNS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(3)
+        .max(1);
+    let bytes = std::fs::metadata(&path).map(|m| m.len()).unwrap_or(0);
+    println!(
+        "throughput: {} ({:.1} MB), machine {machine}, median of {runs}",
+        path.display(),
+        bytes as f64 / 1e6
+    );
+    let want = |name: &str| filter.as_deref().map_or(true, |f| name.contains(f));
+    if want("parse") {
+        report(
+            "parse",
+            (0..runs).map(|_| parse_only(&path)).collect(),
+            bytes,
+        );
+    }
+    if want("interp") {
+        report(
+            "interp",
+            (0..runs).map(|_| interp(&path, &machine)).collect(),
+            bytes,
+        );
+    }
+}
