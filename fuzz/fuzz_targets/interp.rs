@@ -18,13 +18,20 @@ const MAX_BLOCKS: u64 = 20_000;
 fn profiles() -> &'static Vec<Profile> {
     static P: OnceLock<Vec<Profile>> = OnceLock::new();
     P.get_or_init(|| {
-        MACHINES.iter().map(|m| Profile::builtin(m).expect("built-in profile")).collect()
+        MACHINES
+            .iter()
+            .map(|m| Profile::builtin(m).expect("built-in profile"))
+            .collect()
     })
 }
 
 fuzz_target!(|data: &[u8]| {
     for profile in profiles() {
-        let settings = Settings { max_blocks: MAX_BLOCKS, block_skip: 0b10, ..Settings::default() };
+        let settings = Settings {
+            max_blocks: MAX_BLOCKS,
+            block_skip: 0b10,
+            ..Settings::default()
+        };
         let mut it = Interp::new(profile.clone(), settings);
         it.load_main("fuzz.nc", Box::new(std::io::Cursor::new(data.to_vec())));
         for _ in 0..MAX_STEPS {
@@ -34,7 +41,10 @@ fuzz_target!(|data: &[u8]| {
                 Step::Alarm(a) => {
                     // Every alarm carries a usable source position and text.
                     assert!(a.src.line >= 1, "alarm with line 0: {a:?}");
-                    assert!(!a.code.is_empty() && !a.message.is_empty(), "empty alarm: {a:?}");
+                    assert!(
+                        !a.code.is_empty() && !a.message.is_empty(),
+                        "empty alarm: {a:?}"
+                    );
                     let _ = it.file_name(a.src.file);
                     break;
                 }

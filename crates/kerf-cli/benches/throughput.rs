@@ -72,10 +72,12 @@ fn interp(path: &PathBuf, machine: &str) -> Sample {
                 events += 1;
             }
             Step::End => break String::new(),
-            Step::Alarm(a) => break format!(
+            Step::Alarm(a) => {
+                break format!(
                 "STOPPED ON ALARM at line {} col {}: {} (figures cover only the blocks before it)",
                 a.src.line, a.src.col, a
-            ),
+            )
+            }
         }
     };
     black_box(events);

@@ -90,7 +90,7 @@ impl Summary {
         if !cutting {
             return;
         }
-        let mut pts = vec![*from, m.to];
+        let mut pts = [*from, m.to, m.to, m.to];
         if let Canon::Arc {
             center, plane, dir, ..
         } = &e.cmd
@@ -102,19 +102,16 @@ impl Summary {
                 (center[a1], center[a2]),
                 matches!(dir, kerf_canon::ArcDir::Ccw),
             );
-            let mut p = m.to;
-            p[a1] = u0;
-            p[a2] = v0;
-            pts.push(p);
-            p[a1] = u1;
-            p[a2] = v1;
-            pts.push(p);
+            pts[2][a1] = u0;
+            pts[2][a2] = v0;
+            pts[3][a1] = u1;
+            pts[3][a2] = v1;
         }
         for p in pts {
             let b = self.bbox.get_or_insert((p, p));
-            for i in 0..p.len() {
-                b.0[i] = b.0[i].min(p[i]);
-                b.1[i] = b.1[i].max(p[i]);
+            for (i, v) in p.iter().enumerate() {
+                b.0[i] = b.0[i].min(*v);
+                b.1[i] = b.1[i].max(*v);
             }
         }
     }

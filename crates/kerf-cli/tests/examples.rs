@@ -35,45 +35,35 @@ fn examples_dir() -> PathBuf {
 }
 
 /// (program, expectation file, variant name) for one machine folder.
+/// `NAME.expect.toml` belongs to `NAME.nc`; `NAME.VARIANT.expect.toml` to
+/// `NAME.nc` too when there is no `NAME.VARIANT.nc`.
 fn cases(folder: &str) -> Vec<(PathBuf, PathBuf, String)> {
     let dir = examples_dir().join(folder);
-    let mut programs: Vec<PathBuf> = std::fs::read_dir(&dir)
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("cannot read {}: {e}", dir.display()))
         .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "nc"))
         .collect();
-    programs.sort();
-    let mut all: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap()
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .collect();
-    all.sort();
+    files.sort();
     let mut out = Vec::new();
-    for prog in programs {
-        let stem = prog.file_stem().unwrap().to_string_lossy().to_string();
-        for cand in &all {
-            let name = cand.file_name().unwrap().to_string_lossy().to_string();
-            let Some(rest) = name.strip_prefix(&format!("{stem}.")) else {
-                continue;
-            };
-            let Some(variant) = rest.strip_suffix("expect.toml") else {
-                continue;
-            };
-            let variant = variant.trim_end_matches('.').to_string();
-            // "NAME.expect.toml" -> "", "NAME.skip.expect.toml" -> "skip";
-            // a longer program name sharing the prefix has no .nc match here
-            // only if the variant contains no dot.
-            if variant.contains('.') {
-                continue;
+    for expect in files {
+        let name = expect.file_name().unwrap().to_string_lossy().to_string();
+        let Some(base) = name.strip_suffix(".expect.toml") else {
+            continue;
+        };
+        let direct = dir.join(format!("{base}.nc"));
+        if direct.is_file() {
+            out.push((direct, expect.clone(), String::new()));
+            continue;
+        }
+        match base.rsplit_once('.') {
+            Some((stem, variant)) if dir.join(format!("{stem}.nc")).is_file() => {
+                out.push((
+                    dir.join(format!("{stem}.nc")),
+                    expect.clone(),
+                    variant.to_string(),
+                ));
             }
-            if !variant.is_empty()
-                && all.iter().any(|p| {
-                    p.file_name().unwrap().to_string_lossy() == format!("{stem}.{variant}.nc")
-                })
-            {
-                continue;
-            }
-            out.push((prog.clone(), cand.clone(), variant));
+            _ => panic!("{}: no program for this expectation", expect.display()),
         }
     }
     out

@@ -118,6 +118,16 @@ pub struct Interp {
     cur: SrcRef,
     arc_tol: f64,
     h_table: Vec<f64>,
+    /// G codes by value × 10 (fast lookup).
+    g_index: Vec<Option<&'static crate::dialect::GCode>>,
+    /// M codes below 256 (fast lookup).
+    m_index: Vec<Option<crate::dialect::MCode>>,
+    /// Letters the dialect accepts, by letter - 'A'.
+    letter_ok: [bool; 26],
+    /// Which axis slots the machine has.
+    has_axis: [bool; NAXES],
+    /// Travel limits (machine coordinates) per axis slot.
+    travel: [Option<(f64, f64)>; NAXES],
 }
 
 type R<T> = Result<T, Alarm>;
@@ -216,6 +226,27 @@ impl Interp {
             }
         }
         let arc_tol = profile.param("arc_tolerance_mm", 0.02);
+        let mut g_index = vec![None; 2000];
+        for g in dialect.gcodes {
+            if let Some(slot) = g_index.get_mut(g.code10 as usize) {
+                *slot = Some(g);
+            }
+        }
+        let m_index: Vec<_> = (0..256u16).map(|m| dialect.mcode(m).copied()).collect();
+        let mut letter_ok = [false; 26];
+        for &l in dialect.letters {
+            if l.is_ascii_uppercase() {
+                letter_ok[(l - b'A') as usize] = true;
+            }
+        }
+        let mut has_axis = [false; NAXES];
+        let mut travel = [None; NAXES];
+        for ax in Axis::ALL {
+            if let Some(a) = profile.axis(ax) {
+                has_axis[ax as usize] = true;
+                travel[ax as usize] = Some((a.min, a.max));
+            }
+        }
         Interp {
             profile,
             dialect,
@@ -240,6 +271,11 @@ impl Interp {
             cur: SrcRef::default(),
             arc_tol,
             h_table: vec![0.0; 129],
+            g_index,
+            m_index,
+            has_axis,
+            travel,
+            letter_ok,
         }
     }
 
@@ -535,7 +571,7 @@ impl Interp {
                     self.words.nm += 1;
                 }
                 Addr::L(l) => {
-                    if !self.dialect.letters.contains(&l) {
+                    if !self.letter_ok[(l - b'A') as usize] {
                         return Err(self.alarm(
                             AlarmKind::IllegalAddress,
                             w.at,
@@ -543,7 +579,7 @@ impl Interp {
                         ));
                     }
                     if let Some(ax) = Axis::from_letter(l) {
-                        if !self.profile.has_axis(ax) && !self.letter_is_argument(l) {
+                        if !self.has_axis[ax as usize] && !self.letter_is_argument(l) {
                             return Err(self.alarm(
                                 AlarmKind::NoSuchAxis,
                                 w.at,
@@ -610,7 +646,7 @@ impl Interp {
         let mut n_one = 0;
         for i in 0..self.words.ng {
             let (c, at) = self.words.g[i];
-            let Some(g) = d.gcode(c) else {
+            let Some(g) = self.gcode(c) else {
                 return Err(self.alarm(
                     AlarmKind::UnknownG,
                     at,
@@ -659,7 +695,7 @@ impl Interp {
         // Modal (and specific) G codes.
         for i in 0..self.words.ng {
             let (c, _) = self.words.g[i];
-            let g = d.gcode(c).expect("checked");
+            let g = self.gcode(c).expect("checked");
             if g.group != 0 && g.group != 1 {
                 self.st.modal[g.group as usize] = c;
                 Self::apply_modal(&mut self.st, d.id, c);
@@ -748,6 +784,14 @@ impl Interp {
         Ok(!self.finished_by_end())
     }
 
+    #[inline]
+    fn gcode(&self, code10: u16) -> Option<&'static crate::dialect::GCode> {
+        match self.g_index.get(code10 as usize) {
+            Some(g) => *g,
+            None => self.dialect.gcode(code10),
+        }
+    }
+
     fn finished_by_end(&self) -> bool {
         self.queue
             .back()
@@ -755,6 +799,9 @@ impl Interp {
     }
 
     fn mcode(&self, m: u32) -> Option<crate::dialect::MCode> {
+        if let Some(mc) = self.m_index.get(m as usize) {
+            return *mc;
+        }
         if let Some(mc) = self.dialect.mcode(m.min(65535) as u16) {
             return Some(*mc);
         }
@@ -852,6 +899,7 @@ impl Interp {
             990 if d == DialectId::Puma => st.feed_mode = FeedMode::PerRev,
             960 => st.css = true,
             970 => st.css = false,
+            700 if d == DialectId::Hurco => st.metric = false,
             70 if d == DialectId::Hurco => st.diameter = false,
             80 if d == DialectId::Hurco => st.diameter = true,
             _ => {}
@@ -909,10 +957,15 @@ impl Interp {
     }
 
     /// Range check of 002 Tables 2-3 for Hurco geometric words.
+    #[inline]
     fn check_range(&self, l: u8, w: WVal) -> R<()> {
         if self.dialect.id != DialectId::Hurco {
             return Ok(());
         }
+        self.check_range_hurco(l, w)
+    }
+
+    fn check_range_hurco(&self, l: u8, w: WVal) -> R<()> {
         let limit = match l {
             b'X' | b'Z' | b'I' | b'K' | b'R' | b'U' | b'W' => {
                 if self.st.metric {
@@ -1235,7 +1288,7 @@ impl Interp {
         for ax in Axis::ALL {
             let l = ax_letter(ax);
             let i = ax as usize;
-            let abs_w = self.words.get(l).filter(|_| self.profile.has_axis(ax));
+            let abs_w = self.words.get(l).filter(|_| self.has_axis[ax as usize]);
             let inc_l = self.uvw(ax);
             if let (Some(w), Some(_)) = (abs_w, inc_l) {
                 return Err(self.alarm(
@@ -1270,10 +1323,10 @@ impl Interp {
 
     fn check_travel(&self, m: &Pos, at: u32) -> R<()> {
         for ax in Axis::ALL {
-            if let Some(a) = self.profile.axis(ax) {
+            if let Some((min, max)) = self.travel[ax as usize] {
                 let v = m[ax as usize];
-                if v < a.min - 1e-9 || v > a.max + 1e-9 {
-                    let side = if v > a.max { '+' } else { '-' };
+                if v < min - 1e-9 || v > max + 1e-9 {
+                    let side = if v > max { '+' } else { '-' };
                     return Err(self.alarm(
                         AlarmKind::Overtravel,
                         at,
@@ -1282,8 +1335,8 @@ impl Interp {
                             ax.name().to_uppercase(),
                             ax.name().to_uppercase(),
                             v,
-                            a.min,
-                            a.max
+                            min,
+                            max
                         ),
                     ));
                 }
@@ -1369,7 +1422,14 @@ impl Interp {
                 }
                 return Ok(());
             }
-            match arc::center_from_radius(s, e, rv, ccw, self.arc_tol) {
+            // 001 p.15 note (4): on the PUMA an R shorter than half the
+            // move is overridden and a half circle made; the others alarm.
+            let tol = if self.dialect.id == DialectId::Puma {
+                f64::INFINITY
+            } else {
+                self.arc_tol
+            };
+            match arc::center_from_radius(s, e, rv, ccw, tol) {
                 Ok(c) => c,
                 Err(_) => {
                     let half = (s.0 - e.0).hypot(s.1 - e.1) / 2.0;
@@ -1536,7 +1596,7 @@ impl Interp {
         let (tw, _) = self.target()?;
         let mut named = [false; NAXES];
         for ax in Axis::ALL {
-            named[ax as usize] = self.profile.has_axis(ax)
+            named[ax as usize] = self.has_axis[ax as usize]
                 && (self.words.has(ax_letter(ax)) || self.uvw(ax).is_some());
         }
         let linear = self.linear_rapid();
@@ -1822,11 +1882,7 @@ impl Interp {
         let mut raw = RawBlock::default();
         let mut blk = Block::default();
         let mut depth = 0u32;
-        loop {
-            match src.next_block(&mut raw) {
-                Ok(true) => {}
-                _ => break,
-            }
+        while let Ok(true) = src.next_block(&mut raw) {
             if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
                 continue;
             }
@@ -1904,7 +1960,7 @@ pub(crate) fn fmt_num(v: f64) -> String {
 }
 
 fn fmt_code(c10: u16) -> String {
-    if c10 % 10 == 0 {
+    if c10.is_multiple_of(10) {
         format!("{:02}", c10 / 10)
     } else {
         format!("{:02}.{}", c10 / 10, c10 % 10)

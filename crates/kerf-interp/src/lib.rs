@@ -14,6 +14,9 @@
 //! - [`macros`]: variables and expression evaluation;
 //! - [`alarms`]: every alarm and its code per control.
 
+// Axis arithmetic indexes several parallel position arrays by slot.
+#![allow(clippy::needless_range_loop)]
+
 pub mod alarms;
 pub mod arc;
 pub mod dialect;

@@ -164,7 +164,12 @@ impl Profile {
             if axis_by_name(k).is_none() {
                 return Err(format!("unknown axis '{k}' (use x y z a b c)"));
             }
-            if !(a.min <= a.max) || !(a.rapid > 0.0) {
+            if a.min.is_nan()
+                || a.max.is_nan()
+                || a.min > a.max
+                || a.rapid.is_nan()
+                || a.rapid <= 0.0
+            {
                 return Err(format!("axis '{k}': need min <= max and rapid > 0"));
             }
         }
@@ -175,7 +180,7 @@ impl Profile {
                 }
             }
         }
-        if !(self.feed.max_cutting > 0.0) {
+        if self.feed.max_cutting.is_nan() || self.feed.max_cutting <= 0.0 {
             return Err("feed.max_cutting must be > 0".into());
         }
         Ok(())

@@ -201,7 +201,24 @@ impl<'a> P<'a> {
                         _ => return err(LexErrorKind::UnexpectedChar(b','), start),
                     }
                 }
-                c if c.is_ascii_alphabetic() => self.letters(b, start)?,
+                c if c.is_ascii_alphabetic() => {
+                    // Fast path: one address letter followed by a plain number.
+                    let next = self.t.get(self.i + 1).copied().unwrap_or(b' ');
+                    let l = c.to_ascii_uppercase();
+                    if (next.is_ascii_digit() || next == b'-' || next == b'.')
+                        && !matches!(l, b'N' | b'O')
+                    {
+                        self.i += 1;
+                        let val = self.value(b, start)?;
+                        b.words.push(Word {
+                            addr: Addr::L(l),
+                            val,
+                            at: start as u32,
+                        });
+                    } else {
+                        self.letters(b, start)?
+                    }
+                }
                 c => return err(LexErrorKind::UnexpectedChar(c), start),
             }
         }
@@ -436,6 +453,12 @@ impl<'a> P<'a> {
 
     /// The value of a word.
     fn value(&mut self, b: &mut Block, addr_at: usize) -> R<Val> {
+        // Fast path: digits right after the address.
+        if let Some(c) = self.t.get(self.i) {
+            if c.is_ascii_digit() {
+                return Ok(Val::Num(self.number(addr_at)?));
+            }
+        }
         let save = self.i;
         let mut neg = false;
         match self.peek() {
@@ -468,27 +491,30 @@ impl<'a> P<'a> {
 
     /// Unsigned decimal number; spaces between digits are ignored.
     fn number(&mut self, at: usize) -> R<Num> {
+        let t = self.t;
+        let mut i = self.i;
         let mut mant: u64 = 0;
         let mut digits: u32 = 0;
         let mut frac: i32 = 0;
         let mut point = false;
-        while let Some(c) = self.peek() {
-            match c {
-                b'0'..=b'9' => {
-                    digits += 1;
-                    if digits > self.o.max_digits as u32 || digits > 18 {
-                        return err(LexErrorKind::TooManyDigits, at);
-                    }
-                    mant = mant * 10 + (c - b'0') as u64;
-                    if point {
-                        frac += 1;
-                    }
+        let max = (self.o.max_digits as u32).min(18);
+        while i < t.len() {
+            let c = t[i];
+            if c.is_ascii_digit() {
+                digits += 1;
+                if digits > max {
+                    return err(LexErrorKind::TooManyDigits, at);
                 }
-                b'.' if !point => point = true,
-                _ => break,
+                mant = mant * 10 + (c - b'0') as u64;
+                frac += point as i32;
+            } else if c == b'.' && !point {
+                point = true;
+            } else if !is_blank(c) {
+                break;
             }
-            self.i += 1;
+            i += 1;
         }
+        self.i = i;
         if digits == 0 {
             return err(LexErrorKind::MissingValue, at);
         }

@@ -6,6 +6,9 @@
 //! (it will keep this interface). It reads only kerf-canon, never the
 //! interpreter.
 
+// Axis arithmetic indexes several parallel position arrays by slot.
+#![allow(clippy::needless_range_loop)]
+
 use kerf_canon::{Axis, Canon, Event, Feed, Pos, NAXES};
 
 /// The machine data the estimator needs.

@@ -54,7 +54,7 @@ pub static GCODES: &[GCode] = &[
         6,
         false,
         "inch mode (legacy code of the G78 samples)",
-        LATER_HURCO,
+        Yes,
     ),
     g(
         730,
@@ -154,12 +154,16 @@ pub static MCODES: &[MCode] = &hurco_mcodes();
 /// face-thread counterpart of `ZEnd` (Table 12: face thread end = X).
 pub static LONG_NAMES: &[&str] = &["angIn", "ZEnd", "minR", "minD", "XEnd"];
 
-/// The Hurco dialect. L, U and W are G78 parameters (Tables 8 and 11).
+/// The Hurco dialect. L is accepted for G78 (Table 11, used by 002's
+/// samples). G78's U and W (Table 8) are not: the interpreter does not yet
+/// reject words a block does not use, and a Fanuc-style `U`/`W` (incremental
+/// X/Z) must not be ignored silently on this control. They come with G78
+/// (issue 7).
 pub static DIALECT: Dialect = Dialect {
     id: DialectId::Hurco,
     gcodes: GCODES,
     mcodes: MCODES,
-    letters: b"ABCDEFGHIJKLMNPQRSTUVWXZ",
+    letters: b"ABCDEFGHIJKLMNPQRSTVXZ",
     long_names: LONG_NAMES,
     diameter_default: true,
     uvw_incremental: false,

@@ -37,15 +37,15 @@ pub static GCODES: &[GCode] = &[
     g(210, 6, true, "metric", Yes), // default: PI 147 = 1
     g(220, 9, true, "stored stroke check on", LATER_HX), // default: PI 148 = 0 (§3.2 factory value)
     g(230, 9, false, "stored stroke check off", Yes),
-    g(270, 0, false, "reference position return check", LATER_HX),
-    g(280, 0, false, "reference position return", LATER_HX),
-    g(290, 0, false, "return from reference position", LATER_HX),
+    g(270, 0, false, "reference position return check", Yes),
+    g(280, 0, false, "reference position return", Yes),
+    g(290, 0, false, "return from reference position", Yes),
     g(
         300,
         0,
         false,
         "return to 2nd, 3rd, 4th reference position",
-        LATER_HX,
+        Yes,
     ),
     g(310, 0, false, "skip function", LATER_HX), // §3.1 prints group 23 for G31-G31.4
     g(311, 0, false, "multi-step skip function 1", LATER_HX),
@@ -98,8 +98,8 @@ pub static GCODES: &[GCode] = &[
         "tool diameter compensation right",
         LATER_COMP,
     ),
-    g(430, 13, false, "tool length compensation +", LATER_COMP),
-    g(440, 13, false, "tool length compensation -", LATER_COMP),
+    g(430, 13, false, "tool length compensation +", Yes),
+    g(440, 13, false, "tool length compensation -", Yes),
     g(450, 0, false, "tool offset increase", LATER_COMP),
     g(460, 0, false, "tool offset decrease", LATER_COMP),
     g(470, 0, false, "tool offset double increase", LATER_COMP),

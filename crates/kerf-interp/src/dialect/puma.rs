@@ -41,10 +41,10 @@ pub static GCODES: &[GCode] = &[
         "stored distance limit ineffective (spindle interference check off)",
         Yes,
     ),
-    g(270, 0, false, "machine reference return check", LATER_LATHE),
-    g(280, 0, false, "automatic reference return", LATER_LATHE),
-    g(290, 0, false, "return from reference", LATER_LATHE),
-    g(300, 0, false, "2nd reference return", LATER_LATHE),
+    g(270, 0, false, "machine reference return check", Yes),
+    g(280, 0, false, "automatic reference return", Yes),
+    g(290, 0, false, "return from reference", Yes),
+    g(300, 0, false, "2nd reference return", Yes),
     g(310, 0, false, "skip cutting", LATER_LATHE), // Fanuc 0-T; used in 001's M86 example
     g(
         320,
