@@ -159,8 +159,13 @@ fn run(
     let mut est = Estimator::new(dynamics, it.machine_position());
     let mut start_work = it.work_position();
     let mut alarm: Option<Alarm> = None;
+    let sinks = tp.is_some() || report_path.is_some() || plotter.is_some();
     loop {
         match it.step() {
+            Step::Event(e) if !sinks => {
+                // No outputs asked for: only interpret (as `kerf check`).
+                drop(e);
+            }
             Step::Event(e) => {
                 let from = start_work;
                 let t = est.push(&e);

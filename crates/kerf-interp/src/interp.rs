@@ -710,7 +710,7 @@ impl Interp {
         let mut dwell = false;
         let mut g09 = false;
         let mut refret: Option<(u16, u32)> = None;
-        if self.words.ng > 0 || self.words.has(b'H') {
+        if self.words.has(b'H') || self.words.gs().iter().any(|g| matches!(g.0, 430 | 440 | 490)) {
             self.tool_length()?;
         }
         for &(c, at) in &one_shot[..n_one] {
