@@ -68,6 +68,37 @@ pub enum AlarmKind {
 }
 
 impl AlarmKind {
+    /// Every kind, for documentation checks.
+    pub const ALL: &'static [AlarmKind] = &[
+        AlarmKind::IllegalAddress,
+        AlarmKind::MissingValue,
+        AlarmKind::TooManyDigits,
+        AlarmKind::UnterminatedComment,
+        AlarmKind::BadExpression,
+        AlarmKind::BadSequenceNumber,
+        AlarmKind::BlockTooLong,
+        AlarmKind::UnknownG,
+        AlarmKind::UnknownM,
+        AlarmKind::NoSuchAxis,
+        AlarmKind::DuplicateAddress,
+        AlarmKind::OutOfRange,
+        AlarmKind::NoFeed,
+        AlarmKind::ArcEndPoint,
+        AlarmKind::ArcRadius,
+        AlarmKind::ArcNoCenter,
+        AlarmKind::Overtravel,
+        AlarmKind::NotYetSupported,
+        AlarmKind::MissingArgument,
+        AlarmKind::BadVariable,
+        AlarmKind::MathError,
+        AlarmKind::LoopLimit,
+        AlarmKind::SequenceNotFound,
+        AlarmKind::BadLoop,
+        AlarmKind::MCodeConflict,
+        AlarmKind::ReferenceCheck,
+        AlarmKind::Io,
+    ];
+
     /// The control's code for this alarm.
     pub fn code(self, d: DialectId) -> &'static str {
         use AlarmKind::*;
@@ -110,5 +141,29 @@ impl AlarmKind {
     /// Builds the alarm for a dialect.
     pub fn at(self, d: DialectId, src: SrcRef, msg: impl Into<String>) -> Alarm {
         Alarm::new(self.code(d), msg, src)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// docs/alarms.md lists every code of every control.
+    #[test]
+    fn alarms_doc_is_complete() {
+        let doc = include_str!("../../../docs/alarms.md");
+        for k in AlarmKind::ALL {
+            for d in [DialectId::Hx, DialectId::Puma, DialectId::Hurco] {
+                let code = k.code(d);
+                assert!(
+                    doc.contains(code),
+                    "{k:?} code {code} missing from docs/alarms.md"
+                );
+            }
+            assert!(
+                doc.contains(&format!("| {k:?} |")),
+                "{k:?} missing from docs/alarms.md"
+            );
+        }
     }
 }

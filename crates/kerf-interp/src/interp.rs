@@ -688,6 +688,11 @@ impl Interp {
             }
         }
         let hurco = d.hurco_order;
+        if hurco {
+            if let Some(e) = self.words.get(b'E') {
+                return Err(self.alarm(AlarmKind::NotYetSupported, e.at, "E-code fixture offsets are not yet supported: Hurco cycles, probing, fixture offsets and loops (issue 7)"));
+            }
+        }
         // Hurco: job-sync M codes first.
         if hurco {
             self.run_m(|m| (100..=199).contains(&m.0) && m.1 != MWhen::After, true)?;
@@ -710,7 +715,13 @@ impl Interp {
         let mut dwell = false;
         let mut g09 = false;
         let mut refret: Option<(u16, u32)> = None;
-        if self.words.has(b'H') || self.words.gs().iter().any(|g| matches!(g.0, 430 | 440 | 490)) {
+        if self.words.has(b'H')
+            || self
+                .words
+                .gs()
+                .iter()
+                .any(|g| matches!(g.0, 430 | 440 | 490))
+        {
             self.tool_length()?;
         }
         for &(c, at) in &one_shot[..n_one] {

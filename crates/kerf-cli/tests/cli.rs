@@ -1,0 +1,168 @@
+//! The command-line contract of design.md: exit statuses, the alarm line
+//! with its caret, the report and the plot.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn kerf() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_kerf"))
+}
+
+fn tmp(name: &str, text: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli");
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+#[test]
+fn alarm_line_caret_and_exit_status() {
+    let p = tmp("bad.nc", "G90 G00 X0 Y0\nG01 X10. Y5.\n");
+    let out = kerf().arg("run").arg(&p).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8(out.stderr).unwrap();
+    let mut lines = err.lines();
+    // G01 without any F: F_84020 at line 2, column 1 (the G01 word).
+    assert_eq!(
+        lines.next().unwrap(),
+        format!(
+            "{}:2:1: alarm F_84020: cutting move without a feedrate (no F commanded)",
+            p.display()
+        )
+    );
+    assert_eq!(lines.next().unwrap(), "  G01 X10. Y5.");
+    assert_eq!(lines.next().unwrap(), "  ^");
+}
+
+#[test]
+fn caret_under_the_column() {
+    let p = tmp("col.nc", "G00 X1. @\n");
+    let out = kerf().arg("check").arg(&p).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.starts_with(&format!("{}:1:9: alarm F_82001:", p.display())),
+        "{err}"
+    );
+    assert!(err.contains("\n  G00 X1. @\n          ^\n"), "{err}");
+}
+
+#[test]
+fn usage_and_io_errors_exit_2() {
+    let out = kerf().args(["run", "/nonexistent/x.nc"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let p = tmp("ok.nc", "G00 X0\n");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .args(["--machine", "no-such"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .args(["--set", "bogus=1"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn machines_lists_the_three_profiles() {
+    let out = kerf().arg("machines").output().unwrap();
+    assert!(out.status.success());
+    let s = String::from_utf8(out.stdout).unwrap();
+    for m in ["hx-mc", "puma-lathe", "hurco-lathe"] {
+        assert!(s.contains(m), "{s}");
+    }
+}
+
+#[test]
+fn report_and_plot() {
+    // A 100 x 50 rectangle at F600 after a rapid: feed length 300 mm = 30 s.
+    let p = tmp(
+        "rect.nc",
+        "G90 G00 X0 Y0 Z0\nG01 X100. F600.\nY50.\nX0\nY0\nM30\n",
+    );
+    let rep = p.with_extension("json");
+    let svg = p.with_extension("svg");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .arg("--report")
+        .arg(&rep)
+        .arg("--plot")
+        .arg(&svg)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let r: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
+    assert_eq!(r["status"], "completed");
+    assert_eq!(r["alarm"], serde_json::Value::Null);
+    assert_eq!(r["blocks"], 6);
+    assert_eq!(r["motions"], 5);
+    assert_eq!(r["feed_length_mm"], 300.0);
+    assert_eq!(r["bbox"]["max"]["x"], 100.0);
+    assert_eq!(r["bbox"]["max"]["y"], 50.0);
+    assert_eq!(r["time_s"]["cutting"], 30.0);
+    assert_eq!(r["final"]["work"]["x"], 0.0);
+    let s = std::fs::read_to_string(&svg).unwrap();
+    assert!(
+        s.starts_with("<svg") && s.matches("<path").count() == 5,
+        "{s}"
+    );
+    assert_eq!(
+        s.matches("stroke-dasharray").count(),
+        1,
+        "one rapid, dashed"
+    );
+}
+
+#[test]
+fn lathe_toolpath_x_is_a_radius() {
+    let p = tmp("lathe.nc", "G00 X50. Z5.\nG01 X40. Z0 F0.2\n");
+    let tp = p.with_extension("jsonl");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .args(["--machine", "puma-lathe", "--toolpath"])
+        .arg(&tp)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&tp).unwrap();
+    let recs: Vec<serde_json::Value> = text
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(recs.len(), 2);
+    assert_eq!(recs[0]["to"]["x"], 25.0);
+    assert_eq!(recs[1]["to"]["x"], 20.0);
+    assert_eq!(recs[1]["kind"], "feed");
+    assert_eq!(recs[1]["line"], 2);
+    assert!(recs[0]["to"].get("y").is_none(), "a 2-axis lathe has no Y");
+}
+
+#[test]
+fn block_longer_than_the_control_allows() {
+    let long = format!("G00 X1.{}\n", " ".repeat(400));
+    let p = tmp("long.nc", &long);
+    let out = kerf().arg("run").arg(&p).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains(":1:") && err.contains("alarm F_82111"),
+        "{err}"
+    );
+}
