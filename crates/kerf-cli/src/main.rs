@@ -212,9 +212,20 @@ fn run(
             return usage_error(format!("{}: {e}", path.display()));
         }
     }
-    if check && alarm.is_none() {
+    if alarm.is_none() {
         let mut out = std::io::stdout().lock();
-        let _ = writeln!(out, "{name}: ok ({} blocks)", it.blocks());
+        if check {
+            let _ = writeln!(out, "{name}: ok ({} blocks)", it.blocks());
+        } else if sinks {
+            let _ = writeln!(
+                out,
+                "{name}: completed ({} blocks, estimated cycle time {:.1} s)",
+                it.blocks(),
+                est.now()
+            );
+        } else {
+            let _ = writeln!(out, "{name}: completed ({} blocks)", it.blocks());
+        }
     }
     if alarm.is_some() {
         ExitCode::from(1)

@@ -6,6 +6,9 @@
 //! x = -400.0
 //! y = -250.0
 //! z = -250.0
+//!
+//! [h]          # tool length offsets H1-H128, mm
+//! 1 = 50.0
 //! ```
 
 use std::collections::BTreeMap;
@@ -20,6 +23,18 @@ pub fn load(path: &Path, it: &mut Interp) -> Result<(), String> {
     let map: BTreeMap<String, AxisMap> =
         toml::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
     for (k, axes) in &map {
+        if k.eq_ignore_ascii_case("h") {
+            for (n, v) in axes {
+                let n: usize = n
+                    .parse()
+                    .map_err(|_| format!("{}: [h] keys are offset numbers", path.display()))?;
+                if n == 0 || n > 128 {
+                    return Err(format!("{}: H{n} out of range (H1-H128)", path.display()));
+                }
+                it.set_h(n, *v);
+            }
+            continue;
+        }
         let idx = match k.to_ascii_lowercase().as_str() {
             "g54" => 0,
             "g55" => 1,

@@ -166,3 +166,52 @@ fn block_longer_than_the_control_allows() {
         "{err}"
     );
 }
+
+#[test]
+fn user_profile_and_offsets_file() {
+    // A user profile: the built-in HX with a G54 at machine X -100.
+    let text = include_str!("../../../machines/hx-mc.toml")
+        .replace("name = \"hx-mc\"", "name = \"my-mill\"");
+    let prof = tmp("my-mill.toml", &text);
+    let offs = tmp(
+        "offs.toml",
+        "[g54]\nx = -100.0\ny = -100.0\nz = -100.0\n[h]\n1 = 25.0\n",
+    );
+    let p = tmp("offs.nc", "G90 G00 X10. Y0 Z0\nG43 H1 Z0\n");
+    let tp = p.with_extension("jsonl");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .arg("--machine")
+        .arg(&prof)
+        .arg("--offsets")
+        .arg(&offs)
+        .arg("--toolpath")
+        .arg(&tp)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let recs: Vec<serde_json::Value> = std::fs::read_to_string(&tp)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    // Machine = G54 origin + work: X -100 + 10; with H1 = 25 the gauge line is 25 above Z0.
+    assert_eq!(recs[0]["mto"]["x"], -90.0);
+    assert_eq!(recs[0]["mto"]["z"], -100.0);
+    assert_eq!(recs[1]["mto"]["z"], -75.0);
+    // A bad profile is a usage error.
+    let bad = tmp("bad.toml", "name = 1\n");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .arg("--machine")
+        .arg(&bad)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
