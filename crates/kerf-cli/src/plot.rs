@@ -11,6 +11,7 @@ pub struct Plot {
     segs: Vec<(bool, String)>,
     min: (f64, f64),
     max: (f64, f64),
+    started: bool,
 }
 
 impl Plot {
@@ -20,6 +21,7 @@ impl Plot {
             segs: Vec::new(),
             min: (f64::MAX, f64::MAX),
             max: (f64::MIN, f64::MIN),
+            started: false,
         }
     }
 
@@ -38,8 +40,17 @@ impl Plot {
 
     /// Adds a motion starting at `from` (work coordinates).
     pub fn add(&mut self, e: &Event, from: &Pos) {
-        let a = self.view(from);
         let Some(m) = e.motion() else { return };
+        if !self.started {
+            // The first rapid comes from wherever the machine was at power
+            // on (usually the reference position): draw from its end.
+            self.started = true;
+            if matches!(e.cmd, Canon::Rapid { .. }) {
+                self.grow(self.view(&m.to));
+                return;
+            }
+        }
+        let a = self.view(from);
         let b = self.view(&m.to);
         self.grow(a);
         self.grow(b);

@@ -84,7 +84,7 @@ fn report_and_plot() {
     // A 100 x 50 rectangle at F600 after a rapid: feed length 300 mm = 30 s.
     let p = tmp(
         "rect.nc",
-        "G90 G00 X0 Y0 Z0\nG01 X100. F600.\nY50.\nX0\nY0\nM30\n",
+        "G90 G00 X0 Y0 Z0\nG01 X100. F600.\nY50.\nX0\nY0\nG00 X10. Y10.\nM30\n",
     );
     let rep = p.with_extension("json");
     let svg = p.with_extension("svg");
@@ -106,13 +106,13 @@ fn report_and_plot() {
         serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
     assert_eq!(r["status"], "completed");
     assert_eq!(r["alarm"], serde_json::Value::Null);
-    assert_eq!(r["blocks"], 6);
-    assert_eq!(r["motions"], 5);
+    assert_eq!(r["blocks"], 7);
+    assert_eq!(r["motions"], 6);
     assert_eq!(r["feed_length_mm"], 300.0);
     assert_eq!(r["bbox"]["max"]["x"], 100.0);
     assert_eq!(r["bbox"]["max"]["y"], 50.0);
     assert_eq!(r["time_s"]["cutting"], 30.0);
-    assert_eq!(r["final"]["work"]["x"], 0.0);
+    assert_eq!(r["final"]["work"]["x"], 10.0);
     let s = std::fs::read_to_string(&svg).unwrap();
     assert!(
         s.starts_with("<svg") && s.matches("<path").count() == 5,
