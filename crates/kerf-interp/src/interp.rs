@@ -695,7 +695,7 @@ impl Interp {
         }
         // Hurco: job-sync M codes first.
         if hurco {
-            self.run_m(|m| (100..=199).contains(&m.0) && m.1 != MWhen::After, true)?;
+            self.run_m(|m| (100..=199).contains(&m.0) && m.1 != MWhen::After)?;
         }
         // Modal (and specific) G codes.
         for i in 0..self.words.ng {
@@ -738,10 +738,12 @@ impl Interp {
             }
         }
         if hurco {
-            self.run_m(|m| matches!(m.0, 48 | 49), true)?;
-            self.run_m(|m| matches!(m.0, 7 | 8), true)?;
+            self.run_m(|m| matches!(m.0, 48 | 49))?;
+            self.run_m(|m| matches!(m.0, 7 | 8))?;
             self.t_word()?;
             self.spindle_words()?;
+            // Other before-motion machine functions, after the spindle.
+            self.run_m(|m| m.1 == MWhen::Before && !matches!(m.0, 7 | 8 | 48 | 49 | 100..=199))?;
             if dwell {
                 self.dwell()?;
             }
@@ -750,12 +752,9 @@ impl Interp {
             self.f_word(dwell)?;
             self.t_word()?;
             self.spindle_words()?;
-            self.run_m(
-                |m| {
-                    m.1 == MWhen::Before && !matches!(m.2, MAction::SpindleCw | MAction::SpindleCcw)
-                },
-                true,
-            )?;
+            self.run_m(|m| {
+                m.1 == MWhen::Before && !matches!(m.2, MAction::SpindleCw | MAction::SpindleCcw)
+            })?;
             if dwell {
                 self.dwell()?;
             }
@@ -781,17 +780,11 @@ impl Interp {
             }
         }
         // After-motion M codes, then the end-of-block system codes.
-        self.run_m(
-            |m| {
-                m.1 == MWhen::After
-                    && !matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End)
-            },
-            false,
-        )?;
-        self.run_m(
-            |m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End),
-            false,
-        )?;
+        self.run_m(|m| {
+            m.1 == MWhen::After
+                && !matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End)
+        })?;
+        self.run_m(|m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End))?;
         Ok(!self.finished_by_end())
     }
 
@@ -829,7 +822,7 @@ impl Interp {
 
     /// Executes the block's M codes selected by `pick(code, when, action)`
     /// (skipping spindle start codes, which `spindle_words` handles).
-    fn run_m(&mut self, pick: impl Fn((u32, MWhen, MAction)) -> bool, _before: bool) -> R<()> {
+    fn run_m(&mut self, pick: impl Fn((u32, MWhen, MAction)) -> bool) -> R<()> {
         for i in 0..self.words.nm {
             let (m, _) = self.words.m[i];
             let mc = self.mcode(m).expect("checked");
