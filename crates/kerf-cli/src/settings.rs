@@ -49,7 +49,8 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
                 || k.starts_with("PM ")
                 || k.starts_with("PI")
                 || k.starts_with("PM")
-                || profile.params.contains_key(k) =>
+                || profile.params.contains_key(k)
+                || matches!(k, "arc_tolerance_mm" | "max_jumps" | "max_repeat_blocks") =>
             {
                 let val: f64 = v
                     .parse()

@@ -118,6 +118,12 @@ pub struct Interp {
     cur: SrcRef,
     arc_tol: f64,
     h_table: Vec<f64>,
+    /// Furthest byte offset read so far.
+    high_water: u64,
+    /// Blocks executed again after jumping back.
+    repeated: u64,
+    /// Most such blocks before the loop guard stops the run.
+    repeat_budget: u64,
     /// G codes by value × 10 (fast lookup).
     g_index: Vec<Option<&'static crate::dialect::GCode>>,
     /// M codes below 256 (fast lookup).
@@ -226,6 +232,7 @@ impl Interp {
             }
         }
         let arc_tol = profile.param("arc_tolerance_mm", 0.02);
+        let repeat_budget = profile.param("max_repeat_blocks", 20_000_000.0) as u64;
         let mut g_index = vec![None; 2000];
         for g in dialect.gcodes {
             if let Some(slot) = g_index.get_mut(g.code10 as usize) {
@@ -271,6 +278,9 @@ impl Interp {
             cur: SrcRef::default(),
             arc_tol,
             h_table: vec![0.0; 129],
+            high_water: 0,
+            repeated: 0,
+            repeat_budget,
             g_index,
             m_index,
             has_axis,
@@ -444,6 +454,24 @@ impl Interp {
             line: self.raw.mark.line,
             col: 1,
         };
+        // Loop guard: blocks executed again (after a jump back) are counted
+        // against a budget, however long the repeated section is.
+        let here = self.src.as_ref().map(|s| s.tell().offset).unwrap_or(0);
+        if here <= self.high_water {
+            self.repeated += 1;
+            if self.repeated > self.repeat_budget {
+                return Err(self.alarm(
+                    AlarmKind::LoopLimit,
+                    0,
+                    format!(
+                        "more than {} blocks executed again by loops (loop guard)",
+                        self.repeat_budget
+                    ),
+                ));
+            }
+        } else {
+            self.high_water = here;
+        }
         if self.raw.overlong {
             let max = self.profile.max_block_chars;
             return Err(self.alarm(

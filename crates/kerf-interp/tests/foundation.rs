@@ -459,3 +459,24 @@ fn tool_length_offset_shifts_the_control_point() {
     // G43 H1 (50 mm): the tip is at Z60 so the gauge line is 50 above it.
     assert_eq!(z, vec![(110.0, -140.0), (60.0, -190.0)]);
 }
+
+#[test]
+fn endless_loops_end_in_an_alarm() {
+    // An endless WHILE: stopped by the repeat budget, positioned at a block.
+    let mut p = Profile::builtin("hx-mc").unwrap();
+    p.params.insert("max_repeat_blocks".into(), 1000.0);
+    let r = run_text(
+        p,
+        Settings::default(),
+        "t",
+        "G90 G00 X0 Y0 Z0\nWHILE[1]DO1\nG91 G00 X0\nG00 Y0\nEND1\n",
+    );
+    let a = r.alarm.expect("loop guard");
+    assert_eq!(a.code, "KERF-0101");
+    assert!(a.src.line >= 2 && a.src.line <= 5);
+    // A GOTO back to itself as well.
+    let mut p = Profile::builtin("hx-mc").unwrap();
+    p.params.insert("max_jumps".into(), 50.0);
+    let r = run_text(p, Settings::default(), "t", "N1 GOTO 1\n");
+    assert_eq!(r.alarm.expect("loop guard").code, "KERF-0101");
+}

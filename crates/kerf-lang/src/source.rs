@@ -84,7 +84,14 @@ impl LineSource {
     /// Returns to a position previously obtained from [`LineSource::tell`] or
     /// [`RawBlock::mark`].
     pub fn seek(&mut self, m: Mark) -> io::Result<()> {
-        self.inner.seek(SeekFrom::Start(m.offset))?;
+        // Relative seeks keep the read buffer when the target is inside it,
+        // so tight loops do not re-read the file.
+        let delta = m.offset as i64 - self.offset as i64;
+        if self.offset <= i64::MAX as u64 && m.offset <= i64::MAX as u64 {
+            self.inner.seek_relative(delta)?;
+        } else {
+            self.inner.seek(SeekFrom::Start(m.offset))?;
+        }
         self.offset = m.offset;
         self.line = m.line.saturating_sub(1);
         self.eof = false;
