@@ -143,7 +143,7 @@ fn main() {
         path.display(),
         bytes as f64 / 1e6
     );
-    let want = |name: &str| filter.as_deref().map_or(true, |f| name.contains(f));
+    let want = |name: &str| filter.as_deref().is_none_or(|f| name.contains(f));
     if want("parse") {
         report(
             "parse",
