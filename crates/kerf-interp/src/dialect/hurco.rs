@@ -19,17 +19,12 @@ const LATER_COMP: Support = Later("tool compensation (issue 5)");
 /// Table 1 also names G58, G201 and G202, which 002 never defines; they are
 /// not in the table (see docs/dialects.md), nor are G85-G89, which 002
 /// mentions only as "G81-G89 drill cycles".
+#[rustfmt::skip]
 pub static GCODES: &[GCode] = &[
     g(0, 1, true, "linear motion at rapid", Yes),
     g(10, 1, false, "linear motion at feed", Yes),
     g(20, 1, false, "clockwise circular motion at feed", Yes),
-    g(
-        30,
-        1,
-        false,
-        "counterclockwise circular motion at feed",
-        Yes,
-    ),
+    g(30, 1, false, "counterclockwise circular motion at feed", Yes),
     g(40, 0, false, "dwell", Yes),
     g(70, 24, false, "radius programming", Yes),
     g(80, 24, true, "diameter programming", Yes), // default is a control setting; kerf: diameter
@@ -40,51 +35,21 @@ pub static GCODES: &[GCode] = &[
     g(380, 0, false, "turret probe", LATER_HURCO),
     g(400, 7, true, "cutter radius compensation off", Yes),
     g(410, 7, false, "cutter radius compensation left", LATER_COMP),
-    g(
-        420,
-        7,
-        false,
-        "cutter radius compensation right",
-        LATER_COMP,
-    ),
+    g(420, 7, false, "cutter radius compensation right", LATER_COMP),
     g(530, 0, false, "program machine coordinates", Yes),
     g(590, 0, false, "cancel work coordinate offsets", Yes),
-    g(
-        700,
-        6,
-        false,
-        "inch mode (legacy code of the G78 samples)",
-        Yes,
-    ),
-    g(
-        730,
-        10,
-        false,
-        "peck drill with chip break drill cycle",
-        LATER_HURCO,
-    ),
+    g(700, 6, false, "inch mode (legacy code of the G78 samples)", Yes),
+    g(730, 10, false, "peck drill with chip break drill cycle", LATER_HURCO),
     g(740, 10, false, "left hand tapping", LATER_HURCO),
     g(780, 0, false, "threading cycle", LATER_HURCO),
     g(800, 10, true, "cancel drill cycle", Yes),
     g(810, 10, false, "drill cycle", LATER_HURCO),
     g(820, 10, false, "drill cycle with dwell", LATER_HURCO),
     g(830, 10, false, "peck drill cycle", LATER_HURCO),
-    g(
-        840,
-        10,
-        false,
-        "right hand tapping and float tapping",
-        LATER_HURCO,
-    ),
+    g(840, 10, false, "right hand tapping and float tapping", LATER_HURCO),
     g(900, 3, true, "absolute programming", Yes),
     g(910, 3, false, "incremental programming", Yes),
-    g(
-        920,
-        0,
-        false,
-        "work coordinate offsets or spindle max speed",
-        Yes,
-    ),
+    g(920, 0, false, "work coordinate offsets or spindle max speed", Yes),
     g(930, 5, false, "inverse time feed", Yes),
     g(940, 5, true, "feed per minute", Yes),
     g(950, 5, false, "feed per revolution", Yes),
@@ -145,6 +110,7 @@ const fn hurco_mcodes() -> [MCode; M_LOW.len() + N_SYNC + M_HIGH.len()] {
 
 /// M codes of 002 with their execution categories (Table 1), including
 /// every job-syncing code M100-M199.
+#[rustfmt::skip]
 pub static MCODES: &[MCode] = &hurco_mcodes();
 
 /// Hurco G78 multi-letter parameter names. 002 prints exactly four:

@@ -18,6 +18,7 @@ const LATER_COMP: Support = Later("tool compensation (issue 5)");
 /// two exceptions recorded in docs/dialects.md: G31-G31.4 (printed 23, a
 /// group §3.2 counts as non-modal together with group 0) are one-shot here,
 /// and G63.1/G63.2 (§15.6, absent from §3.1) get kerf's group 24.
+#[rustfmt::skip]
 pub static GCODES: &[GCode] = &[
     g(0, 1, true, "rapid traverse positioning", Yes), // default: PI 144 = 0
     g(10, 1, false, "linear interpolation", Yes),     // default when PI 144 = 1
@@ -40,13 +41,7 @@ pub static GCODES: &[GCode] = &[
     g(270, 0, false, "reference position return check", Yes),
     g(280, 0, false, "reference position return", Yes),
     g(290, 0, false, "return from reference position", Yes),
-    g(
-        300,
-        0,
-        false,
-        "return to 2nd, 3rd, 4th reference position",
-        Yes,
-    ),
+    g(300, 0, false, "return to 2nd, 3rd, 4th reference position", Yes),
     g(310, 0, false, "skip function", LATER_HX), // §3.1 prints group 23 for G31-G31.4
     g(311, 0, false, "multi-step skip function 1", LATER_HX),
     g(312, 0, false, "multi-step skip function 2", LATER_HX),
@@ -54,50 +49,14 @@ pub static GCODES: &[GCode] = &[
     g(314, 0, false, "multi-step skip function 4", LATER_HX),
     g(330, 1, false, "constant lead thread cutting", LATER_HX),
     g(370, 0, false, "automatic tool length measurement", LATER_HX),
-    g(
-        371,
-        0,
-        false,
-        "automatic tool length measurement 1",
-        LATER_HX,
-    ),
-    g(
-        372,
-        0,
-        false,
-        "automatic tool length measurement 2",
-        LATER_HX,
-    ),
-    g(
-        373,
-        0,
-        false,
-        "automatic tool length measurement 3",
-        LATER_HX,
-    ),
-    g(
-        374,
-        0,
-        false,
-        "automatic tool length measurement 4",
-        LATER_HX,
-    ),
-    g(
-        390,
-        0,
-        false,
-        "tool diameter compensation at corner arc",
-        LATER_COMP,
-    ),
+    g(371, 0, false, "automatic tool length measurement 1", LATER_HX),
+    g(372, 0, false, "automatic tool length measurement 2", LATER_HX),
+    g(373, 0, false, "automatic tool length measurement 3", LATER_HX),
+    g(374, 0, false, "automatic tool length measurement 4", LATER_HX),
+    g(390, 0, false, "tool diameter compensation at corner arc", LATER_COMP),
     g(400, 7, true, "tool diameter compensation cancel", Yes),
     g(410, 7, false, "tool diameter compensation left", LATER_COMP),
-    g(
-        420,
-        7,
-        false,
-        "tool diameter compensation right",
-        LATER_COMP,
-    ),
+    g(420, 7, false, "tool diameter compensation right", LATER_COMP),
     g(430, 13, false, "tool length compensation +", Yes),
     g(440, 13, false, "tool length compensation -", Yes),
     g(450, 0, false, "tool offset increase", LATER_COMP),
@@ -131,20 +90,8 @@ pub static GCODES: &[GCode] = &[
     g(740, 10, false, "counter tapping cycle", LATER_HX),
     g(760, 10, false, "fine boring cycle", LATER_HX),
     g(800, 10, true, "canned cycle cancel", Yes),
-    g(
-        810,
-        10,
-        false,
-        "drilling cycle, spot drilling cycle",
-        LATER_HX,
-    ),
-    g(
-        820,
-        10,
-        false,
-        "drilling dwell cycle, counter boring cycle",
-        LATER_HX,
-    ),
+    g(810, 10, false, "drilling cycle, spot drilling cycle", LATER_HX),
+    g(820, 10, false, "drilling dwell cycle, counter boring cycle", LATER_HX),
     g(830, 10, false, "peck drilling cycle", LATER_HX),
     g(840, 10, false, "tapping cycle", LATER_HX),
     g(842, 10, false, "rigid tap cycle", LATER_HX),
@@ -156,40 +103,16 @@ pub static GCODES: &[GCode] = &[
     g(890, 10, false, "boring dwell cycle", LATER_HX),
     g(900, 3, true, "absolute command", Yes), // default: PI 146 = 0
     g(910, 3, false, "incremental command", Yes),
-    g(
-        920,
-        0,
-        false,
-        "work coordinate setting, maximum spindle speed",
-        Yes,
-    ),
+    g(920, 0, false, "work coordinate setting, maximum spindle speed", Yes),
     g(940, 5, true, "feed per minute", Yes),
     g(950, 5, false, "feed per revolution", Yes),
     g(960, 2, false, "constant surface speed control", Yes),
     g(970, 2, true, "constant surface speed control cancel", Yes),
-    g(
-        980,
-        19,
-        true,
-        "return to initial point at a canned cycle",
-        Yes,
-    ),
+    g(980, 19, true, "return to initial point at a canned cycle", Yes),
     g(990, 19, false, "return to R-point at a canned cycle", Yes),
     g(1070, 22, false, "cylindrical interpolation", LATER_HX),
-    g(
-        1120,
-        20,
-        false,
-        "polar coordinate interpolation mode on",
-        LATER_HX,
-    ),
-    g(
-        1130,
-        20,
-        true,
-        "polar coordinate interpolation mode off",
-        Yes,
-    ),
+    g(1120, 20, false, "polar coordinate interpolation mode on", LATER_HX),
+    g(1130, 20, true, "polar coordinate interpolation mode off", Yes),
 ];
 
 /// M codes of 000 §11.1 ("Table of General M Codes"): M00-M06, M08, M09,
@@ -197,6 +120,7 @@ pub static GCODES: &[GCode] = &[
 /// tool builder; kerf adds the two standard Fanuc machining-centre builder
 /// codes M07 and M19 (marked "assumed"). M29 is not an HX code: the HX taps
 /// rigidly with G84.2/G84.3 (§12.3.5), not with M29 + G84.
+#[rustfmt::skip]
 pub static MCODES: &[MCode] = &[
     m(0, "program stop", After, Stop),
     m(1, "optional stop", After, OptionalStop),

@@ -18,6 +18,7 @@ const LATER_COMP: Support = Later("tool compensation (issue 5)");
 /// G-code table but are Fanuc 0-T codes (001 itself uses G31 in the M86
 /// example); they are kept so that programs reach the "not yet supported"
 /// alarm instead of "unknown G code".
+#[rustfmt::skip]
 pub static GCODES: &[GCode] = &[
     g(0, 1, true, "positioning (rapid feed)", Yes), // # in 001
     g(10, 1, false, "straight interpolation", Yes),
@@ -27,135 +28,33 @@ pub static GCODES: &[GCode] = &[
     g(100, 0, false, "offset value setting", LATER_COMP), // Fanuc 0-T, not in 001's table
     g(200, 6, false, "data input (inch)", Yes),
     g(210, 6, true, "data input (mm)", Yes), // # in 001
-    g(
-        220,
-        4,
-        true,
-        "stored distance limit effective (spindle interference check on)",
-        LATER_LATHE,
-    ), // # in 001
-    g(
-        230,
-        4,
-        false,
-        "stored distance limit ineffective (spindle interference check off)",
-        Yes,
-    ),
+    g(220, 4, true, "stored distance limit effective (spindle interference check on)", LATER_LATHE), // # in 001
+    g(230, 4, false, "stored distance limit ineffective (spindle interference check off)", Yes),
     g(270, 0, false, "machine reference return check", Yes),
     g(280, 0, false, "automatic reference return", Yes),
     g(290, 0, false, "return from reference", Yes),
     g(300, 0, false, "2nd reference return", Yes),
     g(310, 0, false, "skip cutting", LATER_LATHE), // Fanuc 0-T; used in 001's M86 example
-    g(
-        320,
-        1,
-        false,
-        "thread process (thread cutting)",
-        LATER_LATHE,
-    ), // 001 prints "#G32": see docs/dialects.md
+    g(320, 1, false, "thread process (thread cutting)", LATER_LATHE), // 001 prints "#G32": see docs/dialects.md
     g(400, 7, true, "cancel of compensation", Yes), // not #-marked in 001; Fanuc reset state
-    g(
-        410,
-        7,
-        false,
-        "tool nose radius compensation left",
-        LATER_COMP,
-    ),
-    g(
-        420,
-        7,
-        false,
-        "tool nose radius compensation right",
-        LATER_COMP,
-    ),
-    g(
-        500,
-        0,
-        false,
-        "coordinate system setting, max spindle speed setting",
-        Yes,
-    ),
+    g(410, 7, false, "tool nose radius compensation left", LATER_COMP),
+    g(420, 7, false, "tool nose radius compensation right", LATER_COMP),
+    g(500, 0, false, "coordinate system setting, max spindle speed setting", Yes),
     g(650, 0, false, "user macro simple call", LATER_MACRO), // Fanuc 0-T, not in 001's table
     g(660, 12, false, "user macro modal call", LATER_MACRO),
     g(670, 12, true, "user macro modal call cancel", Yes),
-    g(
-        700,
-        0,
-        false,
-        "compound repeat cycle (finishing cycle)",
-        LATER_LATHE,
-    ),
-    g(
-        710,
-        0,
-        false,
-        "compound repeat cycle (stock removal in turning)",
-        LATER_LATHE,
-    ),
-    g(
-        720,
-        0,
-        false,
-        "compound repeat cycle (stock removal in facing)",
-        LATER_LATHE,
-    ),
-    g(
-        730,
-        0,
-        false,
-        "compound repeat cycle (pattern repeating cycle)",
-        LATER_LATHE,
-    ),
-    g(
-        740,
-        0,
-        false,
-        "compound repeat cycle (peck drilling in Z direction)",
-        LATER_LATHE,
-    ),
-    g(
-        750,
-        0,
-        false,
-        "compound repeat cycle (grooving in X direction)",
-        LATER_LATHE,
-    ),
-    g(
-        760,
-        0,
-        false,
-        "compound repeat cycle (thread cutting cycle)",
-        LATER_LATHE,
-    ),
-    g(
-        900,
-        1,
-        false,
-        "fixed cycle (process cycle in turning)",
-        LATER_LATHE,
-    ),
-    g(
-        920,
-        1,
-        false,
-        "fixed cycle (thread process cycle)",
-        LATER_LATHE,
-    ),
-    g(
-        940,
-        1,
-        false,
-        "fixed cycle (facing process cycle)",
-        LATER_LATHE,
-    ),
+    g(700, 0, false, "compound repeat cycle (finishing cycle)", LATER_LATHE),
+    g(710, 0, false, "compound repeat cycle (stock removal in turning)", LATER_LATHE),
+    g(720, 0, false, "compound repeat cycle (stock removal in facing)", LATER_LATHE),
+    g(730, 0, false, "compound repeat cycle (pattern repeating cycle)", LATER_LATHE),
+    g(740, 0, false, "compound repeat cycle (peck drilling in Z direction)", LATER_LATHE),
+    g(750, 0, false, "compound repeat cycle (grooving in X direction)", LATER_LATHE),
+    g(760, 0, false, "compound repeat cycle (thread cutting cycle)", LATER_LATHE),
+    g(900, 1, false, "fixed cycle (process cycle in turning)", LATER_LATHE),
+    g(920, 1, false, "fixed cycle (thread process cycle)", LATER_LATHE),
+    g(940, 1, false, "fixed cycle (facing process cycle)", LATER_LATHE),
     g(960, 2, false, "constant surface speed control", Yes),
-    g(
-        970,
-        2,
-        true,
-        "constant surface speed control cancel (rpm)",
-        Yes,
-    ), // # in 001
+    g(970, 2, true, "constant surface speed control cancel (rpm)", Yes), // # in 001
     g(980, 5, false, "feed per minute (mm/min)", Yes),
     g(990, 5, true, "feed per revolution (mm/rev)", Yes), // # in 001
 ];
@@ -166,6 +65,7 @@ pub static GCODES: &[GCode] = &[
 /// motion; codes that stop, switch off, unclamp, retract, count or end act
 /// after it (the usual Fanuc PMC sequencing). Machine functions that kerf
 /// does not model are `Aux` events with the manual's name.
+#[rustfmt::skip]
 pub static MCODES: &[MCode] = &[
     m(0, "program stop", After, Stop),
     m(1, "optional stop", After, OptionalStop),
@@ -188,12 +88,7 @@ pub static MCODES: &[MCode] = &[
     m(25, "chip conveyor stop", After, Aux),
     m(30, "program end and rewind", After, End),
     m(31, "interlock by-pass (spindle and tailstock)", Before, Aux),
-    m(
-        32,
-        "interlock by-pass (spindle and steady rest)",
-        Before,
-        Aux,
-    ),
+    m(32, "interlock by-pass (spindle and steady rest)", Before, Aux),
     m(33, "revolving tool spindle forward", Before, Aux),
     m(34, "revolving tool spindle reverse", Before, Aux),
     m(35, "revolving tool spindle stop", After, Aux),
@@ -203,18 +98,8 @@ pub static MCODES: &[MCode] = &[
     m(41, "gear change low", Before, Aux),
     m(42, "gear change middle", Before, Aux),
     m(43, "gear change high", Before, Aux),
-    m(
-        46,
-        "programmable tailstock body unclamp and traction bar advance",
-        Before,
-        Aux,
-    ),
-    m(
-        47,
-        "programmable tailstock body clamp and traction bar retract",
-        After,
-        Aux,
-    ),
+    m(46, "programmable tailstock body unclamp and traction bar advance", Before, Aux),
+    m(47, "programmable tailstock body clamp and traction bar retract", After, Aux),
     m(50, "bar feeder command 1", Before, Aux),
     m(51, "bar feeder command 2", Before, Aux),
     m(52, "splash guard door open", After, Aux),
@@ -222,18 +107,8 @@ pub static MCODES: &[MCode] = &[
     m(54, "parts count", After, Aux),
     m(58, "steady rest 2 clamp", Before, Aux),
     m(59, "steady rest 2 unclamp", After, Aux),
-    m(
-        61,
-        "switching low speed (aP60 spindle motor, Y connection)",
-        Before,
-        Aux,
-    ),
-    m(
-        62,
-        "switching high speed (aP60 spindle motor, delta connection)",
-        Before,
-        Aux,
-    ),
+    m(61, "switching low speed (aP60 spindle motor, Y connection)", Before, Aux),
+    m(62, "switching high speed (aP60 spindle motor, delta connection)", Before, Aux),
     m(63, "main spindle CW and coolant on", Before, SpindleCw), // coolant part not modelled
     m(64, "main spindle CCW and coolant on", Before, SpindleCcw), // list: "coolant off"; text: "on"
     m(65, "main spindle and coolant stop", After, SpindleStop),
