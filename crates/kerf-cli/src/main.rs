@@ -146,6 +146,12 @@ fn run(
             return usage_error(e);
         }
     }
+    for dir in &c.lib {
+        if !dir.is_dir() {
+            return usage_error(format!("--lib {}: not a folder", dir.display()));
+        }
+        it.add_lib_dir(dir.clone());
+    }
     it.load_main(&name, Box::new(file));
 
     let mut tp = match toolpath.as_ref().map(File::create).transpose() {

@@ -215,3 +215,63 @@ fn user_profile_and_offsets_file() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
 }
+
+/// `--lib DIR`: programs called by number come from the folder; toolpath
+/// records and alarms name the library file.
+#[test]
+fn lib_folder_programs() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli-lib");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("O0100.nc"), "O0100\nG00 X5.\nM99\n").unwrap();
+    std::fs::write(dir.join("200.nc"), "G00 X1.\nG01 X2.\nM99\n").unwrap();
+    let main = tmp("libmain.nc", "G54 G90 G00 X0. Y0. Z0.\nM98 P100\nM30\n");
+    let tp = dir.join("tp.jsonl");
+    let out = kerf()
+        .args(["run", "--lib"])
+        .arg(&dir)
+        .arg(&main)
+        .arg("--toolpath")
+        .arg(&tp)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let text = std::fs::read_to_string(&tp).unwrap();
+    let last: serde_json::Value = serde_json::from_str(text.lines().last().unwrap()).unwrap();
+    assert!(
+        last["file"].as_str().unwrap().ends_with("O0100.nc"),
+        "{last}"
+    );
+    assert_eq!(last["line"], 2);
+    assert_eq!(last["to"]["x"], 5.0);
+    // Without --lib the program is missing: F_82109 at the M98.
+    let out = kerf().arg("check").arg(&main).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.starts_with(&format!("{}:2:", main.display())), "{err}");
+    assert!(err.contains("alarm F_82109"), "{err}");
+    // An alarm inside the library program points into its file.
+    let main2 = tmp("libmain2.nc", "M98 P200\nM30\n");
+    let out = kerf()
+        .args(["check", "--lib"])
+        .arg(&dir)
+        .arg(&main2)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.starts_with(&format!(
+            "{}:2:1: alarm F_84020",
+            dir.join("200.nc").display()
+        )),
+        "{err}"
+    );
+    assert!(err.contains("\n  G01 X2.\n"), "{err}");
+    // --lib must name a folder.
+    let out = kerf()
+        .args(["check", "--lib", "/nonexistent-kerf-lib"])
+        .arg(&main)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}

@@ -65,6 +65,16 @@ pub enum AlarmKind {
     ReferenceCheck,
     /// I/O error while reading the program.
     Io,
+    /// M98/G65: the called program is in neither the file nor a library.
+    ProgramNotFound,
+    /// M98/G65 without P.
+    NoProgramNumber,
+    /// Calls nested deeper than the control allows.
+    CallNesting,
+    /// A called program ends (end of text, `%`, next O) without M99.
+    SubprogramEnd,
+    /// `#3000 = n (MESSAGE)`: the program's own alarm; the code is 3000+n.
+    UserAlarm,
 }
 
 impl AlarmKind {
@@ -97,6 +107,11 @@ impl AlarmKind {
         AlarmKind::MCodeConflict,
         AlarmKind::ReferenceCheck,
         AlarmKind::Io,
+        AlarmKind::ProgramNotFound,
+        AlarmKind::NoProgramNumber,
+        AlarmKind::CallNesting,
+        AlarmKind::SubprogramEnd,
+        AlarmKind::UserAlarm,
     ];
 
     /// The control's code for this alarm.
@@ -130,6 +145,11 @@ impl AlarmKind {
             MCodeConflict => ("F_82032", "PS009", "HU-016"),
             ReferenceCheck => ("F_82209", "PS092", "HU-044"),
             Io => ("KERF-0001", "KERF-0001", "KERF-0001"),
+            ProgramNotFound => ("F_82109", "PS078", "HU-045"),
+            NoProgramNumber => ("F_82109", "PS076", "HU-046"),
+            CallNesting => ("F_82023", "PS077", "HU-047"),
+            SubprogramEnd => ("F_82024", "KERF-0102", "KERF-0102"),
+            UserAlarm => ("3000+n", "3000+n", "3000+n"),
         };
         match d {
             DialectId::Hx => hx,

@@ -18,6 +18,8 @@ use crate::machine::{MachineKind, Profile};
 use crate::macros::Vars;
 use crate::words::{WVal, Words, MAX_CODES};
 
+mod calls;
+
 /// Operator-panel switches and run options.
 #[derive(Clone, Debug, Default)]
 pub struct Settings {
@@ -134,6 +136,8 @@ pub struct Interp {
     has_axis: [bool; NAXES],
     /// Travel limits (machine coordinates) per axis slot.
     travel: [Option<(f64, f64)>; NAXES],
+    /// Program store and call stack (M98/M99, G65, G66).
+    calls: calls::Calls,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -232,7 +236,7 @@ impl Interp {
             }
         }
         let arc_tol = profile.param("arc_tolerance_mm", 0.02);
-        let repeat_budget = profile.param("max_repeat_blocks", 20_000_000.0) as u64;
+        let repeat_budget = profile.param("max_repeat_blocks", 100_000_000.0) as u64;
         let mut g_index = vec![None; 2000];
         for g in dialect.gcodes {
             if let Some(slot) = g_index.get_mut(g.code10 as usize) {
@@ -286,6 +290,7 @@ impl Interp {
             has_axis,
             travel,
             letter_ok,
+            calls: calls::Calls::default(),
         }
     }
 
@@ -297,6 +302,7 @@ impl Interp {
         let max = self.profile.max_block_chars.max(1);
         self.src = Some(LineSource::new(reader, max, self.dialect.hurco_syntax));
         self.program_start = Mark { offset: 0, line: 1 };
+        self.calls_main_loaded();
     }
 
     /// Sets the work offset of G54+`idx` (machine coordinates of its zero),
@@ -409,7 +415,7 @@ impl Interp {
         k.at(
             self.dialect.id,
             SrcRef {
-                file: self.file_id,
+                file: self.cur.file,
                 line,
                 col,
             },
@@ -434,6 +440,9 @@ impl Interp {
         match src.next_block(&mut self.raw) {
             Ok(true) => {}
             Ok(false) => {
+                if !self.calls.stack.is_empty() {
+                    return Err(self.sub_end_alarm());
+                }
                 self.emit_end(0);
                 return Ok(false);
             }
@@ -494,14 +503,27 @@ impl Interp {
             return Err(self.alarm(kind, e.at, e.kind.message()));
         }
         if self.block.percent {
+            if !self.calls.stack.is_empty() {
+                // A library file's leading % opens it; any other ends it.
+                if self.raw.mark.offset == 0 {
+                    return Ok(true);
+                }
+                return Err(self.sub_end_alarm());
+            }
             if self.tape_started {
                 self.emit_end(0);
                 return Ok(false);
             }
             self.tape_started = true;
+            // The program proper starts after the leading %.
+            self.program_start = self.src.as_ref().expect("loaded").tell();
             return Ok(true);
         }
         self.tape_started = true;
+        if self.block.program.is_some() && self.program_header()? {
+            self.emit_end(0);
+            return Ok(false);
+        }
         // Block delete: a marker whose level is switched on skips the rest.
         let mut nwords = self.block.words.len();
         for &(idx, mask) in &self.block.deletes {
@@ -527,14 +549,38 @@ impl Interp {
         if let Some(l) = self.block.loop_cmd {
             self.hurco_loop(l)?;
         }
+        if self.calls.end_seq.is_some() && self.block.n.is_some() {
+            return self.block_with_end_seq(nwords);
+        }
         if let Some(stmt) = self.block.stmt {
+            self.calls.body_seen = true;
             return self.statement(stmt);
         }
         if nwords == 0 {
             return Ok(true);
         }
+        self.calls.body_seen = true;
         self.collect(nwords)?;
         self.execute()
+    }
+
+    /// A numbered block inside an `M98 ... R_` call: after the block with
+    /// sequence number R the call returns as at M99 (000 §2.4.3).
+    fn block_with_end_seq(&mut self, nwords: usize) -> R<bool> {
+        let depth = self.calls.stack.len();
+        let end_here = self.block.n == self.calls.end_seq;
+        let r = if let Some(stmt) = self.block.stmt {
+            self.statement(stmt)?
+        } else if nwords == 0 {
+            true
+        } else {
+            self.collect(nwords)?;
+            self.execute()?
+        };
+        if r && end_here && self.calls.stack.len() == depth && depth > 0 {
+            self.sub_return(None, 0)?;
+        }
+        Ok(r)
     }
 
     fn emit_end(&mut self, code: u32) {
@@ -607,7 +653,10 @@ impl Interp {
                         ));
                     }
                     if let Some(ax) = Axis::from_letter(l) {
-                        if !self.has_axis[ax as usize] && !self.letter_is_argument(l) {
+                        if !self.has_axis[ax as usize]
+                            && !self.letter_is_argument(l)
+                            && !self.macro_args()
+                        {
                             return Err(self.alarm(
                                 AlarmKind::NoSuchAxis,
                                 w.at,
@@ -615,15 +664,15 @@ impl Interp {
                             ));
                         }
                     }
-                    let slot = &mut self.words.letters[(l - b'A') as usize];
-                    if slot.is_some() {
+                    let li = (l - b'A') as usize;
+                    if self.words.letters[li].is_some() && !self.macro_args() {
                         return Err(self.alarm(
                             AlarmKind::DuplicateAddress,
                             w.at,
                             format!("address {} twice in one block", l as char),
                         ));
                     }
-                    *slot = Some(wv);
+                    self.words.letters[li] = Some(wv);
                 }
                 Addr::Comma(c) => {
                     if self.dialect.id != DialectId::Hx || !matches!(c, b'C' | b'R') {
@@ -656,6 +705,11 @@ impl Interp {
             }
         }
         Ok(())
+    }
+
+    /// The block is a G65/G66 call: its letters are macro arguments.
+    fn macro_args(&self) -> bool {
+        self.words.has_g(650) || self.words.has_g(660)
     }
 
     /// Letters that name an axis but are arguments of a code on machines
@@ -692,6 +746,9 @@ impl Interp {
                     ),
                 ));
             }
+            if c == 650 || c == 660 {
+                return self.g65(c, at).map(|_| true);
+            }
             if g.group == 1 {
                 motion = Some((c, at));
             } else if g.group == 0 {
@@ -700,6 +757,7 @@ impl Interp {
             }
         }
         // Classify M codes.
+        let mut transfer: Option<(MAction, u32)> = None;
         for i in 0..self.words.nm {
             let (m, at) = self.words.m[i];
             if self.mcode(m).is_none() {
@@ -711,7 +769,14 @@ impl Interp {
             }
             if let Some(mc) = self.mcode(m) {
                 if matches!(mc.action, MAction::SubCall | MAction::SubReturn) {
-                    return Err(self.alarm(AlarmKind::NotYetSupported, at, format!("M{m} ({}) is not yet supported: custom macro B and subprograms (issue 3)", mc.name)));
+                    if transfer.is_some() {
+                        return Err(self.alarm(
+                            AlarmKind::MCodeConflict,
+                            at,
+                            "M98 and M99 in one block",
+                        ));
+                    }
+                    transfer = Some((mc.action, at));
                 }
             }
         }
@@ -733,6 +798,9 @@ impl Interp {
                 self.st.modal[g.group as usize] = c;
                 Self::apply_modal(&mut self.st, d.id, c);
                 self.mode_event(c);
+                if c == 670 {
+                    self.g67();
+                }
             }
         }
         if let Some((c, _)) = motion {
@@ -813,7 +881,31 @@ impl Interp {
                 && !matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End)
         })?;
         self.run_m(|m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End))?;
-        Ok(!self.finished_by_end())
+        if self.finished_by_end() {
+            return Ok(false);
+        }
+        // Subprogram call / return last, after everything else of the block.
+        match transfer {
+            Some((MAction::SubCall, at)) => self.m98(at)?,
+            Some((_, at)) => self.m99(at)?,
+            None => {
+                // G66 in force: a block with an axis move calls the macro.
+                if !self.calls.modal.is_empty()
+                    && (refret.is_some() || !no_motion)
+                    && self.has_axis_word()
+                {
+                    self.modal_call(self.motion_at())?;
+                }
+            }
+        }
+        Ok(true)
+    }
+
+    /// The block names an axis of the machine (or its incremental address).
+    fn has_axis_word(&self) -> bool {
+        Axis::ALL.iter().any(|&ax| {
+            self.has_axis[ax as usize] && self.words.has(ax_letter(ax)) || self.uvw(ax).is_some()
+        })
     }
 
     #[inline]
@@ -1832,6 +1924,9 @@ impl Interp {
         let Some(i) = idx else {
             return Err(self.alarm(AlarmKind::BadVariable, at, "variable number is vacant"));
         };
+        if (3000.0..=3006.0).contains(&i) && self.system_write(i, v, at)? {
+            return Ok(());
+        }
         self.vars
             .set(i, v)
             .map_err(|m| self.alarm(m.kind, at, m.message))
@@ -1871,31 +1966,10 @@ impl Interp {
             ));
         }
         let target = n.round() as u32;
-        let here = self.raw.mark;
         let err_src = self.cur;
         self.count_jump(at)?;
-        let mut raw = RawBlock::default();
-        let mut blk = Block::default();
-        let src = self.src.as_mut().expect("loaded");
-        let start = self.program_start;
-        for pass in 0..2 {
-            if pass == 1 {
-                let _ = src.seek(start);
-            }
-            loop {
-                let mark = src.tell();
-                match src.next_block(&mut raw) {
-                    Ok(true) => {}
-                    _ => break,
-                }
-                if pass == 1 && mark.offset > here.offset {
-                    break;
-                }
-                if parse_block(&raw.text, &self.lex, &mut blk).is_ok() && blk.n == Some(target) {
-                    let _ = src.seek(mark);
-                    return Ok(());
-                }
-            }
+        if self.seek_sequence(target, true) {
+            return Ok(());
         }
         Err(AlarmKind::SequenceNotFound.at(
             self.dialect.id,
@@ -1917,6 +1991,9 @@ impl Interp {
         while let Ok(true) = src.next_block(&mut raw) {
             if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
                 continue;
+            }
+            if blk.program.is_some() && self.calls.header != Some(raw.mark.offset) {
+                break;
             }
             match blk.stmt {
                 Some(Stmt::While { label: l, .. }) if l == label => depth += 1,

@@ -9,6 +9,8 @@
 //! - [`dialect`]: per-control G/M tables and language switches (data);
 //! - [`machine`]: machine profiles (TOML) and the built-in ones;
 //! - [`interp`]: the step machine, modal state, motion, coordinates;
+//!   its `calls` part holds the program store and the call stack (M98/M99,
+//!   G65, `--lib` folders);
 //! - [`words`]: a block's evaluated words in fixed tables;
 //! - [`arc`]: circular interpolation geometry;
 //! - [`macros`]: variables and expression evaluation;

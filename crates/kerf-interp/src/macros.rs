@@ -93,6 +93,23 @@ impl Vars {
     }
 }
 
+impl Vars {
+    /// Takes the local variables #1-#33 (for a macro call), leaving them
+    /// vacant.
+    pub fn take_locals(&mut self) -> [Option<f64>; 33] {
+        let mut out = [None; 33];
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = self.v[i + 1].take();
+        }
+        out
+    }
+
+    /// Replaces the local variables #1-#33 (macro call or return).
+    pub fn put_locals(&mut self, l: &[Option<f64>; 33]) {
+        self.v[1..34].copy_from_slice(l);
+    }
+}
+
 /// Evaluates an expression. Vacant propagates as in Fanuc custom macro B:
 /// in arithmetic a vacant operand counts as 0 (a lone vacant stays vacant),
 /// in EQ/NE vacant differs from 0, in the other comparisons it counts as 0.

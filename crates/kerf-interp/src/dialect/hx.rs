@@ -9,7 +9,6 @@ use super::MWhen::*;
 use super::Support::*;
 use super::*;
 
-const LATER_MACRO: Support = Later("custom macro B and subprograms (issue 3)");
 const LATER_HX: Support = Later("HX coordinate systems, transforms and canned cycles (issue 4)");
 const LATER_COMP: Support = Later("tool compensation (issue 5)");
 
@@ -81,8 +80,8 @@ pub static GCODES: &[GCode] = &[
     g(640, 15, true, "cutting mode", Yes),
     g(631, 24, false, "stitch function mode on", LATER_HX), // §15.6; group is kerf's
     g(632, 24, true, "stitch function mode off", LATER_HX),
-    g(650, 0, false, "macro call", LATER_MACRO),
-    g(660, 12, false, "macro modal call", LATER_MACRO),
+    g(650, 0, false, "macro call", Yes),
+    g(660, 12, false, "macro modal call", Yes),
     g(670, 12, true, "macro modal call cancel", Yes),
     g(680, 18, false, "coordinate system rotation", LATER_HX),
     g(690, 18, true, "coordinate system rotation cancel", Yes), // default: PI 150 = 0

@@ -10,7 +10,6 @@ use super::MWhen::*;
 use super::Support::*;
 use super::*;
 
-const LATER_MACRO: Support = Later("custom macro B and subprograms (issue 3)");
 const LATER_LATHE: Support = Later("PUMA lathe cycles, threading and reference returns (issue 6)");
 const LATER_COMP: Support = Later("tool compensation (issue 5)");
 
@@ -40,8 +39,8 @@ pub static GCODES: &[GCode] = &[
     g(410, 7, false, "tool nose radius compensation left", LATER_COMP),
     g(420, 7, false, "tool nose radius compensation right", LATER_COMP),
     g(500, 0, false, "coordinate system setting, max spindle speed setting", Yes),
-    g(650, 0, false, "user macro simple call", LATER_MACRO), // Fanuc 0-T, not in 001's table
-    g(660, 12, false, "user macro modal call", LATER_MACRO),
+    g(650, 0, false, "user macro simple call", Yes), // Fanuc 0-T, not in 001's table
+    g(660, 12, false, "user macro modal call", Yes),
     g(670, 12, true, "user macro modal call cancel", Yes),
     g(700, 0, false, "compound repeat cycle (finishing cycle)", LATER_LATHE),
     g(710, 0, false, "compound repeat cycle (stock removal in turning)", LATER_LATHE),

@@ -1,0 +1,876 @@
+//! The program store and the call stack: programs by O number in the main
+//! file and in `--lib` folders, `M98`/`M99` subprograms (000 §2.4,
+//! fanuc-semantics §7.7) and `G65` simple macro calls (000 §14.1.1).
+//!
+//! Every open file is its own [`LineSource`]; the one being executed is
+//! `Interp::src`, the others are parked here by file id. Programs inside one
+//! file share that file's source (the call seeks to the program and the
+//! return seeks back), so nothing is read into memory beyond one block.
+//! None of this is on the per-block path of a program that makes no calls.
+
+use std::collections::HashMap;
+use std::fs::File;
+use std::path::PathBuf;
+
+use kerf_canon::{Canon, SrcRef};
+use kerf_lang::{parse_block, Addr, Block, LineSource, Mark, RawBlock, Val};
+
+use super::{fmt_num, Interp, R};
+use crate::alarms::AlarmKind;
+use crate::dialect::DialectId;
+
+/// One active call.
+pub(super) struct Frame {
+    /// A G65 macro call (own local variables) rather than an M98 call.
+    macro_call: bool,
+    /// The caller: file, position after the call block, program start,
+    /// program header, WHILE loops, end sequence of its own call.
+    file: u32,
+    ret: Mark,
+    start: Mark,
+    header: Option<u64>,
+    loops: Vec<(u32, Mark)>,
+    end_seq: Option<u32>,
+    /// The caller's #1-#33 (macro calls).
+    locals: Option<Box<[Option<f64>; 33]>>,
+    /// Where each repetition of the called program starts.
+    callee_start: Mark,
+    /// Repetitions left after the current one.
+    left: u32,
+    /// The G66 entry whose macro this call is.
+    modal_idx: Option<usize>,
+}
+
+/// One G66 modal call in force.
+pub(super) struct ModalCall {
+    prog: u32,
+    count: u32,
+    args: Box<[Option<f64>; 33]>,
+}
+
+/// Programs, files and the call stack.
+#[derive(Default)]
+pub(super) struct Calls {
+    lib_dirs: Vec<PathBuf>,
+    /// Sources of the files not being executed, by file id.
+    parked: Vec<Option<LineSource>>,
+    /// Loop-guard high-water mark of each parked file.
+    high_water: Vec<u64>,
+    /// Files whose O numbers have been indexed.
+    indexed: Vec<bool>,
+    /// (file, program) → (header block, first block after the header).
+    index: HashMap<(u32, u32), (Mark, Mark)>,
+    /// The first program header of each indexed file.
+    first_header: HashMap<u32, (Mark, Mark)>,
+    /// Library programs already opened: program → file id.
+    lib_files: HashMap<u32, u32>,
+    /// Path of each library file (to reopen one that was closed).
+    paths: Vec<Option<PathBuf>>,
+    /// Files with more O headers than the index keeps.
+    overflow: Vec<bool>,
+    pub(super) stack: Vec<Frame>,
+    /// Byte offset of the current program's O header, once known.
+    pub(super) header: Option<u64>,
+    /// A block with words or a statement has run in the main program.
+    pub(super) body_seen: bool,
+    /// `R` of the innermost M98: return after the block with this N.
+    pub(super) end_seq: Option<u32>,
+    /// Main-program `M99 ... L`: (offset of the M99 block, jumps left).
+    main_repeat: Option<(u64, u32)>,
+    /// G66 modal calls in force, oldest first.
+    pub(super) modal: Vec<ModalCall>,
+}
+
+/// Library files kept open while not executing.
+const MAX_OPEN_LIBS: usize = 16;
+
+/// O headers indexed per file; a file with more is searched per call.
+const MAX_INDEX: usize = 4096;
+
+/// Letters of argument specification I (000 §14.1.1) → local variable.
+fn arg_var(l: u8) -> Option<usize> {
+    Some(match l {
+        b'A' => 1,
+        b'B' => 2,
+        b'C' => 3,
+        b'D' => 7,
+        b'E' => 8,
+        b'F' => 9,
+        b'H' => 11,
+        b'M' => 13,
+        b'Q' => 17,
+        b'R' => 18,
+        b'S' => 19,
+        b'T' => 20,
+        b'U' => 21,
+        b'V' => 22,
+        b'W' => 23,
+        b'X' => 24,
+        b'Y' => 25,
+        b'Z' => 26,
+        _ => return None,
+    })
+}
+
+impl Calls {
+    /// Registers a new file (its source is parked).
+    fn add_file(&mut self, src: Option<LineSource>, path: Option<PathBuf>) {
+        self.parked.push(src);
+        self.high_water.push(0);
+        self.indexed.push(false);
+        self.paths.push(path);
+        self.overflow.push(false);
+    }
+}
+
+impl Interp {
+    /// Adds a folder searched for programs called by number
+    /// (`O1234.nc`, `1234.nc`, `O1234`, …), after the main file.
+    pub fn add_lib_dir(&mut self, dir: PathBuf) {
+        self.calls.lib_dirs.push(dir);
+    }
+
+    /// Registers the main file in the call tables (from `load_main`).
+    pub(super) fn calls_main_loaded(&mut self) {
+        while self.calls.parked.len() < self.files.len() {
+            self.calls.add_file(None, None);
+        }
+    }
+
+    /// Makes file `id` the one being executed.
+    fn switch_to(&mut self, id: u32) {
+        if id == self.file_id {
+            return;
+        }
+        let cur = self.file_id as usize;
+        // Library files stay open while in use and up to a few more; the
+        // others are closed and reopened when called again.
+        let open = self.calls.parked.iter().filter(|s| s.is_some()).count();
+        let in_use = self.calls.stack.iter().any(|f| f.file as usize == cur);
+        if self.calls.paths[cur].is_some() && !in_use && open >= MAX_OPEN_LIBS {
+            self.calls.parked[cur] = None;
+            self.src = None;
+        } else {
+            self.calls.parked[cur] = self.src.take();
+        }
+        self.calls.high_water[cur] = self.high_water;
+        self.src = self.calls.parked[id as usize].take();
+        self.high_water = self.calls.high_water[id as usize];
+        self.file_id = id;
+    }
+
+    /// The source of file `id`, current or parked.
+    fn source_of(&mut self, id: u32) -> Option<&mut LineSource> {
+        if id == self.file_id {
+            self.src.as_mut()
+        } else {
+            self.calls.parked.get_mut(id as usize)?.as_mut()
+        }
+    }
+
+    /// Records the O headers of a file (one pass, at its first use).
+    fn index_file(&mut self, id: u32) -> R<()> {
+        if self.calls.indexed.get(id as usize).copied().unwrap_or(true) {
+            return Ok(());
+        }
+        self.calls.indexed[id as usize] = true;
+        let lex = self.lex;
+        let mut found: Vec<(u32, Mark, Mark)> = Vec::new();
+        let mut overflow = false;
+        let Some(src) = self.source_of(id) else {
+            return Ok(());
+        };
+        let back = src.tell();
+        let mut raw = RawBlock::default();
+        let mut blk = Block::default();
+        let mut res = src.seek(Mark { offset: 0, line: 1 });
+        if res.is_ok() {
+            loop {
+                match src.next_block(&mut raw) {
+                    Ok(true) => {}
+                    Ok(false) => break,
+                    Err(e) => {
+                        res = Err(e);
+                        break;
+                    }
+                }
+                if !raw.text.iter().any(|&c| matches!(c, b'O' | b'o' | b':')) {
+                    continue;
+                }
+                if parse_block(&raw.text, &lex, &mut blk).is_ok() {
+                    if let Some(p) = blk.program {
+                        if found.len() >= MAX_INDEX {
+                            overflow = true;
+                            break;
+                        }
+                        found.push((p, raw.mark, src.tell()));
+                    }
+                }
+            }
+        }
+        let res2 = src.seek(back);
+        if let Err(e) = res.and(res2) {
+            return Err(self.alarm(AlarmKind::Io, 0, format!("reading programs: {e}")));
+        }
+        self.calls.overflow[id as usize] = overflow;
+        if let Some(&(_, h, b)) = found.first() {
+            self.calls.first_header.insert(id, (h, b));
+        }
+        for (p, h, b) in found {
+            self.calls.index.entry((id, p)).or_insert((h, b));
+        }
+        Ok(())
+    }
+
+    /// Program `p` in file `id`: from the index, or by a search when the
+    /// file has more programs than the index holds.
+    fn lookup(&mut self, id: u32, p: u32) -> R<Option<(Mark, Mark)>> {
+        self.index_file(id)?;
+        if let Some(&hb) = self.calls.index.get(&(id, p)) {
+            return Ok(Some(hb));
+        }
+        if !self.calls.overflow[id as usize] {
+            return Ok(None);
+        }
+        let lex = self.lex;
+        let Some(src) = self.source_of(id) else {
+            return Ok(None);
+        };
+        let back = src.tell();
+        let mut raw = RawBlock::default();
+        let mut blk = Block::default();
+        let mut hit = None;
+        if src.seek(Mark { offset: 0, line: 1 }).is_ok() {
+            while let Ok(true) = src.next_block(&mut raw) {
+                if raw.text.iter().any(|&c| matches!(c, b'O' | b'o' | b':'))
+                    && parse_block(&raw.text, &lex, &mut blk).is_ok()
+                    && blk.program == Some(p)
+                {
+                    hit = Some((raw.mark, src.tell()));
+                    break;
+                }
+            }
+        }
+        let _ = src.seek(back);
+        Ok(hit)
+    }
+
+    /// Finds program `p`: in the current file, the main file, then the
+    /// library folders. Returns (file, header offset, first block).
+    fn find_program(&mut self, p: u32, at: u32) -> R<(u32, Option<u64>, Mark)> {
+        for id in [self.file_id, 0] {
+            if let Some((h, b)) = self.lookup(id, p)? {
+                return Ok((id, Some(h.offset), b));
+            }
+        }
+        let id = match self.calls.lib_files.get(&p) {
+            Some(&id) => {
+                if id != self.file_id && self.calls.parked[id as usize].is_none() {
+                    let path = self.calls.paths[id as usize].clone().expect("library file");
+                    let f = File::open(&path).map_err(|e| {
+                        self.alarm(AlarmKind::Io, at, format!("{}: {e}", path.display()))
+                    })?;
+                    let max = self.profile.max_block_chars.max(1);
+                    self.calls.parked[id as usize] =
+                        Some(LineSource::new(Box::new(f), max, self.dialect.hurco_syntax));
+                    self.calls.high_water[id as usize] = 0;
+                }
+                id
+            }
+            None => {
+                let Some(path) = self.lib_path(p) else {
+                    return Err(self.alarm(
+                        AlarmKind::ProgramNotFound,
+                        at,
+                        format!("program O{p:04} not found (main file or --lib folders)"),
+                    ));
+                };
+                let f = File::open(&path).map_err(|e| {
+                    self.alarm(AlarmKind::Io, at, format!("{}: {e}", path.display()))
+                })?;
+                let max = self.profile.max_block_chars.max(1);
+                let src = LineSource::new(Box::new(f), max, self.dialect.hurco_syntax);
+                self.files.push(path.display().to_string());
+                self.calls.add_file(Some(src), Some(path.clone()));
+                let id = (self.files.len() - 1) as u32;
+                self.calls.lib_files.insert(p, id);
+                id
+            }
+        };
+        if let Some((h, b)) = self.lookup(id, p)? {
+            return Ok((id, Some(h.offset), b));
+        }
+        // A library file without that O number: the file is the program.
+        match self.calls.first_header.get(&id) {
+            Some(&(h, b)) => Ok((id, Some(h.offset), b)),
+            None => Ok((id, None, Mark { offset: 0, line: 1 })),
+        }
+    }
+
+    /// The library file of program `p`, if any folder has one.
+    fn lib_path(&self, p: u32) -> Option<PathBuf> {
+        let mut names = Vec::new();
+        for stem in [
+            format!("O{p:04}"),
+            format!("O{p}"),
+            format!("{p:04}"),
+            format!("{p}"),
+        ] {
+            for ext in [".nc", ".NC", ""] {
+                let n = format!("{stem}{ext}");
+                if !names.contains(&n) {
+                    names.push(n);
+                }
+            }
+        }
+        for d in &self.calls.lib_dirs {
+            for n in &names {
+                let path = d.join(n);
+                if path.is_file() {
+                    return Some(path);
+                }
+            }
+        }
+        None
+    }
+
+    /// An O header read while executing. Ok(true): it ends the current
+    /// program (another program starts there).
+    pub(super) fn program_header(&mut self) -> R<bool> {
+        let here = self.raw.mark.offset;
+        if self.calls.header == Some(here) {
+            return Ok(false);
+        }
+        if self.calls.stack.is_empty() && self.calls.header.is_none() && !self.calls.body_seen {
+            self.calls.header = Some(here);
+            return Ok(false);
+        }
+        if self.calls.stack.is_empty() {
+            return Ok(true);
+        }
+        Err(self.sub_end_alarm())
+    }
+
+    /// The alarm for a called program that ends without M99.
+    pub(super) fn sub_end_alarm(&self) -> kerf_canon::Alarm {
+        self.alarm(
+            AlarmKind::SubprogramEnd,
+            0,
+            "the called program ends without M99",
+        )
+    }
+
+    /// True when a block read by a search starts another program.
+    fn other_program(&self, blk: &Block, mark: Mark) -> bool {
+        blk.program.is_some() && self.calls.header != Some(mark.offset)
+    }
+
+    /// Searches the current program for sequence number `target`: forward
+    /// from the current position to the program's end, then (with `wrap`)
+    /// from the program start. Leaves the source at the block; false if
+    /// there is none.
+    pub(super) fn seek_sequence(&mut self, target: u32, wrap: bool) -> bool {
+        let start = self.program_start;
+        let Some(mut src) = self.src.take() else {
+            return false;
+        };
+        let here = src.tell();
+        let mut raw = RawBlock::default();
+        let mut blk = Block::default();
+        let mut hit = None;
+        'passes: for pass in 0..(1 + wrap as u32) {
+            if pass == 1 && src.seek(start).is_err() {
+                break;
+            }
+            loop {
+                let mark = src.tell();
+                if pass == 1 && mark.offset >= here.offset {
+                    break;
+                }
+                match src.next_block(&mut raw) {
+                    Ok(true) => {}
+                    _ => break,
+                }
+                if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
+                    continue;
+                }
+                if self.other_program(&blk, mark) {
+                    break;
+                }
+                if blk.n == Some(target) {
+                    hit = Some(mark);
+                    break 'passes;
+                }
+            }
+        }
+        let ok = match hit {
+            Some(m) => src.seek(m).is_ok(),
+            None => {
+                let _ = src.seek(here);
+                false
+            }
+        };
+        self.src = Some(src);
+        ok
+    }
+
+    /// An integer word of a call (P, Q, R, L).
+    fn int_word(&self, l: u8, max: f64) -> R<Option<(u32, u32)>> {
+        let Some(w) = self.words.get(l) else {
+            return Ok(None);
+        };
+        if w.v < 0.0 || w.v.fract() != 0.0 || w.v > max {
+            return Err(self.alarm(
+                AlarmKind::OutOfRange,
+                w.at,
+                format!("{}{} is out of range", l as char, fmt_num(w.v)),
+            ));
+        }
+        Ok(Some((w.v as u32, w.at)))
+    }
+
+    fn nesting_check(&self, macro_call: bool, at: u32) -> R<()> {
+        let macros = self.calls.stack.iter().filter(|f| f.macro_call).count() as u32;
+        let subs = self.calls.stack.len() as u32 - macros;
+        let d = self.dialect.id;
+        let p = |n: &str, def: f64| self.profile.param(n, def) as u32;
+        let max_macro = p("max_macro_nesting", 4.0);
+        let max_sub = p(
+            "max_sub_nesting",
+            if d == DialectId::Hx { 8.0 } else { 4.0 },
+        );
+        let max_all = p("max_call_nesting", 8.0);
+        let msg = if macro_call && macros + 1 > max_macro {
+            format!("macro calls nested more than {max_macro} levels")
+        } else if !macro_call && subs + 1 > max_sub {
+            format!("subprogram calls nested more than {max_sub} levels")
+        } else if macros + subs + 1 > max_all {
+            format!("calls nested more than {max_all} levels in all")
+        } else {
+            return Ok(());
+        };
+        Err(self.alarm(AlarmKind::CallNesting, at, msg))
+    }
+
+    /// M98 P_ [Q_ R_] L_ (HX, 000 §2.4.3) / M98 P_ L_ and the 8-digit
+    /// count+program P (Fanuc).
+    pub(super) fn m98(&mut self, at: u32) -> R<()> {
+        let hx = self.dialect.id == DialectId::Hx;
+        let p = self.int_word(b'P', 99_999_999.0)?;
+        let q = if hx {
+            self.int_word(b'Q', 99_999.0)?
+        } else {
+            None
+        };
+        let r = if hx {
+            self.int_word(b'R', 99_999.0)?
+        } else {
+            None
+        };
+        let l = self.int_word(b'L', 9999.0)?;
+        let (prog, mut count) = match p {
+            Some((v, _)) if !hx && l.is_none() && v > 9999 => (Some(v % 10_000), v / 10_000),
+            Some((v, _)) => (Some(v), 1),
+            None => (None, 1),
+        };
+        if let Some((n, _)) = l {
+            count = n;
+        }
+        if count == 0 {
+            return Ok(());
+        }
+        let target = match prog {
+            Some(v) => Some(v),
+            None if q.is_some() => None, // the current program (HX)
+            None => {
+                return Err(self.alarm(
+                    AlarmKind::NoProgramNumber,
+                    at,
+                    "M98 without P (program number)",
+                ))
+            }
+        };
+        self.call(target, q, r.map(|r| r.0), count, false, at, None)
+    }
+
+    /// Enters program `prog` (None: the current one).
+    #[allow(clippy::too_many_arguments)]
+    fn call(
+        &mut self,
+        prog: Option<u32>,
+        q: Option<(u32, u32)>,
+        end_seq: Option<u32>,
+        count: u32,
+        macro_call: bool,
+        at: u32,
+        args: Option<[Option<f64>; 33]>,
+    ) -> R<()> {
+        let (file, header, body) = match prog {
+            Some(p) => self.find_program(p, at)?,
+            None => (self.file_id, self.calls.header, self.program_start),
+        };
+        self.nesting_check(macro_call, at)?;
+        let ret = self.src.as_ref().expect("loaded").tell();
+        let frame = Frame {
+            macro_call,
+            file: self.file_id,
+            ret,
+            start: self.program_start,
+            header: self.calls.header,
+            loops: std::mem::take(&mut self.loops),
+            end_seq: self.calls.end_seq,
+            locals: None,
+            callee_start: body,
+            left: count - 1,
+            modal_idx: None,
+        };
+        self.calls.stack.push(frame);
+        self.switch_to(file);
+        self.program_start = body;
+        self.calls.header = header;
+        self.calls.end_seq = end_seq;
+        self.seek(body)?;
+        if let Some((n, qat)) = q {
+            if !self.seek_sequence(n, false) {
+                let err_src = self.calls_caller_src(qat);
+                self.unwind_failed_call();
+                return Err(AlarmKind::SequenceNotFound.at(
+                    self.dialect.id,
+                    err_src,
+                    format!("M98 Q{n}: sequence number N{n} not found in the called program"),
+                ));
+            }
+            let m = self.src.as_ref().expect("loaded").tell();
+            if let Some(f) = self.calls.stack.last_mut() {
+                f.callee_start = m;
+            }
+        }
+        if let Some(a) = args {
+            let saved = self.vars.take_locals();
+            self.vars.put_locals(&a);
+            if let Some(f) = self.calls.stack.last_mut() {
+                f.locals = Some(Box::new(saved));
+            }
+        }
+        Ok(())
+    }
+
+    fn calls_caller_src(&self, at: u32) -> SrcRef {
+        let f = self.calls.stack.last().expect("frame");
+        let (line, col) = self.raw.line_col(at as usize);
+        SrcRef {
+            file: f.file,
+            line,
+            col,
+        }
+    }
+
+    /// Undoes a call whose start could not be found.
+    fn unwind_failed_call(&mut self) {
+        if let Some(f) = self.calls.stack.pop() {
+            self.switch_to(f.file);
+            self.program_start = f.start;
+            self.calls.header = f.header;
+            self.loops = f.loops;
+            self.calls.end_seq = f.end_seq;
+            let _ = self.seek(f.ret);
+        }
+    }
+
+    /// M99 [P_] [L_]: return to the caller (after the call block, or to its
+    /// sequence P), repeat the called program, or in the main program jump
+    /// back to its start (or N P), L times when L is given.
+    pub(super) fn m99(&mut self, at: u32) -> R<()> {
+        let p = self.int_word(b'P', 99_999.0)?;
+        let l = if self.dialect.id == DialectId::Hx {
+            self.int_word(b'L', 9999.0)?
+        } else {
+            None
+        };
+        if self.calls.stack.is_empty() {
+            return self.main_m99(p, l, at);
+        }
+        self.sub_return(p, at)
+    }
+
+    /// Ends one repetition of the called program (M99, or the block with
+    /// sequence number R).
+    pub(super) fn sub_return(&mut self, p: Option<(u32, u32)>, at: u32) -> R<()> {
+        let f = self.calls.stack.last_mut().expect("in a call");
+        if f.left > 0 {
+            f.left -= 1;
+            let m = f.callee_start;
+            self.count_jump(at)?;
+            self.loops.clear();
+            return self.seek(m);
+        }
+        let f = self.calls.stack.pop().expect("in a call");
+        if let Some(l) = f.locals {
+            self.vars.put_locals(&l);
+        }
+        self.switch_to(f.file);
+        self.program_start = f.start;
+        self.calls.header = f.header;
+        self.loops = f.loops;
+        self.calls.end_seq = f.end_seq;
+        self.seek(f.ret)?;
+        if let Some((n, pat)) = p {
+            // A return to an earlier block can loop: it counts as a jump.
+            self.count_jump(pat)?;
+            if !self.seek_sequence(n, true) {
+                let (line, col) = self.raw.line_col(pat as usize);
+                return Err(AlarmKind::SequenceNotFound.at(
+                    self.dialect.id,
+                    SrcRef {
+                        file: self.cur.file,
+                        line,
+                        col,
+                    },
+                    format!("M99 P{n}: sequence number N{n} not found in the calling program"),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// M99 in the main program (000 §2.4.4).
+    fn main_m99(&mut self, p: Option<(u32, u32)>, l: Option<(u32, u32)>, at: u32) -> R<()> {
+        let here = self.raw.mark.offset;
+        if let Some((n, _)) = l {
+            let left = match self.calls.main_repeat {
+                Some((off, left)) if off == here => left,
+                _ => n.saturating_sub(1),
+            };
+            if left == 0 {
+                self.calls.main_repeat = None;
+                return Ok(());
+            }
+            self.calls.main_repeat = Some((here, left - 1));
+        }
+        self.count_jump(at)?;
+        self.loops.clear();
+        match p {
+            Some((n, pat)) => {
+                if !self.seek_sequence(n, true) {
+                    return Err(self.alarm(
+                        AlarmKind::SequenceNotFound,
+                        pat,
+                        format!("M99 P{n}: sequence number N{n} not found"),
+                    ));
+                }
+                Ok(())
+            }
+            None => {
+                let s = self.program_start;
+                self.seek(s)
+            }
+        }
+    }
+
+    /// G65 P_ L_ (000 §14.1.1) and G66 P_ L_ (§14.1.2) with arguments:
+    /// one block, everything but P and L an argument. G65 calls at once;
+    /// G66 only records the call for the move blocks that follow.
+    pub(super) fn g65(&mut self, code10: u16, at: u32) -> R<()> {
+        let name = if code10 == 650 { "G65" } else { "G66" };
+        if self.words.ng > 1 {
+            let (c, gat) = self.words.g[if self.words.g[0].0 == code10 { 1 } else { 0 }];
+            return Err(self.alarm(
+                AlarmKind::IllegalAddress,
+                gat,
+                format!(
+                    "G{} in a {name} block (G is not an argument)",
+                    fmt_num(c as f64 / 10.0)
+                ),
+            ));
+        }
+        let Some((p, _)) = self.int_word(b'P', 99_999_999.0)? else {
+            return Err(self.alarm(
+                AlarmKind::NoProgramNumber,
+                at,
+                format!("{name} without P (program number)"),
+            ));
+        };
+        let count = self.int_word(b'L', 9999.0)?.map(|l| l.0).unwrap_or(1);
+        let args = self.g65_args()?;
+        if code10 == 660 {
+            let max = self.profile.param("max_macro_nesting", 4.0) as usize;
+            if self.calls.modal.len() >= max {
+                return Err(self.alarm(
+                    AlarmKind::CallNesting,
+                    at,
+                    format!("G66 modal calls nested more than {max} deep"),
+                ));
+            }
+            self.calls.modal.push(ModalCall {
+                prog: p,
+                count,
+                args: Box::new(args),
+            });
+            self.st.modal[12] = 660;
+            return Ok(());
+        }
+        if count == 0 {
+            return Ok(());
+        }
+        self.call(Some(p), None, None, count, true, at, Some(args))
+    }
+
+    /// G67: cancels the most recent G66.
+    pub(super) fn g67(&mut self) {
+        self.calls.modal.pop();
+        self.st.modal[12] = if self.calls.modal.is_empty() {
+            670
+        } else {
+            660
+        };
+    }
+
+    /// After a block with an axis move while G66 is in force: call the
+    /// modal macro (000 §14.1.8). A move inside the macro of G66 entry i
+    /// calls entry i-1 (the next outer one); a move outside every modal
+    /// macro calls the newest entry; moves in the oldest entry's macro call
+    /// nothing.
+    pub(super) fn modal_call(&mut self, at: u32) -> R<()> {
+        let n = self.calls.modal.len();
+        let inside = self.calls.stack.iter().rev().find_map(|f| f.modal_idx);
+        let idx = match inside {
+            None => n - 1,
+            Some(0) => return Ok(()),
+            Some(i) => (i - 1).min(n - 1),
+        };
+        let (prog, count) = (self.calls.modal[idx].prog, self.calls.modal[idx].count);
+        if count == 0 {
+            return Ok(());
+        }
+        let args = *self.calls.modal[idx].args;
+        self.call(Some(prog), None, None, count, true, at, Some(args))?;
+        if let Some(f) = self.calls.stack.last_mut() {
+            f.modal_idx = Some(idx);
+        }
+        Ok(())
+    }
+
+    /// Binds the arguments: specification I by letter, I/J/K as the sets
+    /// of specification II; a later word wins where they meet.
+    fn g65_args(&mut self) -> R<[Option<f64>; 33]> {
+        let mut a = [None; 33];
+        let mut set: i32 = -1;
+        let mut last_k = 3usize;
+        let scale = if self.st.metric { 0.001 } else { 0.0001 };
+        for i in 0..self.block.words.len() {
+            let w = self.block.words[i];
+            let Addr::L(l) = w.addr else { continue };
+            if matches!(l, b'G' | b'P' | b'L' | b'N' | b'O') {
+                continue;
+            }
+            let v = match w.val {
+                Val::Num(n) => {
+                    let dimension = matches!(
+                        l,
+                        b'A' | b'B'
+                            | b'C'
+                            | b'I'
+                            | b'J'
+                            | b'K'
+                            | b'Q'
+                            | b'R'
+                            | b'U'
+                            | b'V'
+                            | b'W'
+                            | b'X'
+                            | b'Y'
+                            | b'Z'
+                    );
+                    if dimension && !n.point && !self.profile.calculator_decimal {
+                        let s = if matches!(l, b'A' | b'B' | b'C') {
+                            0.001
+                        } else {
+                            scale
+                        };
+                        Some(n.value * s)
+                    } else {
+                        Some(n.value)
+                    }
+                }
+                Val::Expr(e) => self.eval(e, w.at)?,
+            };
+            let var = if let Some(k) = b"IJK".iter().position(|&c| c == l) {
+                if set < 0 || k <= last_k {
+                    set += 1;
+                }
+                last_k = k;
+                if set >= 10 {
+                    return Err(self.alarm(
+                        AlarmKind::OutOfRange,
+                        w.at,
+                        "more than 10 sets of I, J, K arguments",
+                    ));
+                }
+                4 + 3 * set as usize + k
+            } else {
+                match arg_var(l) {
+                    Some(n) => n,
+                    None => {
+                        return Err(self.alarm(
+                            AlarmKind::IllegalAddress,
+                            w.at,
+                            format!("{} is not a macro argument", l as char),
+                        ))
+                    }
+                }
+            };
+            // A vacant argument leaves the variable vacant.
+            if v.is_some() {
+                a[var - 1] = v;
+            }
+        }
+        Ok(a)
+    }
+
+    /// `#3000 = n (MESSAGE)`: user alarm 3000+n; `#3006 = n (MESSAGE)`:
+    /// message and stop. Ok(false) for any other variable.
+    pub(super) fn system_write(&mut self, i: f64, v: Option<f64>, at: u32) -> R<bool> {
+        if i != 3000.0 && i != 3006.0 {
+            return Ok(false);
+        }
+        let n = v.unwrap_or(0.0);
+        let text = self
+            .block
+            .comments
+            .first()
+            .map(|&(s, e)| {
+                String::from_utf8_lossy(&self.raw.text[s as usize..e as usize])
+                    .trim()
+                    .to_string()
+            })
+            .unwrap_or_default();
+        if i == 3000.0 {
+            if !(0.0..=999.0).contains(&n) || n.fract() != 0.0 {
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    at,
+                    format!("#3000 = {}: alarm number must be 0-999", fmt_num(n)),
+                ));
+            }
+            let (line, col) = self.raw.line_col(at as usize);
+            let msg = if text.is_empty() {
+                format!("user alarm {}", 3000 + n as u32)
+            } else {
+                text
+            };
+            return Err(kerf_canon::Alarm::new(
+                format!("{}", 3000 + n as u32),
+                msg,
+                SrcRef {
+                    file: self.file_id,
+                    line,
+                    col,
+                },
+            ));
+        }
+        let msg = if text.is_empty() { fmt_num(n) } else { text };
+        self.emit(Canon::Message(msg));
+        self.emit(Canon::Stop { optional: false });
+        Ok(true)
+    }
+}

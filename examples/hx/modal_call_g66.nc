@@ -1,0 +1,16 @@
+(000 HX MC manual 14.1.8 nested G66 modal calls - example program)
+G66 P9100
+Z1000
+G66 P9200
+Z15000
+G67
+G67
+Z-25000
+M30
+O9100
+X5000
+M99
+O9200
+Z6000
+Z7000
+M99
