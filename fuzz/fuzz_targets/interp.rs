@@ -11,9 +11,9 @@ use libfuzzer_sys::fuzz_target;
 
 const MACHINES: [&str; 3] = ["hx-mc", "puma-lathe", "hurco-lathe"];
 /// Most canonical commands taken from one run before we stop it.
-const MAX_STEPS: usize = 20_000;
+const MAX_STEPS: usize = 5_000;
 /// The interpreter's own loop guard (blocks executed).
-const MAX_BLOCKS: u64 = 20_000;
+const MAX_BLOCKS: u64 = 5_000;
 
 fn profiles() -> &'static Vec<Profile> {
     static P: OnceLock<Vec<Profile>> = OnceLock::new();

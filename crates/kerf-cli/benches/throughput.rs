@@ -7,6 +7,11 @@
 //! - `interp`: the interpreter through its library API, every canonical
 //!   command taken from `step()` and dropped (no output sinks);
 //!
+//! - `macro`: a custom-macro program generated in memory (a WHILE loop of
+//!   `KERF_BENCH_MACRO_ITERS` inner iterations, default 1 000 000, with
+//!   arithmetic and an IF in each and one motion every 10), reporting
+//!   executed statements (blocks) per second;
+//!
 //! each 3 times, printing the median blocks/s and MB/s. Generate the input
 //! with `python3 ../shared/bench/gen_programs.py --out bench-inputs` (see
 //! docs/benchmarks.md). Optional env: `KERF_BENCH_MACHINE` (default hx-mc),
@@ -89,6 +94,62 @@ fn interp(path: &PathBuf, machine: &str) -> Sample {
     }
 }
 
+/// The macro benchmark program: `iters` inner iterations, 10 per motion.
+fn macro_program(iters: u64) -> String {
+    let outer = iters.div_ceil(10);
+    format!(
+        "G90 G54 G01 X0 Y0 Z0 F1000\n\
+         #1 = 0\n\
+         #3 = 0\n\
+         #4 = 0\n\
+         WHILE [#1 LT {outer}] DO1\n\
+         #2 = 0\n\
+         WHILE [#2 LT 10] DO2\n\
+         #2 = #2 + 1\n\
+         #4 = #4 + #2 * 0.5 - 1\n\
+         IF [#4 GT 1000] THEN #4 = 0\n\
+         END2\n\
+         #1 = #1 + 1\n\
+         #3 = 1 - #3\n\
+         G01 X#3\n\
+         END1\n\
+         M30\n"
+    )
+}
+
+fn macro_run(text: &str) -> Sample {
+    let mut profile = Profile::builtin("hx-mc").expect("hx-mc");
+    // 10M iterations make 11M backward jumps and 57M repeated blocks:
+    // lift the loop guard above them.
+    profile.params.insert("max_jumps".into(), 1e12);
+    profile.params.insert("max_repeat_blocks".into(), 1e12);
+    let t = Instant::now();
+    let mut it = Interp::new(profile, Settings::default());
+    it.load_main(
+        "macro-bench.nc",
+        Box::new(std::io::Cursor::new(text.as_bytes().to_vec())),
+    );
+    let mut motions = 0u64;
+    let note = loop {
+        match it.step() {
+            Step::Event(e) => {
+                if e.motion().is_some() {
+                    motions += 1;
+                }
+                black_box(&e);
+            }
+            Step::End => break String::new(),
+            Step::Alarm(a) => break format!("STOPPED ON ALARM: {a}"),
+        }
+    };
+    black_box(motions);
+    Sample {
+        secs: t.elapsed().as_secs_f64(),
+        blocks: it.blocks(),
+        note,
+    }
+}
+
 fn median(mut v: Vec<Sample>) -> Sample {
     v.sort_by(|a, b| a.secs.total_cmp(&b.secs));
     let n = v.len();
@@ -120,6 +181,34 @@ fn report(what: &str, runs: Vec<Sample>, bytes: u64) {
 fn main() {
     // `cargo bench` passes `--bench`; a filter argument may follow.
     let filter: Option<String> = std::env::args().skip(1).find(|a| !a.starts_with('-'));
+    let runs: usize = std::env::var("KERF_BENCH_RUNS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(3)
+        .max(1);
+    if filter.as_deref().is_none_or(|f| "macro".contains(f)) {
+        let iters: u64 = std::env::var("KERF_BENCH_MACRO_ITERS")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(1_000_000);
+        let text = macro_program(iters);
+        let samples: Vec<Sample> = (0..runs).map(|_| macro_run(&text)).collect();
+        let all: Vec<String> = samples.iter().map(|s| format!("{:.3}", s.secs)).collect();
+        let m = median(samples);
+        println!(
+            "macro   median {:>7.3} s  {:>10} statements  {:>12.0} statements/s  ({iters} loop iterations; runs: {})",
+            m.secs,
+            m.blocks,
+            m.blocks as f64 / m.secs,
+            all.join(", ")
+        );
+        if !m.note.is_empty() {
+            println!("        note: {}", m.note);
+        }
+        if filter.as_deref() == Some("macro") {
+            return;
+        }
+    }
     let path = match std::env::var_os("KERF_BENCH_INPUT") {
         Some(p) => PathBuf::from(p),
         None => PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../bench-inputs/surface_1m.nc"),
@@ -132,11 +221,6 @@ fn main() {
         return;
     }
     let machine = std::env::var("KERF_BENCH_MACHINE").unwrap_or_else(|_| "hx-mc".into());
-    let runs: usize = std::env::var("KERF_BENCH_RUNS")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(3)
-        .max(1);
     let bytes = std::fs::metadata(&path).map(|m| m.len()).unwrap_or(0);
     println!(
         "throughput: {} ({:.1} MB), machine {machine}, median of {runs}",

@@ -46,6 +46,10 @@ struct Common {
     /// Work offsets file (TOML, see docs/formats.md).
     #[arg(long)]
     offsets: Option<PathBuf>,
+    /// Folder keeping the retained macro variables across runs (#200-#699
+    /// on the HX, #500-#999 on the Fanuc lathes; docs/formats.md).
+    #[arg(long, value_name = "DIR")]
+    state: Option<PathBuf>,
 }
 
 #[derive(Subcommand)]
@@ -152,6 +156,14 @@ fn run(
         }
         it.add_lib_dir(dir.clone());
     }
+    if let Some(dir) = &c.state {
+        if let Err(e) = std::fs::create_dir_all(dir) {
+            return usage_error(format!("--state {}: {e}", dir.display()));
+        }
+        if let Err(e) = kerf_interp::state::load_retained(dir, &mut it) {
+            return usage_error(e);
+        }
+    }
     it.load_main(&name, Box::new(file));
 
     let mut tp = match toolpath.as_ref().map(File::create).transpose() {
@@ -205,6 +217,12 @@ fn run(
     }
     if let Some(a) = &alarm {
         print_alarm(a, it.file_name(a.src.file));
+    }
+    // Retained variables survive an alarm as on the control.
+    if let Some(dir) = &c.state {
+        if let Err(e) = kerf_interp::state::save_retained(dir, &it) {
+            return usage_error(format!("--state {}: {e}", dir.display()));
+        }
     }
     if let Some(path) = report_path {
         let r = rep.finish(&it, &est, alarm.as_ref());

@@ -45,6 +45,7 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
                     .parse()
                     .map_err(|_| format!("--set max_blocks={v}: expected a count"))?
             }
+            _ if k.starts_with("in.") => set_input(&mut s.inputs, k, v)?,
             _ if k.starts_with("PI ")
                 || k.starts_with("PM ")
                 || k.starts_with("PI")
@@ -62,6 +63,49 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
         }
     }
     Ok(s)
+}
+
+/// `in.N=V`: interface input signals read by macros. HX: `in.7000` …
+/// `in.7031` one signal (0/1), `in.7032` … `in.7035` a 32-bit word
+/// (UI000-UI031 … UI300-UI331). Fanuc: `in.1000` … `in.1015` one signal,
+/// `in.1032` the 16-bit word.
+fn set_input(inputs: &mut [u32; 4], k: &str, v: &str) -> Result<(), String> {
+    let n: u32 = k[3..]
+        .parse()
+        .map_err(|_| format!("--set {k}: expected in.NUMBER"))?;
+    let val: f64 = v
+        .parse()
+        .map_err(|_| format!("--set {k}={v}: expected a number"))?;
+    let flag = || match val {
+        0.0 => Ok(false),
+        1.0 => Ok(true),
+        _ => Err(format!("--set {k}={v}: a signal is 0 or 1")),
+    };
+    let word = |max: f64| {
+        if val >= 0.0 && val.fract() == 0.0 && val <= max {
+            Ok(val as u32)
+        } else {
+            Err(format!("--set {k}={v}: expected a whole number 0-{max}"))
+        }
+    };
+    match n {
+        7000..=7031 | 1000..=1015 => {
+            let b = if n >= 7000 { n - 7000 } else { n - 1000 };
+            if flag()? {
+                inputs[0] |= 1 << b;
+            } else {
+                inputs[0] &= !(1 << b);
+            }
+        }
+        7032..=7035 => inputs[(n - 7032) as usize] = word(u32::MAX as f64)?,
+        1032 => inputs[0] = (inputs[0] & !0xffff) | word(65535.0)?,
+        _ => {
+            return Err(format!(
+                "--set {k}: inputs are in.7000-in.7035 (HX) or in.1000-in.1015, in.1032 (Fanuc)"
+            ))
+        }
+    }
+    Ok(())
 }
 
 /// `PI144` and `PI 144` are the same parameter.
@@ -97,6 +141,16 @@ mod tests {
         assert!(s.optional_stop);
         assert_eq!(p.params["PI 144"], 1.0);
         assert!(parse(&["nonsense=1".into()], &mut p).is_err());
+        let s = parse(
+            &["in.7000=1".into(), "in.7031=1".into(), "in.7033=5".into()],
+            &mut p,
+        )
+        .unwrap();
+        assert_eq!(s.inputs, [1 | (1 << 31), 5, 0, 0]);
+        let s = parse(&["in.1032=3".into(), "in.1015=1".into()], &mut p).unwrap();
+        assert_eq!(s.inputs[0], 3 | (1 << 15));
+        assert!(parse(&["in.7000=2".into()], &mut p).is_err());
+        assert!(parse(&["in.7036=1".into()], &mut p).is_err());
         assert!(parse(&["block_skip=12".into()], &mut p).is_err());
     }
 }

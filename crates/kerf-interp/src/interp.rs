@@ -15,10 +15,11 @@ use crate::alarms::AlarmKind;
 use crate::arc::{self, ArcError};
 use crate::dialect::{Dialect, DialectId, MAction, MWhen, Support};
 use crate::machine::{MachineKind, Profile};
-use crate::macros::Vars;
+use crate::macros::{round_to, Vars};
 use crate::words::{WVal, Words, MAX_CODES};
 
 mod calls;
+mod sysvars;
 
 /// Operator-panel switches and run options.
 #[derive(Clone, Debug, Default)]
@@ -34,6 +35,9 @@ pub struct Settings {
     /// Most blocks executed before the loop guard stops the run
     /// (0 = no limit).
     pub max_blocks: u64,
+    /// Interface input signals as four 32-bit words: HX UI000-UI031 …
+    /// UI300-UI331 (#7000-#7035); Fanuc #1000-#1015 are word 0's low bits.
+    pub inputs: [u32; 4],
 }
 
 /// What one call of [`Interp::step`] produced.
@@ -95,6 +99,21 @@ struct State {
     flood: bool,
 }
 
+/// An active WHILE/DO loop: its label, the loop head and the position
+/// after its END (found by scanning when the loop is first entered).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct LoopFrame {
+    label: u32,
+    start: Mark,
+    end: Mark,
+}
+
+/// Loops nested in one call level (000 §14.2.5, Fanuc: 3).
+const MAX_LOOP_DEPTH: usize = 3;
+
+/// A remembered loop scan: file, loop head offset, labels open around it.
+type LoopKey = (u32, u64, [u32; MAX_LOOP_DEPTH]);
+
 /// The interpreter.
 pub struct Interp {
     profile: Profile,
@@ -113,7 +132,9 @@ pub struct Interp {
     tape_started: bool,
     st: State,
     vars: Vars,
-    loops: Vec<(u32, Mark)>,
+    loops: Vec<LoopFrame>,
+    /// Recent loop scans: (file, loop head offset, open labels) → after END.
+    loop_ends: Vec<(LoopKey, Mark)>,
     hurco_loops: Vec<(u32, Mark)>,
     blocks: u64,
     jumps: u64,
@@ -126,6 +147,8 @@ pub struct Interp {
     repeated: u64,
     /// Most such blocks before the loop guard stops the run.
     repeat_budget: u64,
+    /// Most backward jumps before the loop guard stops the run.
+    max_jumps: u64,
     /// G codes by value × 10 (fast lookup).
     g_index: Vec<Option<&'static crate::dialect::GCode>>,
     /// M codes below 256 (fast lookup).
@@ -138,6 +161,10 @@ pub struct Interp {
     travel: [Option<(f64, f64)>; NAXES],
     /// Program store and call stack (M98/M99, G65, G66).
     calls: calls::Calls,
+    /// System-variable state (interface signals, D table, clocks …).
+    sys: Box<sysvars::SysState>,
+    /// Calls by G/M/T code (HX PI 85-105); None when not set up.
+    code_calls: Option<Box<calls::CodeCalls>>,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -151,7 +178,9 @@ impl Interp {
             long_names: dialect.long_names,
             loop_comments: dialect.hurco_syntax,
             max_digits: profile.max_digits,
-            max_nesting: 5,
+            // Bracket nesting: Fanuc 5 levels including function
+            // brackets; the HX text of 000 §14.2.4 gives 10.
+            max_nesting: if dialect.id == DialectId::Hx { 10 } else { 5 },
         };
         let mut modal = [0u16; 32];
         for g in dialect.gcodes.iter().filter(|g| g.default) {
@@ -237,6 +266,7 @@ impl Interp {
         }
         let arc_tol = profile.param("arc_tolerance_mm", 0.02);
         let repeat_budget = profile.param("max_repeat_blocks", 100_000_000.0) as u64;
+        let max_jumps = profile.param("max_jumps", 10_000_000.0) as u64;
         let mut g_index = vec![None; 2000];
         for g in dialect.gcodes {
             if let Some(slot) = g_index.get_mut(g.code10 as usize) {
@@ -258,6 +288,13 @@ impl Interp {
                 travel[ax as usize] = Some((a.min, a.max));
             }
         }
+        let settings_inputs = settings.inputs;
+        let code_calls = if hx {
+            calls::CodeCalls::from_profile(&profile)
+        } else {
+            None
+        };
+        let settings_sb = settings.single_block;
         Interp {
             profile,
             dialect,
@@ -274,8 +311,9 @@ impl Interp {
             finished: false,
             tape_started: false,
             st,
-            vars: Vars::new(),
+            vars: Vars::with_numbering(hx),
             loops: Vec::new(),
+            loop_ends: Vec::new(),
             hurco_loops: Vec::new(),
             blocks: 0,
             jumps: 0,
@@ -285,12 +323,15 @@ impl Interp {
             high_water: 0,
             repeated: 0,
             repeat_budget,
+            max_jumps,
             g_index,
             m_index,
             has_axis,
             travel,
             letter_ok,
             calls: calls::Calls::default(),
+            sys: Box::new(sysvars::SysState::new(settings_inputs, settings_sb)),
+            code_calls,
         }
     }
 
@@ -311,6 +352,18 @@ impl Interp {
         if idx < 6 {
             self.st.wcs[idx] = origin;
         }
+    }
+
+    /// The retained macro variables that hold a value (#200-#699 on the
+    /// HX, #500-#999 on the Fanuc controls), to be kept across runs.
+    pub fn retained_vars(&self) -> Vec<(usize, f64)> {
+        self.vars.retained()
+    }
+
+    /// Sets retained macro variable `#i` as kept from an earlier run;
+    /// false if `i` is not a retained variable of this control.
+    pub fn set_retained_var(&mut self, i: usize, v: f64) -> bool {
+        self.vars.set_retained(i, v)
     }
 
     /// Sets tool length offset H`n` (mm); H0 is always 0.
@@ -552,6 +605,9 @@ impl Interp {
         if self.calls.end_seq.is_some() && self.block.n.is_some() {
             return self.block_with_end_seq(nwords);
         }
+        if let Some(n) = self.block.n {
+            self.sys.last_n = n as f64;
+        }
         if let Some(stmt) = self.block.stmt {
             self.calls.body_seen = true;
             return self.statement(stmt);
@@ -596,7 +652,20 @@ impl Interp {
             let w = self.block.words[i];
             let (v, point) = match w.val {
                 Val::Num(n) => (Some(n.value), n.point),
-                Val::Expr(e) => (self.eval(e, w.at)?, true),
+                Val::Expr(e) => {
+                    // An expression's value is rounded to the address's
+                    // least input increment (000 §14.2.4: X#1 with
+                    // #1 = 1.2345 moves 1.235).
+                    let inc = match w.addr {
+                        Addr::L(l) => self.addr_increment(l),
+                        _ => 0.0,
+                    };
+                    let v = self.eval_in(e, w.at, inc)?;
+                    (
+                        v.map(|v| if inc > 0.0 { round_to(v, inc) } else { v }),
+                        true,
+                    )
+                }
             };
             // A word whose value is vacant is omitted.
             let Some(v) = v else { continue };
@@ -707,9 +776,28 @@ impl Interp {
         Ok(())
     }
 
+    /// The least input increment of a dimension address in program units
+    /// (0 for other addresses and for macro call arguments).
+    fn addr_increment(&self, l: u8) -> f64 {
+        if self.macro_args() {
+            return 0.0;
+        }
+        match l {
+            b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'I' | b'J' | b'K' | b'R' | b'Q' => {
+                if self.st.metric {
+                    0.001
+                } else {
+                    0.0001
+                }
+            }
+            b'A' | b'B' | b'C' => 0.001,
+            _ => 0.0,
+        }
+    }
+
     /// The block is a G65/G66 call: its letters are macro arguments.
     fn macro_args(&self) -> bool {
-        self.words.has_g(650) || self.words.has_g(660)
+        self.words.has_g(650) || self.words.has_g(660) || self.code_call_block()
     }
 
     /// Letters that name an axis but are arguments of a code on machines
@@ -720,7 +808,17 @@ impl Interp {
 
     // ---- execution ---------------------------------------------------------
 
+    #[inline]
     fn execute(&mut self) -> R<bool> {
+        if self.code_calls.is_some() {
+            if let Some(r) = self.code_call()? {
+                return Ok(r);
+            }
+        }
+        self.execute_block()
+    }
+
+    fn execute_block(&mut self) -> R<bool> {
         let d = self.dialect;
         // Classify G codes.
         let mut motion: Option<(u16, u32)> = None;
@@ -811,6 +909,9 @@ impl Interp {
         let mut dwell = false;
         let mut g09 = false;
         let mut refret: Option<(u16, u32)> = None;
+        if let Some(dw) = self.words.get(b'D') {
+            self.sys.d = dw.v;
+        }
         if self.words.has(b'H')
             || self
                 .words
@@ -1830,7 +1931,13 @@ impl Interp {
     // ---- macro statements ----------------------------------------------------------
 
     fn eval(&mut self, e: kerf_lang::ExprId, at: u32) -> R<Option<f64>> {
-        let r = crate::macros::eval(&self.block.exprs, e, &self.vars);
+        self.eval_in(e, at, 0.0)
+    }
+
+    /// Evaluates the value of an address whose least input increment is
+    /// `inc` (ROUND rounds to it).
+    fn eval_in(&mut self, e: kerf_lang::ExprId, at: u32, inc: f64) -> R<Option<f64>> {
+        let r = crate::macros::eval(&self.block.exprs, e, &sysvars::Env(self), inc);
         r.map_err(|m| self.alarm(m.kind, at, m.message))
     }
 
@@ -1860,55 +1967,34 @@ impl Interp {
                 }
             }
             Stmt::While { cond, label } => {
-                if label == 0 || label > 999 {
+                self.check_loop_label(label, at)?;
+                let enter = self.cond(cond, at)?;
+                self.loop_head(label, enter, at)?;
+            }
+            Stmt::Do { label } => {
+                // DO m without WHILE: an endless loop, left by GOTO.
+                self.check_loop_label(label, at)?;
+                self.loop_head(label, true, at)?;
+            }
+            Stmt::End { label } => match self.loops.last() {
+                Some(&l) if l.label == label => {
+                    self.count_jump(at)?;
+                    self.seek(l.start)?;
+                }
+                Some(&l) if self.loops.iter().any(|o| o.label == label) => {
                     return Err(self.alarm(
                         AlarmKind::BadLoop,
                         at,
-                        format!("DO{label}: loop label out of range"),
-                    ));
-                }
-                if self.cond(cond, at)? {
-                    if self.loops.last().map(|l| l.1) != Some(self.raw.mark) {
-                        if self.loops.len() >= 3 && self.dialect.id != DialectId::Hx {
-                            return Err(self.alarm(
-                                AlarmKind::BadLoop,
-                                at,
-                                "WHILE loops nested more than 3 deep",
-                            ));
-                        }
-                        if self.loops.len() >= 16 {
-                            return Err(self.alarm(
-                                AlarmKind::BadLoop,
-                                at,
-                                "WHILE loops nested too deeply",
-                            ));
-                        }
-                        self.loops.push((label, self.raw.mark));
-                    }
-                } else {
-                    if self.loops.last().map(|l| l.1) == Some(self.raw.mark) {
-                        self.loops.pop();
-                    }
-                    self.skip_to_end(label, at)?;
-                }
-            }
-            Stmt::Do { label } => {
-                return Err(self.alarm(
-                    AlarmKind::NotYetSupported,
-                    at,
-                    format!("DO{label} without WHILE is not yet supported (issue 3)"),
-                ));
-            }
-            Stmt::End { label } => match self.loops.last() {
-                Some(&(l, mark)) if l == label => {
-                    self.count_jump(at)?;
-                    self.seek(mark)?;
+                        format!("END{label} crosses the loop DO{}", l.label),
+                    ))
                 }
                 _ => {
                     return Err(self.alarm(
                         AlarmKind::BadLoop,
                         at,
-                        format!("END{label} without a matching WHILE ... DO{label}"),
+                        format!(
+                        "END{label} without a matching WHILE ... DO{label} (a jump into a loop?)"
+                    ),
                     ))
                 }
             },
@@ -1927,14 +2013,20 @@ impl Interp {
         if (3000.0..=3006.0).contains(&i) && self.system_write(i, v, at)? {
             return Ok(());
         }
-        self.vars
-            .set(i, v)
-            .map_err(|m| self.alarm(m.kind, at, m.message))
+        let r = match Vars::number(i) {
+            Ok(n) if self.vars.class(n) == crate::macros::VarClass::System => self.sys_write(n, v),
+            Ok(n) if n > 0 && v.is_none_or(f64::is_finite) => {
+                self.vars.set_raw(n, v);
+                Ok(())
+            }
+            _ => self.vars.set(i, v),
+        };
+        r.map_err(|m| self.alarm(m.kind, at, m.message))
     }
 
     fn count_jump(&mut self, at: u32) -> R<()> {
         self.jumps += 1;
-        let limit = self.profile.param("max_jumps", 10_000_000.0) as u64;
+        let limit = self.max_jumps;
         if self.jumps > limit {
             return Err(self.alarm(
                 AlarmKind::LoopLimit,
@@ -1969,6 +2061,8 @@ impl Interp {
         let err_src = self.cur;
         self.count_jump(at)?;
         if self.seek_sequence(target, true) {
+            let to = self.src.as_ref().expect("loaded").tell().offset;
+            self.leave_loops(to);
             return Ok(());
         }
         Err(AlarmKind::SequenceNotFound.at(
@@ -1981,27 +2075,151 @@ impl Interp {
         ))
     }
 
-    /// Skips forward past the END matching a false WHILE.
-    fn skip_to_end(&mut self, label: u32, at: u32) -> R<()> {
+    /// The loop labels the control accepts: DO1-DO3 on the Fanuc
+    /// profiles, any label 1-9999 on the HX (its sample uses DO 210).
+    fn check_loop_label(&self, label: u32, at: u32) -> R<()> {
+        let max = if self.dialect.id == DialectId::Hx {
+            9999
+        } else {
+            3
+        };
+        if label == 0 || label > max {
+            return Err(self.alarm(
+                AlarmKind::BadLoop,
+                at,
+                format!("DO{label}: loop label out of range (1-{max})"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// A WHILE (or bare DO) block: enters the loop or skips past its END.
+    fn loop_head(&mut self, label: u32, enter: bool, at: u32) -> R<()> {
+        let mark = self.raw.mark;
+        if let Some(i) = self.loops.iter().rposition(|l| l.start == mark) {
+            // The loop head again: loops opened inside it were left.
+            if enter {
+                self.loops.truncate(i + 1);
+                return Ok(());
+            }
+            let end = self.loops[i].end;
+            self.loops.truncate(i);
+            return self.seek(end);
+        }
+        if self.loops.iter().any(|l| l.label == label) {
+            return Err(self.alarm(
+                AlarmKind::BadLoop,
+                at,
+                format!("DO{label} inside a loop with the same label"),
+            ));
+        }
+        if self.loops.len() >= MAX_LOOP_DEPTH {
+            return Err(self.alarm(
+                AlarmKind::BadLoop,
+                at,
+                format!("WHILE loops nested more than {MAX_LOOP_DEPTH} deep"),
+            ));
+        }
+        let here = self.src.as_ref().expect("loaded").tell();
+        // The scan's result depends on the loop head and the labels open
+        // around it; remember the last few (an inner loop is entered again
+        // on every pass of its outer loop).
+        let mut outer = [0u32; MAX_LOOP_DEPTH];
+        for (o, l) in outer.iter_mut().zip(&self.loops) {
+            *o = l.label;
+        }
+        let key = (self.file_id, mark.offset, outer);
+        let end = match self.loop_ends.iter().find(|e| e.0 == key) {
+            Some(&(_, end)) => {
+                if !enter {
+                    self.seek(end)?;
+                }
+                end
+            }
+            None => {
+                let end = self.scan_loop(label, at)?;
+                if self.loop_ends.len() >= 16 {
+                    self.loop_ends.remove(0);
+                }
+                self.loop_ends.push((key, end));
+                end
+            }
+        };
+        if enter {
+            self.seek(here)?;
+            self.loops.push(LoopFrame {
+                label,
+                start: mark,
+                end,
+            });
+        }
+        Ok(())
+    }
+
+    /// Scans forward from the block after `WHILE ... DO label` to its END,
+    /// checking the loop rules of 000 §14.2.5 on the way: loops inside it
+    /// must close before it (no crossing), must not reuse an open label and
+    /// must not nest too deep; the END must be in the same program. Leaves
+    /// the source after the END and returns that position.
+    fn scan_loop(&mut self, label: u32, at: u32) -> R<Mark> {
         let err_src = self.cur;
+        let open = self.loops.len();
+        let mut outer = [0u32; MAX_LOOP_DEPTH];
+        for (o, l) in outer.iter_mut().zip(&self.loops) {
+            *o = l.label;
+        }
+        let outer = &outer[..open];
         let src = self.src.as_mut().expect("loaded");
         let mut raw = RawBlock::default();
         let mut blk = Block::default();
-        let mut depth = 0u32;
+        let mut inner: Vec<u32> = Vec::new();
+        let dialect = self.dialect.id;
+        let file = self.file_id;
+        let bad = |raw: &RawBlock, msg: String| {
+            AlarmKind::BadLoop.at(
+                dialect,
+                SrcRef {
+                    file,
+                    line: raw.mark.line,
+                    col: 1,
+                },
+                msg,
+            )
+        };
         while let Ok(true) = src.next_block(&mut raw) {
             if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
                 continue;
             }
-            if blk.program.is_some() && self.calls.header != Some(raw.mark.offset) {
+            if blk.percent || (blk.program.is_some() && self.calls.header != Some(raw.mark.offset))
+            {
                 break;
             }
             match blk.stmt {
-                Some(Stmt::While { label: l, .. }) if l == label => depth += 1,
-                Some(Stmt::End { label: l }) if l == label => {
-                    if depth == 0 {
-                        return Ok(());
+                Some(Stmt::While { label: l, .. }) | Some(Stmt::Do { label: l }) => {
+                    if l == label || inner.contains(&l) || outer.contains(&l) {
+                        return Err(bad(
+                            &raw,
+                            format!("DO{l} inside a loop with the same label"),
+                        ));
                     }
-                    depth -= 1;
+                    if open + 1 + inner.len() >= MAX_LOOP_DEPTH {
+                        return Err(bad(
+                            &raw,
+                            format!("WHILE loops nested more than {MAX_LOOP_DEPTH} deep"),
+                        ));
+                    }
+                    inner.push(l);
+                }
+                Some(Stmt::End { label: l }) => {
+                    if inner.last() == Some(&l) {
+                        inner.pop();
+                    } else if inner.is_empty() && l == label {
+                        return Ok(src.tell());
+                    } else if l == label || inner.contains(&l) || outer.contains(&l) {
+                        let open_l = inner.last().copied().unwrap_or(label);
+                        return Err(bad(&raw, format!("END{l} crosses the loop DO{open_l}")));
+                    }
+                    // Any other END alarms if it is ever executed.
                 }
                 _ => {}
             }
@@ -2014,6 +2232,12 @@ impl Interp {
             },
             format!("WHILE ... DO{label} without END{label}"),
         ))
+    }
+
+    /// After a jump to `to`: the loops whose range does not hold it are left.
+    pub(super) fn leave_loops(&mut self, to: u64) {
+        self.loops
+            .retain(|l| l.start.offset <= to && to < l.end.offset);
     }
 
     /// Hurco loop (repeat) commands.

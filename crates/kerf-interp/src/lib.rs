@@ -14,6 +14,7 @@
 //! - [`words`]: a block's evaluated words in fixed tables;
 //! - [`arc`]: circular interpolation geometry;
 //! - [`macros`]: variables and expression evaluation;
+//! - [`state`]: retained variables kept across runs (`--state DIR`);
 //! - [`alarms`]: every alarm and its code per control.
 
 // Axis arithmetic indexes several parallel position arrays by slot.
@@ -25,6 +26,7 @@ pub mod dialect;
 pub mod interp;
 pub mod machine;
 pub mod macros;
+pub mod state;
 pub mod words;
 
 pub use dialect::{Dialect, DialectId};

@@ -1,7 +1,8 @@
 //! Macro variables and expression evaluation with Fanuc vacant (`#0`)
-//! semantics. This is the core the custom-macro issue builds on: local
-//! `#1-#33`, common `#100-#199` and `#500-#999` are kept; system variables
-//! are not yet modelled and alarm when used.
+//! semantics. Local `#1-#33` (and on the HX `#34-#99`), common
+//! `#100-#199`, retained `#200-#699` (HX) or `#500-#999` (Fanuc) live in
+//! [`Vars`]; system variables (`#1000` and up) are read and written by the
+//! interpreter (`interp/sysvars.rs`).
 
 use kerf_lang::{BinOp, Expr, ExprId, Func};
 
@@ -25,6 +26,19 @@ fn fail<T>(kind: AlarmKind, message: impl Into<String>) -> Result<T, MacroError>
 #[derive(Clone, Debug)]
 pub struct Vars {
     v: Vec<Option<f64>>,
+    /// HX numbering (000 §14.2.3): #34-#99 locals, #200-#699 retained;
+    /// otherwise Fanuc: #500-#999 retained.
+    hx: bool,
+}
+
+/// Where a variable number falls.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum VarClass {
+    /// #1-#199 and the retained range, held in [`Vars`].
+    Plain,
+    /// #1000 and up (and HX numbers below 1000 outside its ranges that
+    /// are system variables): handled by the interpreter.
+    System,
 }
 
 impl Default for Vars {
@@ -38,10 +52,88 @@ impl Vars {
     pub fn new() -> Vars {
         Vars {
             v: vec![None; 1000],
+            hx: false,
         }
     }
 
-    fn index(n: f64) -> Result<usize, MacroError> {
+    /// All variables vacant, with the HX (000) or Fanuc numbering.
+    pub fn with_numbering(hx: bool) -> Vars {
+        Vars {
+            v: vec![None; 1000],
+            hx,
+        }
+    }
+
+    /// The retained variables (kept across runs): #200-#699 on the HX,
+    /// #500-#999 on the Fanuc controls.
+    pub fn retained_range(&self) -> std::ops::RangeInclusive<usize> {
+        if self.hx {
+            200..=699
+        } else {
+            500..=999
+        }
+    }
+
+    /// The retained variables that hold a value.
+    pub fn retained(&self) -> Vec<(usize, f64)> {
+        self.retained_range()
+            .filter_map(|i| self.v[i].map(|v| (i, v)))
+            .collect()
+    }
+
+    /// Sets a retained variable (ignored outside the retained range or for
+    /// a value that is not finite).
+    pub fn set_retained(&mut self, i: usize, v: f64) -> bool {
+        if self.retained_range().contains(&i) && v.is_finite() {
+            self.v[i] = Some(v);
+            true
+        } else {
+            false
+        }
+    }
+
+    /// True when `#i` is one of the store's own variables.
+    #[inline]
+    fn plain(&self, i: usize) -> bool {
+        i <= 33
+            || (100..=199).contains(&i)
+            || if self.hx {
+                (34..=99).contains(&i) || (200..=699).contains(&i)
+            } else {
+                (500..=999).contains(&i)
+            }
+    }
+
+    /// Classifies a variable number (already checked to be a whole
+    /// non-negative number).
+    #[inline]
+    pub fn class(&self, i: usize) -> VarClass {
+        if i < 1000 && self.plain(i) {
+            VarClass::Plain
+        } else {
+            VarClass::System
+        }
+    }
+
+    /// Checks that `n` is a whole, non-negative variable number.
+    pub fn number(n: f64) -> Result<usize, MacroError> {
+        if !n.is_finite() || n < 0.0 {
+            return fail(
+                AlarmKind::BadVariable,
+                format!("#{n} is not a variable number"),
+            );
+        }
+        let i = n.round();
+        if (i - n).abs() > 1e-6 || i > 1e9 {
+            return fail(
+                AlarmKind::BadVariable,
+                format!("#{n} is not a variable number"),
+            );
+        }
+        Ok(i as usize)
+    }
+
+    fn index(&self, n: f64) -> Result<usize, MacroError> {
         if !n.is_finite() || n < 0.0 {
             return fail(
                 AlarmKind::BadVariable,
@@ -56,7 +148,7 @@ impl Vars {
             );
         }
         let i = i as usize;
-        if i == 0 || (1..=33).contains(&i) || (100..=199).contains(&i) || (500..=999).contains(&i) {
+        if self.plain(i) {
             Ok(i)
         } else if i < 1000 {
             fail(
@@ -71,15 +163,28 @@ impl Vars {
         }
     }
 
+    /// Reads plain variable `#i` (`class(i)` is `Plain`).
+    #[inline]
+    pub fn raw(&self, i: usize) -> Option<f64> {
+        self.v[i]
+    }
+
+    /// Writes plain variable `#i` (`class(i)` is `Plain`, `i` > 0, the
+    /// value finite or vacant).
+    #[inline]
+    pub fn set_raw(&mut self, i: usize, v: Option<f64>) {
+        self.v[i] = v;
+    }
+
     /// Reads `#n`.
     pub fn get(&self, n: f64) -> Result<Option<f64>, MacroError> {
-        let i = Self::index(n)?;
+        let i = self.index(n)?;
         Ok(self.v[i])
     }
 
     /// Writes `#n` (`None` makes it vacant).
     pub fn set(&mut self, n: f64, val: Option<f64>) -> Result<(), MacroError> {
-        let i = Self::index(n)?;
+        let i = self.index(n)?;
         if i == 0 {
             return fail(AlarmKind::BadVariable, "#0 is read-only (always vacant)");
         }
@@ -94,40 +199,113 @@ impl Vars {
 }
 
 impl Vars {
-    /// Takes the local variables #1-#33 (for a macro call), leaving them
-    /// vacant.
-    pub fn take_locals(&mut self) -> [Option<f64>; 33] {
-        let mut out = [None; 33];
+    /// Takes the local variables #1-#99 (for a macro call), leaving them
+    /// vacant (#34-#99 exist on the HX only and are otherwise vacant).
+    pub fn take_locals(&mut self) -> [Option<f64>; 99] {
+        let mut out = [None; 99];
         for (i, o) in out.iter_mut().enumerate() {
             *o = self.v[i + 1].take();
         }
         out
     }
 
-    /// Replaces the local variables #1-#33 (macro call or return).
-    pub fn put_locals(&mut self, l: &[Option<f64>; 33]) {
+    /// Replaces the local variables #1-#33 (a macro's arguments).
+    pub fn put_args(&mut self, l: &[Option<f64>; 33]) {
         self.v[1..34].copy_from_slice(l);
     }
+
+    /// Replaces the local variables #1-#99 (return from a macro).
+    pub fn put_locals(&mut self, l: &[Option<f64>; 99]) {
+        self.v[1..100].copy_from_slice(l);
+    }
+}
+
+/// Where expressions read variables from.
+pub trait Lookup {
+    /// Reads `#n`.
+    fn get(&self, n: f64) -> Result<Option<f64>, MacroError>;
+}
+
+impl Lookup for Vars {
+    #[inline]
+    fn get(&self, n: f64) -> Result<Option<f64>, MacroError> {
+        Vars::get(self, n)
+    }
+}
+
+/// Rounds `x` half away from zero to a multiple of `inc` (a tiny margin
+/// absorbs binary representation error: 1.2345 rounds to 1.235).
+pub fn round_to(x: f64, inc: f64) -> f64 {
+    let q = x / inc;
+    (q + q.signum() * 1e-7).round() * inc
+}
+
+/// BCD to binary: each 4-bit nibble of the integer is one decimal digit.
+fn bin(x: f64) -> Result<f64, MacroError> {
+    if x < 0.0 || x.fract() != 0.0 || x > u32::MAX as f64 {
+        return fail(
+            AlarmKind::MathError,
+            "BIN argument must be a whole number 0-2^32",
+        );
+    }
+    let (mut v, mut out, mut scale) = (x as u64, 0u64, 1u64);
+    while v > 0 {
+        let d = v & 15;
+        if d > 9 {
+            return fail(AlarmKind::MathError, "BIN argument is not a BCD number");
+        }
+        out += d * scale;
+        scale *= 10;
+        v >>= 4;
+    }
+    Ok(out as f64)
+}
+
+/// Binary to BCD: each decimal digit becomes one 4-bit nibble.
+fn bcd(x: f64) -> Result<f64, MacroError> {
+    if x < 0.0 || x.fract() != 0.0 || x > 99_999_999.0 {
+        return fail(
+            AlarmKind::MathError,
+            "BCD argument must be a whole number 0-99999999",
+        );
+    }
+    let (mut v, mut out, mut shift) = (x as u64, 0u64, 0u32);
+    while v > 0 {
+        out |= (v % 10) << shift;
+        shift += 4;
+        v /= 10;
+    }
+    Ok(out as f64)
 }
 
 /// Evaluates an expression. Vacant propagates as in Fanuc custom macro B:
 /// in arithmetic a vacant operand counts as 0 (a lone vacant stays vacant),
 /// in EQ/NE vacant differs from 0, in the other comparisons it counts as 0.
-pub fn eval(ex: &[Expr], e: ExprId, vars: &Vars) -> Result<Option<f64>, MacroError> {
+/// `inc` is the least input increment of the address the expression is
+/// the value of (0 outside addresses): ROUND rounds to it (000 §14.2.4).
+pub fn eval<V: Lookup>(
+    ex: &[Expr],
+    e: ExprId,
+    vars: &V,
+    inc: f64,
+) -> Result<Option<f64>, MacroError> {
     let z = |x: Option<f64>| x.unwrap_or(0.0);
     Ok(match ex[e as usize] {
         Expr::Num(v) => Some(v),
         Expr::Var(i) => {
-            let n = eval(ex, i, vars)?;
+            let n = match ex[i as usize] {
+                Expr::Num(v) => Some(v),
+                _ => eval(ex, i, vars, 0.0)?,
+            };
             let Some(n) = n else {
                 return fail(AlarmKind::BadVariable, "variable number is vacant");
             };
             vars.get(n)?
         }
-        Expr::Neg(a) => eval(ex, a, vars)?.map(|v| -v),
+        Expr::Neg(a) => eval(ex, a, vars, inc)?.map(|v| -v),
         Expr::Bin(op, a, b) => {
-            let x = eval(ex, a, vars)?;
-            let y = eval(ex, b, vars)?;
+            let x = eval(ex, a, vars, inc)?;
+            let y = eval(ex, b, vars, inc)?;
             let bool_ = |c: bool| Some(if c { 1.0 } else { 0.0 });
             match op {
                 BinOp::Eq => {
@@ -171,9 +349,9 @@ pub fn eval(ex: &[Expr], e: ExprId, vars: &Vars) -> Result<Option<f64>, MacroErr
             Some(r)
         }
         Expr::Call(f, a, b) => {
-            let x = z(eval(ex, a, vars)?);
+            let x = z(eval(ex, a, vars, inc)?);
             let y = match b {
-                Some(b) => Some(z(eval(ex, b, vars)?)),
+                Some(b) => Some(z(eval(ex, b, vars, inc)?)),
                 None => None,
             };
             let deg = |r: f64| r.to_degrees();
@@ -211,6 +389,7 @@ pub fn eval(ex: &[Expr], e: ExprId, vars: &Vars) -> Result<Option<f64>, MacroErr
                     x.sqrt()
                 }
                 Func::Abs => x.abs(),
+                Func::Round if inc > 0.0 => round_to(x, inc),
                 Func::Round => x.round(),
                 Func::Fix => x.trunc(),
                 Func::Fup => {
@@ -229,12 +408,8 @@ pub fn eval(ex: &[Expr], e: ExprId, vars: &Vars) -> Result<Option<f64>, MacroErr
                 Func::Exp => x.exp(),
                 Func::Pow => x.powf(y.unwrap_or(1.0)),
                 Func::Adp => x,
-                Func::Bin | Func::Bcd => {
-                    return fail(
-                        AlarmKind::NotYetSupported,
-                        "BIN/BCD are not yet supported (issue 3)",
-                    );
-                }
+                Func::Bin => bin(x)?,
+                Func::Bcd => bcd(x)?,
             };
             if !r.is_finite() {
                 return fail(AlarmKind::MathError, "result is not a finite number");

@@ -121,6 +121,21 @@ pub fn parse_block(text: &[u8], opts: &LexOptions, out: &mut Block) -> Result<()
     p.block(out)
 }
 
+/// Longest keyword or function name (`WHILE`, `ROUND`, ...).
+const KW_MAX: usize = 8;
+
+/// A keyword read by `P::keyword`, upper-cased, on the stack.
+struct Kw {
+    buf: [u8; KW_MAX],
+    len: usize,
+}
+
+impl Kw {
+    fn bytes(&self) -> &[u8] {
+        &self.buf[..self.len]
+    }
+}
+
 #[inline]
 fn is_blank(c: u8) -> bool {
     c == b' ' || c == b'\t' || c == b'\r' || c == 0x0c
@@ -292,7 +307,7 @@ impl<'a> P<'a> {
                     if is_kw {
                         self.i = j;
                         b.stmt_at = start as u32;
-                        self.statement(b, kw.to_vec().as_slice(), start)?;
+                        self.statement(b, kw, start)?;
                         return self.after_stmt(b);
                     }
                 }
@@ -360,7 +375,7 @@ impl<'a> P<'a> {
                 }
                 let cond = self.primary(b)?;
                 let at = self.i;
-                match self.keyword().as_deref() {
+                match self.keyword().as_ref().map(Kw::bytes) {
                     Some(b"GOTO") => {
                         let target = self.operand(b)?;
                         b.stmt = Some(Stmt::IfGoto { cond, target });
@@ -386,7 +401,7 @@ impl<'a> P<'a> {
                 }
                 let cond = self.primary(b)?;
                 let at = self.i;
-                if self.keyword().as_deref() != Some(b"DO") {
+                if self.keyword().as_ref().map(Kw::bytes) != Some(b"DO") {
                     return err(LexErrorKind::BadStatement, at);
                 }
                 let label = self.integer(at, 9)?;
@@ -405,8 +420,10 @@ impl<'a> P<'a> {
         Ok(())
     }
 
-    /// Reads an upper-cased alphabetic keyword at the cursor.
-    fn keyword(&mut self) -> Option<Vec<u8>> {
+    /// Reads an upper-cased alphabetic keyword at the cursor (no
+    /// allocation: keywords are short; a longer run of letters reads as
+    /// one that matches nothing).
+    fn keyword(&mut self) -> Option<Kw> {
         self.skip();
         let s = self.i;
         while self.i < self.t.len() && self.t[self.i].is_ascii_alphabetic() {
@@ -415,7 +432,26 @@ impl<'a> P<'a> {
         if self.i == s {
             return None;
         }
-        Some(self.t[s..self.i].to_ascii_uppercase())
+        let mut kw = Kw {
+            buf: [b'?'; KW_MAX],
+            len: KW_MAX,
+        };
+        if self.i - s <= KW_MAX {
+            kw.len = self.i - s;
+            for (d, c) in kw.buf.iter_mut().zip(&self.t[s..self.i]) {
+                *d = c.to_ascii_uppercase();
+            }
+        }
+        Some(kw)
+    }
+
+    /// True when the letters at the cursor are exactly `kw` (any case).
+    #[inline]
+    fn word_is(&self, kw: &[u8]) -> bool {
+        let t = &self.t[self.i..];
+        t.len() >= kw.len()
+            && t[..kw.len()].eq_ignore_ascii_case(kw)
+            && !t.get(kw.len()).is_some_and(|c| c.is_ascii_alphabetic())
     }
 
     fn after_stmt(&mut self, b: &mut Block) -> R<()> {
@@ -535,7 +571,7 @@ impl<'a> P<'a> {
     fn expr(&mut self, b: &mut Block) -> R<ExprId> {
         let l = self.additive(b)?;
         let save = self.i;
-        let op = match self.keyword().as_deref() {
+        let op = match self.keyword().as_ref().map(Kw::bytes) {
             Some(b"EQ") => BinOp::Eq,
             Some(b"NE") => BinOp::Ne,
             Some(b"GT") => BinOp::Gt,
@@ -564,14 +600,18 @@ impl<'a> P<'a> {
                     self.i += 1;
                     BinOp::Sub
                 }
-                Some(c) if c.is_ascii_alphabetic() => match self.keyword().as_deref() {
-                    Some(b"OR") => BinOp::Or,
-                    Some(b"XOR") => BinOp::Xor,
-                    _ => {
+                Some(c) if c.is_ascii_alphabetic() => {
+                    if self.word_is(b"OR") {
+                        self.i += 2;
+                        BinOp::Or
+                    } else if self.word_is(b"XOR") {
+                        self.i += 3;
+                        BinOp::Xor
+                    } else {
                         self.i = save;
                         return Ok(l);
                     }
-                },
+                }
                 _ => return Ok(l),
             };
             let r = self.multiplicative(b)?;
@@ -592,14 +632,18 @@ impl<'a> P<'a> {
                     self.i += 1;
                     BinOp::Div
                 }
-                Some(c) if c.is_ascii_alphabetic() => match self.keyword().as_deref() {
-                    Some(b"AND") => BinOp::And,
-                    Some(b"MOD") => BinOp::Mod,
-                    _ => {
+                Some(c) if c.is_ascii_alphabetic() => {
+                    if self.word_is(b"AND") {
+                        self.i += 3;
+                        BinOp::And
+                    } else if self.word_is(b"MOD") {
+                        self.i += 3;
+                        BinOp::Mod
+                    } else {
                         self.i = save;
                         return Ok(l);
                     }
-                },
+                }
                 _ => return Ok(l),
             };
             let r = self.unary(b)?;
@@ -676,8 +720,9 @@ impl<'a> P<'a> {
                 Ok(self.push(b, Expr::Num(n.value)))
             }
             Some(c) if c.is_ascii_alphabetic() => {
-                let name = self.keyword().unwrap_or_default();
-                let Some(f) = Func::from_name(&name) else {
+                let kw = self.keyword();
+                let name: &[u8] = kw.as_ref().map_or(&[], Kw::bytes);
+                let Some(f) = Func::from_name(name) else {
                     return err(LexErrorKind::BadExpression, at);
                 };
                 if self.peek() != Some(b'[') {

@@ -29,16 +29,53 @@ pub(super) struct Frame {
     ret: Mark,
     start: Mark,
     header: Option<u64>,
-    loops: Vec<(u32, Mark)>,
+    loops: Vec<super::LoopFrame>,
     end_seq: Option<u32>,
-    /// The caller's #1-#33 (macro calls).
-    locals: Option<Box<[Option<f64>; 33]>>,
+    /// The caller's #1-#99 (macro calls).
+    locals: Option<Box<[Option<f64>; 99]>>,
     /// Where each repetition of the called program starts.
     callee_start: Mark,
     /// Repetitions left after the current one.
     left: u32,
     /// The G66 entry whose macro this call is.
     modal_idx: Option<usize>,
+    /// Called by a G, M or T code (000 §14.1.3-14.1.6): inside it those
+    /// codes are ordinary codes.
+    by_code: bool,
+}
+
+/// Macro and subprogram calls by code (HX PI 85-106), built from the
+/// profile's parameters; absent when none is set.
+pub(super) struct CodeCalls {
+    /// G code × 10 → program 9010-9019.
+    g: Vec<(u16, u32)>,
+    /// M code → program 9020-9029.
+    m: Vec<(u32, u32)>,
+    /// T codes call 9000 (PI 105).
+    t: bool,
+}
+
+impl CodeCalls {
+    /// The table from PI 85-94 (G codes 1-255), PI 95-104 (M codes 1-97
+    /// other than M02, M30) and PI 105 (T); None when all are 0.
+    pub(super) fn from_profile(p: &crate::machine::Profile) -> Option<Box<CodeCalls>> {
+        let mut cc = CodeCalls {
+            g: Vec::new(),
+            m: Vec::new(),
+            t: p.param("PI 105", 0.0) != 0.0,
+        };
+        for k in 0..10u32 {
+            let g = p.param(&format!("PI {}", 85 + k), 0.0);
+            if (1.0..=255.0).contains(&g) && g.fract() == 0.0 {
+                cc.g.push(((g * 10.0) as u16, 9010 + k));
+            }
+            let m = p.param(&format!("PI {}", 95 + k), 0.0);
+            if (1.0..=97.0).contains(&m) && m.fract() == 0.0 && m != 2.0 && m != 30.0 {
+                cc.m.push((m as u32, 9020 + k));
+            }
+        }
+        (cc.t || !cc.g.is_empty() || !cc.m.is_empty()).then(|| Box::new(cc))
+    }
 }
 
 /// One G66 modal call in force.
@@ -523,6 +560,7 @@ impl Interp {
             callee_start: body,
             left: count - 1,
             modal_idx: None,
+            by_code: false,
         };
         self.calls.stack.push(frame);
         self.switch_to(file);
@@ -547,7 +585,7 @@ impl Interp {
         }
         if let Some(a) = args {
             let saved = self.vars.take_locals();
-            self.vars.put_locals(&a);
+            self.vars.put_args(&a);
             if let Some(f) = self.calls.stack.last_mut() {
                 f.locals = Some(Box::new(saved));
             }
@@ -629,6 +667,8 @@ impl Interp {
                     format!("M99 P{n}: sequence number N{n} not found in the calling program"),
                 ));
             }
+            let to = self.src.as_ref().expect("loaded").tell().offset;
+            self.leave_loops(to);
         }
         Ok(())
     }
@@ -691,7 +731,7 @@ impl Interp {
             ));
         };
         let count = self.int_word(b'L', 9999.0)?.map(|l| l.0).unwrap_or(1);
-        let args = self.g65_args()?;
+        let args = self.g65_args(false)?;
         if code10 == 660 {
             let max = self.profile.param("max_macro_nesting", 4.0) as usize;
             if self.calls.modal.len() >= max {
@@ -713,6 +753,86 @@ impl Interp {
             return Ok(());
         }
         self.call(Some(p), None, None, count, true, at, Some(args))
+    }
+
+    /// True when the block names a G or M code that calls a macro (its
+    /// letters are then arguments).
+    pub(super) fn code_call_block(&self) -> bool {
+        match &self.code_calls {
+            Some(cc) if !self.calls.stack.iter().any(|f| f.by_code) => {
+                self.words
+                    .gs()
+                    .iter()
+                    .any(|&(c, _)| cc.g.iter().any(|g| g.0 == c))
+                    || self
+                        .words
+                        .ms()
+                        .iter()
+                        .any(|&(m, _)| cc.m.iter().any(|x| x.0 == m))
+            }
+            _ => false,
+        }
+    }
+
+    /// Macro call by G or M code, subprogram call by T code (000
+    /// §14.1.3-14.1.6). Some(result) when the block was such a call.
+    /// Not made inside a program that a code called.
+    #[inline(never)]
+    pub(super) fn code_call(&mut self) -> R<Option<bool>> {
+        let Some(cc) = self.code_calls.as_ref() else {
+            return Ok(None);
+        };
+        if self.calls.stack.iter().any(|f| f.by_code) {
+            return Ok(None);
+        }
+        let mut hit: Option<(u32, u32, bool)> = None;
+        for &(c, at) in self.words.gs() {
+            if let Some(&(_, prog)) = cc.g.iter().find(|g| g.0 == c) {
+                hit = Some((prog, at, false));
+            }
+        }
+        for &(m, at) in self.words.ms() {
+            if let Some(&(_, prog)) = cc.m.iter().find(|x| x.0 == m) {
+                hit = hit.or(Some((prog, at, true)));
+            }
+        }
+        let t_call = cc.t;
+        if let Some((prog, at, by_m)) = hit {
+            let others = self.words.ng - usize::from(!by_m) + self.words.nm - usize::from(by_m);
+            if others > 0 {
+                return Err(self.alarm(
+                    AlarmKind::IllegalAddress,
+                    at,
+                    format!("a block that calls macro O{prog} by code has other G or M codes"),
+                ));
+            }
+            let count = self.int_word(b'L', 9999.0)?.map(|l| l.0).unwrap_or(1);
+            let args = self.g65_args(by_m)?;
+            if count == 0 {
+                return Ok(Some(true));
+            }
+            self.call(Some(prog), None, None, count, true, at, Some(args))?;
+            if let Some(f) = self.calls.stack.last_mut() {
+                f.by_code = true;
+            }
+            return Ok(Some(true));
+        }
+        if t_call {
+            if let Some(t) = self.words.take(b'T') {
+                // The T value goes to #149 (Fanuc; 000 names no variable),
+                // the rest of the block runs, then M98 P9000.
+                self.vars
+                    .set(149.0, Some(t.v))
+                    .map_err(|m| self.alarm(m.kind, t.at, m.message))?;
+                let r = self.execute_block()?;
+                self.call(Some(9000), None, None, 1, false, t.at, None)?;
+                if let Some(f) = self.calls.stack.last_mut() {
+                    f.by_code = true;
+                }
+                return Ok(Some(r));
+            }
+        }
+        Ok(None)
     }
 
     /// G67: cancels the most recent G66.
@@ -752,7 +872,7 @@ impl Interp {
 
     /// Binds the arguments: specification I by letter, I/J/K as the sets
     /// of specification II; a later word wins where they meet.
-    fn g65_args(&mut self) -> R<[Option<f64>; 33]> {
+    fn g65_args(&mut self, skip_m: bool) -> R<[Option<f64>; 33]> {
         let mut a = [None; 33];
         let mut set: i32 = -1;
         let mut last_k = 3usize;
@@ -760,7 +880,7 @@ impl Interp {
         for i in 0..self.block.words.len() {
             let w = self.block.words[i];
             let Addr::L(l) = w.addr else { continue };
-            if matches!(l, b'G' | b'P' | b'L' | b'N' | b'O') {
+            if matches!(l, b'G' | b'P' | b'L' | b'N' | b'O') || (skip_m && l == b'M') {
                 continue;
             }
             let v = match w.val {

@@ -1,0 +1,159 @@
+//! Retained macro variables across runs (`--state DIR`): #200-#699 on the
+//! HX, #500-#999 on the Fanuc lathe; commons #100-#199 start vacant.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn kerf() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_kerf"))
+}
+
+fn dir(name: &str) -> PathBuf {
+    let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("state")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Runs `prog` and returns the x of every motion.
+fn xs(prog: &PathBuf, machine: &str, state: &PathBuf) -> Vec<f64> {
+    let tp = prog.with_extension("jsonl");
+    let out = kerf()
+        .arg("run")
+        .arg(prog)
+        .args(["--machine", machine, "--state"])
+        .arg(state)
+        .arg("--toolpath")
+        .arg(&tp)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    std::fs::read_to_string(&tp)
+        .unwrap()
+        .lines()
+        .map(|l| {
+            let v: serde_json::Value = serde_json::from_str(l).unwrap();
+            v["to"]["x"].as_f64().unwrap()
+        })
+        .collect()
+}
+
+#[test]
+fn retained_variables_survive_between_runs_hx() {
+    let d = dir("hx");
+    // #200 counts runs; #100 must be vacant at the start of every run
+    // (X0 when vacant, X50 when it kept a value), #699 keeps a fraction.
+    let prog = d.join("count.nc");
+    std::fs::write(
+        &prog,
+        "G90 G00 X0 Y0 Z0\n\
+         #200 = #200 + 1\n\
+         IF [#100 EQ #0] GOTO 5\n\
+         G00 X50.\n\
+         N5 #100 = 7\n\
+         #699 = #699 + 0.125\n\
+         G00 X[#200 + #699]\n\
+         M30\n",
+    )
+    .unwrap();
+    // Run 1: #200 = 1, #699 = 0.125 → X1.125. Run 2: 2 + 0.25 → X2.25.
+    assert_eq!(xs(&prog, "hx-mc", &d), vec![0.0, 1.125]);
+    assert_eq!(xs(&prog, "hx-mc", &d), vec![0.0, 2.25]);
+    let text = std::fs::read_to_string(d.join("hx-mc.vars")).unwrap();
+    assert!(text.contains("#200 = 2.0\n"), "{text}");
+    assert!(text.contains("#699 = 0.25\n"), "{text}");
+    assert!(!text.contains("#100"), "{text}");
+    // No temporary file is left behind.
+    let n = std::fs::read_dir(&d)
+        .unwrap()
+        .filter(|e| {
+            e.as_ref()
+                .unwrap()
+                .file_name()
+                .to_string_lossy()
+                .contains("tmp")
+        })
+        .count();
+    assert_eq!(n, 0);
+}
+
+#[test]
+fn retained_variables_on_the_lathe_and_after_an_alarm() {
+    let d = dir("lathe");
+    let prog = d.join("lathe.nc");
+    // #500 is written before the alarm and kept; X is a diameter (radius
+    // in the toolpath): run 1 X10. → 5, run 2 X20. → 10.
+    std::fs::write(
+        &prog,
+        "#500 = #500 + 10.\nG00 X#500 Z5.\n#3000 = 1 (STOP)\n",
+    )
+    .unwrap();
+    for want in [5.0, 10.0] {
+        let tp = prog.with_extension("jsonl");
+        let out = kerf()
+            .arg("run")
+            .arg(&prog)
+            .args(["--machine", "puma-lathe", "--state"])
+            .arg(&d)
+            .arg("--toolpath")
+            .arg(&tp)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(1));
+        let text = std::fs::read_to_string(&tp).unwrap();
+        let v: serde_json::Value = serde_json::from_str(text.lines().next().unwrap()).unwrap();
+        assert_eq!(v["to"]["x"].as_f64().unwrap(), want);
+    }
+    // A value outside the retained range in the file is refused.
+    std::fs::write(d.join("puma-lathe.vars"), "#100 = 1\n").unwrap();
+    let out = kerf()
+        .arg("check")
+        .arg(&prog)
+        .args(["--machine", "puma-lathe", "--state"])
+        .arg(&d)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
+
+/// `--set in.7000=1` sets interface input UI000 (#7000) for the run.
+#[test]
+fn interface_inputs_from_set() {
+    let d = dir("inputs");
+    let prog = d.join("branch.nc");
+    std::fs::write(
+        &prog,
+        "G90 G00 X0 Y0 Z0\nIF [#7000 EQ 1] GOTO 5\nG00 X1.\nN5 G00 X[2 + #7033]\nM30\n",
+    )
+    .unwrap();
+    let tp = prog.with_extension("jsonl");
+    let xs = |sets: &[&str]| -> Vec<f64> {
+        let mut cmd = kerf();
+        cmd.arg("run").arg(&prog).arg("--toolpath").arg(&tp);
+        for s in sets {
+            cmd.args(["--set", s]);
+        }
+        let out = cmd.output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        std::fs::read_to_string(&tp)
+            .unwrap()
+            .lines()
+            .map(|l| {
+                let v: serde_json::Value = serde_json::from_str(l).unwrap();
+                v["to"]["x"].as_f64().unwrap()
+            })
+            .collect()
+    };
+    assert_eq!(xs(&[]), vec![0.0, 1.0, 2.0]);
+    assert_eq!(xs(&["in.7000=1", "in.7033=3"]), vec![0.0, 5.0]);
+}

@@ -1,0 +1,362 @@
+//! System variables (`#1000` and up, and on the HX its numbers below the
+//! plain ranges), read from and written to the interpreter state.
+//! Numbering: the HX table of 000 §14.2.3 for the `hx` dialect, the Fanuc
+//! standard (fanuc-semantics §7.8) for the others. This is reached only
+//! for numbers outside the plain-variable ranges (`Vars::class`), so
+//! ordinary macro arithmetic never pays for it.
+
+use std::time::Instant;
+
+use kerf_canon::NAXES;
+
+use super::Interp;
+use crate::alarms::AlarmKind;
+use crate::dialect::DialectId;
+use crate::machine::MachineKind;
+use crate::macros::{Lookup, MacroError, VarClass, Vars};
+
+/// System-variable state that lives nowhere else in the interpreter.
+#[derive(Clone, Debug)]
+pub(crate) struct SysState {
+    /// Cutter radius offsets D1-D128 (mm), index = D number.
+    pub d_table: Vec<f64>,
+    /// Lathe tool offset memory #2001-#2999 (program units as written).
+    pub lathe_off: Vec<f64>,
+    /// Interface inputs: HX UI000-UI331 as four 32-bit words (#7000-#7035);
+    /// Fanuc #1000-#1015 / #1032 are the low 16 bits of word 0.
+    pub inputs: [u32; 4],
+    /// Interface outputs: HX UO000-UO331 (#7500-#7535); Fanuc
+    /// #1100-#1115 / #1132 / #1133 use word 0.
+    pub outputs: [u32; 4],
+    /// Last D number and sequence number.
+    pub d: f64,
+    pub last_n: f64,
+    /// #3001 (ms) and #3002 (hours) clocks: start and written offsets.
+    pub clock: Instant,
+    pub clock1_ms: f64,
+    pub clock2_h: f64,
+    /// #3003, #3004, #3901, #3902, HX #3083.
+    pub c3003: f64,
+    pub c3004: f64,
+    pub parts_done: f64,
+    pub parts_needed: f64,
+    pub single_block: f64,
+}
+
+impl SysState {
+    pub fn new(inputs: [u32; 4], single_block: bool) -> SysState {
+        SysState {
+            d_table: vec![0.0; 129],
+            lathe_off: vec![0.0; 1000],
+            inputs,
+            outputs: [0; 4],
+            d: 0.0,
+            last_n: 0.0,
+            clock: Instant::now(),
+            clock1_ms: 0.0,
+            clock2_h: 0.0,
+            c3003: 0.0,
+            c3004: 0.0,
+            parts_done: 0.0,
+            parts_needed: 0.0,
+            single_block: if single_block { 1.0 } else { 0.0 },
+        }
+    }
+}
+
+fn fail<T>(kind: AlarmKind, message: String) -> Result<T, MacroError> {
+    Err(MacroError { kind, message })
+}
+
+fn bit(words: &[u32; 4], w: usize, b: usize) -> f64 {
+    ((words[w] >> b) & 1) as f64
+}
+
+/// Expression variables seen through the interpreter: plain numbers from
+/// [`Vars`], the rest from [`Interp::sys_read`].
+pub(crate) struct Env<'a>(pub &'a Interp);
+
+impl Lookup for Env<'_> {
+    #[inline]
+    fn get(&self, n: f64) -> Result<Option<f64>, MacroError> {
+        // Fast path: a whole number in the plain ranges.
+        let k = n as usize;
+        if k as f64 == n && k < 1000 && self.0.vars.class(k) == VarClass::Plain {
+            return Ok(self.0.vars.raw(k));
+        }
+        let i = Vars::number(n)?;
+        match self.0.vars.class(i) {
+            VarClass::Plain => Ok(self.0.vars.raw(i)),
+            VarClass::System => self.0.sys_read(i),
+        }
+    }
+}
+
+/// What a system variable number names.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Sys {
+    D(usize),
+    H(usize),
+    /// Common shift (G92/EXT), axis number 0-based.
+    Shift(usize),
+    /// Work offset G54+w, axis number.
+    Wcs(usize, usize),
+    SingleBlock,
+    S,
+    DNum,
+    HNum,
+    Machine(usize),
+    Work(usize),
+    Programmed(usize),
+    Skip(usize),
+    Modal(usize),
+    InBit(usize, usize),
+    InWord(usize, u32),
+    OutBit(usize, usize),
+    OutWord(usize, u32),
+    RefPoint(u32, usize),
+    LatheOff(usize),
+    Clock1,
+    Clock2,
+    C3003,
+    C3004,
+    PartsDone,
+    PartsNeeded,
+    F,
+    T,
+    N,
+}
+
+impl Interp {
+    fn sys_decode(&self, i: usize) -> Option<Sys> {
+        use Sys::*;
+        Some(if self.dialect.id == DialectId::Hx {
+            match i {
+                2112..=2239 => D(i - 2111),
+                2240..=2367 => H(i - 2239),
+                2368..=2370 => Shift(i - 2368),
+                2377..=2430 => Wcs((i - 2377) / 9, (i - 2377) % 9),
+                3083 => SingleBlock,
+                4083..=4086 => Work(i - 4083),
+                4379..=4382 => Machine(i - 4379),
+                4792 => S,
+                4882 => DNum,
+                4883 => HNum,
+                6205..=6208 => Machine(i - 6205),
+                6319..=6322 => Skip(i - 6319),
+                6718..=6749 => Modal(i - 6717),
+                7000..=7031 => InBit(0, i - 7000),
+                7032..=7035 => InWord(i - 7032, u32::MAX),
+                7500..=7531 => OutBit(0, i - 7500),
+                7532..=7535 => OutWord(i - 7532, u32::MAX),
+                8000..=8095 => RefPoint(2 + (i as u32 - 8000) / 32, (i - 8000) % 32),
+                _ => return None,
+            }
+        } else {
+            match i {
+                1000..=1015 => InBit(0, i - 1000),
+                1032 => InWord(0, 0xffff),
+                1100..=1115 => OutBit(0, i - 1100),
+                1132 => OutWord(0, 0xffff),
+                1133 => OutWord(0, u32::MAX),
+                2001..=2999 => LatheOff(i - 2000),
+                3001 => Clock1,
+                3002 => Clock2,
+                3003 => C3003,
+                3004 => C3004,
+                3901 => PartsDone,
+                3902 => PartsNeeded,
+                4001..=4031 => Modal(i - 4000),
+                4107 => DNum,
+                4109 => F,
+                4111 => HNum,
+                4114 => N,
+                4119 => S,
+                4120 => T,
+                5001..=5006 => Programmed(i - 5001),
+                5021..=5026 => Machine(i - 5021),
+                5041..=5046 => Work(i - 5041),
+                5061..=5066 => Skip(i - 5061),
+                5201..=5206 => Shift(i - 5201),
+                5221..=5340 if (i - 5221) % 20 < 6 => Wcs((i - 5221) / 20, (i - 5221) % 20),
+                _ => return None,
+            }
+        })
+    }
+
+    /// The position slot of the control's axis number `k` (0-based:
+    /// X Y Z A on the mill, X Z on a two-axis lathe).
+    fn axis_slot(&self, k: usize) -> Option<usize> {
+        (0..NAXES).filter(|&s| self.has_axis[s]).nth(k)
+    }
+
+    /// mm (or degrees) → program units for axis slot `s`; lathe X in
+    /// diameter when diameter programming is on.
+    fn to_prog_units(&self, s: usize, v: f64) -> f64 {
+        let mut v = v;
+        if s < 3 {
+            v /= self.unit();
+        }
+        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.diameter {
+            v *= 2.0;
+        }
+        v
+    }
+
+    fn prog_units_to_mm(&self, s: usize, v: f64) -> f64 {
+        let mut v = v;
+        if s < 3 {
+            v *= self.unit();
+        }
+        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.diameter {
+            v /= 2.0;
+        }
+        v
+    }
+
+    fn axis_value_of(&self, k: usize, p: &kerf_canon::Pos) -> Option<f64> {
+        self.axis_slot(k).map(|s| self.to_prog_units(s, p[s]))
+    }
+
+    /// Reads system variable `#i`.
+    pub(crate) fn sys_read(&self, i: usize) -> Result<Option<f64>, MacroError> {
+        use Sys::*;
+        let Some(s) = self.sys_decode(i) else {
+            return fail(
+                AlarmKind::BadVariable,
+                format!("#{i} is not a variable of this control"),
+            );
+        };
+        let u = self.unit();
+        Ok(Some(match s {
+            D(n) => self.sys.d_table[n] / u,
+            H(n) => self.h_table.get(n).copied().unwrap_or(0.0) / u,
+            Shift(k) => return Ok(self.axis_value_of(k, &self.st.shift).or(Some(0.0))),
+            Wcs(w, k) => return Ok(self.axis_value_of(k, &self.st.wcs[w]).or(Some(0.0))),
+            SingleBlock => self.sys.single_block,
+            S => self.st.s,
+            DNum => self.sys.d,
+            HNum => self.st.h as f64,
+            Machine(k) => return Ok(self.axis_value_of(k, &self.st.pos)),
+            Work(k) => return Ok(self.axis_value_of(k, &self.work_position())),
+            Programmed(k) | Skip(k) => {
+                return Ok(self.axis_value_of(k, &self.programmed_position()))
+            }
+            Modal(g) => self.st.modal.get(g).copied().unwrap_or(0) as f64 / 10.0,
+            InBit(w, b) => bit(&self.sys.inputs, w, b),
+            InWord(w, mask) => (self.sys.inputs[w] & mask) as f64,
+            OutBit(w, b) => bit(&self.sys.outputs, w, b),
+            OutWord(w, mask) => (self.sys.outputs[w] & mask) as f64,
+            RefPoint(n, k) => {
+                let Some(s) = self.axis_slot(k) else {
+                    return Ok(None);
+                };
+                let ax = kerf_canon::Axis::ALL[s];
+                self.to_prog_units(s, self.reference_point(n, ax))
+            }
+            LatheOff(n) => self.sys.lathe_off[n],
+            Clock1 => self.sys.clock.elapsed().as_secs_f64() * 1000.0 + self.sys.clock1_ms,
+            Clock2 => self.sys.clock.elapsed().as_secs_f64() / 3600.0 + self.sys.clock2_h,
+            C3003 => self.sys.c3003,
+            C3004 => self.sys.c3004,
+            PartsDone => self.sys.parts_done,
+            PartsNeeded => self.sys.parts_needed,
+            F => match self.st.feed {
+                Some(f) => f / u,
+                None => return Ok(None),
+            },
+            T => {
+                if self.profile.kind == MachineKind::Lathe {
+                    (self.st.tool * 100 + self.st.offset) as f64
+                } else {
+                    self.st.tool as f64
+                }
+            }
+            N => self.sys.last_n,
+        }))
+    }
+
+    /// Writes system variable `#i` (vacant writes 0).
+    pub(crate) fn sys_write(&mut self, i: usize, v: Option<f64>) -> Result<(), MacroError> {
+        use Sys::*;
+        let Some(s) = self.sys_decode(i) else {
+            return fail(
+                AlarmKind::BadVariable,
+                format!("#{i} is not a variable of this control"),
+            );
+        };
+        let x = v.unwrap_or(0.0);
+        if !x.is_finite() {
+            return fail(AlarmKind::MathError, "value is not a finite number".into());
+        }
+        let u = self.unit();
+        let word = |x: f64, mask: u32| -> Result<u32, MacroError> {
+            if x < 0.0 || x.fract() != 0.0 || x > mask as f64 {
+                return fail(
+                    AlarmKind::OutOfRange,
+                    format!("#{i} = {x}: expected a whole number 0-{mask}"),
+                );
+            }
+            Ok(x as u32)
+        };
+        let flag = |x: f64| -> Result<bool, MacroError> {
+            match x {
+                0.0 => Ok(false),
+                1.0 => Ok(true),
+                _ => fail(
+                    AlarmKind::OutOfRange,
+                    format!("#{i} = {x}: expected 0 or 1"),
+                ),
+            }
+        };
+        match s {
+            D(n) => self.sys.d_table[n] = x * u,
+            H(n) => {
+                if let Some(h) = self.h_table.get_mut(n) {
+                    *h = x * u;
+                }
+            }
+            Shift(k) | Wcs(_, k) => {
+                let Some(slot) = self.axis_slot(k) else {
+                    return fail(
+                        AlarmKind::BadVariable,
+                        format!("#{i}: this machine has no axis {}", k + 1),
+                    );
+                };
+                let mm = self.prog_units_to_mm(slot, x);
+                match s {
+                    Shift(_) => self.st.shift[slot] = mm,
+                    Wcs(w, _) => self.st.wcs[w][slot] = mm,
+                    _ => unreachable!(),
+                }
+            }
+            SingleBlock => self.sys.single_block = flag(x)? as u8 as f64,
+            OutBit(w, b) => {
+                if flag(x)? {
+                    self.sys.outputs[w] |= 1 << b;
+                } else {
+                    self.sys.outputs[w] &= !(1 << b);
+                }
+            }
+            OutWord(w, mask) => {
+                let n = word(x, mask)?;
+                self.sys.outputs[w] = (self.sys.outputs[w] & !mask) | n;
+            }
+            LatheOff(n) => self.sys.lathe_off[n] = x,
+            Clock1 => {
+                self.sys.clock1_ms = x - self.sys.clock.elapsed().as_secs_f64() * 1000.0;
+            }
+            Clock2 => {
+                self.sys.clock2_h = x - self.sys.clock.elapsed().as_secs_f64() / 3600.0;
+            }
+            C3003 => self.sys.c3003 = word(x, 3)? as f64,
+            C3004 => self.sys.c3004 = word(x, 7)? as f64,
+            PartsDone => self.sys.parts_done = x,
+            PartsNeeded => self.sys.parts_needed = x,
+            _ => {
+                return fail(AlarmKind::BadVariable, format!("#{i} is read-only"));
+            }
+        }
+        Ok(())
+    }
+}

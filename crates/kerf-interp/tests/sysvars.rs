@@ -1,0 +1,160 @@
+//! System variables: the HX numbering of 000 §14.2.3 (hx-mc) and the Fanuc
+//! standard numbering (puma-lathe). Expected values worked out by hand
+//! from the profiles (hx-mc: G54 = X-400 Y-250 Z-250, 2nd reference
+//! X-400).
+
+use kerf_canon::Canon;
+use kerf_interp::{run_text, Profile, Run, Settings};
+
+fn run_with(machine: &str, settings: Settings, text: &str) -> Run {
+    run_text(Profile::builtin(machine).unwrap(), settings, "t.nc", text)
+}
+
+fn round(v: f64) -> f64 {
+    let r = (v * 1e6).round() / 1e6;
+    if r == 0.0 {
+        0.0
+    } else {
+        r
+    }
+}
+
+fn moves(r: &Run) -> Vec<(u32, f64, f64, f64)> {
+    r.events
+        .iter()
+        .filter(|e| matches!(e.cmd, Canon::Rapid { .. } | Canon::Feed { .. }))
+        .map(|e| {
+            let m = e.motion().unwrap();
+            (e.src.line, round(m.to[0]), round(m.to[1]), round(m.to[2]))
+        })
+        .collect()
+}
+
+fn ok(r: &Run) {
+    assert!(r.alarm.is_none(), "unexpected alarm {:?}", r.alarm);
+}
+
+#[test]
+fn hx_positions_modal_and_work_offsets() {
+    let r = run_with(
+        "hx-mc",
+        Settings::default(),
+        "G90 G54 G00 X10. Y20. Z-5.\n\
+         #1 = #6205\n\
+         #2 = #6207\n\
+         #3 = #4083\n\
+         #4 = #2377 + #2379\n\
+         #5 = #6718 * 1000 + #6720\n\
+         #6 = #8000\n\
+         #2386 = -300.\n\
+         #2387 = -200.\n\
+         #2388 = -100.\n\
+         G55 G00 X0 Y0 Z0\n\
+         #7 = #6205 + #6206 + #6207\n\
+         G00 X[#1 + 400] Y[#2 + 300] Z[#3 - 20]\n\
+         G00 X[#4 + 700] Y[#5 - 40] Z[#6 + 390]\n\
+         G00 X[#7 + 620] Y0 Z0\n\
+         M30\n",
+    );
+    ok(&r);
+    // #1 = -390, #2 = -255, #3 = 10, #4 = -650, #5 = 0*1000 + 90,
+    // #6 = -400, #7 = -300 - 200 - 100.
+    assert_eq!(
+        moves(&r),
+        vec![
+            (1, 10.0, 20.0, -5.0),
+            (11, 0.0, 0.0, 0.0),
+            (13, 10.0, 45.0, -10.0),
+            (14, 50.0, 50.0, -10.0),
+            (15, 20.0, 0.0, 0.0)
+        ]
+    );
+    let r = run_with("hx-mc", Settings::default(), "#1 = 0\n#6205 = 1.\nM30\n");
+    let a = r.alarm.unwrap();
+    assert_eq!((a.code.as_str(), a.src.line), ("F_82200", 2));
+}
+
+#[test]
+fn hx_tool_offsets_take_effect() {
+    let r = run_with(
+        "hx-mc",
+        Settings::default(),
+        "#2241 = 50.\n\
+         #2113 = 5.\n\
+         G90 G54 G00 X0 Y0 Z0\n\
+         G00 H2 D2\n\
+         #1 = #4883 * 10 + #4882\n\
+         #2 = #2241 + #2113\n\
+         G00 X#1 Y#2\n\
+         G43 H2 Z0\n\
+         #3 = #6207\n\
+         G00 X[#3 + 230]\n\
+         M30\n",
+    );
+    ok(&r);
+    // #1 = 2*10 + 2 = 22, #2 = 50 + 5 = 55; G43 H2 Z0: machine Z =
+    // -250 + 0 + 50 = -200, so X[-200 + 230] = X30.
+    let m = moves(&r);
+    assert_eq!(m[1], (7, 22.0, 55.0, 0.0));
+    assert_eq!((m.last().unwrap().0, m.last().unwrap().1), (10, 30.0));
+}
+
+#[test]
+fn hx_interface_signals() {
+    let s = Settings {
+        inputs: [0b101, 7, 0, 0],
+        ..Settings::default()
+    };
+    let r = run_with(
+        "hx-mc",
+        s,
+        "#1 = #7000 + #7001 * 10 + #7002 * 100\n\
+         #2 = #7032 + #7033\n\
+         #7503 = 1\n\
+         #7532 = #7532 + 16\n\
+         #3 = #7504 * 100 + #7532\n\
+         G90 G54 G00 X#1 Y#2 Z-#3\n\
+         #7000 = 1\n",
+    );
+    // #1 = 1 + 0 + 100; #2 = 5 + 7; outputs 8 + 16 = 24 with UO004 set.
+    assert_eq!(moves(&r), vec![(6, 101.0, 12.0, -124.0)]);
+    let a = r.alarm.unwrap();
+    assert_eq!((a.code.as_str(), a.src.line), ("F_82200", 7));
+}
+
+#[test]
+fn fanuc_lathe_positions_and_work_offset_write() {
+    let r = run_with(
+        "puma-lathe",
+        Settings::default(),
+        "G00 X50. Z5.\n\
+         #1 = #5001\n\
+         #2 = #5002\n\
+         #3 = #4001\n\
+         #5221 = #5221 + 10.\n\
+         #6 = #5001\n\
+         #3901 = 3\n\
+         #7 = #3901 + #4120 + #3\n\
+         #8 = #5061\n\
+         G00 X[#1 + #2 + #6 + #7] Z[#8 - 40]\n\
+         M30\n",
+    );
+    ok(&r);
+    // #1 = 50 (diameter), #2 = 5, #3 = 0 (G00); G54 X moves +10 on the
+    // diameter, so the same point reads X40: #6 = 40; #7 = 3 + 0 + 0;
+    // #8 = 40. X[50 + 5 + 40 + 3] = X98 → radius 49; Z[40 - 40] = Z0.
+    let m = moves(&r);
+    assert_eq!((m[0].0, m[0].1, m[0].3), (1, 25.0, 5.0));
+    assert_eq!((m[1].0, m[1].1, m[1].3), (10, 49.0, 0.0));
+    // HX numbers are not variables of the Fanuc lathe.
+    let r = run_with("puma-lathe", Settings::default(), "#1 = #6205\n");
+    assert_eq!(r.alarm.unwrap().code, "PS115");
+    // The millisecond clock runs from the start of the run and can be set.
+    let r = run_with(
+        "puma-lathe",
+        Settings::default(),
+        "#3001 = 5000\nIF [#3001 LT 5000] GOTO 9\nIF [#3001 GT 65000] GOTO 9\nG00 X10. Z0\nN9 M30\n",
+    );
+    ok(&r);
+    assert_eq!(moves(&r).len(), 1);
+}
