@@ -480,3 +480,44 @@ fn endless_loops_end_in_an_alarm() {
     let r = run_text(p, Settings::default(), "t", "N1 GOTO 1\n");
     assert_eq!(r.alarm.expect("loop guard").code, "KERF-0101");
 }
+
+#[test]
+fn goto_searches_forward_first_then_from_the_start() {
+    // Two blocks carry N5. From line 5 the forward search finds line 7
+    // first (Fanuc searches ahead, then wraps), so the loop never repeats.
+    let text = "G90 G00 X0 Y0 Z0\n#1=0\nN5 #1=#1+1\nIF[#1 GE 3] GOTO 9\nGOTO 5\nN9 G00 X1.\nN5 G00 X2.\nM30\n";
+    let r = run_on("hx-mc", text);
+    ok(&r);
+    assert_eq!(
+        moves(&r),
+        vec![("rapid", 0.0, 0.0, 0.0), ("rapid", 2.0, 0.0, 0.0)]
+    );
+    // With a single N5 the search wraps to the start: three passes, then N9.
+    let text = "G90 G00 X0 Y0 Z0\n#1=0\nN5 #1=#1+1\nIF[#1 GE 3] GOTO 9\nG91 G00 X1.\nG90\nGOTO 5\nN9 G00 Y1.\nM30\n";
+    let r = run_on("hx-mc", text);
+    ok(&r);
+    assert_eq!(
+        moves(&r),
+        vec![
+            ("rapid", 0.0, 0.0, 0.0),
+            ("rapid", 1.0, 0.0, 0.0),
+            ("rapid", 2.0, 0.0, 0.0),
+            ("rapid", 2.0, 1.0, 0.0)
+        ]
+    );
+}
+
+#[test]
+fn goto_loops_end_quickly_in_the_loop_guard() {
+    // fuzz/regressions/interp-goto-loop-2blocks.nc with a small jump budget.
+    let mut p = Profile::builtin("hx-mc").unwrap();
+    p.params.insert("max_jumps".into(), 10_000.0);
+    let r = run_text(
+        p,
+        Settings::default(),
+        "t",
+        "%\nO1\n#1=0\nN20 #3=1\nIF [#1 EQ 0] GOTO 20\nM30\n",
+    );
+    let a = r.alarm.expect("loop guard");
+    assert_eq!((a.code.as_str(), a.src.line), ("KERF-0101", 5));
+}

@@ -19,6 +19,12 @@ use super::{fmt_num, Interp, R};
 use crate::alarms::AlarmKind;
 use crate::dialect::DialectId;
 
+/// Most N-numbered blocks a program may have for its sequence index.
+const SEQ_INDEX_MAX: usize = 65_536;
+
+/// Where each sequence number stands in one program (in file order).
+type SeqIndex = HashMap<u32, Vec<Mark>>;
+
 /// One active call.
 pub(super) struct Frame {
     /// A G65 macro call (own local variables) rather than an M98 call.
@@ -105,6 +111,10 @@ pub(super) struct Calls {
     paths: Vec<Option<PathBuf>>,
     /// Files with more O headers than the index keeps.
     overflow: Vec<bool>,
+    /// Sequence-number index per (file, program start offset): every N of
+    /// the program with its block positions, built by one scan on the first
+    /// search; `None` when the program has more N blocks than it keeps.
+    seq_index: HashMap<(u32, u64), Option<SeqIndex>>,
     pub(super) stack: Vec<Frame>,
     /// Byte offset of the current program's O header, once known.
     pub(super) header: Option<u64>,
@@ -406,7 +416,79 @@ impl Interp {
     /// from the current position to the program's end, then (with `wrap`)
     /// from the program start. Leaves the source at the block; false if
     /// there is none.
+    /// The sequence index of the current program, built on first use.
+    fn sequence_index(&mut self) -> Option<&SeqIndex> {
+        let key = (self.file_id, self.program_start.offset);
+        if !self.calls.seq_index.contains_key(&key) {
+            let built = self.build_sequence_index();
+            self.calls.seq_index.insert(key, built);
+        }
+        self.calls.seq_index.get(&key).and_then(|o| o.as_ref())
+    }
+
+    /// Scans the current program once, recording where each N stands.
+    fn build_sequence_index(&mut self) -> Option<SeqIndex> {
+        let start = self.program_start;
+        let mut src = self.src.take()?;
+        let here = src.tell();
+        let mut raw = RawBlock::default();
+        let mut blk = Block::default();
+        let mut map: SeqIndex = HashMap::new();
+        let mut count = 0usize;
+        let mut ok = src.seek(start).is_ok();
+        while ok {
+            let mark = src.tell();
+            match src.next_block(&mut raw) {
+                Ok(true) => {}
+                _ => break,
+            }
+            if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
+                continue;
+            }
+            if self.other_program(&blk, mark) {
+                break;
+            }
+            if let Some(n) = blk.n {
+                count += 1;
+                if count > SEQ_INDEX_MAX {
+                    ok = false;
+                    break;
+                }
+                map.entry(n).or_default().push(mark);
+            }
+        }
+        let _ = src.seek(here);
+        self.src = Some(src);
+        ok.then_some(map)
+    }
+
+    /// Positions the source at block N`target` of the current program:
+    /// the first one at or after the current position, else (with `wrap`)
+    /// the first one from the start of the program. Uses the program's
+    /// sequence index; programs too large for it are scanned, and the
+    /// scanned blocks count against the loop guard.
     pub(super) fn seek_sequence(&mut self, target: u32, wrap: bool) -> bool {
+        let here = match self.src.as_ref() {
+            Some(s) => s.tell(),
+            None => return false,
+        };
+        if let Some(index) = self.sequence_index() {
+            let hit = index.get(&target).and_then(|marks| {
+                marks
+                    .iter()
+                    .find(|m| m.offset >= here.offset)
+                    .or_else(|| marks.first().filter(|m| wrap && m.offset < here.offset))
+                    .copied()
+            });
+            return match hit {
+                Some(m) => self.src.as_mut().is_some_and(|s| s.seek(m).is_ok()),
+                None => false,
+            };
+        }
+        self.scan_for_sequence(target, wrap)
+    }
+
+    fn scan_for_sequence(&mut self, target: u32, wrap: bool) -> bool {
         let start = self.program_start;
         let Some(mut src) = self.src.take() else {
             return false;
@@ -428,6 +510,7 @@ impl Interp {
                     Ok(true) => {}
                     _ => break,
                 }
+                self.repeated += 1;
                 if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
                     continue;
                 }
