@@ -1,0 +1,365 @@
+//! Number conversion (least input increment, units, diameter), range
+//! checks, and the F, S, T, dwell and coordinate-setting codes of a block.
+
+use super::*;
+
+impl Interp {
+    // ---- numbers -------------------------------------------------------------
+
+    pub(super) fn unit(&self) -> f64 {
+        if self.st.metric {
+            1.0
+        } else {
+            25.4
+        }
+    }
+
+    /// A linear dimension in mm (least-input-increment rule applied).
+    pub(super) fn linear(&self, w: WVal) -> f64 {
+        let mut v = w.v;
+        if !w.point && !self.profile.calculator_decimal {
+            v *= if self.st.metric { 0.001 } else { 0.0001 };
+        }
+        v * self.unit()
+    }
+
+    /// A rotary dimension in degrees.
+    pub(super) fn angular(&self, w: WVal) -> f64 {
+        if !w.point && !self.profile.calculator_decimal {
+            w.v * 0.001
+        } else {
+            w.v
+        }
+    }
+
+    /// Seconds from a dwell-time word (X/U: least increment 0.001 s).
+    pub(super) fn seconds(&self, w: WVal) -> f64 {
+        if !w.point && !self.profile.calculator_decimal {
+            w.v * 0.001
+        } else {
+            w.v
+        }
+    }
+
+    /// Range check of 002 Tables 2-3 for Hurco geometric words.
+    #[inline]
+    pub(super) fn check_range(&self, l: u8, w: WVal) -> R<()> {
+        if self.dialect.id != DialectId::Hurco {
+            return Ok(());
+        }
+        self.check_range_hurco(l, w)
+    }
+
+    pub(super) fn check_range_hurco(&self, l: u8, w: WVal) -> R<()> {
+        let limit = match l {
+            b'X' | b'Z' | b'I' | b'K' | b'R' | b'U' | b'W' => {
+                if self.st.metric {
+                    21463.0
+                } else {
+                    845.0
+                }
+            }
+            b'F' => {
+                if self.st.metric {
+                    21463.0
+                } else {
+                    845.0
+                }
+            }
+            b'E' => 9999.0,
+            b'T' | b'N' => 999_999_999.0,
+            b'S' => 2e9,
+            _ => return Ok(()),
+        };
+        if w.v.abs() > limit {
+            return Err(self.alarm(
+                AlarmKind::OutOfRange,
+                w.at,
+                format!(
+                    "{} value {} out of range (±{})",
+                    l as char,
+                    fmt_num(w.v),
+                    fmt_num(limit)
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    // ---- F S T ---------------------------------------------------------------
+
+    pub(super) fn f_word(&mut self, dwell: bool) -> R<()> {
+        if dwell && self.dialect.id == DialectId::Hurco {
+            return Ok(());
+        }
+        if let Some(f) = self.words.get(b'F') {
+            self.check_range(b'F', f)?;
+            if f.v < 0.0 {
+                return Err(self.alarm(AlarmKind::OutOfRange, f.at, "negative feedrate"));
+            }
+            let v = if self.st.feed_mode == FeedMode::Inverse {
+                f.v
+            } else {
+                f.v * self.unit()
+            };
+            self.st.feed = Some(v);
+        }
+        Ok(())
+    }
+
+    pub(super) fn t_word(&mut self) -> R<()> {
+        let Some(t) = self.words.get(b'T') else {
+            return Ok(());
+        };
+        self.check_range(b'T', t)?;
+        if t.v < 0.0 || t.v.fract() != 0.0 || t.v > 999_999_999.0 {
+            return Err(self.alarm(
+                AlarmKind::OutOfRange,
+                t.at,
+                format!("T{} is not a tool code", fmt_num(t.v)),
+            ));
+        }
+        let v = t.v as u32;
+        match self.profile.kind {
+            MachineKind::Mill => {
+                if v > self.profile.tools.count {
+                    return Err(self.alarm(
+                        AlarmKind::OutOfRange,
+                        t.at,
+                        format!(
+                            "T{v}: the tool changer has {} pockets",
+                            self.profile.tools.count
+                        ),
+                    ));
+                }
+                self.st.next_tool = v;
+                self.emit(Canon::Tool {
+                    tool: v,
+                    offset: self.st.offset,
+                    change: false,
+                });
+            }
+            MachineKind::Lathe => {
+                // Turret: T(tool)(offset), the last two digits the offset.
+                let (tool, off) = (v / 100, v % 100);
+                if tool > self.profile.tools.count {
+                    return Err(self.alarm(
+                        AlarmKind::OutOfRange,
+                        t.at,
+                        format!("T{v}: the turret has {} stations", self.profile.tools.count),
+                    ));
+                }
+                let change = tool != 0 && tool != self.st.tool;
+                if tool != 0 {
+                    self.st.tool = tool;
+                }
+                self.st.next_tool = self.st.tool;
+                self.st.offset = off;
+                self.emit(Canon::Tool {
+                    tool: self.st.tool,
+                    offset: off,
+                    change,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// S word and spindle start codes, combined into one spindle event.
+    pub(super) fn spindle_words(&mut self) -> R<()> {
+        let mut dir = self.st.spindle;
+        for i in 0..self.words.nm {
+            let (m, _) = self.words.m[i];
+            match self.mcode(m).map(|c| c.action) {
+                Some(MAction::SpindleCw) => dir = SpindleDir::Cw,
+                Some(MAction::SpindleCcw) => dir = SpindleDir::Ccw,
+                _ => {}
+            }
+        }
+        if let Some(s) = self.words.get(b'S') {
+            self.check_range(b'S', s)?;
+            if s.v < 0.0 {
+                return Err(self.alarm(AlarmKind::OutOfRange, s.at, "negative spindle speed"));
+            }
+            self.st.s = s.v;
+        }
+        let changed_dir = dir != self.st.spindle;
+        self.st.spindle = dir;
+        if dir == SpindleDir::Stop {
+            return Ok(());
+        }
+        let rpm = self.rpm();
+        if changed_dir || (rpm - self.st.last_rpm).abs() > 1e-9 {
+            self.st.last_rpm = rpm;
+            let css = if self.st.css {
+                Some(self.st.s * if self.st.metric { 1.0 } else { 0.3048 })
+            } else {
+                None
+            };
+            self.emit(Canon::Spindle { dir, rpm, css });
+        }
+        Ok(())
+    }
+
+    /// Spindle rpm for the programmed S at the current position.
+    pub(super) fn rpm(&self) -> f64 {
+        let mut rpm = if self.st.css {
+            // Surface speed in m/min (ft/min in inch) at the current radius.
+            let vc = self.st.s * if self.st.metric { 1000.0 } else { 304.8 };
+            let r = self.work_position()[0].abs().max(1e-3);
+            vc / (std::f64::consts::TAU * r)
+        } else {
+            self.st.s
+        };
+        if let Some(c) = self.st.s_clamp {
+            rpm = rpm.min(c);
+        }
+        rpm.min(self.profile.spindle.max_rpm)
+    }
+
+    // ---- one-shots -------------------------------------------------------------
+
+    pub(super) fn dwell(&mut self) -> R<()> {
+        let w = &self.words;
+        let (secs, revs) = if self.dialect.id == DialectId::Hurco {
+            match w.get(b'F') {
+                Some(f) if self.st.feed_mode == FeedMode::PerRev => (0.0, f.v),
+                Some(f) => (f.v, 0.0),
+                None => {
+                    return Err(self.alarm(
+                        AlarmKind::MissingArgument,
+                        self.words.g[0].1,
+                        "G04 needs F (dwell time)",
+                    ))
+                }
+            }
+        } else if let Some(p) = w.get(b'P') {
+            if p.point {
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    p.at,
+                    "G04 P is in milliseconds without a decimal point",
+                ));
+            }
+            (p.v / 1000.0, 0.0)
+        } else if let Some(x) = w.get(b'X').or(w.get(b'U')) {
+            (self.seconds(x), 0.0)
+        } else {
+            (0.0, 0.0)
+        };
+        if secs < 0.0 || revs < 0.0 {
+            return Err(self.alarm(AlarmKind::OutOfRange, 0, "negative dwell"));
+        }
+        self.emit(Canon::Dwell {
+            seconds: secs,
+            revolutions: revs,
+        });
+        Ok(())
+    }
+
+    /// G92 (HX, Hurco) / G50 (PUMA): make the current position read as the
+    /// given values; an S alone sets the spindle speed clamp.
+    pub(super) fn coordinate_setting(&mut self, at: u32) -> R<()> {
+        if let Some(s) = self.words.get(b'S') {
+            if self.dialect.id != DialectId::Hurco {
+                self.st.s_clamp = Some(s.v);
+                self.words.take(b'S');
+            }
+        }
+        let cur = self.programmed_position();
+        let mut any = false;
+        for ax in Axis::ALL {
+            let l = ax_letter(ax);
+            let mut target = None;
+            if let Some(w) = self.words.get(l) {
+                target = Some(self.axis_value(ax, w));
+            } else if let Some(inc) = self.uvw(ax) {
+                let w = self.words.get(inc).expect("present");
+                target = Some(cur[ax as usize] + self.axis_value(ax, w));
+            }
+            if let Some(t) = target {
+                any = true;
+                // New shift so that pos - (wcs + shift + tlo) = t.
+                let i = ax as usize;
+                self.st.shift[i] =
+                    self.st.pos[i] - self.st.wcs[self.st.wcs_idx][i] - self.st.tlo[i] - t;
+            }
+        }
+        let _ = (any, at);
+        Ok(())
+    }
+
+    pub(super) fn g53(&mut self) -> R<()> {
+        let mut to = self.st.pos;
+        let mut any = false;
+        for ax in Axis::ALL {
+            if let Some(w) = self.words.get(ax_letter(ax)) {
+                to[ax as usize] = self.axis_value(ax, w);
+                any = true;
+            }
+        }
+        if !any {
+            return Ok(());
+        }
+        let at = self
+            .words
+            .g
+            .iter()
+            .take(self.words.ng)
+            .find(|g| g.0 == 530)
+            .map(|g| g.1)
+            .unwrap_or(0);
+        self.check_travel(&to, at)?;
+        let m = Motion {
+            to: self.work_of(&to),
+            mto: to,
+        };
+        self.st.pos = to;
+        self.emit(Canon::Rapid {
+            m,
+            linear: self.linear_rapid(),
+        });
+        Ok(())
+    }
+
+    pub(super) fn linear_rapid(&self) -> bool {
+        self.dialect.id == DialectId::Hurco
+    }
+
+    pub(super) fn work_of(&self, mpos: &Pos) -> Pos {
+        let o = self.origin();
+        let mut p = *mpos;
+        for i in 0..NAXES {
+            p[i] -= o[i];
+        }
+        p
+    }
+
+    /// The value of an axis word in mm (X as a radius on lathes).
+    pub(super) fn axis_value(&self, ax: Axis, w: WVal) -> f64 {
+        let mut v = if ax.is_rotary() {
+            self.angular(w)
+        } else {
+            self.linear(w)
+        };
+        if ax == Axis::X && self.profile.kind == MachineKind::Lathe && self.st.diameter {
+            v /= 2.0;
+        }
+        v
+    }
+
+    /// The incremental letter for an axis, if present (PUMA U/W).
+    pub(super) fn uvw(&self, ax: Axis) -> Option<u8> {
+        if !self.dialect.uvw_incremental {
+            return None;
+        }
+        let l = match ax {
+            Axis::X => b'U',
+            Axis::Y => b'V',
+            Axis::Z => b'W',
+            Axis::C => b'H',
+            _ => return None,
+        };
+        self.words.has(l).then_some(l)
+    }
+}

@@ -1,0 +1,431 @@
+//! Motion: the block's end point, travel limits, rapid/feed/arc moves,
+//! G53, tool length offset and the reference-position returns G27-G30.
+
+use super::*;
+
+impl Interp {
+    // ---- motion ------------------------------------------------------------------
+
+    /// The block's end point in work coordinates, and whether any axis moved.
+    pub(super) fn target(&self) -> R<(Pos, bool)> {
+        let cur = self.programmed_position();
+        let mut t = cur;
+        let mut any = false;
+        for ax in Axis::ALL {
+            let l = ax_letter(ax);
+            let i = ax as usize;
+            let abs_w = self.words.get(l).filter(|_| self.has_axis[ax as usize]);
+            let inc_l = self.uvw(ax);
+            if let (Some(w), Some(_)) = (abs_w, inc_l) {
+                return Err(self.alarm(
+                    AlarmKind::DuplicateAddress,
+                    w.at,
+                    format!("{} and its incremental address in one block", l as char),
+                ));
+            }
+            if let Some(w) = abs_w {
+                self.check_range(l, w)?;
+                let v = self.axis_value(ax, w);
+                t[i] = if self.st.absolute { v } else { cur[i] + v };
+                any = true;
+            } else if let Some(il) = inc_l {
+                let w = self.words.get(il).expect("present");
+                self.check_range(il, w)?;
+                t[i] = cur[i] + self.axis_value(ax, w);
+                any = true;
+            }
+        }
+        Ok((t, any))
+    }
+
+    pub(super) fn to_machine(&self, w: &Pos) -> Pos {
+        let o = self.prog_origin();
+        let mut m = *w;
+        for i in 0..NAXES {
+            m[i] += o[i];
+        }
+        m
+    }
+
+    pub(super) fn check_travel(&self, m: &Pos, at: u32) -> R<()> {
+        for ax in Axis::ALL {
+            if let Some((min, max)) = self.travel[ax as usize] {
+                let v = m[ax as usize];
+                if v < min - 1e-9 || v > max + 1e-9 {
+                    let side = if v > max { '+' } else { '-' };
+                    return Err(self.alarm(
+                        AlarmKind::Overtravel,
+                        at,
+                        format!(
+                            "overtravel {side}{}: machine {} = {:.3} outside [{}, {}]",
+                            ax.name().to_uppercase(),
+                            ax.name().to_uppercase(),
+                            v,
+                            min,
+                            max
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    pub(super) fn motion_at(&self) -> u32 {
+        self.words
+            .gs()
+            .iter()
+            .find(|g| matches!(g.0, 0 | 10 | 20 | 30))
+            .map(|g| g.1)
+            .unwrap_or(0)
+    }
+
+    pub(super) fn feed(&self, at: u32) -> R<Feed> {
+        match self.st.feed {
+            None => Err(self.alarm(
+                AlarmKind::NoFeed,
+                at,
+                "cutting move without a feedrate (no F commanded)",
+            )),
+            Some(f) if f <= 0.0 => Err(self.alarm(AlarmKind::NoFeed, at, "feedrate is zero")),
+            Some(f) => Ok(match self.st.feed_mode {
+                FeedMode::PerMin => Feed::PerMin(f.min(self.profile.feed.max_cutting)),
+                FeedMode::PerRev => Feed::PerRev(f),
+                FeedMode::Inverse => Feed::InverseTime(f),
+            }),
+        }
+    }
+
+    pub(super) fn motion(&mut self) -> R<()> {
+        let mode = self.st.modal[1];
+        let (tw, any) = self.target()?;
+        let at = self.motion_at();
+        match mode {
+            0 | 10 => {
+                if !any {
+                    return Ok(());
+                }
+                let mto = self.to_machine(&tw);
+                self.check_travel(&mto, at)?;
+                let m = Motion {
+                    to: self.work_of(&mto),
+                    mto,
+                };
+                let cmd = if mode == 0 {
+                    Canon::Rapid {
+                        m,
+                        linear: self.linear_rapid(),
+                    }
+                } else {
+                    Canon::Feed {
+                        m,
+                        feed: self.feed(at)?,
+                    }
+                };
+                self.st.pos = mto;
+                self.emit(cmd);
+            }
+            20 | 30 => self.arc(tw, any, mode == 30, at)?,
+            _ => {}
+        }
+        Ok(())
+    }
+
+    pub(super) fn arc(&mut self, tw: Pos, any: bool, ccw: bool, at: u32) -> R<()> {
+        let plane = self.st.plane;
+        let (a1, a2, _) = plane.axes();
+        let cur = self.programmed_position();
+        let s = (cur[a1], cur[a2]);
+        let e = (tw[a1], tw[a2]);
+        let has_ijk = [b'I', b'J', b'K'].iter().any(|&l| self.words.has(l));
+        let center = if let Some(r) = self.words.get(b'R') {
+            self.check_range(b'R', r)?;
+            let rv = self.linear(r);
+            if !any || (s.0 - e.0).hypot(s.1 - e.1) < 1e-9 {
+                // R with the end at the start: no movement (Fanuc).
+                if any {
+                    self.linear_only(tw)?;
+                }
+                return Ok(());
+            }
+            // 001 p.15 note (4): on the PUMA an R shorter than half the
+            // move is overridden and a half circle made; the others alarm.
+            let tol = if self.dialect.id == DialectId::Puma {
+                f64::INFINITY
+            } else {
+                self.arc_tol
+            };
+            match arc::center_from_radius(s, e, rv, ccw, tol) {
+                Ok(c) => c,
+                Err(_) => {
+                    let half = (s.0 - e.0).hypot(s.1 - e.1) / 2.0;
+                    return Err(self.alarm(
+                        AlarmKind::ArcRadius,
+                        r.at,
+                        format!(
+                            "arc radius {:.4} is smaller than half the chord {:.4}",
+                            rv.abs(),
+                            half
+                        ),
+                    ));
+                }
+            }
+        } else if has_ijk {
+            let off = |l: u8| -> R<f64> {
+                match self.words.get(l) {
+                    Some(w) => {
+                        self.check_range(l, w)?;
+                        Ok(self.linear(w))
+                    }
+                    None => Ok(0.0),
+                }
+            };
+            // I, J, K belong to X, Y, Z; lathe I is a radius value.
+            let o = [off(b'I')?, off(b'J')?, off(b'K')?];
+            (s.0 + o[a1.min(2)], s.1 + o[a2.min(2)])
+        } else {
+            if !any {
+                return Ok(());
+            }
+            return Err(self.alarm(
+                AlarmKind::ArcNoCenter,
+                at,
+                "arc without centre (I/J/K) or radius (R)",
+            ));
+        };
+        let bad_at = [b'I', b'J', b'K', b'R']
+            .iter()
+            .find_map(|&l| self.words.get(l))
+            .map(|w| w.at)
+            .unwrap_or(at);
+        match arc::check_end(s, e, center, self.arc_tol) {
+            Ok(_) => {}
+            Err(ArcError::ZeroRadius) => return Err(self.alarm(AlarmKind::ArcNoCenter, bad_at, "arc centre coincides with the start point")),
+            Err(ArcError::EndNotOnCircle { r_start, r_end }) => {
+                return Err(self.alarm(
+                    AlarmKind::ArcEndPoint,
+                    bad_at,
+                    format!("arc end point is not on the circle: start radius {r_start:.4}, end radius {r_end:.4}"),
+                ))
+            }
+            Err(ArcError::RadiusTooSmall { .. }) => unreachable!(),
+        }
+        let feed = self.feed(at)?;
+        // Travel: the arc's extremes in the plane, the end point elsewhere.
+        let (u0, v0, u1, v1) = arc::bbox(s, e, center, ccw);
+        for (u, v) in [(u0, v0), (u1, v1)] {
+            let mut p = tw;
+            p[a1] = u;
+            p[a2] = v;
+            self.check_travel(&self.to_machine(&p), at)?;
+        }
+        let mto = self.to_machine(&tw);
+        self.check_travel(&mto, at)?;
+        let mut c = cur;
+        c[a1] = center.0;
+        c[a2] = center.1;
+        let mcenter = self.to_machine(&c);
+        let c = self.work_of(&mcenter);
+        let dir = if ccw { ArcDir::Ccw } else { ArcDir::Cw };
+        self.st.pos = mto;
+        self.emit(Canon::Arc {
+            m: Motion {
+                to: self.work_of(&mto),
+                mto,
+            },
+            center: c,
+            mcenter,
+            dir,
+            plane,
+            turns: 0,
+            feed,
+        });
+        Ok(())
+    }
+
+    /// An arc with R whose plane end point equals its start: only the other
+    /// axes move (helical with zero sweep), as a feed.
+    pub(super) fn linear_only(&mut self, tw: Pos) -> R<()> {
+        let at = self.motion_at();
+        let mto = self.to_machine(&tw);
+        if mto == self.st.pos {
+            return Ok(());
+        }
+        self.check_travel(&mto, at)?;
+        let feed = self.feed(at)?;
+        self.st.pos = mto;
+        self.emit(Canon::Feed {
+            m: Motion {
+                to: self.work_of(&mto),
+                mto,
+            },
+            feed,
+        });
+        Ok(())
+    }
+
+    // ---- tool length, reference returns ----------------------------------------
+
+    /// G43/G44/G49 with H: the tool length offset on Z (mills).
+    pub(super) fn tool_length(&mut self) -> R<()> {
+        if self.profile.kind != MachineKind::Mill {
+            return Ok(());
+        }
+        if let Some(h) = self.words.get(b'H') {
+            if h.v < 0.0 || h.v.fract() != 0.0 || h.v as usize >= self.h_table.len() {
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    h.at,
+                    format!(
+                        "H{} is not an offset number (H00-H{})",
+                        fmt_num(h.v),
+                        self.h_table.len() - 1
+                    ),
+                ));
+            }
+            self.st.h = h.v as u32;
+        }
+        let grp = self
+            .dialect
+            .gcode(490)
+            .map(|g| g.group as usize)
+            .unwrap_or(8);
+        let sign = match self.st.modal[grp] {
+            430 => 1.0,
+            440 => -1.0,
+            _ => 0.0,
+        };
+        self.st.tlo = [0.0; NAXES];
+        self.st.tlo[Axis::Z as usize] = sign * self.h_table[self.st.h as usize];
+        Ok(())
+    }
+
+    /// The machine position of reference point `n` (1-4) for an axis.
+    pub(super) fn reference_point(&self, n: u32, ax: Axis) -> f64 {
+        let key = match n {
+            2 => "second",
+            3 => "third",
+            4 => "fourth",
+            _ => return self.profile.axis(ax).map(|a| a.reference).unwrap_or(0.0),
+        };
+        self.profile
+            .reference
+            .get(key)
+            .and_then(|m| m.get(ax.name()))
+            .copied()
+            .unwrap_or_else(|| self.profile.axis(ax).map(|a| a.reference).unwrap_or(0.0))
+    }
+
+    /// G27 check, G28 / G30 return via an intermediate point, G29 return
+    /// from the reference point through the stored intermediate point.
+    pub(super) fn reference_return(&mut self, c: u16, at: u32) -> R<()> {
+        let (tw, _) = self.target()?;
+        let mut named = [false; NAXES];
+        for ax in Axis::ALL {
+            named[ax as usize] = self.has_axis[ax as usize]
+                && (self.words.has(ax_letter(ax)) || self.uvw(ax).is_some());
+        }
+        let linear = self.linear_rapid();
+        let rapid_to = |me: &mut Self, mto: Pos| -> R<()> {
+            me.check_travel(&mto, at)?;
+            if mto != me.st.pos {
+                me.st.pos = mto;
+                let m = Motion {
+                    to: me.work_of(&mto),
+                    mto,
+                };
+                me.emit(Canon::Rapid { m, linear });
+            }
+            Ok(())
+        };
+        match c {
+            270 => {
+                let mto = self.to_machine(&tw);
+                rapid_to(self, mto)?;
+                for ax in Axis::ALL {
+                    let i = ax as usize;
+                    if named[i] && (self.st.pos[i] - self.reference_point(1, ax)).abs() > 1e-6 {
+                        return Err(self.alarm(
+                            AlarmKind::ReferenceCheck,
+                            at,
+                            format!(
+                                "G27: {} is not at the reference position",
+                                ax.name().to_uppercase()
+                            ),
+                        ));
+                    }
+                }
+            }
+            280 | 300 => {
+                let n = if c == 280 {
+                    1
+                } else {
+                    match self.words.get(b'P') {
+                        None => 2,
+                        Some(p) if matches!(p.v as i64, 2..=4) && p.v.fract() == 0.0 => p.v as u32,
+                        Some(p) => {
+                            return Err(self.alarm(
+                                AlarmKind::OutOfRange,
+                                p.at,
+                                "G30 P must be 2, 3 or 4",
+                            ))
+                        }
+                    }
+                };
+                // Intermediate point, then the reference point, named axes only.
+                let mid = self.to_machine(&tw);
+                rapid_to(self, mid)?;
+                for ax in Axis::ALL {
+                    let i = ax as usize;
+                    if named[i] {
+                        self.st.g28_mid[i] = Some(tw[i]);
+                    }
+                }
+                let mut r = self.st.pos;
+                for ax in Axis::ALL {
+                    if named[ax as usize] {
+                        r[ax as usize] = self.reference_point(n, ax);
+                    }
+                }
+                rapid_to(self, r)?;
+            }
+            290 => {
+                // Through the stored intermediate point to the commanded point.
+                let mut mid = self.programmed_position();
+                for ax in Axis::ALL {
+                    let i = ax as usize;
+                    if named[i] {
+                        match self.st.g28_mid[i] {
+                            Some(v) => mid[i] = v,
+                            None => {
+                                return Err(self.alarm(
+                                    AlarmKind::MissingArgument,
+                                    at,
+                                    "G29 without a preceding G28/G30 intermediate point",
+                                ))
+                            }
+                        }
+                    }
+                }
+                let mm = self.to_machine(&mid);
+                rapid_to(self, mm)?;
+                // The end point: absolute as given; incremental from the intermediate point.
+                let mut end = self.programmed_position();
+                for ax in Axis::ALL {
+                    let i = ax as usize;
+                    if let Some(w) = self.words.get(ax_letter(ax)).filter(|_| named[i]) {
+                        let v = self.axis_value(ax, w);
+                        end[i] = if self.st.absolute { v } else { mid[i] + v };
+                    } else if let Some(l) = self.uvw(ax) {
+                        let w = self.words.get(l).expect("present");
+                        end[i] = mid[i] + self.axis_value(ax, w);
+                    }
+                }
+                let me = self.to_machine(&end);
+                rapid_to(self, me)?;
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+}
