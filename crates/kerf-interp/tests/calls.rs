@@ -8,14 +8,8 @@ use std::path::PathBuf;
 use kerf_canon::{Canon, Event};
 use kerf_interp::{run_text, Interp, Profile, Run, Settings, Step};
 
-fn run_on(machine: &str, text: &str) -> Run {
-    run_text(
-        Profile::builtin(machine).unwrap(),
-        Settings::default(),
-        "t.nc",
-        text,
-    )
-}
+mod common;
+use common::{ok, round, run_on};
 
 /// Work-coordinate end points of the motions: (kind, line, x, y, z).
 fn moves(r: &Run) -> Vec<(&'static str, u32, f64, f64, f64)> {
@@ -41,19 +35,6 @@ fn moves_of(ev: &[Event]) -> Vec<(&'static str, u32, f64, f64, f64)> {
             ))
         })
         .collect()
-}
-
-fn round(v: f64) -> f64 {
-    let r = (v * 1e6).round() / 1e6;
-    if r == 0.0 {
-        0.0
-    } else {
-        r
-    }
-}
-
-fn ok(r: &Run) {
-    assert!(r.alarm.is_none(), "unexpected alarm {:?}", r.alarm);
 }
 
 fn alarm(r: &Run) -> (&str, u32) {

@@ -4,13 +4,8 @@
 use kerf_canon::{ArcDir, Canon, Event, Feed, SpindleDir};
 use kerf_interp::{run_text, Profile, Run, Settings};
 
-fn run_on(machine: &str, text: &str) -> Run {
-    run_with(machine, Settings::default(), text)
-}
-
-fn run_with(machine: &str, s: Settings, text: &str) -> Run {
-    run_text(Profile::builtin(machine).unwrap(), s, "t.nc", text)
-}
+mod common;
+use common::{ok, round, run_on, run_with};
 
 /// Work-coordinate end points of the motions: (kind, x, y, z).
 fn moves(r: &Run) -> Vec<(&'static str, f64, f64, f64)> {
@@ -27,19 +22,6 @@ fn moves(r: &Run) -> Vec<(&'static str, f64, f64, f64)> {
             Some((k, round(m.to[0]), round(m.to[1]), round(m.to[2])))
         })
         .collect()
-}
-
-fn round(v: f64) -> f64 {
-    let r = (v * 1e6).round() / 1e6;
-    if r == 0.0 {
-        0.0
-    } else {
-        r
-    }
-}
-
-fn ok(r: &Run) {
-    assert!(r.alarm.is_none(), "unexpected alarm {:?}", r.alarm);
 }
 
 fn alarm(r: &Run) -> (&str, u32, u32) {

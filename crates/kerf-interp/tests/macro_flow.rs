@@ -3,28 +3,13 @@
 //! Every expected value is worked out by hand.
 
 use kerf_canon::Canon;
-use kerf_interp::{run_text, Profile, Run, Settings};
+use kerf_interp::Run;
 
-fn run_on(machine: &str, text: &str) -> Run {
-    run_text(
-        Profile::builtin(machine).unwrap(),
-        Settings::default(),
-        "t.nc",
-        text,
-    )
-}
+mod common;
+use common::{ok, round, run_on};
 
 fn hx(text: &str) -> Run {
     run_on("hx-mc", text)
-}
-
-fn round(v: f64) -> f64 {
-    let r = (v * 1e6).round() / 1e6;
-    if r == 0.0 {
-        0.0
-    } else {
-        r
-    }
 }
 
 /// (line, x, y, z) of each motion end point in work coordinates.
@@ -37,10 +22,6 @@ fn moves(r: &Run) -> Vec<(u32, f64, f64, f64)> {
             (e.src.line, round(m.to[0]), round(m.to[1]), round(m.to[2]))
         })
         .collect()
-}
-
-fn ok(r: &Run) {
-    assert!(r.alarm.is_none(), "unexpected alarm {:?}", r.alarm);
 }
 
 fn alarm(r: &Run) -> (&str, u32) {

@@ -4,20 +4,10 @@
 //!
 
 use kerf_canon::Canon;
-use kerf_interp::{run_text, Profile, Run, Settings};
+use kerf_interp::{Run, Settings};
 
-fn run_with(machine: &str, settings: Settings, text: &str) -> Run {
-    run_text(Profile::builtin(machine).unwrap(), settings, "t.nc", text)
-}
-
-fn round(v: f64) -> f64 {
-    let r = (v * 1e6).round() / 1e6;
-    if r == 0.0 {
-        0.0
-    } else {
-        r
-    }
-}
+mod common;
+use common::{ok, round, run_with};
 
 fn moves(r: &Run) -> Vec<(u32, f64, f64, f64)> {
     r.events
@@ -28,10 +18,6 @@ fn moves(r: &Run) -> Vec<(u32, f64, f64, f64)> {
             (e.src.line, round(m.to[0]), round(m.to[1]), round(m.to[2]))
         })
         .collect()
-}
-
-fn ok(r: &Run) {
-    assert!(r.alarm.is_none(), "unexpected alarm {:?}", r.alarm);
 }
 
 #[test]
