@@ -11,6 +11,8 @@
 
 use std::fmt;
 
+pub mod geom;
+
 /// Number of axis slots carried in a [`Pos`]: X Y Z A B C.
 pub const NAXES: usize = 6;
 

@@ -267,7 +267,6 @@ fn dynamics_of(p: &Profile) -> Dynamics {
     }
     Dynamics {
         rapid,
-        linear_rapid: p.dialect == kerf_interp::DialectId::Hurco,
         max_feed: p.feed.max_cutting,
         tool_change_s: p.tools.change_time_s,
     }

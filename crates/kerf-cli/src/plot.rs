@@ -69,7 +69,7 @@ impl Plot {
                     format!("M{:.4} {:.4}L{:.4} {:.4}", a.0, a.1, b.0, b.1)
                 } else {
                     let ccw = matches!(dir, kerf_canon::ArcDir::Ccw);
-                    let sw = kerf_interp::arc::sweep(
+                    let sw = kerf_canon::geom::sweep(
                         (from[p1], from[p2]),
                         (m.to[p1], m.to[p2]),
                         (center[p1], center[p2]),

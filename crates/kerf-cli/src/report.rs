@@ -96,7 +96,7 @@ impl Summary {
         } = &e.cmd
         {
             let (a1, a2, _) = plane.axes();
-            let (u0, v0, u1, v1) = kerf_interp::arc::bbox(
+            let (u0, v0, u1, v1) = kerf_canon::geom::bbox(
                 (from[a1], from[a2]),
                 (m.to[a1], m.to[a2]),
                 (center[a1], center[a2]),

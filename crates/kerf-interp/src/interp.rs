@@ -232,16 +232,8 @@ impl Interp {
             flood: false,
         };
         // Apply the group defaults (and, on the HX, PI 144-150).
-        for grp in 1..32 {
-            let code = st.modal[grp];
-            if code != 0
-                || dialect
-                    .gcodes
-                    .iter()
-                    .any(|g| g.group as usize == grp && g.default && g.code10 == 0)
-            {
-                Self::apply_modal(&mut st, dialect.id, code);
-            }
+        for g in dialect.gcodes.iter().filter(|g| g.default) {
+            Self::apply_modal(&mut st, dialect.id, g.code10);
         }
         if hx {
             let p = |n: &str, d: f64| profile.param(n, d) as i64;
@@ -911,6 +903,7 @@ impl Interp {
         let mut g53 = false;
         let mut dwell = false;
         let mut g09 = false;
+        let mut setting = false;
         let mut refret: Option<(u16, u32)> = None;
         if let Some(dw) = self.words.get(b'D') {
             self.sys.d = dw.v;
@@ -930,7 +923,8 @@ impl Interp {
                 (_, 270 | 280 | 290 | 300) => refret = Some((c, at)),
                 (_, 90) => g09 = true,
                 (_, 530) => g53 = true,
-                (DialectId::Hx, 920) | (DialectId::Hurco, 920) | (DialectId::Puma, 500) => {
+                _ if is_coordinate_setting(d.id, c) => {
+                    setting = true;
                     self.coordinate_setting(at)?
                 }
                 (DialectId::Hurco, 590) => self.st.shift = [0.0; NAXES],
@@ -962,14 +956,9 @@ impl Interp {
         if g09 {
             self.emit(Canon::Mode(ModeChange::ExactStopBlock));
         }
-        let no_motion = dwell
-            || n_one > 0
-                && one_shot[..n_one].iter().any(|&(c, _)| {
-                    matches!(
-                        (d.id, c),
-                        (DialectId::Hx, 920) | (DialectId::Hurco, 920) | (DialectId::Puma, 500)
-                    )
-                });
+        // A dwell or a coordinate-setting block does not move: its axis
+        // words are the time or the new coordinates.
+        let no_motion = dwell || setting;
         if let Some((c, at)) = refret {
             self.reference_return(c, at)?;
         } else if !no_motion {
@@ -1146,6 +1135,14 @@ impl Interp {
         };
         self.emit(Canon::Mode(m));
     }
+}
+
+/// G92 (HX, Hurco) / G50 (PUMA, G-code system A): coordinate setting.
+fn is_coordinate_setting(d: DialectId, code10: u16) -> bool {
+    matches!(
+        (d, code10),
+        (DialectId::Hx | DialectId::Hurco, 920) | (DialectId::Puma, 500)
+    )
 }
 
 fn ax_letter(a: Axis) -> u8 {

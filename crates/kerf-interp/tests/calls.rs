@@ -6,10 +6,10 @@
 use std::path::PathBuf;
 
 use kerf_canon::{Canon, Event};
-use kerf_interp::{run_text, Interp, Profile, Run, Settings, Step};
+use kerf_interp::{Interp, Profile, Run, Settings, Step};
 
 mod common;
-use common::{ok, round, run_on};
+use common::{ok, round, run_on, run_with_param};
 
 /// Work-coordinate end points of the motions: (kind, line, x, y, z).
 fn moves(r: &Run) -> Vec<(&'static str, u32, f64, f64, f64)> {
@@ -138,20 +138,21 @@ M30
 /// guard stops it with KERF-0101 instead of hanging.
 #[test]
 fn runaway_main_m99_ends_in_loop_guard() {
-    let mut p = Profile::builtin("hx-mc").unwrap();
-    p.params.insert("max_jumps".into(), 500.0);
-    let r = run_text(
-        p,
-        Settings::default(),
-        "t.nc",
+    let r = run_with_param(
+        "hx-mc",
+        "max_jumps",
+        500.0,
         "%\nG54 G91 G00 X-1.\nX1.\nM99\n%\n",
     );
     assert_eq!(alarm(&r), ("KERF-0101", 4));
     assert_eq!(moves(&r).len(), 2 * 501);
     // With the default guard too (max_repeat_blocks), on a tiny budget.
-    let mut p = Profile::builtin("puma-lathe").unwrap();
-    p.params.insert("max_repeat_blocks".into(), 300.0);
-    let r = run_text(p, Settings::default(), "t.nc", "G00 W-1.\nW1.\nM99\n");
+    let r = run_with_param(
+        "puma-lathe",
+        "max_repeat_blocks",
+        300.0,
+        "G00 W-1.\nW1.\nM99\n",
+    );
     assert_eq!(alarm(&r).0, "KERF-0101");
 }
 
@@ -310,12 +311,10 @@ fn nesting_limits() {
     let r = run_on("puma-lathe", "M98 P1\nM30\nO1\nM98 P1\nM99\n");
     assert_eq!(alarm(&r), ("PS077", 4));
     // The limits are profile parameters.
-    let mut p = Profile::builtin("puma-lathe").unwrap();
-    p.params.insert("max_sub_nesting".into(), 1.0);
-    let r = run_text(
-        p,
-        Settings::default(),
-        "t.nc",
+    let r = run_with_param(
+        "puma-lathe",
+        "max_sub_nesting",
+        1.0,
         "M98 P1\nM30\nO1\nM98 P2\nM99\nO2\nM99\n",
     );
     assert_eq!(alarm(&r), ("PS077", 4));
@@ -586,14 +585,7 @@ fn library_file_with_percent_and_no_header() {
 /// An endless call loop through `M99 P` is stopped by the loop guard.
 #[test]
 fn m99_p_loop_is_bounded() {
-    let mut p = Profile::builtin("hx-mc").unwrap();
-    p.params.insert("max_jumps".into(), 200.0);
-    let r = run_text(
-        p,
-        Settings::default(),
-        "t.nc",
-        "N1 M98 P2\nM30\nO2\nM99 P1\n",
-    );
+    let r = run_with_param("hx-mc", "max_jumps", 200.0, "N1 M98 P2\nM30\nO2\nM99 P1\n");
     assert_eq!(alarm(&r), ("KERF-0101", 4));
 }
 

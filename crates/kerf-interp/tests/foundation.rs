@@ -5,7 +5,7 @@ use kerf_canon::{ArcDir, Canon, Event, Feed, SpindleDir};
 use kerf_interp::{run_text, Profile, Run, Settings};
 
 mod common;
-use common::{ok, round, run_on, run_with};
+use common::{ok, round, run_on, run_with, run_with_param};
 
 /// Work-coordinate end points of the motions: (kind, x, y, z).
 fn moves(r: &Run) -> Vec<(&'static str, f64, f64, f64)> {
@@ -422,8 +422,7 @@ fn reference_return_via_intermediate_point() {
 
 #[test]
 fn tool_length_offset_shifts_the_control_point() {
-    let mut p = Profile::builtin("hx-mc").unwrap();
-    p.params.insert("x".into(), 0.0);
+    let p = Profile::builtin("hx-mc").unwrap();
     let mut it = kerf_interp::Interp::new(p, Settings::default());
     it.set_h(1, 50.0);
     it.load_main(
@@ -445,21 +444,17 @@ fn tool_length_offset_shifts_the_control_point() {
 #[test]
 fn endless_loops_end_in_an_alarm() {
     // An endless WHILE: stopped by the repeat budget, positioned at a block.
-    let mut p = Profile::builtin("hx-mc").unwrap();
-    p.params.insert("max_repeat_blocks".into(), 1000.0);
-    let r = run_text(
-        p,
-        Settings::default(),
-        "t",
+    let r = run_with_param(
+        "hx-mc",
+        "max_repeat_blocks",
+        1000.0,
         "G90 G00 X0 Y0 Z0\nWHILE[1]DO1\nG91 G00 X0\nG00 Y0\nEND1\n",
     );
     let a = r.alarm.expect("loop guard");
     assert_eq!(a.code, "KERF-0101");
     assert!(a.src.line >= 2 && a.src.line <= 5);
     // A GOTO back to itself as well.
-    let mut p = Profile::builtin("hx-mc").unwrap();
-    p.params.insert("max_jumps".into(), 50.0);
-    let r = run_text(p, Settings::default(), "t", "N1 GOTO 1\n");
+    let r = run_with_param("hx-mc", "max_jumps", 50.0, "N1 GOTO 1\n");
     assert_eq!(r.alarm.expect("loop guard").code, "KERF-0101");
 }
 
@@ -492,12 +487,10 @@ fn goto_searches_forward_first_then_from_the_start() {
 #[test]
 fn goto_loops_end_quickly_in_the_loop_guard() {
     // fuzz/regressions/interp-goto-loop-2blocks.nc with a small jump budget.
-    let mut p = Profile::builtin("hx-mc").unwrap();
-    p.params.insert("max_jumps".into(), 10_000.0);
-    let r = run_text(
-        p,
-        Settings::default(),
-        "t",
+    let r = run_with_param(
+        "hx-mc",
+        "max_jumps",
+        10_000.0,
         "%\nO1\n#1=0\nN20 #3=1\nIF [#1 EQ 0] GOTO 20\nM30\n",
     );
     let a = r.alarm.expect("loop guard");

@@ -16,8 +16,6 @@ use kerf_canon::{Axis, Canon, Event, Feed, Pos, NAXES};
 pub struct Dynamics {
     /// Rapid rate per axis slot, mm/min (deg/min); 0 for absent axes.
     pub rapid: [f64; NAXES],
-    /// Linear (interpolated) rapids rather than each axis at its own rate.
-    pub linear_rapid: bool,
     /// Maximum cutting feed, mm/min.
     pub max_feed: f64,
     /// Tool change / turret index time, s.
@@ -126,7 +124,7 @@ impl Estimator {
                 let en = (m.mto[a1], m.mto[a2]);
                 let c = (mcenter[a1], mcenter[a2]);
                 let r = (s.0 - c.0).hypot(s.1 - c.1);
-                let sw = sweep(s, en, c, matches!(dir, kerf_canon::ArcDir::Ccw));
+                let sw = kerf_canon::geom::sweep(s, en, c, matches!(dir, kerf_canon::ArcDir::Ccw));
                 let planar = r * sw;
                 let mut other = 0.0;
                 for i in 0..NAXES {
@@ -185,17 +183,6 @@ fn dist(a: &Pos, b: &Pos) -> f64 {
     s.sqrt()
 }
 
-fn sweep(s: (f64, f64), e: (f64, f64), c: (f64, f64), ccw: bool) -> f64 {
-    use std::f64::consts::TAU;
-    if (s.0 - e.0).hypot(s.1 - e.1) < 1e-9 {
-        return TAU;
-    }
-    let a0 = (s.1 - c.1).atan2(s.0 - c.0);
-    let a1 = (e.1 - c.1).atan2(e.0 - c.0);
-    let d = if ccw { a1 - a0 } else { a0 - a1 };
-    d.rem_euclid(TAU)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -204,7 +191,6 @@ mod tests {
     fn dynm() -> Dynamics {
         Dynamics {
             rapid: [10000.0, 5000.0, 5000.0, 0.0, 0.0, 0.0],
-            linear_rapid: false,
             max_feed: 5000.0,
             tool_change_s: 2.0,
         }

@@ -27,3 +27,11 @@ pub fn round(v: f64) -> f64 {
 pub fn ok(r: &Run) {
     assert!(r.alarm.is_none(), "unexpected alarm {:?}", r.alarm);
 }
+
+/// Runs program text on a built-in machine with one profile parameter set
+/// (loop guards, nesting limits, ...).
+pub fn run_with_param(machine: &str, key: &str, value: f64, text: &str) -> Run {
+    let mut p = Profile::builtin(machine).unwrap();
+    p.params.insert(key.into(), value);
+    run_text(p, Settings::default(), "t.nc", text)
+}
