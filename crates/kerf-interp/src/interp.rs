@@ -144,6 +144,8 @@ pub struct Interp {
     cur: SrcRef,
     arc_tol: f64,
     h_table: Vec<f64>,
+    /// An alarm raised after the current block's commands have run (G27).
+    after_block: Option<Alarm>,
     /// Furthest byte offset read so far.
     high_water: u64,
     /// Blocks executed again after jumping back.
@@ -315,6 +317,7 @@ impl Interp {
             cur: SrcRef::default(),
             arc_tol,
             h_table: vec![0.0; 129],
+            after_block: None,
             high_water: 0,
             repeated: 0,
             repeat_budget,
@@ -440,6 +443,10 @@ impl Interp {
         loop {
             if let Some(e) = self.queue.pop_front() {
                 return Step::Event(e);
+            }
+            if let Some(a) = self.after_block.take() {
+                self.finished = true;
+                return Step::Alarm(a);
             }
             if self.finished {
                 return Step::End;

@@ -496,3 +496,34 @@ fn goto_loops_end_quickly_in_the_loop_guard() {
     let a = r.alarm.expect("loop guard");
     assert_eq!((a.code.as_str(), a.src.line), ("KERF-0101", 5));
 }
+
+#[test]
+fn remaining_alarm_kinds_are_positioned() {
+    // Expression missing its right operand: the ']' at column 9.
+    assert_eq!(alarm(&run_on("hx-mc", "G00 X[1+]\n")), ("F_82005", 1, 9));
+    // A canned cycle (issue 4) is recognised and refused by name.
+    let r = run_on("hx-mc", "G90 G00 X0 Y0 Z0\nG81 X1. Y1. Z-1. R1. F100.\n");
+    assert_eq!(alarm(&r), ("KERF-0100", 2, 1));
+    assert!(r.alarm.unwrap().message.contains("issue 4"));
+    // G29 with no G28/G30 intermediate point stored.
+    assert_eq!(alarm(&run_on("hx-mc", "G90 G29 X10.\n")), ("F_82008", 1, 5));
+    // Hurco G04 needs F (seconds or revolutions).
+    assert_eq!(alarm(&run_on("hurco-lathe", "G04\n")).0, "HU-015");
+    // Division by zero in a statement.
+    assert_eq!(
+        alarm(&run_on("hx-mc", "#1=0\n#2=1/#1\n")),
+        ("F_82201", 2, 1)
+    );
+    assert_eq!(alarm(&run_on("puma-lathe", "#1=1/0\n")).0, "PS112");
+}
+
+#[test]
+fn g27_checks_the_reference_position() {
+    // G54 zero is machine (-400, -250, -250): work (400, 250, 250) is the
+    // reference position (machine 0), so this check passes.
+    ok(&run_on("hx-mc", "G90 G27 X400. Y250. Z250.\n"));
+    // X10. is machine -390, not the reference: alarm after the move.
+    let r = run_on("hx-mc", "G90 G00 X0 Y0 Z0\nG27 X10.\n");
+    assert_eq!(alarm(&r), ("F_82209", 2, 1));
+    assert_eq!(moves(&r).last().unwrap(), &("rapid", 10.0, 0.0, 0.0));
+}

@@ -345,7 +345,9 @@ impl Interp {
                 for ax in Axis::ALL {
                     let i = ax as usize;
                     if named[i] && (self.st.pos[i] - self.reference_point(1, ax)).abs() > 1e-6 {
-                        return Err(self.alarm(
+                        // The check follows the move: the positioning is
+                        // made, then the control alarms.
+                        self.after_block = Some(self.alarm(
                             AlarmKind::ReferenceCheck,
                             at,
                             format!(
@@ -353,6 +355,7 @@ impl Interp {
                                 ax.name().to_uppercase()
                             ),
                         ));
+                        break;
                     }
                 }
             }
