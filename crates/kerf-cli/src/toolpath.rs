@@ -131,7 +131,7 @@ impl<W: Write> Writer<W> {
             let v = match f {
                 Feed::PerMin(v) => v,
                 Feed::PerRev(v) => v * est.rpm(),
-                Feed::InverseTime(_) => est.feed_mm_min(f, 0.0),
+                Feed::InverseTime(_) => est.feed_mm_min(f, est.last_cut_length),
             };
             num(&mut self.buf, v);
             if let Feed::PerRev(v) = f {

@@ -275,3 +275,30 @@ fn lib_folder_programs() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
 }
+
+#[test]
+fn inverse_time_feed_is_reported_in_mm_per_min() {
+    // Hurco G93: F2 means the move takes 1/2 minute. Z from 0 to -2 in
+    // (50.8 mm) in 0.5 min is 101.6 mm/min.
+    let p = tmp("g93.nc", "G20 G90 G07 G00 X1 Z0\nG93 G01 Z-2 F2\n");
+    let tp = p.with_extension("jsonl");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .args(["--machine", "hurco-lathe", "--toolpath"])
+        .arg(&tp)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let recs: Vec<serde_json::Value> = std::fs::read_to_string(&tp)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(recs[1]["kind"], "feed");
+    assert_eq!(recs[1]["feed"], 101.6);
+}

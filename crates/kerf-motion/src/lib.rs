@@ -50,6 +50,8 @@ pub struct Estimator {
     pub feed_length: f64,
     /// Rapid path length so far, mm.
     pub rapid_length: f64,
+    /// Path length of the last cutting move, mm.
+    pub last_cut_length: f64,
 }
 
 impl Estimator {
@@ -62,6 +64,7 @@ impl Estimator {
             time: Breakdown::default(),
             feed_length: 0.0,
             rapid_length: 0.0,
+            last_cut_length: 0.0,
         }
     }
 
@@ -166,6 +169,7 @@ impl Estimator {
 
     fn cut(&mut self, len: f64, feed: Feed) {
         self.feed_length += len;
+        self.last_cut_length = len;
         let f = self.feed_mm_min(feed, len);
         if f > 0.0 {
             self.time.cutting += len / f * 60.0;
