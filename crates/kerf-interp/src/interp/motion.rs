@@ -102,32 +102,46 @@ impl Interp {
         let at = self.motion_at();
         match mode {
             0 | 10 => {
-                if !any {
-                    return Ok(());
+                if any {
+                    self.move_line(mode == 0, tw, at)?;
                 }
-                let mto = self.to_machine(&tw);
-                self.check_travel(&mto, at)?;
-                let m = Motion {
-                    to: self.work_of(&mto),
-                    mto,
-                };
-                let cmd = if mode == 0 {
-                    Canon::Rapid {
-                        m,
-                        linear: self.linear_rapid(),
-                    }
-                } else {
-                    Canon::Feed {
-                        m,
-                        feed: self.feed(at)?,
-                    }
-                };
-                self.st.pos = mto;
-                self.emit(cmd);
             }
             20 | 30 => self.arc(tw, any, mode == 30, at)?,
             _ => {}
         }
+        Ok(())
+    }
+
+    /// Current position in the program's coordinates: the point the next
+    /// incremental word adds to (before polar, scaling and rotation).
+    #[allow(dead_code)] // used by canned cycles and transforms (issue 4)
+    pub(super) fn prog_pos(&self) -> Pos {
+        self.programmed_position()
+    }
+
+    /// A straight move (rapid or feed) to `tw`, a point in the program's
+    /// coordinates: transformed to machine coordinates, checked against
+    /// the travel limits and emitted. `at` positions any alarm.
+    pub(super) fn move_line(&mut self, rapid: bool, tw: Pos, at: u32) -> R<()> {
+        let mto = self.to_machine(&tw);
+        self.check_travel(&mto, at)?;
+        let m = Motion {
+            to: self.work_of(&mto),
+            mto,
+        };
+        let cmd = if rapid {
+            Canon::Rapid {
+                m,
+                linear: self.linear_rapid(),
+            }
+        } else {
+            Canon::Feed {
+                m,
+                feed: self.feed(at)?,
+            }
+        };
+        self.st.pos = mto;
+        self.emit(cmd);
         Ok(())
     }
 
