@@ -75,6 +75,9 @@ pub enum AlarmKind {
     SubprogramEnd,
     /// `#3000 = n (MESSAGE)`: the program's own alarm; the code is 3000+n.
     UserAlarm,
+    /// A code not allowed while coordinate rotation or scaling is in force
+    /// (plane change, G27-G30, G92), or transforms in the wrong order.
+    TransformConflict,
 }
 
 impl AlarmKind {
@@ -112,6 +115,7 @@ impl AlarmKind {
         AlarmKind::CallNesting,
         AlarmKind::SubprogramEnd,
         AlarmKind::UserAlarm,
+        AlarmKind::TransformConflict,
     ];
 
     /// The control's code for this alarm.
@@ -150,6 +154,7 @@ impl AlarmKind {
             CallNesting => ("F_82023", "PS077", "HU-047"),
             SubprogramEnd => ("F_82024", "KERF-0102", "KERF-0102"),
             UserAlarm => ("3000+n", "3000+n", "3000+n"),
+            TransformConflict => ("F_82210", "PS144", "HU-048"),
         };
         match d {
             DialectId::Hx => hx,

@@ -23,6 +23,7 @@ mod codes;
 mod flow;
 mod motion;
 mod sysvars;
+mod transforms;
 
 /// Operator-panel switches and run options.
 #[derive(Clone, Debug, Default)]
@@ -73,8 +74,18 @@ struct State {
     wcs: [Pos; 6],
     /// Active work system index.
     wcs_idx: usize,
-    /// G92 / G50 shift.
+    /// G92 / G50 shift (the HX "work shift" of 000 §7.2.4, also set by
+    /// `G10 L2 P0`).
     shift: Pos,
+    /// G52 local coordinate system offset (work coordinates; the same for
+    /// every work system).
+    local: Pos,
+    /// Scaling (G51) and rotation (G68) in force.
+    xf: crate::xform::Xform,
+    /// G16 polar coordinate command in force.
+    polar: bool,
+    /// Origin of the polar coordinates (program coordinates in the plane).
+    polar_origin: std::cell::Cell<(f64, f64)>,
     /// Tool length offset vector (G43/G44), added to the control point.
     tlo: Pos,
     /// Active H number (0 = none).
@@ -209,6 +220,10 @@ impl Interp {
             wcs,
             wcs_idx: 0,
             shift: [0.0; NAXES],
+            local: [0.0; NAXES],
+            xf: Default::default(),
+            polar: false,
+            polar_origin: std::cell::Cell::new((0.0, 0.0)),
             tlo: [0.0; NAXES],
             h: 0,
             g28_mid: [None; NAXES],
@@ -418,12 +433,12 @@ impl Interp {
         o
     }
 
-    /// Origin of programmed coordinates: the work origin plus the tool
-    /// length offset.
+    /// Origin of programmed coordinates: the work origin plus the G52 local
+    /// offset and the tool length offset.
     fn prog_origin(&self) -> Pos {
         let mut o = self.origin();
         for i in 0..NAXES {
-            o[i] += self.st.tlo[i];
+            o[i] += self.st.tlo[i] + self.st.local[i];
         }
         o
     }
@@ -912,6 +927,7 @@ impl Interp {
         let mut g09 = false;
         let mut setting = false;
         let mut refret: Option<(u16, u32)> = None;
+        let xdata = self.transform_codes(&one_shot[..n_one])?;
         if let Some(dw) = self.words.get(b'D') {
             self.sys.d = dw.v;
         }
@@ -965,7 +981,7 @@ impl Interp {
         }
         // A dwell or a coordinate-setting block does not move: its axis
         // words are the time or the new coordinates.
-        let no_motion = dwell || setting;
+        let no_motion = dwell || setting || xdata;
         if let Some((c, at)) = refret {
             self.reference_return(c, at)?;
         } else if !no_motion {

@@ -28,6 +28,7 @@ pub mod machine;
 pub mod macros;
 pub mod state;
 pub mod words;
+pub mod xform;
 
 pub use dialect::{Dialect, DialectId};
 pub use interp::{Interp, Settings, Step};

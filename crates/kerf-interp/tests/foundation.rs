@@ -5,29 +5,7 @@ use kerf_canon::{ArcDir, Canon, Event, Feed, SpindleDir};
 use kerf_interp::{run_text, Profile, Run, Settings};
 
 mod common;
-use common::{ok, round, run_on, run_with, run_with_param};
-
-/// Work-coordinate end points of the motions: (kind, x, y, z).
-fn moves(r: &Run) -> Vec<(&'static str, f64, f64, f64)> {
-    r.events
-        .iter()
-        .filter_map(|e| {
-            let k = match e.cmd {
-                Canon::Rapid { .. } => "rapid",
-                Canon::Feed { .. } => "feed",
-                Canon::Arc { .. } => "arc",
-                _ => return None,
-            };
-            let m = e.motion().unwrap();
-            Some((k, round(m.to[0]), round(m.to[1]), round(m.to[2])))
-        })
-        .collect()
-}
-
-fn alarm(r: &Run) -> (&str, u32, u32) {
-    let a = r.alarm.as_ref().expect("an alarm");
-    (a.code.as_str(), a.src.line, a.src.col)
-}
+use common::{alarm, moves, ok, round, run_on, run_with, run_with_param};
 
 #[test]
 fn least_input_increment_and_decimal_point() {

@@ -25,11 +25,11 @@ pub static GCODES: &[GCode] = &[
     g(30, 1, false, "circular/helical interpolation CCW", Yes),
     g(40, 0, false, "dwell", Yes),
     g(90, 0, false, "exact stop", Yes),
-    g(100, 0, false, "setting data", LATER_COMP), // §13.1.3: G10 L10 (H) / L12 (D)
+    g(100, 0, false, "setting data", Yes), // §13.1.3: G10 L10 (H) / L12 (D)
     g(103, 21, false, "high speed machining start", Yes),
     g(113, 21, true, "high speed machining end", Yes),
     g(150, 17, true, "polar coordinate command cancel", Yes),
-    g(160, 17, false, "polar coordinate command", LATER_HX),
+    g(160, 17, false, "polar coordinate command", Yes),
     g(170, 16, true, "X-Y plane selection", Yes), // default: PI 145 = 0
     g(180, 16, false, "Z-X plane selection", Yes),
     g(190, 16, false, "Y-Z plane selection", Yes),
@@ -64,8 +64,8 @@ pub static GCODES: &[GCode] = &[
     g(480, 0, false, "tool offset double decrease", LATER_COMP),
     g(490, 13, true, "tool length compensation cancel", Yes),
     g(500, 11, true, "scaling cancel, mirror image cancel", Yes), // default: PI 149 = 0
-    g(510, 11, false, "scaling, mirror image", LATER_HX),
-    g(520, 0, false, "local coordinate system setting", LATER_HX),
+    g(510, 11, false, "scaling, mirror image", Yes),
+    g(520, 0, false, "local coordinate system setting", Yes),
     g(530, 0, false, "machine coordinate system selection", Yes),
     g(540, 14, true, "work coordinate 1 selection", Yes),
     g(550, 14, false, "work coordinate 2 selection", Yes),
@@ -83,7 +83,7 @@ pub static GCODES: &[GCode] = &[
     g(650, 0, false, "macro call", Yes),
     g(660, 12, false, "macro modal call", Yes),
     g(670, 12, true, "macro modal call cancel", Yes),
-    g(680, 18, false, "coordinate system rotation", LATER_HX),
+    g(680, 18, false, "coordinate system rotation", Yes),
     g(690, 18, true, "coordinate system rotation cancel", Yes), // default: PI 150 = 0
     g(730, 10, false, "high speed peck drilling cycle", LATER_HX),
     g(740, 10, false, "counter tapping cycle", LATER_HX),

@@ -279,8 +279,10 @@ impl Interp {
             }
             if let Some(t) = target {
                 any = true;
-                // New shift so that pos - (wcs + shift + tlo) = t.
+                // G92 clears the G52 local offset of the axis (Fanuc);
+                // new shift so that pos - (wcs + shift + tlo) = t.
                 let i = ax as usize;
+                self.st.local[i] = 0.0;
                 self.st.shift[i] =
                     self.st.pos[i] - self.st.wcs[self.st.wcs_idx][i] - self.st.tlo[i] - t;
             }

@@ -8,7 +8,7 @@ impl Interp {
 
     /// The block's end point in work coordinates, and whether any axis moved.
     pub(super) fn target(&self) -> R<(Pos, bool)> {
-        let cur = self.programmed_position();
+        let cur = self.prog_pos();
         let mut t = cur;
         let mut any = false;
         for ax in Axis::ALL {
@@ -35,10 +35,64 @@ impl Interp {
                 any = true;
             }
         }
+        if self.st.polar {
+            self.polar_target(&cur, &mut t);
+        }
         Ok((t, any))
     }
 
+    /// G16: the plane's first-axis word is a radius, the second an angle
+    /// (000 §8.3). A radius in G90 is measured from the program origin, in
+    /// G91 from the current position; without a radius the previous origin
+    /// and the current distance from it are kept. The angle is absolute in
+    /// G90, added to the current angle in G91.
+    fn polar_target(&self, cur: &Pos, t: &mut Pos) {
+        let (a1, a2, _) = self.st.plane.axes();
+        let rw = self.words.get(b"XYZ"[a1]);
+        let aw = self.words.get(b"XYZ"[a2]);
+        if rw.is_none() && aw.is_none() {
+            return;
+        }
+        let mut origin = self.st.polar_origin.get();
+        if rw.is_some() {
+            origin = if self.st.absolute {
+                (0.0, 0.0)
+            } else {
+                (cur[a1], cur[a2])
+            };
+        }
+        let (dx, dy) = (cur[a1] - origin.0, cur[a2] - origin.1);
+        let r_cur = dx.hypot(dy);
+        let a_cur = if r_cur < 1e-12 {
+            0.0
+        } else {
+            dy.atan2(dx).to_degrees()
+        };
+        let r = rw.map(|w| self.linear(w)).unwrap_or(r_cur);
+        let a = match aw {
+            Some(w) if self.st.absolute => self.angular(w),
+            Some(w) => a_cur + self.angular(w),
+            None => a_cur,
+        };
+        let (u, v) = crate::xform::polar_point(origin, r, a);
+        t[a1] = u;
+        t[a2] = v;
+        self.st.polar_origin.set(origin);
+    }
+
+    /// A point in program coordinates → machine coordinates (scaling,
+    /// rotation, then the offset stack).
     pub(super) fn to_machine(&self, w: &Pos) -> Pos {
+        if self.st.xf.active() {
+            self.offset_to_machine(&self.st.xf.forward(w))
+        } else {
+            self.offset_to_machine(w)
+        }
+    }
+
+    /// A point in (transformed) local coordinates → machine coordinates:
+    /// the offset stack only.
+    pub(super) fn offset_to_machine(&self, w: &Pos) -> Pos {
         let o = self.prog_origin();
         let mut m = *w;
         for i in 0..NAXES {
@@ -101,11 +155,7 @@ impl Interp {
         let (tw, any) = self.target()?;
         let at = self.motion_at();
         match mode {
-            0 | 10 => {
-                if any {
-                    self.move_line(mode == 0, tw, at)?;
-                }
-            }
+            0 | 10 if any => self.move_line(mode == 0, tw, at)?,
             20 | 30 => self.arc(tw, any, mode == 30, at)?,
             _ => {}
         }
@@ -114,9 +164,13 @@ impl Interp {
 
     /// Current position in the program's coordinates: the point the next
     /// incremental word adds to (before polar, scaling and rotation).
-    #[allow(dead_code)] // used by canned cycles and transforms (issue 4)
     pub(super) fn prog_pos(&self) -> Pos {
-        self.programmed_position()
+        let p = self.programmed_position();
+        if self.st.xf.active() {
+            self.st.xf.inverse(&p)
+        } else {
+            p
+        }
     }
 
     /// A straight move (rapid or feed) to `tw`, a point in the program's
@@ -148,13 +202,15 @@ impl Interp {
     pub(super) fn arc(&mut self, tw: Pos, any: bool, ccw: bool, at: u32) -> R<()> {
         let plane = self.st.plane;
         let (a1, a2, _) = plane.axes();
-        let cur = self.programmed_position();
+        let cur = self.prog_pos();
         let s = (cur[a1], cur[a2]);
         let e = (tw[a1], tw[a2]);
+        let mut r_word = None;
         let has_ijk = [b'I', b'J', b'K'].iter().any(|&l| self.words.has(l));
         let center = if let Some(r) = self.words.get(b'R') {
             self.check_range(b'R', r)?;
             let rv = self.linear(r);
+            r_word = Some(rv);
             if !any || (s.0 - e.0).hypot(s.1 - e.1) < 1e-9 {
                 // R with the end at the start: no movement (Fanuc).
                 if any {
@@ -212,6 +268,37 @@ impl Interp {
             .find_map(|&l| self.words.get(l))
             .map(|w| w.at)
             .unwrap_or(at);
+        // Scaling and rotation act on the three points; a mirror reverses
+        // the direction (000 §15.3). With unequal plane factors an R arc
+        // keeps its end points and takes R times the larger factor
+        // (fanuc-semantics §8.3); an I/J/K arc must still close.
+        let (s, e, center, ccw, tw) = if self.st.xf.active() {
+            let xf = self.st.xf;
+            let mut c = cur;
+            c[a1] = center.0;
+            c[a2] = center.1;
+            let (st, et, ct) = (xf.forward(&cur), xf.forward(&tw), xf.forward(&c));
+            let ccw = ccw != xf.mirrors(plane);
+            let (s, e) = ((st[a1], st[a2]), (et[a1], et[a2]));
+            let (f1, f2) = xf.plane_factors(plane);
+            let center = match r_word {
+                Some(rv) if (f1.abs() - f2.abs()).abs() > 1e-12 => {
+                    let rs = rv * f1.abs().max(f2.abs());
+                    arc::center_from_radius(s, e, rs, ccw, self.arc_tol).map_err(|_| {
+                        self.alarm(
+                            AlarmKind::ArcRadius,
+                            bad_at,
+                            "scaled arc radius is smaller than half the chord",
+                        )
+                    })?
+                }
+                _ => (ct[a1], ct[a2]),
+            };
+            (s, e, center, ccw, et)
+        } else {
+            (s, e, center, ccw, tw)
+        };
+        let cur = self.programmed_position();
         match arc::check_end(s, e, center, self.arc_tol) {
             Ok(_) => {}
             Err(ArcError::ZeroRadius) => return Err(self.alarm(AlarmKind::ArcNoCenter, bad_at, "arc centre coincides with the start point")),
@@ -231,14 +318,14 @@ impl Interp {
             let mut p = tw;
             p[a1] = u;
             p[a2] = v;
-            self.check_travel(&self.to_machine(&p), at)?;
+            self.check_travel(&self.offset_to_machine(&p), at)?;
         }
-        let mto = self.to_machine(&tw);
+        let mto = self.offset_to_machine(&tw);
         self.check_travel(&mto, at)?;
         let mut c = cur;
         c[a1] = center.0;
         c[a2] = center.1;
-        let mcenter = self.to_machine(&c);
+        let mcenter = self.offset_to_machine(&c);
         let c = self.work_of(&mcenter);
         let dir = if ccw { ArcDir::Ccw } else { ArcDir::Cw };
         self.st.pos = mto;

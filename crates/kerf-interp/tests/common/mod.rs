@@ -35,3 +35,27 @@ pub fn run_with_param(machine: &str, key: &str, value: f64, text: &str) -> Run {
     p.params.insert(key.into(), value);
     run_text(p, Settings::default(), "t.nc", text)
 }
+
+/// Work-coordinate end points of the motions: (kind, x, y, z), rounded.
+pub fn moves(r: &Run) -> Vec<(&'static str, f64, f64, f64)> {
+    use kerf_canon::Canon;
+    r.events
+        .iter()
+        .filter_map(|e| {
+            let k = match e.cmd {
+                Canon::Rapid { .. } => "rapid",
+                Canon::Feed { .. } => "feed",
+                Canon::Arc { .. } => "arc",
+                _ => return None,
+            };
+            let m = e.motion().unwrap();
+            Some((k, round(m.to[0]), round(m.to[1]), round(m.to[2])))
+        })
+        .collect()
+}
+
+/// The stopping alarm's code, line and column.
+pub fn alarm(r: &Run) -> (&str, u32, u32) {
+    let a = r.alarm.as_ref().expect("an alarm");
+    (a.code.as_str(), a.src.line, a.src.col)
+}

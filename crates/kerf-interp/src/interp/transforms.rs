@@ -1,0 +1,286 @@
+//! The HX's coordinate transform and coordinate-system codes: G15/G16
+//! polar coordinate command (000 §8.3), G50/G51 scaling and mirror image
+//! (§15.2, §15.3), G68/G69 coordinate rotation (§15.4), G52 local
+//! coordinates (§7.3) and `G10 L2 P_` work offset setting (Fanuc standard).
+//! The geometry lives in [`crate::xform`].
+
+use super::*;
+use crate::xform::{Rotation, Scale};
+
+impl Interp {
+    /// Runs the block's transform and coordinate-system codes (after the
+    /// modal codes, before the other one-shot codes and motion). Returns
+    /// true when the block's axis words were the data of one of them: the
+    /// block then makes no move.
+    pub(super) fn transform_codes(&mut self, one_shot: &[(u16, u32)]) -> R<bool> {
+        if self.dialect.id != DialectId::Hx {
+            return Ok(false);
+        }
+        let mut data = false;
+        // Cancels first, so `G69 G28 …` and `G50 G92 …` are legal.
+        for i in 0..self.words.ng {
+            match self.words.g[i].0 {
+                150 => self.st.polar = false,
+                160 if !self.st.polar => {
+                    self.st.polar = true;
+                    self.st.polar_origin.set((0.0, 0.0));
+                }
+                500 => self.st.xf.scale = None,
+                690 => self.st.xf.rot = None,
+                _ => {}
+            }
+        }
+        for i in 0..self.words.ng {
+            let (c, at) = self.words.g[i];
+            match c {
+                510 => {
+                    self.g51(at)?;
+                    data = true;
+                }
+                680 => {
+                    self.g68(at)?;
+                    data = true;
+                }
+                _ => {}
+            }
+        }
+        if let Some(r) = self.st.xf.rot {
+            if r.plane != self.st.plane {
+                let at = self
+                    .words
+                    .gs()
+                    .iter()
+                    .find(|g| matches!(g.0, 170 | 180 | 190))
+                    .map(|g| g.1)
+                    .unwrap_or(0);
+                return Err(self.alarm(
+                    AlarmKind::TransformConflict,
+                    at,
+                    "plane change in coordinate rotation mode (cancel with G69 first)",
+                ));
+            }
+        }
+        for &(c, at) in one_shot {
+            if self.st.xf.active() && matches!(c, 270 | 280 | 290 | 300 | 920) {
+                let what = if self.st.xf.rot.is_some() {
+                    "coordinate rotation (G69 first)"
+                } else {
+                    "scaling (G50 first)"
+                };
+                return Err(self.alarm(
+                    AlarmKind::TransformConflict,
+                    at,
+                    format!("G{} is not allowed in {what}", fmt_code(c)),
+                ));
+            }
+            match c {
+                520 => {
+                    self.g52();
+                    data = true;
+                }
+                100 => {
+                    self.g10(at)?;
+                    data = true;
+                }
+                _ => {}
+            }
+        }
+        Ok(data)
+    }
+
+    /// A scale factor: P/I/J/K in 1/1000 without a decimal point
+    /// (`P2000` = ×2, 000 §15.2), as written with one (`P2.` = ×2).
+    fn scale_factor(&self, w: WVal) -> R<f64> {
+        let f = if w.point { w.v } else { w.v / 1000.0 };
+        if !(0.001..=999.999).contains(&f.abs()) {
+            return Err(self.alarm(
+                AlarmKind::OutOfRange,
+                w.at,
+                format!(
+                    "scaling factor {} out of range (±0.001 … ±999.999)",
+                    fmt_num(f)
+                ),
+            ));
+        }
+        Ok(f)
+    }
+
+    /// `G51 X_ Y_ Z_ P_` or `G51 X_ Y_ Z_ I_ J_ K_`: scaling (negative
+    /// factors mirror) about the given centre, the current position for
+    /// an omitted axis; without P, I, J, K the factors of PI 108-110.
+    fn g51(&mut self, at: u32) -> R<()> {
+        if self.st.xf.rot.is_some() {
+            return Err(self.alarm(
+                AlarmKind::TransformConflict,
+                at,
+                "G51 in coordinate rotation mode: command G51 before G68 (000 §15.4.2)",
+            ));
+        }
+        self.st.xf.scale = None;
+        let cur = self.prog_pos();
+        let mut center = [0.0; 3];
+        for (i, c) in center.iter_mut().enumerate() {
+            let ax = Axis::ALL[i];
+            *c = match self.words.get(ax_letter(ax)) {
+                Some(w) => self.axis_value(ax, w),
+                None => cur[i],
+            };
+        }
+        let mut factor = [1.0; 3];
+        if let Some(p) = self.words.get(b'P') {
+            factor = [self.scale_factor(p)?; 3];
+        } else {
+            for (i, l) in [b'I', b'J', b'K'].into_iter().enumerate() {
+                factor[i] = match self.words.get(l) {
+                    Some(w) => self.scale_factor(w)?,
+                    None => {
+                        self.profile
+                            .param(["PI 108", "PI 109", "PI 110"][i], 1000.0)
+                            / 1000.0
+                    }
+                };
+            }
+        }
+        self.st.xf.scale = Some(Scale { center, factor });
+        Ok(())
+    }
+
+    /// `G68 X_ Y_ R_` (in the plane's axes): rotation about the given
+    /// centre (absolute; the current position when omitted) by R degrees
+    /// (decimal-point rule: `R60` = 0.060°, `R60.` = 60°; PI 117 when
+    /// omitted). In G91 the angle is added to the rotation in force.
+    fn g68(&mut self, at: u32) -> R<()> {
+        let plane = self.st.plane;
+        let (a1, a2, _) = plane.axes();
+        if let Some(r) = self.st.xf.rot {
+            if r.plane != plane {
+                return Err(self.alarm(
+                    AlarmKind::TransformConflict,
+                    at,
+                    "G68 in another plane while coordinate rotation is in force",
+                ));
+            }
+        }
+        let cur = self.prog_pos();
+        let coord = |me: &Self, i: usize| -> f64 {
+            let ax = Axis::ALL[i];
+            match me.words.get(ax_letter(ax)) {
+                Some(w) => me.axis_value(ax, w),
+                None => cur[i],
+            }
+        };
+        let mut c = cur;
+        c[a1] = coord(self, a1);
+        c[a2] = coord(self, a2);
+        // With scaling in force the centre is scaled too (000 §15.4.2).
+        if let Some(s) = self.st.xf.scale {
+            let only = crate::xform::Xform {
+                scale: Some(s),
+                rot: None,
+            };
+            c = only.forward(&c);
+        }
+        let r = match self.words.get(b'R') {
+            Some(w) => self.angular(w),
+            None => self.profile.param("PI 117", 0.0) / 1000.0,
+        };
+        if r.abs() > 360.0 {
+            let rat = self.words.get(b'R').map(|w| w.at).unwrap_or(at);
+            return Err(self.alarm(
+                AlarmKind::OutOfRange,
+                rat,
+                format!("rotation angle {} out of range (±360°)", fmt_num(r)),
+            ));
+        }
+        let deg = match (self.st.absolute, self.st.xf.rot) {
+            (false, Some(old)) => old.deg + r,
+            _ => r,
+        };
+        self.st.xf.rot = Some(Rotation {
+            plane,
+            center: (c[a1], c[a2]),
+            deg,
+        });
+        Ok(())
+    }
+
+    /// `G52 X_ Y_ Z_`: the local coordinate origin in the work system
+    /// (absolute values; in G91 added to the current local offset);
+    /// `G52 X0 Y0 Z0` cancels. Only the named axes change.
+    fn g52(&mut self) {
+        for ax in Axis::ALL {
+            let i = ax as usize;
+            if !self.has_axis[i] {
+                continue;
+            }
+            if let Some(w) = self.words.get(ax_letter(ax)) {
+                let v = self.axis_value(ax, w);
+                self.st.local[i] = if self.st.absolute {
+                    v
+                } else {
+                    self.st.local[i] + v
+                };
+            }
+        }
+    }
+
+    /// `G10 L2 P_ X_ Y_ Z_`: work offset setting (Fanuc): P1-P6 = G54-G59,
+    /// P0 = the work shift (000 §7.2.4). Absolute in G90, added in G91.
+    /// The other G10 forms are offset data (issue 5).
+    fn g10(&mut self, at: u32) -> R<()> {
+        let l = self.words.get(b'L');
+        match l {
+            Some(w) if w.v == 2.0 => {}
+            Some(w) => {
+                return Err(self.alarm(
+                    AlarmKind::NotYetSupported,
+                    w.at,
+                    format!(
+                        "G10 L{} (offset data setting) is not yet supported: tool compensation (issue 5)",
+                        fmt_num(w.v)
+                    ),
+                ))
+            }
+            None => {
+                return Err(self.alarm(
+                    AlarmKind::MissingArgument,
+                    at,
+                    "G10 without L (L2 = work offset)",
+                ))
+            }
+        }
+        let p = match self.words.get(b'P') {
+            Some(p) if p.v.fract() == 0.0 && (0.0..=6.0).contains(&p.v) => p.v as usize,
+            Some(p) => {
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    p.at,
+                    "G10 L2 P must be 0 (work shift) or 1-6 (G54-G59)",
+                ))
+            }
+            None => {
+                return Err(self.alarm(
+                    AlarmKind::MissingArgument,
+                    at,
+                    "G10 L2 without P (0 = work shift, 1-6 = G54-G59)",
+                ))
+            }
+        };
+        for ax in Axis::ALL {
+            let i = ax as usize;
+            if !self.has_axis[i] {
+                continue;
+            }
+            if let Some(w) = self.words.get(ax_letter(ax)) {
+                let v = self.axis_value(ax, w);
+                let slot = if p == 0 {
+                    &mut self.st.shift[i]
+                } else {
+                    &mut self.st.wcs[p - 1][i]
+                };
+                *slot = if self.st.absolute { v } else { *slot + v };
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,342 @@
+//! HX coordinate transforms and coordinate-system codes: G52, G10 L2,
+//! G15/G16 polar coordinates, G50/G51 scaling and mirror image, G68/G69
+//! rotation (000 §7.3, §8.3, §15.2-15.4). Expected values are worked out
+//! by hand in the comments (cos 60° = 0.5, sin 60° = 0.8660254037844386).
+
+use kerf_canon::{ArcDir, Canon};
+
+mod common;
+use common::{alarm, moves, ok, round, run_on};
+
+/// 000 §15.4 example N1-N8, numbers with decimal points (the manual prints
+/// `G68 X70 Y30 R60` and its comment reads "X 70. Y 30. … 60°"). A G53
+/// line first puts the tool where the square stays inside travel.
+#[test]
+fn rotation_example_of_000_15_4() {
+    let r = run_on(
+        "hx-mc",
+        "G53 X-500. Y-300.\n\
+         N1 G92 X-50. Y-50. G69 G17\n\
+         N2 G68 X70. Y30. R60.\n\
+         N3 G90 G01 X0 Y0 F200\n\
+         N4 G91 X100.\n\
+         N5 G01 Y100.\n\
+         N6 X-100.\n\
+         N7 Y-100.\n\
+         N8 G69 G90 X-50. Y-50. M30\n",
+    );
+    ok(&r);
+    // p' = c + R60 (p - c), c = (70, 30):
+    // (0,0):    d (-70,-30) → (-35 + 25.980762, -60.621778 - 15) → (60.980762, -45.621778)
+    // (100,0):  d (30,-30)  → (15 + 25.980762, 25.980762 - 15)   → (110.980762, 40.980762)
+    // (100,100): d (30,70)  → (15 - 60.621778, 25.980762 + 35)   → (24.378222, 90.980762)
+    // (0,100):  d (-70,70)  → (-35 - 60.621778, -60.621778 + 35) → (-25.621778, 4.378222)
+    let m = moves(&r);
+    assert_eq!(
+        &m[1..],
+        &[
+            ("feed", 60.980762, -45.621778, 250.0),
+            ("feed", 110.980762, 40.980762, 250.0),
+            ("feed", 24.378222, 90.980762, 250.0),
+            ("feed", -25.621778, 4.378222, 250.0),
+            ("feed", 60.980762, -45.621778, 250.0),
+            ("feed", -50.0, -50.0, 250.0),
+        ]
+    );
+}
+
+/// `R` without a decimal point is in 0.001° (decimal-point rule); G91 adds
+/// the angle to the rotation in force; without a centre the current
+/// position is the centre.
+#[test]
+fn rotation_angle_units_and_incremental_angle() {
+    // Centre (0,0); R90000 = 90°: (10,0) → (0,10).
+    let r = run_on("hx-mc", "G00 X0 Y0\nG68 X0 Y0 R90000\nG01 X10. F100\n");
+    ok(&r);
+    assert_eq!(moves(&r)[1], ("feed", 0.0, 10.0, 250.0));
+    // 30° then G91 R60. → 90°.
+    let r = run_on(
+        "hx-mc",
+        "G00 X0 Y0\nG68 R30.\nG91 G68 R60.\nG90 G01 X10. F100\n",
+    );
+    ok(&r);
+    assert_eq!(moves(&r)[1], ("feed", 0.0, 10.0, 250.0));
+    // Centre omitted: the current position (10, 0); (20, 0) by 90° → (10, 10).
+    let r = run_on("hx-mc", "G00 X10. Y0\nG68 R90.\nG01 X20. F100\n");
+    ok(&r);
+    assert_eq!(moves(&r)[1], ("feed", 10.0, 10.0, 250.0));
+}
+
+/// Arcs rotate with their centre: G02 from (0,0) to (20,0) centre (10,0)
+/// rotated 90° about (0,0) ends at (0,20), centre (0,10).
+#[test]
+fn rotation_turns_arcs() {
+    let r = run_on(
+        "hx-mc",
+        "G00 X0 Y0\nG68 X0 Y0 R90.\nG02 X20. Y0 I10. F100\n",
+    );
+    ok(&r);
+    let e = r
+        .events
+        .iter()
+        .find(|e| matches!(e.cmd, Canon::Arc { .. }))
+        .unwrap();
+    let Canon::Arc { m, center, dir, .. } = &e.cmd else {
+        unreachable!()
+    };
+    assert_eq!((round(m.to[0]), round(m.to[1])), (0.0, 20.0));
+    assert_eq!((round(center[0]), round(center[1])), (0.0, 10.0));
+    assert_eq!(*dir, ArcDir::Cw);
+}
+
+/// 000 §15.2.2: `G51 X0. Y0. Z0. I2000 J1000` then `G02 X100. Y0. R100.`
+/// from (0, 100): X doubled, Y kept, the end is (200, 0). With unequal
+/// factors R takes the larger factor (R 200): centre on the right of the
+/// chord (0,100)→(200,0): midpoint (100, 50), half chord √12500, offset
+/// √(40000 - 12500) = 165.831240 along (-0.447214, -0.894427) →
+/// (25.838015, -98.323970).
+#[test]
+fn scaling_example_of_000_15_2_2() {
+    let r = run_on(
+        "hx-mc",
+        "G90 G00 X0. Y100.\nG51 X0. Y0. Z0. I2000 J1000\nG02 X100. Y0. R100. F500.\n",
+    );
+    ok(&r);
+    let e = r
+        .events
+        .iter()
+        .find(|e| matches!(e.cmd, Canon::Arc { .. }))
+        .unwrap();
+    let Canon::Arc { m, center, dir, .. } = &e.cmd else {
+        unreachable!()
+    };
+    assert_eq!((round(m.to[0]), round(m.to[1])), (200.0, 0.0));
+    assert_eq!((round(center[0]), round(center[1])), (25.838015, -98.32397));
+    assert_eq!(*dir, ArcDir::Cw);
+}
+
+/// 000 §15.2 / §15.3 pattern examples: a subprogram O1234 (kerf's: the
+/// manual's figure is lost) run at a G52 origin unscaled, then scaled
+/// ×1.5, then mirrored ×-1.5 in X and Y.
+#[test]
+fn scaling_and_mirror_with_a_subprogram() {
+    let sub = "O1234\nG01 X20. Y0 F300\nX20. Y10.\nX0 Y0\nM99\n";
+    let r = run_on(
+        "hx-mc",
+        &format!(
+            "O0001\nG90 G00 X0 Y0\nG52 X22. Y22.\nG51 X0. Y0. I1000 J1000\nG00 X0 Y0\nM98 P1234\n\
+             G52 X85. Y50.\nG51 X0. Y0. I1500 J1500\nG00 X0 Y0\nM98 P1234\n\
+             G51 X0. Y0. I-1500 J-1500\nG00 X0 Y0\nM98 P1234\nG50\nG52 X0 Y0\nM30\n{sub}"
+        ),
+    );
+    ok(&r);
+    let m = moves(&r);
+    // ×1 about local (22,22): (22,22) (42,22) (42,32) (22,32)… back (22,22).
+    // ×1.5 about local (85,50): (85,50) (115,50) (115,65) (85,50).
+    // ×-1.5: (85,50) (55,50) (55,35) (85,50).
+    assert_eq!(
+        &m[1..],
+        &[
+            ("rapid", 22.0, 22.0, 250.0),
+            ("feed", 42.0, 22.0, 250.0),
+            ("feed", 42.0, 32.0, 250.0),
+            ("feed", 22.0, 22.0, 250.0),
+            ("rapid", 85.0, 50.0, 250.0),
+            ("feed", 115.0, 50.0, 250.0),
+            ("feed", 115.0, 65.0, 250.0),
+            ("feed", 85.0, 50.0, 250.0),
+            // G00 X0 Y0 where the tool already is: a zero-length rapid.
+            ("rapid", 85.0, 50.0, 250.0),
+            ("feed", 55.0, 50.0, 250.0),
+            ("feed", 55.0, 35.0, 250.0),
+            ("feed", 85.0, 50.0, 250.0),
+        ]
+    );
+}
+
+/// Mirroring one plane axis reverses G02/G03 (000 §15.3): mirrored in X
+/// about 0, a CW half circle from (0,0) to (10,0) becomes CCW to (-10,0)
+/// about (-5,0).
+#[test]
+fn mirror_reverses_arc_direction() {
+    let r = run_on(
+        "hx-mc",
+        "G00 X0 Y0\nG51 X0 Y0 I-1000 J1000\nG02 X10. Y0 I5. F100\n",
+    );
+    ok(&r);
+    let e = r
+        .events
+        .iter()
+        .find(|e| matches!(e.cmd, Canon::Arc { .. }))
+        .unwrap();
+    let Canon::Arc { m, center, dir, .. } = &e.cmd else {
+        unreachable!()
+    };
+    assert_eq!((round(m.to[0]), round(m.to[1])), (-10.0, 0.0));
+    assert_eq!((round(center[0]), round(center[1])), (-5.0, 0.0));
+    assert_eq!(*dir, ArcDir::Ccw);
+}
+
+/// P scales every axis (P500 = ×0.5), Z included, about the given centre.
+#[test]
+fn uniform_scaling_with_p() {
+    let r = run_on(
+        "hx-mc",
+        "G00 X0 Y0 Z0\nG51 X10. Y10. Z0 P500\nG01 X30. Y-10. Z-20. F100\nG50\nG01 X30. Y-10.\n",
+    );
+    ok(&r);
+    // (30,-10,-20) about (10,10,0) ×0.5 → (20, 0, -10); after G50 (30,-10,-10).
+    let m = moves(&r);
+    assert_eq!(m[1], ("feed", 20.0, 0.0, -10.0));
+    assert_eq!(m[2], ("feed", 30.0, -10.0, -10.0));
+}
+
+/// 000 §8.3 bolt circles (G01 here; the manual's G81 versions are in the
+/// canned-cycle examples). Radius 20 about (60, 44): 0°, 120°, 240° →
+/// (80, 44), (50, 61.320508), (50, 26.679492).
+#[test]
+fn polar_bolt_circle_absolute_and_incremental_radius() {
+    // G90 radius: origin = the (local) program origin.
+    let r = run_on(
+        "hx-mc",
+        "G00 X0 Y0\nG52 X60. Y44.\nG16 G17\nG01 X20. Y0 F100\nY120.\nY240.\nG15\n",
+    );
+    ok(&r);
+    let m = moves(&r);
+    assert_eq!(
+        &m[1..],
+        &[
+            ("feed", 80.0, 44.0, 250.0),
+            ("feed", 50.0, 61.320508, 250.0),
+            ("feed", 50.0, 26.679492, 250.0),
+        ]
+    );
+    // G91 radius: origin = the current position (60, 44); angles added.
+    let r = run_on(
+        "hx-mc",
+        "G90 G00 X60. Y44. Z10.\nG16 G17\nG91 G01 X20. Y0 F100\nY120.\nY120.\nG15\n",
+    );
+    ok(&r);
+    let m = moves(&r);
+    assert_eq!(
+        &m[1..],
+        &[
+            ("feed", 80.0, 44.0, 10.0),
+            ("feed", 50.0, 61.320508, 10.0),
+            ("feed", 50.0, 26.679492, 10.0),
+        ]
+    );
+}
+
+/// 000 §8.3 bolt hole cycle (30°, 150°, 270° at radius 100), both radius
+/// and angle absolute, then the G91-angle version: (86.602540, 50),
+/// (-86.602540, 50), (0, -100).
+#[test]
+fn polar_bolt_hole_angles() {
+    let want = [
+        ("feed", 86.60254, 50.0, 250.0),
+        ("feed", -86.60254, 50.0, 250.0),
+        ("feed", 0.0, -100.0, 250.0),
+    ];
+    let r = run_on(
+        "hx-mc",
+        "G00 X0 Y0\nG17 G90 G16\nG01 X100. Y30. F200.\nY150.\nY270.\nG15\n",
+    );
+    ok(&r);
+    assert_eq!(&moves(&r)[1..], &want);
+    let r = run_on(
+        "hx-mc",
+        "G00 X0 Y0\nG17 G16\nG90 G01 X100. Y30. F200.\nG91 Y120.\nY120.\nG15\n",
+    );
+    ok(&r);
+    assert_eq!(&moves(&r)[1..], &want);
+}
+
+/// Polar in G18: Z is the radius, X the angle. Z10. X90. → Z 0, X 10
+/// (angle from +Z toward +X).
+#[test]
+fn polar_in_the_zx_plane() {
+    let r = run_on("hx-mc", "G00 X0 Y0 Z0\nG18 G16\nG01 Z10. X90. F100\n");
+    ok(&r);
+    assert_eq!(moves(&r)[1], ("feed", 10.0, 0.0, 0.0));
+}
+
+/// 000 §7.3: G52 in each work system (the manual's numbers have no decimal
+/// point; with points here). G52 shifts programmed coordinates; the event
+/// `to` stays in the work system: G54 local (50,-100) → X0 Y0 is work
+/// (50, -100). G92 clears the local offset of the axes it names.
+#[test]
+fn local_coordinates_g52() {
+    let r = run_on(
+        "hx-mc",
+        "G90 G54 G00 X0 Y0\nG52 X50. Y-100.\nG00 X0 Y0\nG00 X10. Y10.\n\
+         G55\nG52 X60. Y-120.\nG00 X0 Y0\nG52 X0 Y0\nG00 X0 Y0\n",
+    );
+    ok(&r);
+    let m = moves(&r);
+    assert_eq!(
+        m,
+        vec![
+            ("rapid", 0.0, 0.0, 250.0),
+            ("rapid", 50.0, -100.0, 250.0),
+            ("rapid", 60.0, -90.0, 250.0),
+            ("rapid", 60.0, -120.0, 250.0),
+            ("rapid", 0.0, 0.0, 250.0),
+        ]
+    );
+    // Machine coordinates: G54 = (-400, -250): local (50,-100) → (-350, -350).
+    let mto = r.events[1].motion().unwrap().mto;
+    assert_eq!((round(mto[0]), round(mto[1])), (-350.0, -350.0));
+}
+
+/// `G10 L2 P2` sets G55 (machine coordinates of its zero); G91 adds; P0 is
+/// the work shift applied to every system.
+#[test]
+fn work_offset_setting_g10_l2() {
+    let r = run_on(
+        "hx-mc",
+        "G10 L2 P2 X-100. Y-50. Z-20.\nG55 G00 X0 Y0 Z0\nG91 G10 L2 P2 X-10.\nG90 G00 X0\n\
+         G10 L2 P0 X5.\nG00 X0\n",
+    );
+    ok(&r);
+    let mto: Vec<_> = r
+        .events
+        .iter()
+        .filter_map(|e| e.motion())
+        .map(|m| (round(m.mto[0]), round(m.mto[1]), round(m.mto[2])))
+        .collect();
+    assert_eq!(
+        mto,
+        vec![
+            (-100.0, -50.0, -20.0),
+            (-110.0, -50.0, -20.0),
+            (-105.0, -50.0, -20.0)
+        ]
+    );
+}
+
+#[test]
+fn transform_alarms() {
+    // G28 in rotation mode (000 §15.4: cancel with G69 first).
+    let r = run_on("hx-mc", "G68 X0 Y0 R30.\nG28 X0\n");
+    assert_eq!(alarm(&r), ("F_82210", 2, 1));
+    // G92 in scaling mode.
+    let r = run_on("hx-mc", "G51 X0 Y0 P2000\nG92 X0 Y0\n");
+    assert_eq!(alarm(&r), ("F_82210", 2, 1));
+    // Plane change in rotation mode.
+    let r = run_on("hx-mc", "G68 X0 Y0 R30.\nG18\n");
+    assert_eq!(alarm(&r), ("F_82210", 2, 1));
+    // Scale factor 0 and rotation angle beyond 360°.
+    let r = run_on("hx-mc", "G51 X0 Y0 P0\n");
+    assert_eq!(alarm(&r), ("F_82007", 1, 11));
+    let r = run_on("hx-mc", "G68 X0 Y0 R400.\n");
+    assert_eq!(alarm(&r), ("F_82007", 1, 11));
+    // G10 L2 with P out of range; G10 without L.
+    let r = run_on("hx-mc", "G10 L2 P7 X0\n");
+    assert_eq!(alarm(&r), ("F_82007", 1, 8));
+    let r = run_on("hx-mc", "G10 P1 X0\n");
+    assert_eq!(alarm(&r), ("F_82008", 1, 1));
+    // G69 in the same block makes G28 legal.
+    let r = run_on("hx-mc", "G68 X0 Y0 R30.\nG69 G28 X0\n");
+    ok(&r);
+}
