@@ -82,6 +82,8 @@ struct State {
     local: Pos,
     /// Scaling (G51) and rotation (G68) in force.
     xf: crate::xform::Xform,
+    /// Stored stroke check 2 area (G22 X Y Z I J K), machine coordinates.
+    stroke_area: Option<crate::stroke::Area>,
     /// G16 polar coordinate command in force.
     polar: bool,
     /// Origin of the polar coordinates (program coordinates in the plane).
@@ -222,6 +224,7 @@ impl Interp {
             shift: [0.0; NAXES],
             local: [0.0; NAXES],
             xf: Default::default(),
+            stroke_area: None,
             polar: false,
             polar_origin: std::cell::Cell::new((0.0, 0.0)),
             tlo: [0.0; NAXES],

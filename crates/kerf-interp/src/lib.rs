@@ -27,6 +27,7 @@ pub mod interp;
 pub mod machine;
 pub mod macros;
 pub mod state;
+pub mod stroke;
 pub mod words;
 pub mod xform;
 

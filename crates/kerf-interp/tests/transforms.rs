@@ -340,3 +340,55 @@ fn transform_alarms() {
     let r = run_on("hx-mc", "G68 X0 Y0 R30.\nG69 G28 X0\n");
     ok(&r);
 }
+
+/// 000 §15.5.3 area A, `G22 X-120 Y-100 I-190 J-150` (machine
+/// coordinates; with decimal points here): X -190…-120, Y -150…-100.
+/// Work = machine + (400, 250) on G54.
+const AREA_A: &str = "G22 X-120. Y-100. I-190. J-150.\n";
+
+#[test]
+fn stroke_check_follows_the_non_linear_rapid() {
+    // G53 X-300 Y-125 from machine (0,0): both axes at 24000 mm/min, so
+    // the tool runs diagonally to (-125,-125) — inside the area — before X
+    // goes on alone. (A straight line would pass at y = -50 … -79.)
+    let r = run_on("hx-mc", &format!("{AREA_A}G53 X-300. Y-125.\n"));
+    assert_eq!(alarm(&r), ("F_84100", 2, 1));
+    // Rapid to the same point in two moves around the area: fine.
+    let r = run_on(
+        "hx-mc",
+        &format!("{AREA_A}G53 Y-80.\nG53 X-300.\nG53 Y-125.\n"),
+    );
+    ok(&r);
+    // G23 switches the check off.
+    let r = run_on("hx-mc", &format!("{AREA_A}G23\nG53 X-300. Y-125.\n"));
+    ok(&r);
+}
+
+#[test]
+fn stroke_check_on_feed_lines_and_arcs() {
+    // Round the area to work (0, 125), then feed across along machine
+    // y = -125 to work x 300.
+    let r = run_on(
+        "hx-mc",
+        &format!("{AREA_A}G00 Y200.\nX0\nY125.\nG01 X300. F1000\n"),
+    );
+    assert_eq!(alarm(&r), ("F_84100", 5, 1));
+    // Half circle from work (200,160) to (290,160) about (245,160), r 45:
+    // G03 dips to (245,115) = machine (-155,-135), inside; the chord
+    // (y = -90 machine) and the end points are outside. G02 bulges up.
+    let arc = |g: &str| format!("{AREA_A}G00 X200. Y160.\n{g} X290. I45. F1000\n");
+    let r = run_on("hx-mc", &arc("G03"));
+    assert_eq!(alarm(&r), ("F_84100", 3, 1));
+    let r = run_on("hx-mc", &arc("G02"));
+    ok(&r);
+}
+
+#[test]
+fn stroke_check_alarms_at_setup_inside_the_area() {
+    // The tool at machine (-150, -125) when G22 defines the area round it.
+    let r = run_on("hx-mc", &format!("G53 X-150. Y-125.\n{AREA_A}"));
+    assert_eq!(alarm(&r), ("F_84100", 2, 1));
+    // Lower corner above the upper one.
+    let r = run_on("hx-mc", "G22 X-200. I-100.\n");
+    assert_eq!(alarm(&r), ("F_82007", 1, 12));
+}

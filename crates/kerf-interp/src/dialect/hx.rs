@@ -35,7 +35,7 @@ pub static GCODES: &[GCode] = &[
     g(190, 16, false, "Y-Z plane selection", Yes),
     g(200, 6, false, "inch", Yes),
     g(210, 6, true, "metric", Yes), // default: PI 147 = 1
-    g(220, 9, true, "stored stroke check on", LATER_HX), // default: PI 148 = 0 (§3.2 factory value)
+    g(220, 9, true, "stored stroke check on", Yes), // default: PI 148 = 0 (§3.2 factory value)
     g(230, 9, false, "stored stroke check off", Yes),
     g(270, 0, false, "reference position return check", Yes),
     g(280, 0, false, "reference position return", Yes),

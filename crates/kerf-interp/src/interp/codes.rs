@@ -312,6 +312,7 @@ impl Interp {
             .map(|g| g.1)
             .unwrap_or(0);
         self.check_travel(&to, at)?;
+        self.check_stroke(&to, true, at)?;
         let m = Motion {
             to: self.work_of(&to),
             mto: to,

@@ -101,6 +101,108 @@ impl Interp {
         m
     }
 
+    /// Stored stroke check 2 (G22): the whole path from the current
+    /// position to `to` (machine coordinates) — for the HX's non-linear
+    /// rapid the dog-leg the axes really follow — must stay out of the
+    /// forbidden area.
+    pub(super) fn check_stroke(&self, to: &Pos, rapid: bool, at: u32) -> R<()> {
+        let Some(area) = self.stroke_check_area() else {
+            return Ok(());
+        };
+        let from = self.st.pos;
+        let bad = if rapid && !self.linear_rapid() {
+            let rates = [Axis::X, Axis::Y, Axis::Z]
+                .map(|a| self.profile.axis(a).map(|d| d.rapid).unwrap_or(0.0));
+            crate::stroke::dogleg(&from, to, rates)
+                .windows(2)
+                .any(|w| area.segment_enters(&w[0], &w[1]))
+        } else {
+            area.segment_enters(&from, to)
+        };
+        if bad {
+            return Err(self.stroke_alarm(&area, at));
+        }
+        Ok(())
+    }
+
+    /// The G22 area when the check is on.
+    pub(super) fn stroke_check_area(&self) -> Option<crate::stroke::Area> {
+        let area = self.st.stroke_area?;
+        let grp = self.dialect.gcode(230)?.group as usize;
+        (self.st.modal[grp] == 220).then_some(area)
+    }
+
+    pub(super) fn stroke_alarm(&self, area: &crate::stroke::Area, at: u32) -> Alarm {
+        let side = if area.outside { "leaves" } else { "enters" };
+        self.alarm(
+            AlarmKind::Overtravel,
+            at,
+            format!(
+                "stored stroke check (G22): the move {side} the forbidden area X {}…{} Y {}…{} Z {}…{} (machine)",
+                fmt_num(area.lo[0]),
+                fmt_num(area.hi[0]),
+                fmt_num(area.lo[1]),
+                fmt_num(area.hi[1]),
+                fmt_num(area.lo[2]),
+                fmt_num(area.hi[2])
+            ),
+        )
+    }
+
+    /// `G22 X_ Y_ Z_ I_ J_ K_`: the forbidden area, machine coordinates,
+    /// (X, Y, Z) the upper and (I, J, K) the lower corner; an axis given by
+    /// neither spans all. PM 3474 = 1 forbids the outside (000 §15.5.3).
+    pub(super) fn g22(&mut self, at: u32) -> R<()> {
+        let mut lo = [f64::NEG_INFINITY; 3];
+        let mut hi = [f64::INFINITY; 3];
+        let mut any = false;
+        for (i, (u, l)) in [(b'X', b'I'), (b'Y', b'J'), (b'Z', b'K')]
+            .into_iter()
+            .enumerate()
+        {
+            let ax = Axis::ALL[i];
+            if let Some(w) = self.words.get(u) {
+                hi[i] = self.axis_value(ax, w);
+                any = true;
+            }
+            if let Some(w) = self.words.get(l) {
+                lo[i] = self.linear(w);
+                any = true;
+            }
+            if lo[i] > hi[i] {
+                let w = self
+                    .words
+                    .get(l)
+                    .or(self.words.get(u))
+                    .map(|w| w.at)
+                    .unwrap_or(at);
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    w,
+                    format!(
+                        "G22: the lower corner {} is above the upper corner {} (X ≥ I, Y ≥ J, Z ≥ K)",
+                        (b'I' + i as u8) as char,
+                        (b'X' + i as u8) as char
+                    ),
+                ));
+            }
+        }
+        if !any {
+            return Ok(());
+        }
+        let area = crate::stroke::Area {
+            lo,
+            hi,
+            outside: self.profile.param("PM 3474", 0.0) == 1.0,
+        };
+        // The tool may not already be where the check forbids.
+        if area.forbids(&self.st.pos) {
+            return Err(self.stroke_alarm(&area, at));
+        }
+        self.st.stroke_area = Some(area);
+        Ok(())
+    }
+
     pub(super) fn check_travel(&self, m: &Pos, at: u32) -> R<()> {
         for ax in Axis::ALL {
             if let Some((min, max)) = self.travel[ax as usize] {
@@ -179,6 +281,7 @@ impl Interp {
     pub(super) fn move_line(&mut self, rapid: bool, tw: Pos, at: u32) -> R<()> {
         let mto = self.to_machine(&tw);
         self.check_travel(&mto, at)?;
+        self.check_stroke(&mto, rapid, at)?;
         let m = Motion {
             to: self.work_of(&mto),
             mto,
@@ -326,6 +429,20 @@ impl Interp {
         c[a1] = center.0;
         c[a2] = center.1;
         let mcenter = self.offset_to_machine(&c);
+        if let Some(area) = self.stroke_check_area() {
+            let sw = arc::sweep(s, e, center, ccw);
+            let pts = crate::stroke::arc_points(
+                &self.st.pos,
+                &mto,
+                (mcenter[a1], mcenter[a2]),
+                (a1, a2),
+                if ccw { sw } else { -sw },
+                1e-4,
+            );
+            if pts.windows(2).any(|w| area.segment_enters(&w[0], &w[1])) {
+                return Err(self.stroke_alarm(&area, at));
+            }
+        }
         let c = self.work_of(&mcenter);
         let dir = if ccw { ArcDir::Ccw } else { ArcDir::Cw };
         self.st.pos = mto;
@@ -353,6 +470,7 @@ impl Interp {
             return Ok(());
         }
         self.check_travel(&mto, at)?;
+        self.check_stroke(&mto, false, at)?;
         let feed = self.feed(at)?;
         self.st.pos = mto;
         self.emit(Canon::Feed {
@@ -429,6 +547,7 @@ impl Interp {
         let linear = self.linear_rapid();
         let rapid_to = |me: &mut Self, mto: Pos| -> R<()> {
             me.check_travel(&mto, at)?;
+            me.check_stroke(&mto, true, at)?;
             if mto != me.st.pos {
                 me.st.pos = mto;
                 let m = Motion {

@@ -1,7 +1,8 @@
 //! The HX's coordinate transform and coordinate-system codes: G15/G16
 //! polar coordinate command (000 §8.3), G50/G51 scaling and mirror image
 //! (§15.2, §15.3), G68/G69 coordinate rotation (§15.4), G52 local
-//! coordinates (§7.3) and `G10 L2 P_` work offset setting (Fanuc standard).
+//! coordinates (§7.3), `G10 L2 P_` work offset setting (Fanuc standard)
+//! and the G22 area of stored stroke check 2 (§15.5.3).
 //! The geometry lives in [`crate::xform`].
 
 use super::*;
@@ -39,6 +40,10 @@ impl Interp {
                 }
                 680 => {
                     self.g68(at)?;
+                    data = true;
+                }
+                220 => {
+                    self.g22(at)?;
                     data = true;
                 }
                 _ => {}
