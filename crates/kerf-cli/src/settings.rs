@@ -46,6 +46,7 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
                     .map_err(|_| format!("--set max_blocks={v}: expected a count"))?
             }
             _ if k.starts_with("in.") => set_input(&mut s.inputs, k, v)?,
+            _ if k.starts_with("skip") && k.contains('.') => set_skip(&mut s.skip, k, v)?,
             _ if k.starts_with("PI ")
                 || k.starts_with("PM ")
                 || k.starts_with("PI")
@@ -63,6 +64,35 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
         }
     }
     Ok(s)
+}
+
+/// `skip.AXIS=V` / `skipN.AXIS=V` (N = 1-4): where the simulated skip
+/// signal comes during G31/G37 (N: G31.N/G37.N), as the program coordinate
+/// of that axis.
+fn set_skip(skip: &mut [[Option<f64>; 6]; 5], k: &str, v: &str) -> Result<(), String> {
+    let (sig, ax) = k.split_once('.').expect("has a dot");
+    let n: usize = match &sig[4..] {
+        "" => 0,
+        d => d
+            .parse()
+            .ok()
+            .filter(|n| (1..=4).contains(n))
+            .ok_or_else(|| format!("--set {k}: skip signals are skip, skip1 … skip4"))?,
+    };
+    let slot = match ax {
+        "x" | "X" => 0,
+        "y" | "Y" => 1,
+        "z" | "Z" => 2,
+        "a" | "A" => 3,
+        "b" | "B" => 4,
+        "c" | "C" => 5,
+        _ => return Err(format!("--set {k}: expected an axis x, y, z, a, b or c")),
+    };
+    let val: f64 = v
+        .parse()
+        .map_err(|_| format!("--set {k}={v}: expected a number"))?;
+    skip[n][slot] = Some(val);
+    Ok(())
 }
 
 /// `in.N=V`: interface input signals read by macros. HX: `in.7000` …
@@ -152,5 +182,17 @@ mod tests {
         assert!(parse(&["in.7000=2".into()], &mut p).is_err());
         assert!(parse(&["in.7036=1".into()], &mut p).is_err());
         assert!(parse(&["block_skip=12".into()], &mut p).is_err());
+    }
+
+    #[test]
+    fn skip_signals() {
+        let mut p = Profile::builtin("hx-mc").unwrap();
+        let s = parse(&["skip.z=-12.5".into(), "skip3.X=40".into()], &mut p).unwrap();
+        assert_eq!(s.skip[0][2], Some(-12.5));
+        assert_eq!(s.skip[3][0], Some(40.0));
+        assert_eq!(s.skip[1], [None; 6]);
+        assert!(parse(&["skip5.z=1".into()], &mut p).is_err());
+        assert!(parse(&["skip.q=1".into()], &mut p).is_err());
+        assert!(parse(&["skip.z=deep".into()], &mut p).is_err());
     }
 }

@@ -78,6 +78,9 @@ pub enum AlarmKind {
     /// A code not allowed while coordinate rotation or scaling is in force
     /// (plane change, G27-G30, G92), or transforms in the wrong order.
     TransformConflict,
+    /// Skip (G31) or measurement (G37) move without the skip signal, or a
+    /// G37 contact outside the allowed range.
+    NoContact,
 }
 
 impl AlarmKind {
@@ -116,6 +119,7 @@ impl AlarmKind {
         AlarmKind::SubprogramEnd,
         AlarmKind::UserAlarm,
         AlarmKind::TransformConflict,
+        AlarmKind::NoContact,
     ];
 
     /// The control's code for this alarm.
@@ -155,6 +159,7 @@ impl AlarmKind {
             SubprogramEnd => ("F_82024", "KERF-0102", "KERF-0102"),
             UserAlarm => ("3000+n", "3000+n", "3000+n"),
             TransformConflict => ("F_82210", "PS144", "HU-048"),
+            NoContact => ("F_84022", "PS080", "HU-049"),
         };
         match d {
             DialectId::Hx => hx,

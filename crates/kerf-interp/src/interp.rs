@@ -22,6 +22,7 @@ mod calls;
 mod codes;
 mod flow;
 mod motion;
+mod skip;
 mod sysvars;
 mod transforms;
 
@@ -42,6 +43,12 @@ pub struct Settings {
     /// Interface input signals as four 32-bit words: HX UI000-UI031 …
     /// UI300-UI331 (#7000-#7035); Fanuc #1000-#1015 are word 0's low bits.
     pub inputs: [u32; 4],
+    /// Simulated skip signal: where the probe touches, per skip signal
+    /// (index 0 = G31/G37, 1-4 = G31.1-G31.4 / G37.1-G37.4, falling back
+    /// to index 0) and axis: the program coordinate at which contact
+    /// happens during a skip or measurement move (`--set skip.z=-12.5`,
+    /// `--set skip2.x=40`).
+    pub skip: [[Option<f64>; NAXES]; 5],
 }
 
 /// What one call of [`Interp::step`] produced.
@@ -82,6 +89,8 @@ struct State {
     local: Pos,
     /// Scaling (G51) and rotation (G68) in force.
     xf: crate::xform::Xform,
+    /// Position where the last skip signal came (program coordinates).
+    skip_pos: Option<Pos>,
     /// Stored stroke check 2 area (G22 X Y Z I J K), machine coordinates.
     stroke_area: Option<crate::stroke::Area>,
     /// G16 polar coordinate command in force.
@@ -225,6 +234,7 @@ impl Interp {
             local: [0.0; NAXES],
             xf: Default::default(),
             stroke_area: None,
+            skip_pos: None,
             polar: false,
             polar_origin: std::cell::Cell::new((0.0, 0.0)),
             tlo: [0.0; NAXES],
@@ -930,6 +940,7 @@ impl Interp {
         let mut g09 = false;
         let mut setting = false;
         let mut refret: Option<(u16, u32)> = None;
+        let mut skip: Option<(u16, u32)> = None;
         let xdata = self.transform_codes(&one_shot[..n_one])?;
         if let Some(dw) = self.words.get(b'D') {
             self.sys.d = dw.v;
@@ -949,6 +960,7 @@ impl Interp {
                 (_, 270 | 280 | 290 | 300) => refret = Some((c, at)),
                 (_, 90) => g09 = true,
                 (_, 530) => g53 = true,
+                (DialectId::Hx, 310..=314 | 370..=374) => skip = Some((c, at)),
                 _ if is_coordinate_setting(d.id, c) => {
                     setting = true;
                     self.coordinate_setting(at)?
@@ -987,6 +999,8 @@ impl Interp {
         let no_motion = dwell || setting || xdata;
         if let Some((c, at)) = refret {
             self.reference_return(c, at)?;
+        } else if let Some((c, at)) = skip {
+            self.skip_block(c, at)?;
         } else if !no_motion {
             if g53 {
                 self.g53()?;

@@ -504,6 +504,12 @@ impl Interp {
             }
             self.st.h = h.v as u32;
         }
+        self.refresh_tool_length();
+        Ok(())
+    }
+
+    /// The tool length offset vector from the G43/G44 mode and H in force.
+    pub(super) fn refresh_tool_length(&mut self) {
         let grp = self
             .dialect
             .gcode(490)
@@ -516,7 +522,6 @@ impl Interp {
         };
         self.st.tlo = [0.0; NAXES];
         self.st.tlo[Axis::Z as usize] = sign * self.h_table[self.st.h as usize];
-        Ok(())
     }
 
     /// The machine position of reference point `n` (1-4) for an axis.

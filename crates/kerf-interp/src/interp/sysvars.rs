@@ -239,8 +239,13 @@ impl Interp {
             HNum => self.st.h as f64,
             Machine(k) => return Ok(self.axis_value_of(k, &self.st.pos)),
             Work(k) => return Ok(self.axis_value_of(k, &self.work_position())),
-            Programmed(k) | Skip(k) => {
-                return Ok(self.axis_value_of(k, &self.programmed_position()))
+            Programmed(k) => return Ok(self.axis_value_of(k, &self.programmed_position())),
+            Skip(k) => {
+                let p = self
+                    .st
+                    .skip_pos
+                    .unwrap_or_else(|| self.programmed_position());
+                return Ok(self.axis_value_of(k, &p));
             }
             Modal(g) => self.st.modal.get(g).copied().unwrap_or(0) as f64 / 10.0,
             InBit(w, b) => bit(&self.sys.inputs, w, b),
