@@ -221,6 +221,9 @@ pub enum ModeChange {
     TappingMode,
     /// G10.3 (true) / G11.3 (false) high-speed machining mode.
     HighSpeed(bool),
+    /// HX G63.1 (true) / G63.2 (false) stitch function mode (000 §15.6;
+    /// its stroke feeds and times are PM 7308-7357, for the planner).
+    Stitch(bool),
 }
 
 /// A canonical command with the source position of the block that made it.

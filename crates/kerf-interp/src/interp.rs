@@ -1171,6 +1171,8 @@ impl Interp {
             640 => ModeChange::CuttingMode,
             103 => ModeChange::HighSpeed(true),
             113 => ModeChange::HighSpeed(false),
+            631 if self.dialect.id == DialectId::Hx => ModeChange::Stitch(true),
+            632 if self.dialect.id == DialectId::Hx => ModeChange::Stitch(false),
             _ => return,
         };
         self.emit(Canon::Mode(m));

@@ -392,3 +392,47 @@ fn stroke_check_alarms_at_setup_inside_the_area() {
     let r = run_on("hx-mc", "G22 X-200. I-100.\n");
     assert_eq!(alarm(&r), ("F_82007", 1, 12));
 }
+
+/// 000 §4.8: `G33 Z0. F5.` from Z100 with the spindle on: one threading
+/// move, lead 5 mm/rev; without the spindle it alarms.
+#[test]
+fn g33_thread_on_the_mill() {
+    let r = run_on(
+        "hx-mc",
+        "G90 G54 G00 X0. Y0. Z0.\nZ100.\nS300 M03\nG33 Z0. F5.\nM30\n",
+    );
+    ok(&r);
+    let t: Vec<_> = r
+        .events
+        .iter()
+        .filter_map(|e| match &e.cmd {
+            Canon::Thread { m, lead } => Some((round(m.to[2]), *lead)),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(t, vec![(0.0, 5.0)]);
+    let r = run_on("hx-mc", "G90 G00 X0. Y0. Z100.\nG33 Z0. F5.\n");
+    assert_eq!(alarm(&r), ("F_84020", 2, 1));
+}
+
+/// G63.1/G63.2 (000 §15.6) reach the canon stream as mode changes.
+#[test]
+fn stitch_mode_is_recorded() {
+    let r = run_on("hx-mc", "G63.1\nG01 X1. F100\nG63.2\n");
+    ok(&r);
+    let modes: Vec<_> = r
+        .events
+        .iter()
+        .filter_map(|e| match e.cmd {
+            Canon::Mode(m) => Some(m),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(
+        modes,
+        vec![
+            kerf_canon::ModeChange::Stitch(true),
+            kerf_canon::ModeChange::Stitch(false)
+        ]
+    );
+}

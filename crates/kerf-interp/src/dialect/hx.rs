@@ -46,7 +46,7 @@ pub static GCODES: &[GCode] = &[
     g(312, 0, false, "multi-step skip function 2", Yes),
     g(313, 0, false, "multi-step skip function 3", Yes),
     g(314, 0, false, "multi-step skip function 4", Yes),
-    g(330, 1, false, "constant lead thread cutting", LATER_HX),
+    g(330, 1, false, "constant lead thread cutting", Yes),
     g(370, 0, false, "automatic tool length measurement", Yes),
     g(371, 0, false, "automatic tool length measurement 1", Yes),
     g(372, 0, false, "automatic tool length measurement 2", Yes),
@@ -78,8 +78,8 @@ pub static GCODES: &[GCode] = &[
     g(620, 15, false, "automatic corner override mode", Yes),
     g(630, 15, false, "tapping mode", Yes),
     g(640, 15, true, "cutting mode", Yes),
-    g(631, 24, false, "stitch function mode on", LATER_HX), // §15.6; group is kerf's
-    g(632, 24, true, "stitch function mode off", LATER_HX),
+    g(631, 24, false, "stitch function mode on", Yes), // §15.6; group is kerf's
+    g(632, 24, true, "stitch function mode off", Yes),
     g(650, 0, false, "macro call", Yes),
     g(660, 12, false, "macro modal call", Yes),
     g(670, 12, true, "macro modal call cancel", Yes),

@@ -231,7 +231,7 @@ impl Interp {
         self.words
             .gs()
             .iter()
-            .find(|g| matches!(g.0, 0 | 10 | 20 | 30))
+            .find(|g| matches!(g.0, 0 | 10 | 20 | 30 | 330))
             .map(|g| g.1)
             .unwrap_or(0)
     }
@@ -258,6 +258,7 @@ impl Interp {
         let at = self.motion_at();
         match mode {
             0 | 10 if any => self.move_line(mode == 0, tw, at)?,
+            330 if any && self.dialect.id == DialectId::Hx => self.thread_line(tw, at)?,
             20 | 30 => self.arc(tw, any, mode == 30, at)?,
             _ => {}
         }
@@ -457,6 +458,33 @@ impl Interp {
             plane,
             turns: 0,
             feed,
+        });
+        Ok(())
+    }
+
+    /// G33 on the HX (000 §4.8): a straight move synchronised with the
+    /// spindle, F = lead (mm/rev, modal with the other feeds).
+    fn thread_line(&mut self, tw: Pos, at: u32) -> R<()> {
+        let Some(lead) = self.st.feed.filter(|f| *f > 0.0) else {
+            return Err(self.alarm(AlarmKind::NoFeed, at, "G33 without a thread lead (F)"));
+        };
+        if self.st.spindle == SpindleDir::Stop {
+            return Err(self.alarm(
+                AlarmKind::NoFeed,
+                at,
+                "G33 with the spindle stopped: the threading move would wait forever",
+            ));
+        }
+        let mto = self.to_machine(&tw);
+        self.check_travel(&mto, at)?;
+        self.check_stroke(&mto, false, at)?;
+        self.st.pos = mto;
+        self.emit(Canon::Thread {
+            m: Motion {
+                to: self.work_of(&mto),
+                mto,
+            },
+            lead,
         });
         Ok(())
     }
