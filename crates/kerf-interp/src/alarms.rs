@@ -75,6 +75,10 @@ pub enum AlarmKind {
     SubprogramEnd,
     /// `#3000 = n (MESSAGE)`: the program's own alarm; the code is 3000+n.
     UserAlarm,
+    /// Canned cycle or G60 used in a way the control forbids (plane change
+    /// in cycle mode, G87 with G99, a cycle and a group-01 code in one
+    /// block, G60 with an interpolation code).
+    CannedCycle,
 }
 
 impl AlarmKind {
@@ -112,6 +116,7 @@ impl AlarmKind {
         AlarmKind::CallNesting,
         AlarmKind::SubprogramEnd,
         AlarmKind::UserAlarm,
+        AlarmKind::CannedCycle,
     ];
 
     /// The control's code for this alarm.
@@ -150,6 +155,7 @@ impl AlarmKind {
             CallNesting => ("F_82023", "PS077", "HU-047"),
             SubprogramEnd => ("F_82024", "KERF-0102", "KERF-0102"),
             UserAlarm => ("3000+n", "3000+n", "3000+n"),
+            CannedCycle => ("KERF-0103", "KERF-0103", "KERF-0103"),
         };
         match d {
             DialectId::Hx => hx,

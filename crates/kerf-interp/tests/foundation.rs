@@ -501,8 +501,8 @@ fn goto_loops_end_quickly_in_the_loop_guard() {
 fn remaining_alarm_kinds_are_positioned() {
     // Expression missing its right operand: the ']' at column 9.
     assert_eq!(alarm(&run_on("hx-mc", "G00 X[1+]\n")), ("F_82005", 1, 9));
-    // A canned cycle (issue 4) is recognised and refused by name.
-    let r = run_on("hx-mc", "G90 G00 X0 Y0 Z0\nG81 X1. Y1. Z-1. R1. F100.\n");
+    // Coordinate rotation (issue 4) is recognised and refused by name.
+    let r = run_on("hx-mc", "G90 G00 X0 Y0 Z0\nG68 X0 Y0 R45.\n");
     assert_eq!(alarm(&r), ("KERF-0100", 2, 1));
     assert!(r.alarm.unwrap().message.contains("issue 4"));
     // G29 with no G28/G30 intermediate point stored.

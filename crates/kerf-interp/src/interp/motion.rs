@@ -101,11 +101,7 @@ impl Interp {
         let (tw, any) = self.target()?;
         let at = self.motion_at();
         match mode {
-            0 | 10 => {
-                if any {
-                    self.move_line(mode == 0, tw, at)?;
-                }
-            }
+            0 | 10 if any => self.move_line(mode == 0, tw, at)?,
             20 | 30 => self.arc(tw, any, mode == 30, at)?,
             _ => {}
         }
@@ -114,7 +110,6 @@ impl Interp {
 
     /// Current position in the program's coordinates: the point the next
     /// incremental word adds to (before polar, scaling and rotation).
-    #[allow(dead_code)] // used by canned cycles and transforms (issue 4)
     pub(super) fn prog_pos(&self) -> Pos {
         self.programmed_position()
     }
