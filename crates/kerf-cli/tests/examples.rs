@@ -6,7 +6,8 @@
 //! switches). An expectation file holds:
 //!
 //! ```toml
-//! machine = "hx-mc"          # passed as --machine
+//! machine = "hx-mc"          # passed as --machine; a NAME.toml is a
+//!                            # profile file in the program's folder
 //! status = "completed"       # or "alarm" (exit status 0 / 1)
 //! alarm_line = 7             # optional, with status = "alarm"
 //! set = ["block_skip=1"]     # optional, each passed as --set
@@ -173,9 +174,15 @@ fn run_case(prog: &Path, expect: &Path, variant: &str) -> Vec<String> {
         .and_then(|v| v.as_array())
         .unwrap_or(&empty);
 
+    // A profile file named by the expectation lives beside the program.
+    let machine_arg = if machine.ends_with(".toml") {
+        prog.with_file_name(machine).into_os_string()
+    } else {
+        machine.into()
+    };
     let tmp = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
         "examples-{}-{}{}.jsonl",
-        machine,
+        machine.trim_end_matches(".toml"),
         prog.file_stem().unwrap().to_string_lossy(),
         if variant.is_empty() {
             String::new()
@@ -188,7 +195,7 @@ fn run_case(prog: &Path, expect: &Path, variant: &str) -> Vec<String> {
     cmd.arg("run")
         .arg(prog)
         .arg("--machine")
-        .arg(machine)
+        .arg(&machine_arg)
         .arg("--toolpath")
         .arg(&tmp);
     for s in &sets {

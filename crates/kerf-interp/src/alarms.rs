@@ -81,6 +81,10 @@ pub enum AlarmKind {
     /// Skip (G31) or measurement (G37) move without the skip signal, or a
     /// G37 contact outside the allowed range.
     NoContact,
+    /// Canned cycle or G60 used in a way the control forbids (plane change
+    /// in cycle mode, G87 with G99, a cycle and a group-01 code in one
+    /// block, G60 with an interpolation code).
+    CannedCycle,
 }
 
 impl AlarmKind {
@@ -120,6 +124,7 @@ impl AlarmKind {
         AlarmKind::UserAlarm,
         AlarmKind::TransformConflict,
         AlarmKind::NoContact,
+        AlarmKind::CannedCycle,
     ];
 
     /// The control's code for this alarm.
@@ -160,6 +165,7 @@ impl AlarmKind {
             UserAlarm => ("3000+n", "3000+n", "3000+n"),
             TransformConflict => ("F_82210", "PS144", "HU-048"),
             NoContact => ("F_84022", "PS080", "HU-049"),
+            CannedCycle => ("KERF-0103", "KERF-0103", "KERF-0103"),
         };
         match d {
             DialectId::Hx => hx,

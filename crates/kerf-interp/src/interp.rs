@@ -20,6 +20,7 @@ use crate::words::{WVal, Words, MAX_CODES};
 
 mod calls;
 mod codes;
+mod cycles;
 mod flow;
 mod motion;
 mod skip;
@@ -192,6 +193,8 @@ pub struct Interp {
     sys: Box<sysvars::SysState>,
     /// Calls by G/M/T code (HX PI 85-105); None when not set up.
     code_calls: Option<Box<calls::CodeCalls>>,
+    /// Canned cycle data and parameters (HX).
+    cyc: cycles::CycleData,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -320,6 +323,8 @@ impl Interp {
             None
         };
         let settings_sb = settings.single_block;
+        let mut cyc = cycles::CycleData::default();
+        cyc.params = cycles::CycleParams::from_profile(&profile);
         Interp {
             profile,
             dialect,
@@ -358,6 +363,7 @@ impl Interp {
             calls: calls::Calls::default(),
             sys: Box::new(sysvars::SysState::new(settings_inputs, settings_sb)),
             code_calls,
+            cyc,
         }
     }
 
@@ -918,6 +924,8 @@ impl Interp {
         if hurco {
             self.run_m(|m| (100..=199).contains(&m.0) && m.1 != MWhen::After)?;
         }
+        let hx = d.id == DialectId::Hx;
+        let was_cycle = hx && self.st.modal[cycles::CYCLE_GROUP] != 800;
         // Modal (and specific) G codes.
         for i in 0..self.words.ng {
             let (c, _) = self.words.g[i];
@@ -934,10 +942,12 @@ impl Interp {
         if let Some((c, _)) = motion {
             self.st.modal[1] = c;
         }
+        let cycle = hx && self.cycle_mode(was_cycle, motion)?;
         // Coordinate-setting one-shots (G92 / G50 / G59) act before motion.
         let mut g53 = false;
         let mut dwell = false;
         let mut g09 = false;
+        let mut g60: Option<u32> = None;
         let mut setting = false;
         let mut refret: Option<(u16, u32)> = None;
         let mut skip: Option<(u16, u32)> = None;
@@ -959,6 +969,7 @@ impl Interp {
                 (_, 40) => dwell = true,
                 (_, 270 | 280 | 290 | 300) => refret = Some((c, at)),
                 (_, 90) => g09 = true,
+                (DialectId::Hx, 600) => g60 = Some(at),
                 (_, 530) => g53 = true,
                 (DialectId::Hx, 310..=314 | 370..=374) => skip = Some((c, at)),
                 _ if is_coordinate_setting(d.id, c) => {
@@ -1004,6 +1015,10 @@ impl Interp {
         } else if !no_motion {
             if g53 {
                 self.g53()?;
+            } else if cycle {
+                self.canned_cycle(!was_cycle, g60.is_some())?;
+            } else if let Some(at) = g60 {
+                self.g60(at)?;
             } else {
                 self.motion()?;
             }

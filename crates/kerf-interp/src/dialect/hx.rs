@@ -9,7 +9,7 @@ use super::MWhen::*;
 use super::Support::*;
 use super::*;
 
-const LATER_HX: Support = Later("HX coordinate systems, transforms and canned cycles (issue 4)");
+const LATER_HX: Support = Later("HX coordinate systems and transforms (issue 4)");
 const LATER_COMP: Support = Later("tool compensation (issue 5)");
 
 /// G codes of 000 §3.1. Group numbers are the ones the table prints (they
@@ -73,7 +73,7 @@ pub static GCODES: &[GCode] = &[
     g(570, 14, false, "work coordinate 4 selection", Yes),
     g(580, 14, false, "work coordinate 5 selection", Yes),
     g(590, 14, false, "work coordinate 6 selection", Yes),
-    g(600, 0, false, "single direction positioning", LATER_HX),
+    g(600, 0, false, "single direction positioning", Yes),
     g(610, 15, false, "exact stop mode", Yes),
     g(620, 15, false, "automatic corner override mode", Yes),
     g(630, 15, false, "tapping mode", Yes),
@@ -85,21 +85,21 @@ pub static GCODES: &[GCode] = &[
     g(670, 12, true, "macro modal call cancel", Yes),
     g(680, 18, false, "coordinate system rotation", Yes),
     g(690, 18, true, "coordinate system rotation cancel", Yes), // default: PI 150 = 0
-    g(730, 10, false, "high speed peck drilling cycle", LATER_HX),
-    g(740, 10, false, "counter tapping cycle", LATER_HX),
-    g(760, 10, false, "fine boring cycle", LATER_HX),
+    g(730, 10, false, "high speed peck drilling cycle", Yes),
+    g(740, 10, false, "counter tapping cycle", Yes),
+    g(760, 10, false, "fine boring cycle", Yes),
     g(800, 10, true, "canned cycle cancel", Yes),
-    g(810, 10, false, "drilling cycle, spot drilling cycle", LATER_HX),
-    g(820, 10, false, "drilling dwell cycle, counter boring cycle", LATER_HX),
-    g(830, 10, false, "peck drilling cycle", LATER_HX),
-    g(840, 10, false, "tapping cycle", LATER_HX),
-    g(842, 10, false, "rigid tap cycle", LATER_HX),
-    g(843, 10, false, "rigid counter tap cycle", LATER_HX),
-    g(850, 10, false, "boring cycle", LATER_HX),
-    g(860, 10, false, "boring stop cycle", LATER_HX),
-    g(870, 10, false, "back boring cycle", LATER_HX),
-    g(880, 10, false, "manual boring cycle", LATER_HX),
-    g(890, 10, false, "boring dwell cycle", LATER_HX),
+    g(810, 10, false, "drilling cycle, spot drilling cycle", Yes),
+    g(820, 10, false, "drilling dwell cycle, counter boring cycle", Yes),
+    g(830, 10, false, "peck drilling cycle", Yes),
+    g(840, 10, false, "tapping cycle", Yes),
+    g(842, 10, false, "rigid tap cycle", Yes),
+    g(843, 10, false, "rigid counter tap cycle", Yes),
+    g(850, 10, false, "boring cycle", Yes),
+    g(860, 10, false, "boring stop cycle", Yes),
+    g(870, 10, false, "back boring cycle", Yes),
+    g(880, 10, false, "manual boring cycle", Yes),
+    g(890, 10, false, "boring dwell cycle", Yes),
     g(900, 3, true, "absolute command", Yes), // default: PI 146 = 0
     g(910, 3, false, "incremental command", Yes),
     g(920, 0, false, "work coordinate setting, maximum spindle speed", Yes),

@@ -1,0 +1,608 @@
+//! Milling canned cycles G73, G74, G76, G80-G89, G84.2/G84.3 (HX, 000
+//! chapter 12) and G60 single-direction positioning (000 §4.2).
+//!
+//! A hole is the six actions of 000 §12.1.1: (1) positioning in the plane
+//! (rapid, G60 if given), (2) rapid to the R level, (3) the hole operation,
+//! (4) the action at the bottom, (5) return to R, (6) rapid to the initial
+//! level (G98). Every move goes through [`Interp::move_line`] in program
+//! coordinates, so the coordinate transforms apply to cycles unchanged.
+//! The decisions where 000 is unreadable are in docs/dialects.md.
+
+use super::*;
+
+/// Modal group of the canned cycles on the HX (000 §3.1).
+pub(super) const CYCLE_GROUP: usize = 10;
+/// Modal group of G98/G99 on the HX (000 §3.1).
+const RETURN_GROUP: usize = 19;
+/// Most moves one canned-cycle block may queue (K repeats × pecks); more
+/// is an alarm rather than an unbounded queue.
+const MAX_CYCLE_MOVES: f64 = 100_000.0;
+/// The orientation M code emitted for an oriented spindle stop (G76/G87).
+const ORIENT_M: u32 = 19;
+
+/// Profile parameters the cycles read, fetched once at start.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct CycleParams {
+    /// PI 129: G73 retract amount / G83 clearance d (mm).
+    d: f64,
+    /// PI 70 / PI 71: shift direction bits of G76/G87.
+    shift_bits: (bool, bool),
+    /// PI 61-66: G60 overrun per axis slot X Y Z A B C (mm; sign =
+    /// approach direction).
+    overrun: [f64; NAXES],
+}
+
+impl CycleParams {
+    /// Reads PI 129, PI 70/71 and PI 61-66 from the profile.
+    pub(super) fn from_profile(p: &Profile) -> CycleParams {
+        let mut overrun = [0.0; NAXES];
+        for (i, o) in overrun.iter_mut().enumerate() {
+            *o = p.param(&format!("PI {}", 61 + i), 0.0);
+        }
+        CycleParams {
+            d: p.param("PI 129", 0.1).abs(),
+            shift_bits: (p.param("PI 70", 0.0) != 0.0, p.param("PI 71", 0.0) != 0.0),
+            overrun,
+        }
+    }
+}
+
+/// The modal data of the canned cycles, kept while the cycle mode lasts
+/// and cleared by G80 or a group-01 code. Levels are drilling-axis
+/// positions in program coordinates.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct CycleData {
+    /// Parameters (not cleared).
+    pub(super) params: CycleParams,
+    /// Drilling-axis position when the cycle mode was entered.
+    initial: Option<f64>,
+    /// R level.
+    r: Option<f64>,
+    /// Hole bottom.
+    z: Option<f64>,
+    /// Q in mm (peck depth of G73/G83, shift of G76/G87).
+    q: Option<f64>,
+    /// Dwell P in seconds.
+    p: Option<f64>,
+    /// G76/G87 shift given as I/J (first and second plane axis), mm.
+    ij: Option<(f64, f64)>,
+}
+
+impl CycleData {
+    /// Forgets the hole data (G80, group-01 code), keeping the parameters.
+    pub(super) fn clear(&mut self) {
+        *self = CycleData {
+            params: self.params,
+            ..CycleData::default()
+        };
+    }
+}
+
+/// The hole data of one cycle block, resolved.
+#[derive(Clone, Copy)]
+struct Hole {
+    code: u16,
+    /// Drilling-axis index.
+    n: usize,
+    initial: f64,
+    r: f64,
+    z: f64,
+    /// Return level (initial in G98, R in G99).
+    ret: f64,
+    q: f64,
+    dwell: f64,
+    /// Shift vector (full position offset, drilling axis 0).
+    shift: Pos,
+    at: u32,
+}
+
+impl Interp {
+    /// Block-level bookkeeping of the cycle mode, after the block's modal
+    /// codes are set: a group-01 code cancels it, G80 clears the data, a
+    /// plane change inside the mode is an alarm. True if the block runs
+    /// in cycle mode.
+    pub(super) fn cycle_mode(&mut self, was_cycle: bool, motion: Option<(u16, u32)>) -> R<bool> {
+        let cyc_code = self.words.gs().iter().copied().find(|g| {
+            self.gcode(g.0)
+                .is_some_and(|c| c.group as usize == CYCLE_GROUP)
+        });
+        if let Some((m, m_at)) = motion {
+            if let Some((c, _)) = cyc_code.filter(|c| c.0 != 800) {
+                return Err(self.alarm(
+                    AlarmKind::CannedCycle,
+                    m_at,
+                    format!(
+                        "G{} and the canned cycle G{} in one block",
+                        fmt_code(m),
+                        fmt_code(c)
+                    ),
+                ));
+            }
+            self.st.modal[CYCLE_GROUP] = 800;
+        }
+        if self.st.modal[CYCLE_GROUP] == 800 {
+            if was_cycle {
+                self.cyc.clear();
+            }
+            return Ok(false);
+        }
+        if was_cycle {
+            if let Some(&(c, at)) = self
+                .words
+                .gs()
+                .iter()
+                .find(|g| matches!(g.0, 170 | 180 | 190))
+            {
+                return Err(self.alarm(
+                    AlarmKind::CannedCycle,
+                    at,
+                    format!(
+                        "G{} changes the plane in canned cycle mode (cancel with G80 first)",
+                        fmt_code(c)
+                    ),
+                ));
+            }
+        }
+        Ok(true)
+    }
+
+    /// Executes a block in canned cycle mode: stores the cycle data and,
+    /// if the block names a position, R or the depth, drills K holes.
+    pub(super) fn canned_cycle(&mut self, entered: bool, g60: bool) -> R<()> {
+        let code = self.st.modal[CYCLE_GROUP];
+        let at = self
+            .words
+            .gs()
+            .iter()
+            .find(|g| g.0 == code)
+            .map(|g| g.1)
+            .unwrap_or(0);
+        let (a1, a2, n) = self.st.plane.axes();
+        let drill_ax = Axis::ALL[n];
+        if !self.has_axis[n] {
+            return Err(self.alarm(
+                AlarmKind::CannedCycle,
+                at,
+                format!(
+                    "the drilling axis of this plane ({}) is not on the machine",
+                    drill_ax.name().to_uppercase()
+                ),
+            ));
+        }
+        let cur = self.prog_pos();
+        if entered || self.cyc.initial.is_none() {
+            self.cyc.initial = Some(cur[n]);
+        }
+        // An M98/M99 block is a call or return: its P (and HX Q/R sequence
+        // numbers) are not cycle data, and it drills nothing.
+        let transfer = self.words.ms().iter().any(|&(m, _)| {
+            matches!(
+                self.mcode(m).map(|c| c.action),
+                Some(MAction::SubCall | MAction::SubReturn)
+            )
+        });
+        if transfer {
+            return Ok(());
+        }
+        let initial = self.cyc.initial.unwrap_or(cur[n]);
+        let abs = self.st.absolute;
+        // Data words: R, the depth (the drilling axis's address), Q, P, I/J.
+        if let Some(w) = self.words.get(b'R') {
+            let v = self.linear(w);
+            self.cyc.r = Some(if abs { v } else { initial + v });
+        }
+        let dl = ax_letter(drill_ax);
+        if let Some(w) = self.words.get(dl) {
+            let v = self.axis_value(drill_ax, w);
+            self.cyc.z =
+                Some(if abs {
+                    v
+                } else {
+                    match self.cyc.r {
+                        Some(r) => r + v,
+                        None => return Err(self.alarm(
+                            AlarmKind::MissingArgument,
+                            w.at,
+                            "canned cycle in G91: the depth is measured from R, and no R is given",
+                        )),
+                    }
+                });
+        }
+        if let Some(w) = self.words.get(b'Q') {
+            let v = self.linear(w);
+            if v <= 0.0 {
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    w.at,
+                    format!("canned cycle Q must be positive (Q{})", fmt_num(w.v)),
+                ));
+            }
+            self.cyc.q = Some(v);
+        }
+        if let Some(w) = self.words.get(b'P') {
+            if w.point || w.v < 0.0 {
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    w.at,
+                    "canned cycle dwell P is in milliseconds, positive, without a decimal point",
+                ));
+            }
+            self.cyc.p = Some(w.v / 1000.0);
+        }
+        if matches!(code, 760 | 870) {
+            let (l1, l2) = (b"IJK"[a1], b"IJK"[a2]);
+            let (w1, w2) = (self.words.get(l1), self.words.get(l2));
+            if w1.is_some() || w2.is_some() {
+                let v = |me: &Self, w: Option<WVal>| w.map(|w| me.linear(w)).unwrap_or(0.0);
+                self.cyc.ij = Some((v(self, w1), v(self, w2)));
+            }
+        }
+        let count = match self.words.get(b'K') {
+            None => 1,
+            Some(k) if k.v >= 0.0 && k.v <= 9999.0 && k.v.fract() == 0.0 => k.v as u32,
+            Some(k) => {
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    k.at,
+                    format!("canned cycle repeat count K{} is not 0-9999", fmt_num(k.v)),
+                ))
+            }
+        };
+        // A block without a position, R or depth only stores the data.
+        if count == 0 || !(self.has_axis_word() || self.words.has(b'R')) {
+            return Ok(());
+        }
+        let hole = self.resolve_hole(code, n, initial, at)?;
+        let (t, _) = self.target()?;
+        let mut step = [0.0; NAXES];
+        if !abs {
+            for i in 0..NAXES {
+                step[i] = t[i] - cur[i];
+            }
+        }
+        for k in 0..count {
+            let mut p = self.prog_pos();
+            for i in 0..NAXES {
+                if i != n {
+                    p[i] = if abs {
+                        t[i]
+                    } else {
+                        cur[i] + step[i] * f64::from(k + 1)
+                    };
+                }
+            }
+            self.position(p, g60, Some(n), at)?;
+            self.hole(&hole)?;
+        }
+        Ok(())
+    }
+
+    /// Checks the stored data for one cycle and resolves the levels.
+    fn resolve_hole(&self, code: u16, n: usize, initial: f64, at: u32) -> R<Hole> {
+        let name = format!("G{}", fmt_code(code));
+        let Some(z) = self.cyc.z else {
+            return Err(self.alarm(
+                AlarmKind::MissingArgument,
+                at,
+                format!(
+                    "{name}: no hole depth ({}) given",
+                    ax_letter(Axis::ALL[n]) as char
+                ),
+            ));
+        };
+        let Some(r) = self.cyc.r else {
+            return Err(self.alarm(
+                AlarmKind::MissingArgument,
+                at,
+                format!("{name}: no R level given"),
+            ));
+        };
+        let peck = matches!(code, 730 | 830);
+        let q = match self.cyc.q {
+            Some(q) => q,
+            None if peck => {
+                return Err(self.alarm(
+                    AlarmKind::MissingArgument,
+                    at,
+                    format!("{name}: no peck depth Q given"),
+                ))
+            }
+            None => 0.0,
+        };
+        let g99 = self.st.modal[RETURN_GROUP] == 990;
+        if code == 870 && g99 {
+            return Err(self.alarm(
+                AlarmKind::CannedCycle,
+                at,
+                "G87 back boring returns to the initial level only: G99 is not allowed",
+            ));
+        }
+        // Bound the moves this block queues.
+        let pecks = if peck {
+            ((z - r).abs() / q).ceil()
+        } else {
+            1.0
+        };
+        let k = self.words.get(b'K').map(|k| k.v).unwrap_or(1.0).max(1.0);
+        if k * (3.0 * pecks + 8.0) > MAX_CYCLE_MOVES {
+            return Err(self.alarm(
+                AlarmKind::OutOfRange,
+                at,
+                format!(
+                    "{name}: {} holes of {} pecks would make more than {} moves in one block",
+                    k, pecks, MAX_CYCLE_MOVES
+                ),
+            ));
+        }
+        let mut shift = [0.0; NAXES];
+        if matches!(code, 760 | 870) {
+            let (a1, a2, _) = self.st.plane.axes();
+            match self.cyc.ij {
+                Some((i, j)) => {
+                    shift[a1] = i;
+                    shift[a2] = j;
+                }
+                None => {
+                    // PI 70 / PI 71 as Fanuc's RD1 / RD2: 00 +first axis,
+                    // 01 (PI 70 = 1) -first, 10 (PI 71 = 1) +second, 11 -second.
+                    let (rd1, rd2) = self.cyc.params.shift_bits;
+                    let sign = if rd1 { -1.0 } else { 1.0 };
+                    shift[if rd2 { a2 } else { a1 }] = sign * q;
+                }
+            }
+        }
+        Ok(Hole {
+            code,
+            n,
+            initial,
+            r,
+            z,
+            ret: if g99 { r } else { initial },
+            q,
+            dwell: self.cyc.p.unwrap_or(0.0),
+            shift,
+            at,
+        })
+    }
+
+    /// A straight move to `p` (program coordinates) unless already there.
+    fn go(&mut self, rapid: bool, p: Pos, at: u32) -> R<()> {
+        let cur = self.prog_pos();
+        if (0..NAXES).all(|i| (p[i] - cur[i]).abs() < 1e-9) {
+            return Ok(());
+        }
+        self.move_line(rapid, p, at)
+    }
+
+    /// Moves the drilling axis alone to level `v`.
+    fn level(&mut self, rapid: bool, n: usize, v: f64, at: u32) -> R<()> {
+        let mut p = self.prog_pos();
+        p[n] = v;
+        self.go(rapid, p, at)
+    }
+
+    /// Moves by the shift vector `s` (sign +1 out, -1 back) at rapid.
+    fn shift(&mut self, s: &Pos, sign: f64, at: u32) -> R<()> {
+        let mut p = self.prog_pos();
+        for i in 0..NAXES {
+            p[i] += sign * s[i];
+        }
+        self.go(true, p, at)
+    }
+
+    /// Rapid positioning to `p`; with G60 through the overrun point of
+    /// each moving axis (all but `skip`, the drilling axis in a cycle).
+    fn position(&mut self, p: Pos, g60: bool, skip: Option<usize>, at: u32) -> R<()> {
+        if g60 {
+            let cur = self.prog_pos();
+            let mut mid = p;
+            let mut any = false;
+            for i in 0..NAXES {
+                let o = self.cyc.params.overrun[i];
+                if Some(i) != skip && (p[i] - cur[i]).abs() > 1e-9 && o != 0.0 {
+                    // Sign = approach direction: stop short (or beyond) by
+                    // the overrun, then approach in that direction.
+                    mid[i] = p[i] - o;
+                    any = true;
+                }
+            }
+            if any {
+                self.go(true, mid, at)?;
+            }
+        }
+        self.go(true, p, at)
+    }
+
+    /// G60 as a positioning block (000 §4.2): a one-shot rapid through the
+    /// overrun point of every moving axis.
+    pub(super) fn g60(&mut self, at: u32) -> R<()> {
+        if let Some(&(c, c_at)) = self.words.gs().iter().find(|g| matches!(g.0, 10 | 20 | 30)) {
+            return Err(self.alarm(
+                AlarmKind::CannedCycle,
+                c_at,
+                format!(
+                    "G60 is a positioning command (with G00 or G81-G89); G{} is not allowed with it",
+                    fmt_code(c)
+                ),
+            ));
+        }
+        let (t, any) = self.target()?;
+        if any {
+            self.position(t, true, None, at)?;
+        }
+        Ok(())
+    }
+
+    fn dwell_secs(&mut self, s: f64) {
+        if s > 0.0 {
+            self.emit(Canon::Dwell {
+                seconds: s,
+                revolutions: 0.0,
+            });
+        }
+    }
+
+    /// Switches the spindle as a cycle does (reversal, stop, restart).
+    fn cycle_spindle(&mut self, dir: SpindleDir) {
+        self.st.spindle = dir;
+        let rpm = if dir == SpindleDir::Stop {
+            0.0
+        } else {
+            self.rpm()
+        };
+        self.st.last_rpm = rpm;
+        let css = (self.st.css && dir != SpindleDir::Stop)
+            .then_some(self.st.s * if self.st.metric { 1.0 } else { 0.3048 });
+        self.emit(Canon::Spindle { dir, rpm, css });
+    }
+
+    /// Oriented spindle stop: emitted as M19 "spindle orientation".
+    fn orient(&mut self) {
+        self.st.spindle = SpindleDir::Stop;
+        self.st.last_rpm = 0.0;
+        let name = self
+            .mcode(ORIENT_M)
+            .map(|m| m.name)
+            .unwrap_or("spindle orientation");
+        self.emit(Canon::Aux { m: ORIENT_M, name });
+    }
+
+    /// The cutting mode of group 15 in force, re-emitted after tapping.
+    fn restore_cut_mode(&mut self) {
+        let grp = self.gcode(640).map(|g| g.group as usize).unwrap_or(15);
+        let m = match self.st.modal[grp] {
+            610 => ModeChange::ExactStopMode(true),
+            620 => ModeChange::CornerOverride,
+            630 => return,
+            _ => ModeChange::CuttingMode,
+        };
+        self.emit(Canon::Mode(m));
+    }
+
+    /// Actions 2-6 of one hole, after the positioning in the plane.
+    fn hole(&mut self, h: &Hole) -> R<()> {
+        let (n, at) = (h.n, h.at);
+        let dir0 = self.st.spindle;
+        let restart = if dir0 == SpindleDir::Stop {
+            SpindleDir::Cw
+        } else {
+            dir0
+        };
+        if h.code == 870 {
+            return self.back_boring(h, restart);
+        }
+        // Action 2: rapid to R.
+        self.level(true, n, h.r, at)?;
+        match h.code {
+            810 | 820 => {
+                self.level(false, n, h.z, at)?;
+                if h.code == 820 {
+                    self.dwell_secs(h.dwell);
+                }
+                self.level(true, n, h.ret, at)?;
+            }
+            730 | 830 => {
+                self.peck(h)?;
+                self.level(true, n, h.ret, at)?;
+            }
+            840 | 740 | 842 | 843 => {
+                let (inward, outward) = if matches!(h.code, 840 | 842) {
+                    (SpindleDir::Cw, SpindleDir::Ccw)
+                } else {
+                    (SpindleDir::Ccw, SpindleDir::Cw)
+                };
+                self.emit(Canon::Mode(ModeChange::TappingMode));
+                self.level(false, n, h.z, at)?;
+                self.dwell_secs(h.dwell);
+                self.cycle_spindle(outward);
+                self.level(false, n, h.r, at)?;
+                self.dwell_secs(h.dwell);
+                self.cycle_spindle(inward);
+                self.restore_cut_mode();
+                self.level(true, n, h.ret, at)?;
+            }
+            850 | 890 => {
+                self.level(false, n, h.z, at)?;
+                if h.code == 890 {
+                    self.dwell_secs(h.dwell);
+                }
+                self.level(false, n, h.r, at)?;
+                self.level(true, n, h.ret, at)?;
+            }
+            860 => {
+                self.level(false, n, h.z, at)?;
+                self.cycle_spindle(SpindleDir::Stop);
+                self.level(true, n, h.ret, at)?;
+                self.cycle_spindle(restart);
+            }
+            880 => {
+                self.level(false, n, h.z, at)?;
+                self.dwell_secs(h.dwell);
+                self.cycle_spindle(SpindleDir::Stop);
+                // The operator retracts by hand, then presses cycle start.
+                self.emit(Canon::Stop { optional: false });
+                self.level(true, n, h.ret, at)?;
+                self.cycle_spindle(restart);
+            }
+            760 => {
+                self.level(false, n, h.z, at)?;
+                self.dwell_secs(h.dwell);
+                self.orient();
+                self.shift(&h.shift, 1.0, at)?;
+                self.level(true, n, h.ret, at)?;
+                self.shift(&h.shift, -1.0, at)?;
+                self.cycle_spindle(restart);
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// G73 / G83 pecking from R to the bottom (actions 3-4).
+    fn peck(&mut self, h: &Hole) -> R<()> {
+        let (n, at) = (h.n, h.at);
+        let down = if h.z < h.r { -1.0 } else { 1.0 };
+        let total = (h.z - h.r).abs();
+        let d = self.cyc.params.d;
+        let mut done = 0.0f64;
+        while total - done > 1e-9 {
+            let prev = done;
+            done = (done + h.q).min(total);
+            if prev > 0.0 {
+                if h.code == 830 {
+                    // G83: back to R, then rapid down to d above the last depth.
+                    self.level(true, n, h.r, at)?;
+                    let to = (prev - d).max(0.0);
+                    self.level(true, n, h.r + down * to, at)?;
+                } else {
+                    // G73: rapid up by d.
+                    let to = (prev - d).max(0.0);
+                    self.level(true, n, h.r + down * to, at)?;
+                }
+            }
+            self.level(false, n, h.r + down * done, at)?;
+        }
+        Ok(())
+    }
+
+    /// G87 back boring: oriented stop and shift at the initial level, rapid
+    /// down to R (below the bore), shift back, spindle on, feed up to Z,
+    /// dwell, oriented stop, shift, rapid up to the initial level, shift
+    /// back, spindle on.
+    fn back_boring(&mut self, h: &Hole, restart: SpindleDir) -> R<()> {
+        let (n, at) = (h.n, h.at);
+        self.orient();
+        self.shift(&h.shift, 1.0, at)?;
+        self.level(true, n, h.r, at)?;
+        self.shift(&h.shift, -1.0, at)?;
+        self.cycle_spindle(restart);
+        self.level(false, n, h.z, at)?;
+        self.dwell_secs(h.dwell);
+        self.orient();
+        self.shift(&h.shift, 1.0, at)?;
+        self.level(true, n, h.initial, at)?;
+        self.shift(&h.shift, -1.0, at)?;
+        self.cycle_spindle(restart);
+        Ok(())
+    }
+}

@@ -1,0 +1,10 @@
+(000 §12.3.8 G86 boring with spindle stop: decimal points added [the manual prints X75 Y50 Z-50 R5 F100, which the HX reads in 0.001 mm]; the manual's start position [G92 X0 Y0 Z100] is reached with G54 G00, not G92, because hx-mc's reference position is at the + end of travel)
+(N1 is printed 'S500 MOS': read as M03 [the spindle must turn to bore; 'MOS' is M05 elsewhere, an OCR confusion])
+G54 G90 G00 X0. Y0. Z100.
+N1 S500 M03
+N2 G90 G99 G86 X75. Y50. Z-50. R5. F100
+N3 Y-50.
+N4 X-75.
+N5 G98 Y50.
+N6 G80 G00 X0 Y0 M05
+N7 M30
