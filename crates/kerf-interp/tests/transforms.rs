@@ -436,3 +436,62 @@ fn stitch_mode_is_recorded() {
         ]
     );
 }
+
+/// Scaling applies to the hole position and the R and Z levels but not to
+/// the peck depth Q (000 §15.2). ×2 about the origin: R2. → 4, Z-10. →
+/// -20, so 24 mm of pecking in steps of Q = 4: feed bottoms 0, -4, -8,
+/// -12, -16, -20 at X 20.
+#[test]
+fn scaling_leaves_the_peck_depth_alone() {
+    let r = run_on(
+        "hx-mc",
+        "G00 X0 Y0 Z10.\nG51 X0 Y0 Z0 P2000\nG83 G99 X10. Y0 Z-10. R2. Q4. F100\nG80\n",
+    );
+    ok(&r);
+    let feeds: Vec<_> = moves(&r)
+        .into_iter()
+        .filter(|m| m.0 == "feed")
+        .map(|m| (m.1, m.3))
+        .collect();
+    assert_eq!(
+        feeds,
+        vec![
+            (20.0, 0.0),
+            (20.0, -4.0),
+            (20.0, -8.0),
+            (20.0, -12.0),
+            (20.0, -16.0),
+            (20.0, -20.0)
+        ]
+    );
+}
+
+/// 000 §8.3 first example (decimal points added): G92 makes the reference
+/// position read (150, 150, 150); G52 puts the local origin at (60, 44);
+/// G16 G81 drills at radius 20, angles 0°, 120°, 240°: (80, 44),
+/// (50, 61.320508), (50, 26.679492), each: rapid in the plane at the
+/// initial level 150, rapid to R3, feed to Z-15, rapid back to R3 (G99).
+#[test]
+fn polar_bolt_circle_example_with_g81() {
+    let r = run_on(
+        "hx-mc",
+        "N1 G40 G80\nN2 G28 G91 X0 Y0 Z0\nN3 G92 G90 X150. Y150. Z150.\nN50 G52 X60. Y44.\n\
+         N51 G16 G17\nN52 G81 G90 G99 X20. Y0 Z-15. R3. F100\nN53 Y120.\nN54 Y240.\n\
+         N55 G15 G00 Z50. M09\n",
+    );
+    ok(&r);
+    let m = moves(&r);
+    let mut want = vec![];
+    for (x, y) in [(80.0, 44.0), (50.0, 61.320508), (50.0, 26.679492)] {
+        let z0 = if want.is_empty() { 150.0 } else { 3.0 };
+        want.push(("rapid", x, y, z0));
+        if z0 != 3.0 {
+            want.push(("rapid", x, y, 3.0));
+        }
+        want.push(("feed", x, y, -15.0));
+        want.push(("rapid", x, y, 3.0));
+    }
+    want.push(("rapid", 50.0, 26.679492, 50.0));
+    // G28 from the power-on position (the reference position) makes no move.
+    assert_eq!(m, want);
+}

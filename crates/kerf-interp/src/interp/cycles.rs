@@ -563,11 +563,17 @@ impl Interp {
         let (n, at) = (h.n, h.at);
         let down = if h.z < h.r { -1.0 } else { 1.0 };
         let total = (h.z - h.r).abs();
-        let d = self.cyc.params.d;
+        // Scaling does not apply to Q and d (000 §15.2): in program
+        // coordinates they shrink by the drilling axis's factor.
+        let f = match self.st.xf.scale {
+            Some(s) if n < 3 => s.factor[n].abs(),
+            _ => 1.0,
+        };
+        let (q, d) = (h.q / f, self.cyc.params.d / f);
         let mut done = 0.0f64;
         while total - done > 1e-9 {
             let prev = done;
-            done = (done + h.q).min(total);
+            done = (done + q).min(total);
             if prev > 0.0 {
                 if h.code == 830 {
                     // G83: back to R, then rapid down to d above the last depth.
