@@ -78,6 +78,14 @@ pub enum AlarmKind {
     /// A code not allowed while coordinate rotation or scaling is in force
     /// (plane change, G27-G30, G92), or transforms in the wrong order.
     TransformConflict,
+    /// G112 polar coordinate interpolation: a code not allowed in the mode,
+    /// G00, a machine without the X/C pair, G112 in a block with axis words
+    /// or while G16/G51/G68/G107 is in force.
+    PolarInterp,
+    /// G107 cylindrical interpolation: radius missing or negative, a code
+    /// not allowed in the mode, an arc with I/J/K or outside the plane of
+    /// the rotary axis, G107 while G16/G51/G68/G112 is in force.
+    CylindricalInterp,
 }
 
 impl AlarmKind {
@@ -116,6 +124,8 @@ impl AlarmKind {
         AlarmKind::SubprogramEnd,
         AlarmKind::UserAlarm,
         AlarmKind::TransformConflict,
+        AlarmKind::PolarInterp,
+        AlarmKind::CylindricalInterp,
     ];
 
     /// The control's code for this alarm.
@@ -155,6 +165,8 @@ impl AlarmKind {
             SubprogramEnd => ("F_82024", "KERF-0102", "KERF-0102"),
             UserAlarm => ("3000+n", "3000+n", "3000+n"),
             TransformConflict => ("F_82210", "PS144", "HU-048"),
+            PolarInterp => ("F_82204", "PS145", "HU-049"),
+            CylindricalInterp => ("F_82208", "PS175", "HU-050"),
         };
         match d {
             DialectId::Hx => hx,

@@ -20,8 +20,10 @@ use crate::words::{WVal, Words, MAX_CODES};
 
 mod calls;
 mod codes;
+mod cylindrical;
 mod flow;
 mod motion;
+mod polar_interp;
 mod sysvars;
 mod transforms;
 
@@ -86,6 +88,8 @@ struct State {
     polar: bool,
     /// Origin of the polar coordinates (program coordinates in the plane).
     polar_origin: std::cell::Cell<(f64, f64)>,
+    /// G112 polar / G107 cylindrical interpolation in force.
+    rot: polar_interp::RotInterp,
     /// Tool length offset vector (G43/G44), added to the control point.
     tlo: Pos,
     /// Active H number (0 = none).
@@ -224,6 +228,7 @@ impl Interp {
             xf: Default::default(),
             polar: false,
             polar_origin: std::cell::Cell::new((0.0, 0.0)),
+            rot: polar_interp::RotInterp::Off,
             tlo: [0.0; NAXES],
             h: 0,
             g28_mid: [None; NAXES],
@@ -927,7 +932,8 @@ impl Interp {
         let mut g09 = false;
         let mut setting = false;
         let mut refret: Option<(u16, u32)> = None;
-        let xdata = self.transform_codes(&one_shot[..n_one])?;
+        let rdata = self.rotary_interp_codes()?;
+        let xdata = self.transform_codes(&one_shot[..n_one])? || rdata;
         if let Some(dw) = self.words.get(b'D') {
             self.sys.d = dw.v;
         }

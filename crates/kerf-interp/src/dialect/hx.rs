@@ -109,8 +109,8 @@ pub static GCODES: &[GCode] = &[
     g(970, 2, true, "constant surface speed control cancel", Yes),
     g(980, 19, true, "return to initial point at a canned cycle", Yes),
     g(990, 19, false, "return to R-point at a canned cycle", Yes),
-    g(1070, 22, false, "cylindrical interpolation", LATER_HX),
-    g(1120, 20, false, "polar coordinate interpolation mode on", LATER_HX),
+    g(1070, 22, false, "cylindrical interpolation", Yes),
+    g(1120, 20, false, "polar coordinate interpolation mode on", Yes),
     g(1130, 20, true, "polar coordinate interpolation mode off", Yes),
 ];
 
