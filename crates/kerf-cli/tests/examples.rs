@@ -11,6 +11,8 @@
 //! status = "completed"       # or "alarm" (exit status 0 / 1)
 //! alarm_line = 7             # optional, with status = "alarm"
 //! set = ["block_skip=1"]     # optional, each passed as --set
+//! block_ends = true          # optional: compare only the last record of
+//!                            # each block (G112/G107 cut moves into chords)
 //! [[motion]]                 # every motion record, in order
 //! kind = "arc"               # compared exactly
 //! line = 3                   # compared exactly
@@ -29,7 +31,14 @@ use std::process::Command;
 
 const TOL: f64 = 1e-3;
 const RECORD_KEYS: &[&str] = &["kind", "line", "to", "mto", "center", "dir", "feed"];
-const TOP_KEYS: &[&str] = &["machine", "status", "alarm_line", "set", "motion"];
+const TOP_KEYS: &[&str] = &[
+    "machine",
+    "status",
+    "alarm_line",
+    "set",
+    "block_ends",
+    "motion",
+];
 
 fn examples_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
@@ -243,6 +252,18 @@ fn run_case(prog: &Path, expect: &Path, variant: &str) -> Vec<String> {
             Ok(v) => records.push(v),
             Err(e) => errs.push(format!("{label}: toolpath line {} is not JSON: {e}", i + 1)),
         }
+    }
+    if exp.get("block_ends").and_then(|v| v.as_bool()) == Some(true) {
+        // Keep the last record of each run of records from one block.
+        let key = |r: &serde_json::Value| (r.get("file").cloned(), r.get("line").cloned());
+        let mut ends: Vec<serde_json::Value> = Vec::new();
+        for r in records {
+            if ends.last().is_some_and(|l| key(l) == key(&r)) {
+                ends.pop();
+            }
+            ends.push(r);
+        }
+        records = ends;
     }
     if records.len() != motions.len() {
         errs.push(format!(

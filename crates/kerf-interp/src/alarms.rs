@@ -85,6 +85,14 @@ pub enum AlarmKind {
     /// in cycle mode, G87 with G99, a cycle and a group-01 code in one
     /// block, G60 with an interpolation code).
     CannedCycle,
+    /// G112 polar coordinate interpolation: a code not allowed in the mode,
+    /// G00, a machine without the X/C pair, G112 in a block with axis words
+    /// or while G16/G51/G68/G107 is in force.
+    PolarInterp,
+    /// G107 cylindrical interpolation: radius missing or negative, a code
+    /// not allowed in the mode, an arc with I/J/K or outside the plane of
+    /// the rotary axis, G107 while G16/G51/G68/G112 is in force.
+    CylindricalInterp,
 }
 
 impl AlarmKind {
@@ -125,6 +133,8 @@ impl AlarmKind {
         AlarmKind::TransformConflict,
         AlarmKind::NoContact,
         AlarmKind::CannedCycle,
+        AlarmKind::PolarInterp,
+        AlarmKind::CylindricalInterp,
     ];
 
     /// The control's code for this alarm.
@@ -166,6 +176,8 @@ impl AlarmKind {
             TransformConflict => ("F_82210", "PS144", "HU-048"),
             NoContact => ("F_84022", "PS080", "HU-049"),
             CannedCycle => ("KERF-0103", "KERF-0103", "KERF-0103"),
+            PolarInterp => ("F_82204", "PS145", "HU-050"),
+            CylindricalInterp => ("F_82208", "PS175", "HU-051"),
         };
         match d {
             DialectId::Hx => hx,

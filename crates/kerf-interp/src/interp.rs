@@ -21,8 +21,10 @@ use crate::words::{WVal, Words, MAX_CODES};
 mod calls;
 mod codes;
 mod cycles;
+mod cylindrical;
 mod flow;
 mod motion;
+mod polar_interp;
 mod skip;
 mod sysvars;
 mod transforms;
@@ -98,6 +100,8 @@ struct State {
     polar: bool,
     /// Origin of the polar coordinates (program coordinates in the plane).
     polar_origin: std::cell::Cell<(f64, f64)>,
+    /// G112 polar / G107 cylindrical interpolation in force.
+    rot: polar_interp::RotInterp,
     /// Tool length offset vector (G43/G44), added to the control point.
     tlo: Pos,
     /// Active H number (0 = none).
@@ -240,6 +244,7 @@ impl Interp {
             skip_pos: None,
             polar: false,
             polar_origin: std::cell::Cell::new((0.0, 0.0)),
+            rot: polar_interp::RotInterp::Off,
             tlo: [0.0; NAXES],
             h: 0,
             g28_mid: [None; NAXES],
@@ -951,7 +956,8 @@ impl Interp {
         let mut setting = false;
         let mut refret: Option<(u16, u32)> = None;
         let mut skip: Option<(u16, u32)> = None;
-        let xdata = self.transform_codes(&one_shot[..n_one])?;
+        let rdata = self.rotary_interp_codes()?;
+        let xdata = self.transform_codes(&one_shot[..n_one])? || rdata;
         if let Some(dw) = self.words.get(b'D') {
             self.sys.d = dw.v;
         }

@@ -13,6 +13,8 @@
 //!   G65, `--lib` folders);
 //! - [`words`]: a block's evaluated words in fixed tables;
 //! - [`arc`]: circular interpolation geometry;
+//! - [`rotary`]: geometry of polar (G112) and cylindrical (G107)
+//!   interpolation: virtual plane to machine axes, chords;
 //! - [`macros`]: variables and expression evaluation;
 //! - [`state`]: retained variables kept across runs (`--state DIR`);
 //! - [`alarms`]: every alarm and its code per control.
@@ -26,6 +28,7 @@ pub mod dialect;
 pub mod interp;
 pub mod machine;
 pub mod macros;
+pub mod rotary;
 pub mod state;
 pub mod stroke;
 pub mod words;

@@ -9,7 +9,6 @@ use super::MWhen::*;
 use super::Support::*;
 use super::*;
 
-const LATER_HX: Support = Later("HX coordinate systems and transforms (issue 4)");
 const LATER_COMP: Support = Later("tool compensation (issue 5)");
 
 /// G codes of 000 §3.1. Group numbers are the ones the table prints (they
@@ -109,8 +108,8 @@ pub static GCODES: &[GCode] = &[
     g(970, 2, true, "constant surface speed control cancel", Yes),
     g(980, 19, true, "return to initial point at a canned cycle", Yes),
     g(990, 19, false, "return to R-point at a canned cycle", Yes),
-    g(1070, 22, false, "cylindrical interpolation", LATER_HX),
-    g(1120, 20, false, "polar coordinate interpolation mode on", LATER_HX),
+    g(1070, 22, false, "cylindrical interpolation", Yes),
+    g(1120, 20, false, "polar coordinate interpolation mode on", Yes),
     g(1130, 20, true, "polar coordinate interpolation mode off", Yes),
 ];
 

@@ -253,6 +253,9 @@ impl Interp {
     }
 
     pub(super) fn motion(&mut self) -> R<()> {
+        if self.st.rot != polar_interp::RotInterp::Off {
+            return self.rotary_interp_motion();
+        }
         let mode = self.st.modal[1];
         let (tw, any) = self.target()?;
         let at = self.motion_at();

@@ -1,0 +1,17 @@
+(000 4.7 G107 cylindrical interpolation example; F250. added to the G01 Z0 C0 line, which moves nothing but needs a feed)
+G54 G00 G90 Z100.0 C0
+G01 G91 G18 Z0 C0 F250.
+G107 C57.299
+G90 G01 Z120. F250
+C30.
+G02 Z90. C60. R30.
+G01 Z70.
+G03 Z60. C70. R10.
+G01 C150.
+G03 Z70. C190. R75.
+G01 Z110. C230.
+G02 Z120. C270. R75.
+G01 C360.
+Z100.
+G107 C0
+M30
