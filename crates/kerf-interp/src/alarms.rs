@@ -75,6 +75,16 @@ pub enum AlarmKind {
     SubprogramEnd,
     /// `#3000 = n (MESSAGE)`: the program's own alarm; the code is 3000+n.
     UserAlarm,
+    /// `,C`/`,R`: the block, or the block after it, is not a G01/G02/G03
+    /// move in the selected plane (G00, another plane or axis, no move
+    /// before the end of the program, a call or return in between).
+    CornerNoMove,
+    /// `,C`/`,R`: the chamfer or radius does not fit on the two paths, or
+    /// the paths meet without a corner (tangent or reversing).
+    CornerTooLarge,
+    /// `,C` and `,R` in one block, or a change of coordinate system or
+    /// tool between a `,C`/`,R` block and its next move.
+    CornerConflict,
 }
 
 impl AlarmKind {
@@ -112,6 +122,9 @@ impl AlarmKind {
         AlarmKind::CallNesting,
         AlarmKind::SubprogramEnd,
         AlarmKind::UserAlarm,
+        AlarmKind::CornerNoMove,
+        AlarmKind::CornerTooLarge,
+        AlarmKind::CornerConflict,
     ];
 
     /// The control's code for this alarm.
@@ -150,6 +163,9 @@ impl AlarmKind {
             CallNesting => ("F_82023", "PS077", "HU-047"),
             SubprogramEnd => ("F_82024", "KERF-0102", "KERF-0102"),
             UserAlarm => ("3000+n", "3000+n", "3000+n"),
+            CornerNoMove => ("F_82103", "PS051", "HU-024"),
+            CornerTooLarge => ("F_82104", "PS055", "HU-025"),
+            CornerConflict => ("F_82105", "PS053", "HU-026"),
         };
         match d {
             DialectId::Hx => hx,

@@ -20,6 +20,7 @@ use crate::words::{WVal, Words, MAX_CODES};
 
 mod calls;
 mod codes;
+mod corners;
 mod flow;
 mod motion;
 mod sysvars;
@@ -170,6 +171,9 @@ pub struct Interp {
     sys: Box<sysvars::SysState>,
     /// Calls by G/M/T code (HX PI 85-105); None when not set up.
     code_calls: Option<Box<calls::CodeCalls>>,
+    /// A move carrying `,C`/`,R`, held until the next move is known; while
+    /// it is held, events are kept back in it (interp/corners.rs).
+    corner: Option<Box<corners::Pending>>,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -330,6 +334,7 @@ impl Interp {
             calls: calls::Calls::default(),
             sys: Box::new(sysvars::SysState::new(settings_inputs, settings_sb)),
             code_calls,
+            corner: None,
         }
     }
 
@@ -459,6 +464,7 @@ impl Interp {
                 Err(a) => {
                     self.finished = true;
                     self.queue.clear();
+                    self.corner = None;
                     return Step::Alarm(a);
                 }
             }
@@ -479,11 +485,16 @@ impl Interp {
     }
 
     fn emit(&mut self, cmd: Canon) {
-        self.queue.push_back(Event {
+        let e = Event {
             src: self.cur,
             tool: self.st.tool,
             cmd,
-        });
+        };
+        match self.corner.as_mut() {
+            None => self.queue.push_back(e),
+            // After a held ,C/,R move: handed out once it is emitted.
+            Some(p) => p.hold(e),
+        }
     }
 
     /// Reads and executes one block. Ok(false) at the end of the program.
@@ -498,7 +509,7 @@ impl Interp {
                 if !self.calls.stack.is_empty() {
                     return Err(self.sub_end_alarm());
                 }
-                self.emit_end(0);
+                self.emit_end(0)?;
                 return Ok(false);
             }
             Err(e) => {
@@ -566,7 +577,7 @@ impl Interp {
                 return Err(self.sub_end_alarm());
             }
             if self.tape_started {
-                self.emit_end(0);
+                self.emit_end(0)?;
                 return Ok(false);
             }
             self.tape_started = true;
@@ -576,7 +587,7 @@ impl Interp {
         }
         self.tape_started = true;
         if self.block.program.is_some() && self.program_header()? {
-            self.emit_end(0);
+            self.emit_end(0)?;
             return Ok(false);
         }
         // Block delete: a marker whose level is switched on skips the rest.
@@ -641,8 +652,19 @@ impl Interp {
         Ok(r)
     }
 
-    fn emit_end(&mut self, code: u32) {
+    /// The end of the program (M02/M30: `code`; 0 the end of the text). A
+    /// move still held for its ,C/,R is an alarm.
+    fn emit_end(&mut self, code: u32) -> R<()> {
+        if self.corner.is_some() {
+            let what = if code == 0 {
+                "the end of the program".to_string()
+            } else {
+                format!("M{code:02}")
+            };
+            return Err(self.corner_broken(&what));
+        }
         self.emit(Canon::End { code });
+        Ok(())
     }
 
     // ---- words -----------------------------------------------------------
@@ -660,6 +682,7 @@ impl Interp {
                     // #1 = 1.2345 moves 1.235).
                     let inc = match w.addr {
                         Addr::L(l) => self.addr_increment(l),
+                        Addr::Comma(_) => self.addr_increment(b'R'),
                         _ => 0.0,
                     };
                     let v = self.eval_in(e, w.at, inc)?;
@@ -753,14 +776,26 @@ impl Interp {
                             format!("address ,{} is not used by this control", c as char),
                         ));
                     }
-                    return Err(self.alarm(
-                        AlarmKind::NotYetSupported,
-                        w.at,
-                        format!(
-                            ",{} chamfer/corner rounding is not yet supported (issue 4)",
-                            c as char
-                        ),
-                    ));
+                    let slot = if c == b'C' {
+                        &mut self.words.comma_c
+                    } else {
+                        &mut self.words.comma_r
+                    };
+                    if slot.is_some() {
+                        return Err(self.alarm(
+                            AlarmKind::DuplicateAddress,
+                            w.at,
+                            format!("address ,{} twice in one block", c as char),
+                        ));
+                    }
+                    *slot = Some(wv);
+                    if self.words.comma_c.is_some() && self.words.comma_r.is_some() {
+                        return Err(self.alarm(
+                            AlarmKind::CornerConflict,
+                            w.at,
+                            ",C (chamfer) and ,R (corner R) in one block",
+                        ));
+                    }
                 }
                 Addr::Long(k) => {
                     if self.words.nlong >= self.words.long.len() {
@@ -879,6 +914,11 @@ impl Interp {
                     transfer = Some((mc.action, at));
                 }
             }
+        }
+        // A held ,C/,R move, or one in this block, cannot be followed by a
+        // block that moves otherwise or leaves the program.
+        if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
+            self.corner_gate(&one_shot[..n_one], transfer.map(|t| t.0))?;
         }
         let hurco = d.hurco_order;
         if hurco {
@@ -1093,7 +1133,7 @@ impl Interp {
                     }
                 }
                 MAction::End => {
-                    self.emit_end(m);
+                    self.emit_end(m)?;
                     self.finished = true;
                 }
                 MAction::Aux => self.emit(Canon::Aux { m, name: mc.name }),

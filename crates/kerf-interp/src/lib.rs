@@ -13,6 +13,7 @@
 //!   G65, `--lib` folders);
 //! - [`words`]: a block's evaluated words in fixed tables;
 //! - [`arc`]: circular interpolation geometry;
+//! - [`corner`]: chamfer and corner-rounding geometry (`,C` / `,R`);
 //! - [`macros`]: variables and expression evaluation;
 //! - [`state`]: retained variables kept across runs (`--state DIR`);
 //! - [`alarms`]: every alarm and its code per control.
@@ -22,6 +23,7 @@
 
 pub mod alarms;
 pub mod arc;
+pub mod corner;
 pub mod dialect;
 pub mod interp;
 pub mod machine;

@@ -3,6 +3,17 @@
 
 use super::*;
 
+/// How fast a straight move goes.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Speed {
+    /// G00.
+    Rapid,
+    /// The modal feed (F, G94/G95/G93).
+    Modal,
+    /// A feed fixed earlier.
+    Feed(Feed),
+}
+
 impl Interp {
     // ---- motion ------------------------------------------------------------------
 
@@ -100,12 +111,18 @@ impl Interp {
         let mode = self.st.modal[1];
         let (tw, any) = self.target()?;
         let at = self.motion_at();
+        // One test for the look-ahead of ,C/,R (a move held, or this block
+        // carries one): interp/corners.rs.
+        if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
+            return self.corner_motion(mode, tw, any, at);
+        }
+        self.plain_motion(mode, tw, any, at)
+    }
+
+    /// The block's move without chamfer or corner R.
+    pub(super) fn plain_motion(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
         match mode {
-            0 | 10 => {
-                if any {
-                    self.move_line(mode == 0, tw, at)?;
-                }
-            }
+            0 | 10 if any => self.move_line(mode == 0, tw, at)?,
             20 | 30 => self.arc(tw, any, mode == 30, at)?,
             _ => {}
         }
@@ -114,7 +131,6 @@ impl Interp {
 
     /// Current position in the program's coordinates: the point the next
     /// incremental word adds to (before polar, scaling and rotation).
-    #[allow(dead_code)] // used by canned cycles and transforms (issue 4)
     pub(super) fn prog_pos(&self) -> Pos {
         self.programmed_position()
     }
@@ -123,22 +139,29 @@ impl Interp {
     /// coordinates: transformed to machine coordinates, checked against
     /// the travel limits and emitted. `at` positions any alarm.
     pub(super) fn move_line(&mut self, rapid: bool, tw: Pos, at: u32) -> R<()> {
+        self.line_to(tw, if rapid { Speed::Rapid } else { Speed::Modal }, at)
+    }
+
+    /// [`Self::move_line`] with the speed given: a rapid, the modal feed,
+    /// or a feed fixed earlier (the parts of a ,C/,R move keep the feed of
+    /// their own block).
+    pub(super) fn line_to(&mut self, tw: Pos, speed: Speed, at: u32) -> R<()> {
         let mto = self.to_machine(&tw);
         self.check_travel(&mto, at)?;
         let m = Motion {
             to: self.work_of(&mto),
             mto,
         };
-        let cmd = if rapid {
-            Canon::Rapid {
+        let cmd = match speed {
+            Speed::Rapid => Canon::Rapid {
                 m,
                 linear: self.linear_rapid(),
-            }
-        } else {
-            Canon::Feed {
+            },
+            Speed::Modal => Canon::Feed {
                 m,
                 feed: self.feed(at)?,
-            }
+            },
+            Speed::Feed(feed) => Canon::Feed { m, feed },
         };
         self.st.pos = mto;
         self.emit(cmd);
@@ -146,6 +169,25 @@ impl Interp {
     }
 
     pub(super) fn arc(&mut self, tw: Pos, any: bool, ccw: bool, at: u32) -> R<()> {
+        let Some(center) = self.arc_center(tw, any, ccw, at)? else {
+            return Ok(());
+        };
+        let feed = self.feed(at)?;
+        let cur = self.programmed_position();
+        self.arc_to(cur, tw, center, ccw, feed, at)
+    }
+
+    /// The centre (in the plane) of the block's arc from the current
+    /// position to `tw`, from R or I/J/K, with the end-point checks. None
+    /// when the block makes no arc (no end point and no centre, or R with
+    /// the end at the start, which moves only the other axes).
+    pub(super) fn arc_center(
+        &mut self,
+        tw: Pos,
+        any: bool,
+        ccw: bool,
+        at: u32,
+    ) -> R<Option<(f64, f64)>> {
         let plane = self.st.plane;
         let (a1, a2, _) = plane.axes();
         let cur = self.programmed_position();
@@ -160,7 +202,7 @@ impl Interp {
                 if any {
                     self.linear_only(tw)?;
                 }
-                return Ok(());
+                return Ok(None);
             }
             // 001 p.15 note (4): on the PUMA an R shorter than half the
             // move is overridden and a half circle made; the others alarm.
@@ -199,7 +241,7 @@ impl Interp {
             (s.0 + o[a1.min(2)], s.1 + o[a2.min(2)])
         } else {
             if !any {
-                return Ok(());
+                return Ok(None);
             }
             return Err(self.alarm(
                 AlarmKind::ArcNoCenter,
@@ -224,7 +266,26 @@ impl Interp {
             }
             Err(ArcError::RadiusTooSmall { .. }) => unreachable!(),
         }
-        let feed = self.feed(at)?;
+        Ok(Some(center))
+    }
+
+    /// An arc from `start` to `tw` (program coordinates) about `center`
+    /// (in the plane) at `feed`: travel-checked and emitted. The axes
+    /// outside the plane move linearly (helix).
+    pub(super) fn arc_to(
+        &mut self,
+        start: Pos,
+        tw: Pos,
+        center: (f64, f64),
+        ccw: bool,
+        feed: Feed,
+        at: u32,
+    ) -> R<()> {
+        let plane = self.st.plane;
+        let (a1, a2, _) = plane.axes();
+        let cur = start;
+        let s = (cur[a1], cur[a2]);
+        let e = (tw[a1], tw[a2]);
         // Travel: the arc's extremes in the plane, the end point elsewhere.
         let (u0, v0, u1, v1) = arc::bbox(s, e, center, ccw);
         for (u, v) in [(u0, v0), (u1, v1)] {
