@@ -93,6 +93,16 @@ pub enum AlarmKind {
     /// not allowed in the mode, an arc with I/J/K or outside the plane of
     /// the rotary axis, G107 while G16/G51/G68/G112 is in force.
     CylindricalInterp,
+    /// `,C`/`,R`: the block, or the block after it, is not a G01/G02/G03
+    /// move in the selected plane (G00, another plane or axis, no move
+    /// before the end of the program, a call or return in between).
+    CornerNoMove,
+    /// `,C`/`,R`: the chamfer or radius does not fit on the two paths, or
+    /// the paths meet without a corner (tangent or reversing).
+    CornerTooLarge,
+    /// `,C` and `,R` in one block, or a change of coordinate system or
+    /// tool between a `,C`/`,R` block and its next move.
+    CornerConflict,
 }
 
 impl AlarmKind {
@@ -135,6 +145,9 @@ impl AlarmKind {
         AlarmKind::CannedCycle,
         AlarmKind::PolarInterp,
         AlarmKind::CylindricalInterp,
+        AlarmKind::CornerNoMove,
+        AlarmKind::CornerTooLarge,
+        AlarmKind::CornerConflict,
     ];
 
     /// The control's code for this alarm.
@@ -178,6 +191,9 @@ impl AlarmKind {
             CannedCycle => ("KERF-0103", "KERF-0103", "KERF-0103"),
             PolarInterp => ("F_82204", "PS145", "HU-050"),
             CylindricalInterp => ("F_82208", "PS175", "HU-051"),
+            CornerNoMove => ("F_82103", "PS051", "HU-024"),
+            CornerTooLarge => ("F_82104", "PS055", "HU-025"),
+            CornerConflict => ("F_82105", "PS053", "HU-026"),
         };
         match d {
             DialectId::Hx => hx,

@@ -20,6 +20,7 @@ use crate::words::{WVal, Words, MAX_CODES};
 
 mod calls;
 mod codes;
+mod corners;
 mod cycles;
 mod cylindrical;
 mod flow;
@@ -199,6 +200,9 @@ pub struct Interp {
     code_calls: Option<Box<calls::CodeCalls>>,
     /// Canned cycle data and parameters (HX).
     cyc: cycles::CycleData,
+    /// A move carrying `,C`/`,R`, held until the next move is known; while
+    /// it is held, events are kept back in it (interp/corners.rs).
+    corner: Option<Box<corners::Pending>>,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -369,6 +373,7 @@ impl Interp {
             sys: Box::new(sysvars::SysState::new(settings_inputs, settings_sb)),
             code_calls,
             cyc,
+            corner: None,
         }
     }
 
@@ -498,6 +503,7 @@ impl Interp {
                 Err(a) => {
                     self.finished = true;
                     self.queue.clear();
+                    self.corner = None;
                     return Step::Alarm(a);
                 }
             }
@@ -518,11 +524,16 @@ impl Interp {
     }
 
     fn emit(&mut self, cmd: Canon) {
-        self.queue.push_back(Event {
+        let e = Event {
             src: self.cur,
             tool: self.st.tool,
             cmd,
-        });
+        };
+        match self.corner.as_mut() {
+            None => self.queue.push_back(e),
+            // After a held ,C/,R move: handed out once it is emitted.
+            Some(p) => p.hold(e),
+        }
     }
 
     /// Reads and executes one block. Ok(false) at the end of the program.
@@ -537,7 +548,7 @@ impl Interp {
                 if !self.calls.stack.is_empty() {
                     return Err(self.sub_end_alarm());
                 }
-                self.emit_end(0);
+                self.emit_end(0)?;
                 return Ok(false);
             }
             Err(e) => {
@@ -605,7 +616,7 @@ impl Interp {
                 return Err(self.sub_end_alarm());
             }
             if self.tape_started {
-                self.emit_end(0);
+                self.emit_end(0)?;
                 return Ok(false);
             }
             self.tape_started = true;
@@ -615,7 +626,7 @@ impl Interp {
         }
         self.tape_started = true;
         if self.block.program.is_some() && self.program_header()? {
-            self.emit_end(0);
+            self.emit_end(0)?;
             return Ok(false);
         }
         // Block delete: a marker whose level is switched on skips the rest.
@@ -680,8 +691,19 @@ impl Interp {
         Ok(r)
     }
 
-    fn emit_end(&mut self, code: u32) {
+    /// The end of the program (M02/M30: `code`; 0 the end of the text). A
+    /// move still held for its ,C/,R is an alarm.
+    fn emit_end(&mut self, code: u32) -> R<()> {
+        if self.corner.is_some() {
+            let what = if code == 0 {
+                "the end of the program".to_string()
+            } else {
+                format!("M{code:02}")
+            };
+            return Err(self.corner_broken(&what));
+        }
         self.emit(Canon::End { code });
+        Ok(())
     }
 
     // ---- words -----------------------------------------------------------
@@ -699,6 +721,7 @@ impl Interp {
                     // #1 = 1.2345 moves 1.235).
                     let inc = match w.addr {
                         Addr::L(l) => self.addr_increment(l),
+                        Addr::Comma(_) => self.addr_increment(b'R'),
                         _ => 0.0,
                     };
                     let v = self.eval_in(e, w.at, inc)?;
@@ -792,14 +815,26 @@ impl Interp {
                             format!("address ,{} is not used by this control", c as char),
                         ));
                     }
-                    return Err(self.alarm(
-                        AlarmKind::NotYetSupported,
-                        w.at,
-                        format!(
-                            ",{} chamfer/corner rounding is not yet supported (issue 4)",
-                            c as char
-                        ),
-                    ));
+                    let slot = if c == b'C' {
+                        &mut self.words.comma_c
+                    } else {
+                        &mut self.words.comma_r
+                    };
+                    if slot.is_some() {
+                        return Err(self.alarm(
+                            AlarmKind::DuplicateAddress,
+                            w.at,
+                            format!("address ,{} twice in one block", c as char),
+                        ));
+                    }
+                    *slot = Some(wv);
+                    if self.words.comma_c.is_some() && self.words.comma_r.is_some() {
+                        return Err(self.alarm(
+                            AlarmKind::CornerConflict,
+                            w.at,
+                            ",C (chamfer) and ,R (corner R) in one block",
+                        ));
+                    }
                 }
                 Addr::Long(k) => {
                     if self.words.nlong >= self.words.long.len() {
@@ -918,6 +953,11 @@ impl Interp {
                     transfer = Some((mc.action, at));
                 }
             }
+        }
+        // A held ,C/,R move, or one in this block, cannot be followed by a
+        // block that moves otherwise or leaves the program.
+        if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
+            self.corner_gate(&one_shot[..n_one], transfer.map(|t| t.0))?;
         }
         let hurco = d.hurco_order;
         if hurco {
@@ -1147,7 +1187,7 @@ impl Interp {
                     }
                 }
                 MAction::End => {
-                    self.emit_end(m);
+                    self.emit_end(m)?;
                     self.finished = true;
                 }
                 MAction::Aux => self.emit(Canon::Aux { m, name: mc.name }),

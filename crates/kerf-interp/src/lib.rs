@@ -15,6 +15,7 @@
 //! - [`arc`]: circular interpolation geometry;
 //! - [`rotary`]: geometry of polar (G112) and cylindrical (G107)
 //!   interpolation: virtual plane to machine axes, chords;
+//! - [`corner`]: chamfer and corner-rounding geometry (`,C` / `,R`);
 //! - [`macros`]: variables and expression evaluation;
 //! - [`state`]: retained variables kept across runs (`--state DIR`);
 //! - [`alarms`]: every alarm and its code per control.
@@ -24,6 +25,7 @@
 
 pub mod alarms;
 pub mod arc;
+pub mod corner;
 pub mod dialect;
 pub mod interp;
 pub mod machine;

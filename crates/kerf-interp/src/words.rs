@@ -27,7 +27,7 @@ pub struct Words {
     /// M codes (value, byte index) in order.
     pub m: [(u32, u32); MAX_CODES],
     pub nm: usize,
-    /// `,C` and `,R`.
+    /// `,C` (chamfer) and `,R` (corner R), HX only; never both.
     pub comma_c: Option<WVal>,
     pub comma_r: Option<WVal>,
     /// Hurco multi-letter parameters (name index, value).
@@ -95,6 +95,16 @@ impl Words {
     /// The M codes of the block.
     pub fn ms(&self) -> &[(u32, u32)] {
         &self.m[..self.nm]
+    }
+
+    /// The block's `,C` (chamfer, `true`) or `,R` (corner R, `false`) word.
+    #[inline]
+    pub fn corner(&self) -> Option<(bool, WVal)> {
+        match (self.comma_c, self.comma_r) {
+            (Some(c), _) => Some((true, c)),
+            (None, Some(r)) => Some((false, r)),
+            (None, None) => None,
+        }
     }
 
     /// True when the block carries G code `code10`.

@@ -625,6 +625,7 @@ impl Interp {
         at: u32,
         args: Option<[Option<f64>; 33]>,
     ) -> R<()> {
+        self.corner_open("a subprogram or macro call")?;
         let (file, header, body) = match prog {
             Some(p) => self.find_program(p, at)?,
             None => (self.file_id, self.calls.header, self.program_start),
@@ -717,6 +718,7 @@ impl Interp {
     /// Ends one repetition of the called program (M99, or the block with
     /// sequence number R).
     pub(super) fn sub_return(&mut self, p: Option<(u32, u32)>, at: u32) -> R<()> {
+        self.corner_open("the return from a subprogram")?;
         let f = self.calls.stack.last_mut().expect("in a call");
         if f.left > 0 {
             f.left -= 1;
@@ -758,6 +760,7 @@ impl Interp {
 
     /// M99 in the main program (000 §2.4.4).
     fn main_m99(&mut self, p: Option<(u32, u32)>, l: Option<(u32, u32)>, at: u32) -> R<()> {
+        self.corner_open("M99")?;
         let here = self.raw.mark.offset;
         if let Some((n, _)) = l {
             let left = match self.calls.main_repeat {
@@ -795,6 +798,13 @@ impl Interp {
     /// G66 only records the call for the move blocks that follow.
     pub(super) fn g65(&mut self, code10: u16, at: u32) -> R<()> {
         let name = if code10 == 650 { "G65" } else { "G66" };
+        if let Some((_, w)) = self.words.corner() {
+            return Err(self.alarm(
+                AlarmKind::CornerNoMove,
+                w.at,
+                format!(",C/,R in a {name} block: it belongs to a G01/G02/G03 move"),
+            ));
+        }
         if self.words.ng > 1 {
             let (c, gat) = self.words.g[if self.words.g[0].0 == code10 { 1 } else { 0 }];
             return Err(self.alarm(

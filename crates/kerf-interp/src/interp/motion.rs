@@ -3,6 +3,17 @@
 
 use super::*;
 
+/// How fast a straight move goes.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Speed {
+    /// G00.
+    Rapid,
+    /// The modal feed (F, G94/G95/G93).
+    Modal,
+    /// A feed fixed earlier.
+    Feed(Feed),
+}
+
 impl Interp {
     // ---- motion ------------------------------------------------------------------
 
@@ -259,6 +270,16 @@ impl Interp {
         let mode = self.st.modal[1];
         let (tw, any) = self.target()?;
         let at = self.motion_at();
+        // One test for the look-ahead of ,C/,R (a move held, or this block
+        // carries one): interp/corners.rs.
+        if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
+            return self.corner_motion(mode, tw, any, at);
+        }
+        self.plain_motion(mode, tw, any, at)
+    }
+
+    /// The block's move without chamfer or corner R.
+    pub(super) fn plain_motion(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
         match mode {
             0 | 10 if any => self.move_line(mode == 0, tw, at)?,
             330 if any && self.dialect.id == DialectId::Hx => self.thread_line(tw, at)?,
@@ -283,23 +304,30 @@ impl Interp {
     /// coordinates: transformed to machine coordinates, checked against
     /// the travel limits and emitted. `at` positions any alarm.
     pub(super) fn move_line(&mut self, rapid: bool, tw: Pos, at: u32) -> R<()> {
+        self.line_to(tw, if rapid { Speed::Rapid } else { Speed::Modal }, at)
+    }
+
+    /// [`Self::move_line`] with the speed given: a rapid, the modal feed,
+    /// or a feed fixed earlier (the parts of a ,C/,R move keep the feed of
+    /// their own block).
+    pub(super) fn line_to(&mut self, tw: Pos, speed: Speed, at: u32) -> R<()> {
         let mto = self.to_machine(&tw);
         self.check_travel(&mto, at)?;
-        self.check_stroke(&mto, rapid, at)?;
+        self.check_stroke(&mto, matches!(speed, Speed::Rapid), at)?;
         let m = Motion {
             to: self.work_of(&mto),
             mto,
         };
-        let cmd = if rapid {
-            Canon::Rapid {
+        let cmd = match speed {
+            Speed::Rapid => Canon::Rapid {
                 m,
                 linear: self.linear_rapid(),
-            }
-        } else {
-            Canon::Feed {
+            },
+            Speed::Modal => Canon::Feed {
                 m,
                 feed: self.feed(at)?,
-            }
+            },
+            Speed::Feed(feed) => Canon::Feed { m, feed },
         };
         self.st.pos = mto;
         self.emit(cmd);
@@ -307,23 +335,40 @@ impl Interp {
     }
 
     pub(super) fn arc(&mut self, tw: Pos, any: bool, ccw: bool, at: u32) -> R<()> {
+        let Some(center) = self.arc_center(tw, any, ccw, at)? else {
+            return Ok(());
+        };
+        let feed = self.feed(at)?;
+        let cur = self.prog_pos();
+        self.arc_to(cur, tw, center, ccw, feed, at)
+    }
+
+    /// The centre (in the plane) of the block's arc from the current
+    /// position to `tw`, from R or I/J/K, with the end-point checks. None
+    /// when the block makes no arc (no end point and no centre, or R with
+    /// the end at the start, which moves only the other axes).
+    pub(super) fn arc_center(
+        &mut self,
+        tw: Pos,
+        any: bool,
+        ccw: bool,
+        at: u32,
+    ) -> R<Option<(f64, f64)>> {
         let plane = self.st.plane;
         let (a1, a2, _) = plane.axes();
         let cur = self.prog_pos();
         let s = (cur[a1], cur[a2]);
         let e = (tw[a1], tw[a2]);
-        let mut r_word = None;
         let has_ijk = [b'I', b'J', b'K'].iter().any(|&l| self.words.has(l));
         let center = if let Some(r) = self.words.get(b'R') {
             self.check_range(b'R', r)?;
             let rv = self.linear(r);
-            r_word = Some(rv);
             if !any || (s.0 - e.0).hypot(s.1 - e.1) < 1e-9 {
                 // R with the end at the start: no movement (Fanuc).
                 if any {
                     self.linear_only(tw)?;
                 }
-                return Ok(());
+                return Ok(None);
             }
             // 001 p.15 note (4): on the PUMA an R shorter than half the
             // move is overridden and a half circle made; the others alarm.
@@ -362,7 +407,7 @@ impl Interp {
             (s.0 + o[a1.min(2)], s.1 + o[a2.min(2)])
         } else {
             if !any {
-                return Ok(());
+                return Ok(None);
             }
             return Err(self.alarm(
                 AlarmKind::ArcNoCenter,
@@ -375,37 +420,6 @@ impl Interp {
             .find_map(|&l| self.words.get(l))
             .map(|w| w.at)
             .unwrap_or(at);
-        // Scaling and rotation act on the three points; a mirror reverses
-        // the direction (000 §15.3). With unequal plane factors an R arc
-        // keeps its end points and takes R times the larger factor
-        // (fanuc-semantics §8.3); an I/J/K arc must still close.
-        let (s, e, center, ccw, tw) = if self.st.xf.active() {
-            let xf = self.st.xf;
-            let mut c = cur;
-            c[a1] = center.0;
-            c[a2] = center.1;
-            let (st, et, ct) = (xf.forward(&cur), xf.forward(&tw), xf.forward(&c));
-            let ccw = ccw != xf.mirrors(plane);
-            let (s, e) = ((st[a1], st[a2]), (et[a1], et[a2]));
-            let (f1, f2) = xf.plane_factors(plane);
-            let center = match r_word {
-                Some(rv) if (f1.abs() - f2.abs()).abs() > 1e-12 => {
-                    let rs = rv * f1.abs().max(f2.abs());
-                    arc::center_from_radius(s, e, rs, ccw, self.arc_tol).map_err(|_| {
-                        self.alarm(
-                            AlarmKind::ArcRadius,
-                            bad_at,
-                            "scaled arc radius is smaller than half the chord",
-                        )
-                    })?
-                }
-                _ => (ct[a1], ct[a2]),
-            };
-            (s, e, center, ccw, et)
-        } else {
-            (s, e, center, ccw, tw)
-        };
-        let cur = self.programmed_position();
         match arc::check_end(s, e, center, self.arc_tol) {
             Ok(_) => {}
             Err(ArcError::ZeroRadius) => return Err(self.alarm(AlarmKind::ArcNoCenter, bad_at, "arc centre coincides with the start point")),
@@ -418,7 +432,70 @@ impl Interp {
             }
             Err(ArcError::RadiusTooSmall { .. }) => unreachable!(),
         }
-        let feed = self.feed(at)?;
+        Ok(Some(center))
+    }
+
+    /// Scaling and rotation of an arc given in program coordinates: the
+    /// end points and the centre are transformed, a mirror reverses the
+    /// direction (000 §15.3). With unequal plane factors the arc keeps its
+    /// transformed end points and takes its radius times the larger
+    /// factor, on the same side (fanuc-semantics §8.3).
+    fn transform_arc(
+        &self,
+        start: Pos,
+        tw: Pos,
+        center: (f64, f64),
+        ccw: bool,
+        at: u32,
+    ) -> R<(Pos, Pos, (f64, f64), bool)> {
+        if !self.st.xf.active() {
+            return Ok((start, tw, center, ccw));
+        }
+        let xf = self.st.xf;
+        let plane = self.st.plane;
+        let (a1, a2, _) = plane.axes();
+        let mut c = start;
+        c[a1] = center.0;
+        c[a2] = center.1;
+        let (st, et, ct) = (xf.forward(&start), xf.forward(&tw), xf.forward(&c));
+        let ccw_t = ccw != xf.mirrors(plane);
+        let (f1, f2) = xf.plane_factors(plane);
+        let center_t = if (f1.abs() - f2.abs()).abs() > 1e-12 {
+            let (s, e) = ((start[a1], start[a2]), (tw[a1], tw[a2]));
+            let r = (s.0 - center.0).hypot(s.1 - center.1);
+            let major = arc::sweep(s, e, center, ccw) > std::f64::consts::PI + 1e-12;
+            let rs = r * f1.abs().max(f2.abs()) * if major { -1.0 } else { 1.0 };
+            arc::center_from_radius((st[a1], st[a2]), (et[a1], et[a2]), rs, ccw_t, self.arc_tol)
+                .map_err(|_| {
+                    self.alarm(
+                        AlarmKind::ArcRadius,
+                        at,
+                        "scaled arc radius is smaller than half the chord",
+                    )
+                })?
+        } else {
+            (ct[a1], ct[a2])
+        };
+        Ok((st, et, center_t, ccw_t))
+    }
+
+    /// An arc from `start` to `tw` (program coordinates) about `center`
+    /// (in the plane) at `feed`: travel-checked and emitted. The axes
+    /// outside the plane move linearly (helix).
+    pub(super) fn arc_to(
+        &mut self,
+        start: Pos,
+        tw: Pos,
+        center: (f64, f64),
+        ccw: bool,
+        feed: Feed,
+        at: u32,
+    ) -> R<()> {
+        let plane = self.st.plane;
+        let (a1, a2, _) = plane.axes();
+        let (cur, tw, center, ccw) = self.transform_arc(start, tw, center, ccw, at)?;
+        let s = (cur[a1], cur[a2]);
+        let e = (tw[a1], tw[a2]);
         // Travel: the arc's extremes in the plane, the end point elsewhere.
         let (u0, v0, u1, v1) = arc::bbox(s, e, center, ccw);
         for (u, v) in [(u0, v0), (u1, v1)] {
