@@ -30,7 +30,7 @@ pub mod state;
 pub mod words;
 
 pub use dialect::{Dialect, DialectId};
-pub use interp::{Interp, Settings, Step};
+pub use interp::{Interp, MacroSwitches, Settings, Step};
 pub use machine::{MachineKind, Profile};
 
 use kerf_canon::{Alarm, Event};
