@@ -18,6 +18,7 @@ use crate::machine::{MachineKind, Profile};
 use crate::macros::{round_to, Vars};
 use crate::words::{WVal, Words, MAX_CODES};
 
+mod block_cache;
 mod calls;
 mod codes;
 mod corners;
@@ -26,9 +27,12 @@ mod cylindrical;
 mod flow;
 mod motion;
 mod polar_interp;
+mod reset;
 mod skip;
 mod sysvars;
 mod transforms;
+
+pub use sysvars::MacroSwitches;
 
 /// Operator-panel switches and run options.
 #[derive(Clone, Debug, Default)]
@@ -155,8 +159,10 @@ pub struct Interp {
     src: Option<LineSource>,
     file_id: u32,
     program_start: Mark,
-    raw: RawBlock,
-    block: Block,
+    /// The block being executed: its text and parsed form (boxed so that
+    /// the parsed-block cache can swap them in and out).
+    raw: Box<RawBlock>,
+    block: Box<Block>,
     words: Words,
     queue: VecDeque<Event>,
     finished: bool,
@@ -203,6 +209,8 @@ pub struct Interp {
     /// A move carrying `,C`/`,R`, held until the next move is known; while
     /// it is held, events are kept back in it (interp/corners.rs).
     corner: Option<Box<corners::Pending>>,
+    /// Parsed blocks of text executed again (loops, jumps back).
+    cache: block_cache::BlockCache,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -220,87 +228,8 @@ impl Interp {
             // brackets; the HX text of 000 §14.2.4 gives 10.
             max_nesting: if dialect.id == DialectId::Hx { 10 } else { 5 },
         };
-        let mut modal = [0u16; 32];
-        for g in dialect.gcodes.iter().filter(|g| g.default) {
-            modal[g.group as usize] = g.code10;
-        }
-        let mut wcs = [[0.0; NAXES]; 6];
-        for (i, w) in wcs.iter_mut().enumerate() {
-            let key = format!("g5{}", 4 + i);
-            if let Some(m) = profile
-                .work_offsets
-                .get(&key)
-                .or_else(|| profile.work_offsets.get("g54"))
-            {
-                *w = Profile::pos_of(m);
-            }
-        }
         let hx = dialect.id == DialectId::Hx;
-        let mut st = State {
-            modal,
-            pos: profile.start_position(),
-            wcs,
-            wcs_idx: 0,
-            shift: [0.0; NAXES],
-            local: [0.0; NAXES],
-            xf: Default::default(),
-            stroke_area: None,
-            skip_pos: None,
-            polar: false,
-            polar_origin: std::cell::Cell::new((0.0, 0.0)),
-            rot: polar_interp::RotInterp::Off,
-            tlo: [0.0; NAXES],
-            h: 0,
-            g28_mid: [None; NAXES],
-            metric: true,
-            absolute: true,
-            plane: if profile.kind == MachineKind::Lathe {
-                Plane::ZX
-            } else {
-                Plane::XY
-            },
-            diameter: dialect.diameter_default,
-            feed_mode: FeedMode::PerMin,
-            feed: None,
-            spindle: SpindleDir::Stop,
-            s: 0.0,
-            css: false,
-            s_clamp: None,
-            last_rpm: 0.0,
-            tool: 0,
-            next_tool: 0,
-            offset: 0,
-            mist: false,
-            flood: false,
-        };
-        // Apply the group defaults (and, on the HX, PI 144-150).
-        for g in dialect.gcodes.iter().filter(|g| g.default) {
-            Self::apply_modal(&mut st, dialect.id, g.code10);
-        }
-        if hx {
-            let p = |n: &str, d: f64| profile.param(n, d) as i64;
-            if p("PI 144", 0.0) == 1 {
-                st.modal[1] = 10;
-            }
-            match p("PI 145", 0.0) {
-                1 => st.plane = Plane::ZX,
-                2 => st.plane = Plane::YZ,
-                _ => {}
-            }
-            st.modal[16] = match st.plane {
-                Plane::XY => 170,
-                Plane::ZX => 180,
-                Plane::YZ => 190,
-            };
-            if p("PI 146", 0.0) == 1 {
-                st.absolute = false;
-                st.modal[3] = 910;
-            }
-            if p("PI 147", 1.0) == 0 {
-                st.metric = false;
-                st.modal[6] = 200;
-            }
-        }
+        let st = Self::power_on_state(&profile, dialect);
         let arc_tol = profile.param("arc_tolerance_mm", 0.02);
         let repeat_budget = profile.param("max_repeat_blocks", 100_000_000.0) as u64;
         let max_jumps = profile.param("max_jumps", 10_000_000.0) as u64;
@@ -343,8 +272,8 @@ impl Interp {
             src: None,
             file_id: 0,
             program_start: Mark::default(),
-            raw: RawBlock::default(),
-            block: Block::default(),
+            raw: Box::default(),
+            block: Box::default(),
             words: Words::default(),
             queue: VecDeque::with_capacity(16),
             finished: false,
@@ -374,7 +303,95 @@ impl Interp {
             code_calls,
             cyc,
             corner: None,
+            cache: block_cache::BlockCache::default(),
         }
+    }
+
+    /// The machine state at power-on: the group defaults (and on the HX
+    /// PI 144-147), G54 with the profile's work offsets, the start
+    /// position, no tool, spindle and coolant off.
+    fn power_on_state(profile: &Profile, dialect: &'static Dialect) -> State {
+        let mut modal = [0u16; 32];
+        for g in dialect.gcodes.iter().filter(|g| g.default) {
+            modal[g.group as usize] = g.code10;
+        }
+        let mut wcs = [[0.0; NAXES]; 6];
+        for (i, w) in wcs.iter_mut().enumerate() {
+            let key = format!("g5{}", 4 + i);
+            if let Some(m) = profile
+                .work_offsets
+                .get(&key)
+                .or_else(|| profile.work_offsets.get("g54"))
+            {
+                *w = Profile::pos_of(m);
+            }
+        }
+        let mut st = State {
+            modal,
+            pos: profile.start_position(),
+            wcs,
+            wcs_idx: 0,
+            shift: [0.0; NAXES],
+            local: [0.0; NAXES],
+            xf: Default::default(),
+            stroke_area: None,
+            skip_pos: None,
+            polar: false,
+            polar_origin: std::cell::Cell::new((0.0, 0.0)),
+            rot: polar_interp::RotInterp::Off,
+            tlo: [0.0; NAXES],
+            h: 0,
+            g28_mid: [None; NAXES],
+            metric: true,
+            absolute: true,
+            plane: if profile.kind == MachineKind::Lathe {
+                Plane::ZX
+            } else {
+                Plane::XY
+            },
+            diameter: dialect.diameter_default,
+            feed_mode: FeedMode::PerMin,
+            feed: None,
+            spindle: SpindleDir::Stop,
+            s: 0.0,
+            css: false,
+            s_clamp: None,
+            last_rpm: 0.0,
+            tool: 0,
+            next_tool: 0,
+            offset: 0,
+            mist: false,
+            flood: false,
+        };
+        // Apply the group defaults (and, on the HX, PI 144-150).
+        for g in dialect.gcodes.iter().filter(|g| g.default) {
+            Self::apply_modal(&mut st, dialect.id, g.code10);
+        }
+        if dialect.id == DialectId::Hx {
+            let p = |n: &str, d: f64| profile.param(n, d) as i64;
+            if p("PI 144", 0.0) == 1 {
+                st.modal[1] = 10;
+            }
+            match p("PI 145", 0.0) {
+                1 => st.plane = Plane::ZX,
+                2 => st.plane = Plane::YZ,
+                _ => {}
+            }
+            st.modal[16] = match st.plane {
+                Plane::XY => 170,
+                Plane::ZX => 180,
+                Plane::YZ => 190,
+            };
+            if p("PI 146", 0.0) == 1 {
+                st.absolute = false;
+                st.modal[3] = 910;
+            }
+            if p("PI 147", 1.0) == 0 {
+                st.metric = false;
+                st.modal[6] = 200;
+            }
+        }
+        st
     }
 
     /// Loads the main program from a reader; `name` is used in source
@@ -431,6 +448,23 @@ impl Interp {
     /// Blocks executed so far.
     pub fn blocks(&self) -> u64 {
         self.blocks
+    }
+
+    /// The value of macro variable `#n` from the variable store (locals,
+    /// commons and retained variables; None when vacant or when `n` is not
+    /// such a variable, e.g. a system variable).
+    pub fn macro_var(&self, n: usize) -> Option<f64> {
+        match self.vars.class(n) {
+            crate::macros::VarClass::Plain => self.vars.raw(n),
+            crate::macros::VarClass::System => None,
+        }
+    }
+
+    /// Blocks held in the parsed-block cache (text executed again is
+    /// replayed from there instead of being read and parsed again; see
+    /// docs/ARCHITECTURE.md). For diagnostics and tests.
+    pub fn cached_blocks(&self) -> usize {
+        self.cache.len()
     }
 
     /// Current position in machine coordinates.
@@ -542,25 +576,40 @@ impl Interp {
             Some(s) => s,
             None => return Ok(false),
         };
-        match src.next_block(&mut self.raw) {
-            Ok(true) => {}
-            Ok(false) => {
-                if !self.calls.stack.is_empty() {
-                    return Err(self.sub_end_alarm());
+        // Text read before: take the parsed block from the cache if it is
+        // there (the read and the parse below would give the same).
+        self.cache.give_back(&mut self.raw, &mut self.block);
+        let at = src.tell();
+        let cached = if at.offset < self.high_water {
+            self.cache
+                .lend(self.file_id, at, &mut self.raw, &mut self.block)
+        } else {
+            None
+        };
+        if let Some(next) = cached {
+            // Lazy: moves nothing until the next read.
+            let _ = src.seek(next);
+        } else {
+            match src.next_block(&mut self.raw) {
+                Ok(true) => {}
+                Ok(false) => {
+                    if !self.calls.stack.is_empty() {
+                        return Err(self.sub_end_alarm());
+                    }
+                    self.emit_end(0)?;
+                    return Ok(false);
                 }
-                self.emit_end(0)?;
-                return Ok(false);
-            }
-            Err(e) => {
-                return Err(AlarmKind::Io.at(
-                    self.dialect.id,
-                    SrcRef {
-                        file: self.file_id,
-                        line: src.tell().line,
-                        col: 1,
-                    },
-                    format!("read error: {e}"),
-                ))
+                Err(e) => {
+                    return Err(AlarmKind::Io.at(
+                        self.dialect.id,
+                        SrcRef {
+                            file: self.file_id,
+                            line: src.tell().line,
+                            col: 1,
+                        },
+                        format!("read error: {e}"),
+                    ))
+                }
             }
         }
         self.cur = SrcRef {
@@ -570,8 +619,10 @@ impl Interp {
         };
         // Loop guard: blocks executed again (after a jump back) are counted
         // against a budget, however long the repeated section is.
-        let here = self.src.as_ref().map(|s| s.tell().offset).unwrap_or(0);
-        if here <= self.high_water {
+        let next = self.src.as_ref().map(|s| s.tell()).unwrap_or_default();
+        let here = next.offset;
+        let repeated = here <= self.high_water;
+        if repeated {
             self.repeated += 1;
             if self.repeated > self.repeat_budget {
                 return Err(self.alarm(
@@ -586,26 +637,12 @@ impl Interp {
         } else {
             self.high_water = here;
         }
-        if self.raw.overlong {
-            let max = self.profile.max_block_chars;
-            return Err(self.alarm(
-                AlarmKind::BlockTooLong,
-                max as u32,
-                format!("block longer than {max} characters"),
-            ));
-        }
-        if let Err(e) = parse_block(&self.raw.text, &self.lex, &mut self.block) {
-            let kind = match e.kind {
-                LexErrorKind::UnexpectedChar(_) => AlarmKind::IllegalAddress,
-                LexErrorKind::MissingValue => AlarmKind::MissingValue,
-                LexErrorKind::UnterminatedComment => AlarmKind::UnterminatedComment,
-                LexErrorKind::TooManyDigits => AlarmKind::TooManyDigits,
-                LexErrorKind::BadNumber | LexErrorKind::DuplicateNumber => {
-                    AlarmKind::BadSequenceNumber
-                }
-                _ => AlarmKind::BadExpression,
-            };
-            return Err(self.alarm(kind, e.at, e.kind.message()));
+        if cached.is_none() {
+            self.parse_raw()?;
+            if repeated {
+                self.cache
+                    .insert(self.file_id, &self.raw, &self.block, next);
+            }
         }
         if self.block.percent {
             if !self.calls.stack.is_empty() {
@@ -689,6 +726,33 @@ impl Interp {
             self.sub_return(None, 0)?;
         }
         Ok(r)
+    }
+
+    /// Parses `self.raw` into `self.block`; a block too long or malformed
+    /// is an alarm.
+    fn parse_raw(&mut self) -> R<()> {
+        if self.raw.overlong {
+            let max = self.profile.max_block_chars;
+            return Err(self.alarm(
+                AlarmKind::BlockTooLong,
+                max as u32,
+                format!("block longer than {max} characters"),
+            ));
+        }
+        if let Err(e) = parse_block(&self.raw.text, &self.lex, &mut self.block) {
+            let kind = match e.kind {
+                LexErrorKind::UnexpectedChar(_) => AlarmKind::IllegalAddress,
+                LexErrorKind::MissingValue => AlarmKind::MissingValue,
+                LexErrorKind::UnterminatedComment => AlarmKind::UnterminatedComment,
+                LexErrorKind::TooManyDigits => AlarmKind::TooManyDigits,
+                LexErrorKind::BadNumber | LexErrorKind::DuplicateNumber => {
+                    AlarmKind::BadSequenceNumber
+                }
+                _ => AlarmKind::BadExpression,
+            };
+            return Err(self.alarm(kind, e.at, e.kind.message()));
+        }
+        Ok(())
     }
 
     /// The end of the program (M02/M30: `code`; 0 the end of the text). A

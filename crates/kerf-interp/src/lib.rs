@@ -37,7 +37,7 @@ pub mod words;
 pub mod xform;
 
 pub use dialect::{Dialect, DialectId};
-pub use interp::{Interp, Settings, Step};
+pub use interp::{Interp, MacroSwitches, Settings, Step};
 pub use machine::{MachineKind, Profile};
 
 use kerf_canon::{Alarm, Event};

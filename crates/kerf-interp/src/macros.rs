@@ -26,6 +26,9 @@ fn fail<T>(kind: AlarmKind, message: impl Into<String>) -> Result<T, MacroError>
 #[derive(Clone, Debug)]
 pub struct Vars {
     v: Vec<Option<f64>>,
+    /// `plain[i]`: #i is one of the store's own variables (a table, so the
+    /// hot path of every variable read is one load).
+    is_plain: Vec<bool>,
     /// HX numbering (000 §14.2.3): #34-#99 locals, #200-#699 retained;
     /// otherwise Fanuc: #500-#999 retained.
     hx: bool,
@@ -50,16 +53,15 @@ impl Default for Vars {
 impl Vars {
     /// All variables vacant.
     pub fn new() -> Vars {
-        Vars {
-            v: vec![None; 1000],
-            hx: false,
-        }
+        Vars::with_numbering(false)
     }
 
     /// All variables vacant, with the HX (000) or Fanuc numbering.
     pub fn with_numbering(hx: bool) -> Vars {
+        let is_plain = (0..1000).map(|i| Vars::plain_in(hx, i)).collect();
         Vars {
             v: vec![None; 1000],
+            is_plain,
             hx,
         }
     }
@@ -92,27 +94,42 @@ impl Vars {
         }
     }
 
-    /// True when `#i` is one of the store's own variables.
-    #[inline]
-    fn plain(&self, i: usize) -> bool {
+    /// True when `#i` is one of the store's own variables in the HX (`hx`)
+    /// or Fanuc numbering.
+    fn plain_in(hx: bool, i: usize) -> bool {
         i <= 33
             || (100..=199).contains(&i)
-            || if self.hx {
+            || if hx {
                 (34..=99).contains(&i) || (200..=699).contains(&i)
             } else {
                 (500..=999).contains(&i)
             }
     }
 
+    /// True when `#i` is one of the store's own variables.
+    #[inline]
+    fn plain(&self, i: usize) -> bool {
+        self.is_plain.get(i).copied().unwrap_or(false)
+    }
+
     /// Classifies a variable number (already checked to be a whole
     /// non-negative number).
     #[inline]
     pub fn class(&self, i: usize) -> VarClass {
-        if i < 1000 && self.plain(i) {
+        if self.plain(i) {
             VarClass::Plain
         } else {
             VarClass::System
         }
+    }
+
+    /// The plain variable `#n` if `n` is exactly its whole number: the
+    /// common case of every read and write, with no further checks. None
+    /// when `n` is not such a number (the caller takes the full path).
+    #[inline]
+    pub fn plain_index(&self, n: f64) -> Option<usize> {
+        let k = n as usize;
+        (k as f64 == n && self.plain(k)).then_some(k)
     }
 
     /// Checks that `n` is a whole, non-negative variable number.
@@ -209,6 +226,16 @@ impl Vars {
         out
     }
 
+    /// Makes the local variables #1-#99 vacant (reset).
+    pub fn clear_locals(&mut self) {
+        self.v[1..100].fill(None);
+    }
+
+    /// Makes the common variables #100-#199 vacant (reset).
+    pub fn clear_commons(&mut self) {
+        self.v[100..200].fill(None);
+    }
+
     /// Replaces the local variables #1-#33 (a macro's arguments).
     pub fn put_args(&mut self, l: &[Option<f64>; 33]) {
         self.v[1..34].copy_from_slice(l);
@@ -289,132 +316,153 @@ pub fn eval<V: Lookup>(
     vars: &V,
     inc: f64,
 ) -> Result<Option<f64>, MacroError> {
-    let z = |x: Option<f64>| x.unwrap_or(0.0);
-    Ok(match ex[e as usize] {
-        Expr::Num(v) => Some(v),
-        Expr::Var(i) => {
-            let n = match ex[i as usize] {
-                Expr::Num(v) => Some(v),
-                _ => eval(ex, i, vars, 0.0)?,
-            };
-            let Some(n) = n else {
-                return fail(AlarmKind::BadVariable, "variable number is vacant");
-            };
-            vars.get(n)?
-        }
-        Expr::Neg(a) => eval(ex, a, vars, inc)?.map(|v| -v),
+    match ex[e as usize] {
+        Expr::Num(v) => Ok(Some(v)),
+        Expr::Var(i) => var(ex, i, vars),
+        Expr::Neg(a) => Ok(operand(ex, a, vars, inc)?.map(|v| -v)),
         Expr::Bin(op, a, b) => {
-            let x = eval(ex, a, vars, inc)?;
-            let y = eval(ex, b, vars, inc)?;
-            let bool_ = |c: bool| Some(if c { 1.0 } else { 0.0 });
-            match op {
-                BinOp::Eq => {
-                    return Ok(bool_(
-                        x == y || (x.is_some() && y.is_some() && (z(x) - z(y)).abs() < 1e-9),
-                    ))
-                }
-                BinOp::Ne => {
-                    return Ok(bool_(
-                        !(x == y || (x.is_some() && y.is_some() && (z(x) - z(y)).abs() < 1e-9)),
-                    ))
-                }
-                BinOp::Gt => return Ok(bool_(z(x) > z(y))),
-                BinOp::Lt => return Ok(bool_(z(x) < z(y))),
-                BinOp::Ge => return Ok(bool_(z(x) >= z(y))),
-                BinOp::Le => return Ok(bool_(z(x) <= z(y))),
-                _ => {}
-            }
-            let (p, q) = (z(x), z(y));
-            let r = match op {
-                BinOp::Add => p + q,
-                BinOp::Sub => p - q,
-                BinOp::Mul => p * q,
-                BinOp::Div => {
-                    if q == 0.0 {
-                        return fail(AlarmKind::MathError, "division by zero");
-                    }
-                    p / q
-                }
-                BinOp::Mod => {
-                    if q == 0.0 {
-                        return fail(AlarmKind::MathError, "division by zero");
-                    }
-                    p % q
-                }
-                BinOp::Or => ((p as i64) | (q as i64)) as f64,
-                BinOp::Xor => ((p as i64) ^ (q as i64)) as f64,
-                BinOp::And => ((p as i64) & (q as i64)) as f64,
-                _ => unreachable!(),
-            };
-            Some(r)
+            let x = operand(ex, a, vars, inc)?;
+            let y = operand(ex, b, vars, inc)?;
+            binary(op, x, y)
         }
         Expr::Call(f, a, b) => {
-            let x = z(eval(ex, a, vars, inc)?);
+            let x = operand(ex, a, vars, inc)?.unwrap_or(0.0);
             let y = match b {
-                Some(b) => Some(z(eval(ex, b, vars, inc)?)),
+                Some(b) => Some(operand(ex, b, vars, inc)?.unwrap_or(0.0)),
                 None => None,
             };
-            let deg = |r: f64| r.to_degrees();
-            let r = match f {
-                Func::Sin => x.to_radians().sin(),
-                Func::Cos => x.to_radians().cos(),
-                Func::Tan => x.to_radians().tan(),
-                Func::Asin => {
-                    if !(-1.0..=1.0).contains(&x) {
-                        return fail(AlarmKind::MathError, "ASIN argument out of [-1, 1]");
-                    }
-                    deg(x.asin())
-                }
-                Func::Acos => {
-                    if !(-1.0..=1.0).contains(&x) {
-                        return fail(AlarmKind::MathError, "ACOS argument out of [-1, 1]");
-                    }
-                    deg(x.acos())
-                }
-                Func::Atan => {
-                    let a = match y {
-                        Some(y) => deg(x.atan2(y)),
-                        None => deg(x.atan()),
-                    };
-                    if a < 0.0 && y.is_some() {
-                        a + 360.0
-                    } else {
-                        a
-                    }
-                }
-                Func::Sqrt => {
-                    if x < 0.0 {
-                        return fail(AlarmKind::MathError, "SQRT of a negative number");
-                    }
-                    x.sqrt()
-                }
-                Func::Abs => x.abs(),
-                Func::Round if inc > 0.0 => round_to(x, inc),
-                Func::Round => x.round(),
-                Func::Fix => x.trunc(),
-                Func::Fup => {
-                    if x >= 0.0 {
-                        x.ceil()
-                    } else {
-                        x.floor()
-                    }
-                }
-                Func::Ln => {
-                    if x <= 0.0 {
-                        return fail(AlarmKind::MathError, "LN of a number <= 0");
-                    }
-                    x.ln()
-                }
-                Func::Exp => x.exp(),
-                Func::Pow => x.powf(y.unwrap_or(1.0)),
-                Func::Adp => x,
-                Func::Bin => bin(x)?,
-                Func::Bcd => bcd(x)?,
-            };
-            if !r.is_finite() {
-                return fail(AlarmKind::MathError, "result is not a finite number");
-            }
-            Some(r)
+            call(f, x, y, inc).map(Some)
         }
-    })
+    }
+}
+
+/// An operand: constants and `#n` with a literal n directly, anything
+/// else by recursion (saves a call for the leaves of every expression).
+#[inline(always)]
+fn operand<V: Lookup>(
+    ex: &[Expr],
+    e: ExprId,
+    vars: &V,
+    inc: f64,
+) -> Result<Option<f64>, MacroError> {
+    match ex[e as usize] {
+        Expr::Num(v) => Ok(Some(v)),
+        Expr::Var(i) => var(ex, i, vars),
+        _ => eval(ex, e, vars, inc),
+    }
+}
+
+/// `#n` where node `i` is n.
+#[inline(always)]
+fn var<V: Lookup>(ex: &[Expr], i: ExprId, vars: &V) -> Result<Option<f64>, MacroError> {
+    let n = match ex[i as usize] {
+        Expr::Num(v) => v,
+        _ => match eval(ex, i, vars, 0.0)? {
+            Some(n) => n,
+            None => return fail(AlarmKind::BadVariable, "variable number is vacant"),
+        },
+    };
+    vars.get(n)
+}
+
+/// A binary operator on two values (vacant rules in [`eval`]).
+#[inline]
+fn binary(op: BinOp, x: Option<f64>, y: Option<f64>) -> Result<Option<f64>, MacroError> {
+    let z = |x: Option<f64>| x.unwrap_or(0.0);
+    let bool_ = |c: bool| Ok(Some(if c { 1.0 } else { 0.0 }));
+    let (p, q) = (z(x), z(y));
+    let r = match op {
+        BinOp::Add => p + q,
+        BinOp::Sub => p - q,
+        BinOp::Mul => p * q,
+        BinOp::Div => {
+            if q == 0.0 {
+                return fail(AlarmKind::MathError, "division by zero");
+            }
+            p / q
+        }
+        BinOp::Mod => {
+            if q == 0.0 {
+                return fail(AlarmKind::MathError, "division by zero");
+            }
+            p % q
+        }
+        BinOp::Or => ((p as i64) | (q as i64)) as f64,
+        BinOp::Xor => ((p as i64) ^ (q as i64)) as f64,
+        BinOp::And => ((p as i64) & (q as i64)) as f64,
+        BinOp::Eq => return bool_(x == y || (x.is_some() && y.is_some() && (p - q).abs() < 1e-9)),
+        BinOp::Ne => {
+            return bool_(!(x == y || (x.is_some() && y.is_some() && (p - q).abs() < 1e-9)))
+        }
+        BinOp::Gt => return bool_(p > q),
+        BinOp::Lt => return bool_(p < q),
+        BinOp::Ge => return bool_(p >= q),
+        BinOp::Le => return bool_(p <= q),
+    };
+    Ok(Some(r))
+}
+
+/// A function of one argument `x` (or two: `y`); vacant arguments are 0.
+fn call(f: Func, x: f64, y: Option<f64>, inc: f64) -> Result<f64, MacroError> {
+    let deg = |r: f64| r.to_degrees();
+    let r = match f {
+        Func::Sin => x.to_radians().sin(),
+        Func::Cos => x.to_radians().cos(),
+        Func::Tan => x.to_radians().tan(),
+        Func::Asin => {
+            if !(-1.0..=1.0).contains(&x) {
+                return fail(AlarmKind::MathError, "ASIN argument out of [-1, 1]");
+            }
+            deg(x.asin())
+        }
+        Func::Acos => {
+            if !(-1.0..=1.0).contains(&x) {
+                return fail(AlarmKind::MathError, "ACOS argument out of [-1, 1]");
+            }
+            deg(x.acos())
+        }
+        Func::Atan => {
+            let a = match y {
+                Some(y) => deg(x.atan2(y)),
+                None => deg(x.atan()),
+            };
+            if a < 0.0 && y.is_some() {
+                a + 360.0
+            } else {
+                a
+            }
+        }
+        Func::Sqrt => {
+            if x < 0.0 {
+                return fail(AlarmKind::MathError, "SQRT of a negative number");
+            }
+            x.sqrt()
+        }
+        Func::Abs => x.abs(),
+        Func::Round if inc > 0.0 => round_to(x, inc),
+        Func::Round => x.round(),
+        Func::Fix => x.trunc(),
+        Func::Fup => {
+            if x >= 0.0 {
+                x.ceil()
+            } else {
+                x.floor()
+            }
+        }
+        Func::Ln => {
+            if x <= 0.0 {
+                return fail(AlarmKind::MathError, "LN of a number <= 0");
+            }
+            x.ln()
+        }
+        Func::Exp => x.exp(),
+        Func::Pow => x.powf(y.unwrap_or(1.0)),
+        Func::Adp => x,
+        Func::Bin => bin(x)?,
+        Func::Bcd => bcd(x)?,
+    };
+    if !r.is_finite() {
+        return fail(AlarmKind::MathError, "result is not a finite number");
+    }
+    Ok(r)
 }

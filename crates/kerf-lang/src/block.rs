@@ -188,6 +188,30 @@ pub struct Block {
 }
 
 impl Block {
+    /// Makes `self` a copy of `other`, reusing `self`'s buffers (no
+    /// allocation once they have grown to `other`'s sizes).
+    pub fn copy_from(&mut self, other: &Block) {
+        self.percent = other.percent;
+        self.program = other.program;
+        self.n = other.n;
+        self.deletes.clone_from(&other.deletes);
+        self.words.clone_from(&other.words);
+        self.stmt = other.stmt;
+        self.stmt_at = other.stmt_at;
+        self.exprs.clone_from(&other.exprs);
+        self.comments.clone_from(&other.comments);
+        self.loop_cmd = other.loop_cmd;
+    }
+
+    /// Bytes of heap the block's vectors hold (for bounding caches).
+    pub fn heap_bytes(&self) -> usize {
+        use std::mem::size_of;
+        self.deletes.capacity() * size_of::<(u16, u16)>()
+            + self.words.capacity() * size_of::<Word>()
+            + self.exprs.capacity() * size_of::<Expr>()
+            + self.comments.capacity() * size_of::<(u32, u32)>()
+    }
+
     /// Empties the block for reuse.
     pub fn clear(&mut self) {
         self.percent = false;

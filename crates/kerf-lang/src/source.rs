@@ -34,6 +34,14 @@ pub struct RawBlock {
 }
 
 impl RawBlock {
+    /// Makes `self` a copy of `other`, reusing `self`'s buffers.
+    pub fn copy_from(&mut self, other: &RawBlock) {
+        self.text.clone_from(&other.text);
+        self.mark = other.mark;
+        self.continuations.clone_from(&other.continuations);
+        self.overlong = other.overlong;
+    }
+
     /// Maps a byte index of `text` to (line, 1-based column).
     pub fn line_col(&self, idx: usize) -> (u32, u32) {
         let mut line = self.mark.line;
@@ -56,6 +64,9 @@ pub struct LineSource {
     max_len: usize,
     continuation: bool,
     eof: bool,
+    /// Where the underlying reader is (`offset` may differ after a
+    /// [`LineSource::seek`] until the next read).
+    phys: u64,
 }
 
 impl LineSource {
@@ -70,6 +81,7 @@ impl LineSource {
             max_len,
             continuation,
             eof: false,
+            phys: 0,
         }
     }
 
@@ -83,18 +95,31 @@ impl LineSource {
 
     /// Returns to a position previously obtained from [`LineSource::tell`] or
     /// [`RawBlock::mark`].
+    ///
+    /// The move is lazy: it is recorded here and made on the underlying
+    /// reader at the next read, so an interpreter replaying cached blocks
+    /// can move through the text without touching the reader. A failure of
+    /// the move is reported by that read.
     pub fn seek(&mut self, m: Mark) -> io::Result<()> {
-        // Relative seeks keep the read buffer when the target is inside it,
-        // so tight loops do not re-read the file.
-        let delta = m.offset as i64 - self.offset as i64;
-        if self.offset <= i64::MAX as u64 && m.offset <= i64::MAX as u64 {
-            self.inner.seek_relative(delta)?;
-        } else {
-            self.inner.seek(SeekFrom::Start(m.offset))?;
-        }
         self.offset = m.offset;
         self.line = m.line.saturating_sub(1);
         self.eof = false;
+        Ok(())
+    }
+
+    /// Moves the underlying reader to `offset` if a seek left it elsewhere.
+    fn sync(&mut self) -> io::Result<()> {
+        if self.phys != self.offset {
+            // Relative seeks keep the read buffer when the target is inside
+            // it, so tight loops do not re-read the file.
+            if self.phys <= i64::MAX as u64 && self.offset <= i64::MAX as u64 {
+                self.inner
+                    .seek_relative(self.offset as i64 - self.phys as i64)?;
+            } else {
+                self.inner.seek(SeekFrom::Start(self.offset))?;
+            }
+            self.phys = self.offset;
+        }
         Ok(())
     }
 
@@ -145,11 +170,13 @@ impl LineSource {
             return Ok(false);
         }
         raw.mark = self.tell();
+        self.sync()?;
         let (n, trunc) = self.read_physical(&mut raw.text, self.max_len)?;
         if n == 0 && self.eof {
             return Ok(false);
         }
         self.offset += n;
+        self.phys = self.offset;
         self.line += 1;
         raw.overlong |= trunc;
         if self.continuation {
@@ -165,6 +192,7 @@ impl LineSource {
                     break;
                 }
                 self.offset += n;
+                self.phys = self.offset;
                 self.line += 1;
                 raw.overlong |= trunc;
                 raw.continuations.push((at, self.line));
@@ -224,6 +252,39 @@ mod tests {
         s.next_block(&mut b).unwrap();
         assert_eq!(b.text, b"B");
         assert_eq!(b.mark.line, 2);
+    }
+
+    #[test]
+    fn seek_is_lazy_and_reads_from_the_new_place() {
+        // 20,000 lines "L<n>" (beyond the 64 kB read buffer): seek far
+        // ahead, back to the start, twice in a row (only the last counts),
+        // and past the end of the text.
+        let text: String = (1..=20_000).map(|i| format!("L{i}\n")).collect();
+        let mut s = src(&text, false);
+        let mut b = RawBlock::default();
+        s.next_block(&mut b).unwrap();
+        let second = s.tell();
+        // Line n starts after lines 1..n-1; "L1\n".."L9\n" are 3 bytes,
+        // "L10\n".."L99\n" 4, "L100\n".."L999\n" 5, "L1000\n".."L9999\n"
+        // 6: line 15000 starts at 9*3 + 90*4 + 900*5 + 9000*6 + 5000*7.
+        let far = Mark {
+            offset: 27 + 360 + 4500 + 54_000 + 5000 * 7,
+            line: 15_000,
+        };
+        s.seek(far).unwrap();
+        assert_eq!(s.tell(), far);
+        s.next_block(&mut b).unwrap();
+        assert_eq!((b.text.as_slice(), b.mark), (&b"L15000"[..], far));
+        s.seek(Mark { offset: 0, line: 1 }).unwrap();
+        s.seek(second).unwrap();
+        s.next_block(&mut b).unwrap();
+        assert_eq!((b.text.as_slice(), b.mark.line), (&b"L2"[..], 2));
+        s.seek(Mark {
+            offset: text.len() as u64 + 10,
+            line: 30_000,
+        })
+        .unwrap();
+        assert!(!s.next_block(&mut b).unwrap());
     }
 
     #[test]

@@ -928,6 +928,27 @@ impl Interp {
         Ok(None)
     }
 
+    /// Reset: leaves every call (back to the main program's file, start and
+    /// header, its own locals put back), drops the G66 calls, the M98 end
+    /// sequence and the main-program M99 L count.
+    pub(super) fn reset_calls(&mut self) {
+        if let Some(bottom) = self.calls.stack.first() {
+            let (file, start, header) = (bottom.file, bottom.start, bottom.header);
+            // The main level's locals are in the first macro call's frame.
+            let main_locals = self.calls.stack.iter().find_map(|f| f.locals.clone());
+            self.switch_to(file);
+            self.program_start = start;
+            self.calls.header = header;
+            if let Some(l) = main_locals {
+                self.vars.put_locals(&l);
+            }
+        }
+        self.calls.stack.clear();
+        self.calls.end_seq = None;
+        self.calls.main_repeat = None;
+        self.calls.modal.clear();
+    }
+
     /// G67: cancels the most recent G66.
     pub(super) fn g67(&mut self) {
         self.calls.modal.pop();

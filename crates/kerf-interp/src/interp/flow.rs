@@ -6,7 +6,13 @@ use super::*;
 impl Interp {
     // ---- macro statements ----------------------------------------------------------
 
+    #[inline]
     pub(super) fn eval(&mut self, e: kerf_lang::ExprId, at: u32) -> R<Option<f64>> {
+        // A constant (the variable number of most assignments) needs no
+        // evaluation.
+        if let Some(&kerf_lang::Expr::Num(v)) = self.block.exprs.get(e as usize) {
+            return Ok(Some(v));
+        }
         self.eval_in(e, at, 0.0)
     }
 
@@ -86,6 +92,14 @@ impl Interp {
         let Some(i) = idx else {
             return Err(self.alarm(AlarmKind::BadVariable, at, "variable number is vacant"));
         };
+        // Fast path: a plain variable other than #0 given by its exact
+        // number, a finite or vacant value.
+        if let Some(k) = self.vars.plain_index(i) {
+            if k > 0 && v.is_none_or(f64::is_finite) {
+                self.vars.set_raw(k, v);
+                return Ok(());
+            }
+        }
         if (3000.0..=3006.0).contains(&i) && self.system_write(i, v, at)? {
             return Ok(());
         }

@@ -64,6 +64,27 @@ impl SysState {
     }
 }
 
+/// What the macro variables #3003 and #3004 ask of the runtime
+/// (fanuc-semantics §7.8). The interpreter records them; a batch run has
+/// no single-block stop, feed hold or override to suppress, and the
+/// runtime or planner that has them reads them here between steps (the
+/// state after the block that made the last event handed out, since a
+/// block runs only when the previous one's events are all taken).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct MacroSwitches {
+    /// #3003 bit 0: no single-block stop.
+    pub single_block_suppressed: bool,
+    /// #3003 bit 1: do not wait for the auxiliary-function completion
+    /// signal (FIN).
+    pub no_fin_wait: bool,
+    /// #3004 bit 0: feed hold disabled.
+    pub feed_hold_disabled: bool,
+    /// #3004 bit 1: feedrate override disabled (100 %).
+    pub override_disabled: bool,
+    /// #3004 bit 2: exact-stop check disabled.
+    pub exact_stop_disabled: bool,
+}
+
 fn fail<T>(kind: AlarmKind, message: String) -> Result<T, MacroError> {
     Err(MacroError { kind, message })
 }
@@ -80,8 +101,7 @@ impl Lookup for Env<'_> {
     #[inline]
     fn get(&self, n: f64) -> Result<Option<f64>, MacroError> {
         // Fast path: a whole number in the plain ranges.
-        let k = n as usize;
-        if k as f64 == n && k < 1000 && self.0.vars.class(k) == VarClass::Plain {
+        if let Some(k) = self.0.vars.plain_index(n) {
             return Ok(self.0.vars.raw(k));
         }
         let i = Vars::number(n)?;
@@ -102,6 +122,9 @@ enum Sys {
     /// Work offset G54+w, axis number.
     Wcs(usize, usize),
     SingleBlock,
+    /// HX #4018: 1 while the program runs in TPG (the control's tool-path
+    /// graphic check), 0 in a real run.
+    Tpg,
     S,
     DNum,
     HNum,
@@ -128,6 +151,27 @@ enum Sys {
 }
 
 impl Interp {
+    /// The switches set by #3003 and #3004 (Fanuc numbering; always off
+    /// on the HX, whose #3000+n are parameter windows). Reset clears them.
+    pub fn macro_switches(&self) -> MacroSwitches {
+        let (a, b) = (self.sys.c3003 as u32, self.sys.c3004 as u32);
+        MacroSwitches {
+            single_block_suppressed: a & 1 != 0,
+            no_fin_wait: a & 2 != 0,
+            feed_hold_disabled: b & 1 != 0,
+            override_disabled: b & 2 != 0,
+            exact_stop_disabled: b & 4 != 0,
+        }
+    }
+
+    /// Whether a single-block runner stops after the block that made the
+    /// last event: the single-block switch is on (`Settings::single_block`,
+    /// or #3083 on the HX as the program set it) and #3003 bit 0 does not
+    /// suppress the stop.
+    pub fn single_block_stop(&self) -> bool {
+        self.sys.single_block != 0.0 && !self.macro_switches().single_block_suppressed
+    }
+
     fn sys_decode(&self, i: usize) -> Option<Sys> {
         use Sys::*;
         Some(if self.dialect.id == DialectId::Hx {
@@ -137,6 +181,7 @@ impl Interp {
                 2368..=2370 => Shift(i - 2368),
                 2377..=2430 => Wcs((i - 2377) / 9, (i - 2377) % 9),
                 3083 => SingleBlock,
+                4018 => Tpg,
                 4083..=4086 => Work(i - 4083),
                 4379..=4382 => Machine(i - 4379),
                 4792 => S,
@@ -234,6 +279,7 @@ impl Interp {
             Shift(k) => return Ok(self.axis_value_of(k, &self.st.shift).or(Some(0.0))),
             Wcs(w, k) => return Ok(self.axis_value_of(k, &self.st.wcs[w]).or(Some(0.0))),
             SingleBlock => self.sys.single_block,
+            Tpg => (self.profile.param("tpg", 0.0) != 0.0) as u8 as f64,
             S => self.st.s,
             DNum => self.sys.d,
             HNum => self.st.h as f64,
