@@ -3,10 +3,22 @@
 //! rotation (000 §7.3, §8.3, §15.2-15.4). Expected values are worked out
 //! by hand in the comments (cos 60° = 0.5, sin 60° = 0.8660254037844386).
 
-use kerf_canon::{ArcDir, Canon};
+use kerf_canon::{ArcDir, Canon, Motion, Pos};
+use kerf_interp::Run;
 
 mod common;
 use common::{alarm, moves, ok, round, run_on};
+
+/// The first arc of a run: its motion, centre and direction.
+fn first_arc(r: &Run) -> (&Motion, &Pos, ArcDir) {
+    r.events
+        .iter()
+        .find_map(|e| match &e.cmd {
+            Canon::Arc { m, center, dir, .. } => Some((m, center, *dir)),
+            _ => None,
+        })
+        .expect("an arc")
+}
 
 /// 000 §15.4 example N1-N8, numbers with decimal points (the manual prints
 /// `G68 X70 Y30 R60` and its comment reads "X 70. Y 30. … 60°"). A G53
@@ -76,17 +88,10 @@ fn rotation_turns_arcs() {
         "G00 X0 Y0\nG68 X0 Y0 R90.\nG02 X20. Y0 I10. F100\n",
     );
     ok(&r);
-    let e = r
-        .events
-        .iter()
-        .find(|e| matches!(e.cmd, Canon::Arc { .. }))
-        .unwrap();
-    let Canon::Arc { m, center, dir, .. } = &e.cmd else {
-        unreachable!()
-    };
+    let (m, center, dir) = first_arc(&r);
     assert_eq!((round(m.to[0]), round(m.to[1])), (0.0, 20.0));
     assert_eq!((round(center[0]), round(center[1])), (0.0, 10.0));
-    assert_eq!(*dir, ArcDir::Cw);
+    assert_eq!(dir, ArcDir::Cw);
 }
 
 /// 000 §15.2.2: `G51 X0. Y0. Z0. I2000 J1000` then `G02 X100. Y0. R100.`
@@ -102,17 +107,10 @@ fn scaling_example_of_000_15_2_2() {
         "G90 G00 X0. Y100.\nG51 X0. Y0. Z0. I2000 J1000\nG02 X100. Y0. R100. F500.\n",
     );
     ok(&r);
-    let e = r
-        .events
-        .iter()
-        .find(|e| matches!(e.cmd, Canon::Arc { .. }))
-        .unwrap();
-    let Canon::Arc { m, center, dir, .. } = &e.cmd else {
-        unreachable!()
-    };
+    let (m, center, dir) = first_arc(&r);
     assert_eq!((round(m.to[0]), round(m.to[1])), (200.0, 0.0));
     assert_eq!((round(center[0]), round(center[1])), (25.838015, -98.32397));
-    assert_eq!(*dir, ArcDir::Cw);
+    assert_eq!(dir, ArcDir::Cw);
 }
 
 /// 000 §15.2 / §15.3 pattern examples: a subprogram O1234 (kerf's: the
@@ -164,17 +162,10 @@ fn mirror_reverses_arc_direction() {
         "G00 X0 Y0\nG51 X0 Y0 I-1000 J1000\nG02 X10. Y0 I5. F100\n",
     );
     ok(&r);
-    let e = r
-        .events
-        .iter()
-        .find(|e| matches!(e.cmd, Canon::Arc { .. }))
-        .unwrap();
-    let Canon::Arc { m, center, dir, .. } = &e.cmd else {
-        unreachable!()
-    };
+    let (m, center, dir) = first_arc(&r);
     assert_eq!((round(m.to[0]), round(m.to[1])), (-10.0, 0.0));
     assert_eq!((round(center[0]), round(center[1])), (-5.0, 0.0));
-    assert_eq!(*dir, ArcDir::Ccw);
+    assert_eq!(dir, ArcDir::Ccw);
 }
 
 /// P scales every axis (P500 = ×0.5), Z included, about the given centre.
