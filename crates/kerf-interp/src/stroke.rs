@@ -116,12 +116,7 @@ pub fn arc_points(
 ) -> Vec<Pos> {
     let (a1, a2) = axes;
     let r = (s[a1] - c.0).hypot(s[a2] - c.1);
-    let step = if r > tol {
-        2.0 * (1.0 - tol / r).acos()
-    } else {
-        sweep.abs().max(1e-3)
-    };
-    let n = ((sweep.abs() / step).ceil() as usize).clamp(1, 100_000);
+    let n = crate::rotary::arc_chords(r, sweep, tol);
     let a0 = (s[a2] - c.1).atan2(s[a1] - c.0);
     let mut pts = Vec::with_capacity(n + 1);
     for k in 0..=n {

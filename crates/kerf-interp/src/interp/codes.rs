@@ -191,14 +191,17 @@ impl Interp {
         let rpm = self.rpm();
         if changed_dir || (rpm - self.st.last_rpm).abs() > 1e-9 {
             self.st.last_rpm = rpm;
-            let css = if self.st.css {
-                Some(self.st.s * if self.st.metric { 1.0 } else { 0.3048 })
-            } else {
-                None
-            };
+            let css = self.css_speed();
             self.emit(Canon::Spindle { dir, rpm, css });
         }
         Ok(())
+    }
+
+    /// The surface speed in m/min when constant surface speed is on.
+    pub(super) fn css_speed(&self) -> Option<f64> {
+        self.st
+            .css
+            .then_some(self.st.s * if self.st.metric { 1.0 } else { 0.3048 })
     }
 
     /// Spindle rpm for the programmed S at the current position.

@@ -451,8 +451,7 @@ impl Interp {
             self.rpm()
         };
         self.st.last_rpm = rpm;
-        let css = (self.st.css && dir != SpindleDir::Stop)
-            .then_some(self.st.s * if self.st.metric { 1.0 } else { 0.3048 });
+        let css = self.css_speed().filter(|_| dir != SpindleDir::Stop);
         self.emit(Canon::Spindle { dir, rpm, css });
     }
 
@@ -470,13 +469,10 @@ impl Interp {
     /// The cutting mode of group 15 in force, re-emitted after tapping.
     fn restore_cut_mode(&mut self) {
         let grp = self.gcode(640).map(|g| g.group as usize).unwrap_or(15);
-        let m = match self.st.modal[grp] {
-            610 => ModeChange::ExactStopMode(true),
-            620 => ModeChange::CornerOverride,
-            630 => return,
-            _ => ModeChange::CuttingMode,
-        };
-        self.emit(Canon::Mode(m));
+        let c = self.st.modal[grp];
+        if c != 630 {
+            self.mode_event(c);
+        }
     }
 
     /// Actions 2-6 of one hole, after the positioning in the plane.

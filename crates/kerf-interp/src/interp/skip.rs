@@ -3,6 +3,7 @@
 //! simulated skip signal: the run declares where the probe touches
 //! ([`Settings::skip`], `--set skip.z=-12.5`).
 
+use super::motion::Speed;
 use super::*;
 
 impl Interp {
@@ -155,11 +156,7 @@ impl Interp {
                 ),
             ));
         }
-        let saved = self.st.feed;
-        self.st.feed = Some(feed);
-        let moved = self.move_line(false, hit, at);
-        self.st.feed = saved;
-        moved?;
+        self.line_to(hit, Speed::Feed(Feed::PerMin(feed)), at)?;
         self.st.skip_pos = Some(hit);
         let h = self.st.h as usize;
         let delta = hit[zi] - meas;
