@@ -175,7 +175,7 @@ fn user_profile_and_offsets_file() {
     let prof = tmp("my-mill.toml", &text);
     let offs = tmp(
         "offs.toml",
-        "[g54]\nx = -100.0\ny = -100.0\nz = -100.0\n[h]\n1 = 25.0\n",
+        "[g54]\nx = -100.0\ny = -100.0\nz = -100.0\n[h]\n1 = 25.0\n[h_wear]\n1 = -0.5\n",
     );
     let p = tmp("offs.nc", "G90 G00 X10. Y0 Z0\nG43 H1 Z0\n");
     let tp = p.with_extension("jsonl");
@@ -200,10 +200,22 @@ fn user_profile_and_offsets_file() {
         .lines()
         .map(|l| serde_json::from_str(l).unwrap())
         .collect();
-    // Machine = G54 origin + work: X -100 + 10; with H1 = 25 the gauge line is 25 above Z0.
+    // Machine = G54 origin + work: X -100 + 10; with H1 = 25 - 0.5 (wear)
+    // the gauge line is 24.5 above Z0.
     assert_eq!(recs[0]["mto"]["x"], -90.0);
     assert_eq!(recs[0]["mto"]["z"], -100.0);
-    assert_eq!(recs[1]["mto"]["z"], -75.0);
+    assert_eq!(recs[1]["mto"]["z"], -75.5);
+    // H129 is beyond the HX's 128 offsets: a usage error naming it.
+    let offs = tmp("offs-bad.toml", "[h]\n129 = 1.0\n");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .arg("--offsets")
+        .arg(&offs)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("129"));
     // A bad profile is a usage error.
     let bad = tmp("bad.toml", "name = 1\n");
     let out = kerf()

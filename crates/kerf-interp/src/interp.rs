@@ -16,6 +16,7 @@ use crate::arc::{self, ArcError};
 use crate::dialect::{Dialect, DialectId, MAction, MWhen, Support};
 use crate::machine::{MachineKind, Profile};
 use crate::macros::{round_to, Vars};
+use crate::offsets::OffsetTable;
 use crate::words::{WVal, Words, MAX_CODES};
 
 mod block_cache;
@@ -177,7 +178,8 @@ pub struct Interp {
     jumps: u64,
     cur: SrcRef,
     arc_tol: f64,
-    h_table: Vec<f64>,
+    /// Tool offset memory (H/D, lathe X/Z/R/T).
+    pub(crate) offsets: OffsetTable,
     /// An alarm raised after the current block's commands have run (G27).
     after_block: Option<Alarm>,
     /// Furthest byte offset read so far.
@@ -229,6 +231,7 @@ impl Interp {
             max_nesting: if dialect.id == DialectId::Hx { 10 } else { 5 },
         };
         let hx = dialect.id == DialectId::Hx;
+        let offsets = OffsetTable::new(profile.tools.offsets as usize);
         let st = Self::power_on_state(&profile, dialect);
         let arc_tol = profile.param("arc_tolerance_mm", 0.02);
         let repeat_budget = profile.param("max_repeat_blocks", 100_000_000.0) as u64;
@@ -287,7 +290,7 @@ impl Interp {
             jumps: 0,
             cur: SrcRef::default(),
             arc_tol,
-            h_table: vec![0.0; 129],
+            offsets,
             after_block: None,
             high_water: 0,
             repeated: 0,
@@ -425,11 +428,28 @@ impl Interp {
         self.vars.set_retained(i, v)
     }
 
-    /// Sets tool length offset H`n` (mm); H0 is always 0.
+    /// Sets the geometry of tool length offset H`n` (mm); H0 is always 0.
     pub fn set_h(&mut self, n: usize, v: f64) {
-        if n > 0 && n < self.h_table.len() {
-            self.h_table[n] = v;
+        if let Some(h) = self.offsets.h_mut(n) {
+            h.geom = v;
         }
+    }
+
+    /// Whether X is programmed as a diameter now (lathes).
+    pub fn diameter_programming(&self) -> bool {
+        self.profile.kind == MachineKind::Lathe && self.st.diameter
+    }
+
+    /// The tool offset memory (H/D pages, lathe tool offsets).
+    pub fn offsets(&self) -> &OffsetTable {
+        &self.offsets
+    }
+
+    /// The tool offset memory for writing (an `--offsets` file, a runner).
+    /// Offsets already in force are not re-applied until the program
+    /// selects them again (as on the control).
+    pub fn offsets_mut(&mut self) -> &mut OffsetTable {
+        &mut self.offsets
     }
 
     /// The name of a file in source references.

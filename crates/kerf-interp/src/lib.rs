@@ -30,6 +30,7 @@ pub mod dialect;
 pub mod interp;
 pub mod machine;
 pub mod macros;
+pub mod offsets;
 pub mod rotary;
 pub mod state;
 pub mod stroke;

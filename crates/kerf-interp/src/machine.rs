@@ -78,6 +78,14 @@ pub struct ToolData {
     /// next motion (false).
     #[serde(default = "yes")]
     pub immediate_offsets: bool,
+    /// Highest tool offset number (H/D on mills, tool offsets on lathes);
+    /// 128 unless the profile says otherwise.
+    #[serde(default = "default_offsets")]
+    pub offsets: u32,
+}
+
+fn default_offsets() -> u32 {
+    128
 }
 
 fn yes() -> bool {

@@ -7,7 +7,7 @@ use kerf_canon::Canon;
 use kerf_interp::{Run, Settings};
 
 mod common;
-use common::{ok, round, run_with};
+use common::{alarm, ok, round, run_on, run_with};
 
 fn moves(r: &Run) -> Vec<(u32, f64, f64, f64)> {
     r.events
@@ -143,4 +143,34 @@ fn fanuc_lathe_positions_and_work_offset_write() {
     );
     ok(&r);
     assert_eq!(moves(&r).len(), 1);
+}
+
+#[test]
+fn lathe_tool_offset_variables_share_the_offset_memory() {
+    // Fanuc 0-T numbering: #2701+n X geometry (a diameter under diameter
+    // programming), #2801+n Z, #2901+n R, #2301+n tip, #2001+n X wear.
+    let text = "#2702 = 1.5\n#2802 = -0.93\n#2902 = 0.4\n#2302 = 3\n#2002 = 0.02\n\
+                G00 X[#2702 + #2002] Z[#2802 * 100]\nM30\n";
+    let mut it = kerf_interp::Interp::new(
+        kerf_interp::Profile::builtin("puma-lathe").unwrap(),
+        Settings::default(),
+    );
+    it.load_main(
+        "t.nc",
+        Box::new(std::io::Cursor::new(text.as_bytes().to_vec())),
+    );
+    while let kerf_interp::Step::Event(_) = it.step() {}
+    let o = it.offsets().lathe(2);
+    // X 1.5 diameter = 0.75 radius; wear 0.02 diameter = 0.01 radius.
+    assert_eq!((o.x, o.z, o.r, o.tip), (0.75, -0.93, 0.4, 3));
+    assert!((o.wear_x - 0.01).abs() < 1e-12);
+    // Read back in program units: X 1.5 + 0.02 = 1.52 (diameter, so a
+    // 0.76 mm radius), Z -0.93 * 100 = -93.
+    let r = run_on("puma-lathe", text);
+    ok(&r);
+    let m = moves(&r);
+    assert_eq!((m[0].1, m[0].3), (0.76, -93.0));
+    // Offset 17 is beyond the PUMA's 16 offsets: an alarm on line 1.
+    let r = run_on("puma-lathe", "#2717 = 1.\nM30\n");
+    assert_eq!(alarm(&r).1, 1);
 }

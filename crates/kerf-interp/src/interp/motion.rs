@@ -599,14 +599,14 @@ impl Interp {
             return Ok(());
         }
         if let Some(h) = self.words.get(b'H') {
-            if h.v < 0.0 || h.v.fract() != 0.0 || h.v as usize >= self.h_table.len() {
+            if h.v < 0.0 || h.v.fract() != 0.0 || !self.offsets.valid(h.v as usize) {
                 return Err(self.alarm(
                     AlarmKind::OutOfRange,
                     h.at,
                     format!(
                         "H{} is not an offset number (H00-H{})",
                         fmt_num(h.v),
-                        self.h_table.len() - 1
+                        self.offsets.count()
                     ),
                 ));
             }
@@ -629,7 +629,7 @@ impl Interp {
             _ => 0.0,
         };
         self.st.tlo = [0.0; NAXES];
-        self.st.tlo[Axis::Z as usize] = sign * self.h_table[self.st.h as usize];
+        self.st.tlo[Axis::Z as usize] = sign * self.offsets.h(self.st.h as usize);
     }
 
     /// The machine position of reference point `n` (1-4) for an axis.

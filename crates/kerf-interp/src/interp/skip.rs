@@ -160,7 +160,9 @@ impl Interp {
         self.st.skip_pos = Some(hit);
         let h = self.st.h as usize;
         let delta = hit[zi] - meas;
-        self.h_table[h] += delta;
+        if let Some(e) = self.offsets.h_mut(h) {
+            e.geom += delta;
+        }
         self.refresh_tool_length();
         Ok(())
     }

@@ -18,10 +18,6 @@ use crate::macros::{Lookup, MacroError, VarClass, Vars};
 /// System-variable state that lives nowhere else in the interpreter.
 #[derive(Clone, Debug)]
 pub(crate) struct SysState {
-    /// Cutter radius offsets D1-D128 (mm), index = D number.
-    pub d_table: Vec<f64>,
-    /// Lathe tool offset memory #2001-#2999 (program units as written).
-    pub lathe_off: Vec<f64>,
     /// Interface inputs: HX UI000-UI331 as four 32-bit words (#7000-#7035);
     /// Fanuc #1000-#1015 / #1032 are the low 16 bits of word 0.
     pub inputs: [u32; 4],
@@ -46,8 +42,6 @@ pub(crate) struct SysState {
 impl SysState {
     pub fn new(inputs: [u32; 4], single_block: bool) -> SysState {
         SysState {
-            d_table: vec![0.0; 129],
-            lathe_off: vec![0.0; 1000],
             inputs,
             outputs: [0; 4],
             d: 0.0,
@@ -113,6 +107,20 @@ impl Lookup for Env<'_> {
 }
 
 /// What a system variable number names.
+/// A field of a lathe tool offset, as the Fanuc 0-T system variables
+/// number them: #2001+n X wear, #2101+n Z wear, #2201+n R wear, #2301+n
+/// tip, #2701+n X geometry, #2801+n Z geometry, #2901+n R geometry.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum LatheField {
+    X,
+    Z,
+    R,
+    WearX,
+    WearZ,
+    WearR,
+    Tip,
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Sys {
     D(usize),
@@ -138,7 +146,8 @@ enum Sys {
     OutBit(usize, usize),
     OutWord(usize, u32),
     RefPoint(u32, usize),
-    LatheOff(usize),
+    /// Lathe tool offset (Fanuc 0-T numbering): field, offset number.
+    LatheOff(LatheField, usize),
     Clock1,
     Clock2,
     C3003,
@@ -204,7 +213,22 @@ impl Interp {
                 1100..=1115 => OutBit(0, i - 1100),
                 1132 => OutWord(0, 0xffff),
                 1133 => OutWord(0, u32::MAX),
-                2001..=2999 => LatheOff(i - 2000),
+                2001..=2999 => {
+                    let f = match (i - 2000) / 100 {
+                        0 => LatheField::WearX,
+                        1 => LatheField::WearZ,
+                        2 => LatheField::WearR,
+                        3 => LatheField::Tip,
+                        7 => LatheField::X,
+                        8 => LatheField::Z,
+                        9 => LatheField::R,
+                        _ => return None,
+                    };
+                    match i % 100 {
+                        0 => return None,
+                        n => LatheOff(f, n),
+                    }
+                }
                 3001 => Clock1,
                 3002 => Clock2,
                 3003 => C3003,
@@ -274,8 +298,8 @@ impl Interp {
         };
         let u = self.unit();
         Ok(Some(match s {
-            D(n) => self.sys.d_table[n] / u,
-            H(n) => self.h_table.get(n).copied().unwrap_or(0.0) / u,
+            D(n) => self.offsets.d_entry(n).map_or(0.0, |e| e.geom) / u,
+            H(n) => self.offsets.h_entry(n).map_or(0.0, |e| e.geom) / u,
             Shift(k) => return Ok(self.axis_value_of(k, &self.st.shift).or(Some(0.0))),
             Wcs(w, k) => return Ok(self.axis_value_of(k, &self.st.wcs[w]).or(Some(0.0))),
             SingleBlock => self.sys.single_block,
@@ -305,7 +329,18 @@ impl Interp {
                 let ax = kerf_canon::Axis::ALL[s];
                 self.to_prog_units(s, self.reference_point(n, ax))
             }
-            LatheOff(n) => self.sys.lathe_off[n],
+            LatheOff(f, n) => {
+                let o = self.offsets.lathe(n);
+                match f {
+                    LatheField::X => self.to_prog_units(0, o.x),
+                    LatheField::WearX => self.to_prog_units(0, o.wear_x),
+                    LatheField::Z => o.z / u,
+                    LatheField::WearZ => o.wear_z / u,
+                    LatheField::R => o.r / u,
+                    LatheField::WearR => o.wear_r / u,
+                    LatheField::Tip => o.tip as f64,
+                }
+            }
             Clock1 => self.sys.clock.elapsed().as_secs_f64() * 1000.0 + self.sys.clock1_ms,
             Clock2 => self.sys.clock.elapsed().as_secs_f64() / 3600.0 + self.sys.clock2_h,
             C3003 => self.sys.c3003,
@@ -361,10 +396,14 @@ impl Interp {
             }
         };
         match s {
-            D(n) => self.sys.d_table[n] = x * u,
+            D(n) => {
+                if let Some(d) = self.offsets.d_mut(n) {
+                    d.geom = x * u;
+                }
+            }
             H(n) => {
-                if let Some(h) = self.h_table.get_mut(n) {
-                    *h = x * u;
+                if let Some(h) = self.offsets.h_mut(n) {
+                    h.geom = x * u;
                 }
             }
             Shift(k) | Wcs(_, k) => {
@@ -393,7 +432,30 @@ impl Interp {
                 let n = word(x, mask)?;
                 self.sys.outputs[w] = (self.sys.outputs[w] & !mask) | n;
             }
-            LatheOff(n) => self.sys.lathe_off[n] = x,
+            LatheOff(f, n) => {
+                if f == LatheField::Tip && !(0.0..=9.0).contains(&x.round()) {
+                    return fail(
+                        AlarmKind::OutOfRange,
+                        format!("#{i}: tool tip direction must be 0-9"),
+                    );
+                }
+                let xr = self.prog_units_to_mm(0, x);
+                let Some(o) = self.offsets.lathe_mut(n) else {
+                    return fail(
+                        AlarmKind::BadVariable,
+                        format!("#{i}: offset {n} is not in this control's offset memory"),
+                    );
+                };
+                match f {
+                    LatheField::X => o.x = xr,
+                    LatheField::WearX => o.wear_x = xr,
+                    LatheField::Z => o.z = x * u,
+                    LatheField::WearZ => o.wear_z = x * u,
+                    LatheField::R => o.r = x * u,
+                    LatheField::WearR => o.wear_r = x * u,
+                    LatheField::Tip => o.tip = x.round() as u8,
+                }
+            }
             Clock1 => {
                 self.sys.clock1_ms = x - self.sys.clock.elapsed().as_secs_f64() * 1000.0;
             }
