@@ -103,6 +103,9 @@ pub enum AlarmKind {
     /// `,C` and `,R` in one block, or a change of coordinate system or
     /// tool between a `,C`/`,R` block and its next move.
     CornerConflict,
+    /// G45-G48 tool position offset outside G00-G03, or with cutter
+    /// radius compensation in force.
+    ToolOffset,
 }
 
 impl AlarmKind {
@@ -148,6 +151,7 @@ impl AlarmKind {
         AlarmKind::CornerNoMove,
         AlarmKind::CornerTooLarge,
         AlarmKind::CornerConflict,
+        AlarmKind::ToolOffset,
     ];
 
     /// The control's code for this alarm.
@@ -194,6 +198,7 @@ impl AlarmKind {
             CornerNoMove => ("F_82103", "PS051", "HU-024"),
             CornerTooLarge => ("F_82104", "PS055", "HU-025"),
             CornerConflict => ("F_82105", "PS053", "HU-026"),
+            ToolOffset => ("F_82106", "PS042", "HU-027"),
         };
         match d {
             DialectId::Hx => hx,

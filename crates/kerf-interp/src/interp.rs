@@ -27,10 +27,12 @@ mod cycles;
 mod cylindrical;
 mod flow;
 mod motion;
+mod offset_data;
 mod polar_interp;
 mod reset;
 mod skip;
 mod sysvars;
+mod tool_offset;
 mod transforms;
 
 pub use sysvars::MacroSwitches;
@@ -1080,6 +1082,7 @@ impl Interp {
         let mut setting = false;
         let mut refret: Option<(u16, u32)> = None;
         let mut skip: Option<(u16, u32)> = None;
+        let mut g45: Option<(u16, u32)> = None;
         let rdata = self.rotary_interp_codes()?;
         let xdata = self.transform_codes(&one_shot[..n_one])? || rdata;
         if let Some(dw) = self.words.get(b'D') {
@@ -1102,6 +1105,11 @@ impl Interp {
                 (DialectId::Hx, 600) => g60 = Some(at),
                 (_, 530) => g53 = true,
                 (DialectId::Hx, 310..=314 | 370..=374) => skip = Some((c, at)),
+                (DialectId::Hx, 450 | 460 | 470 | 480) => g45 = Some((c, at)),
+                (DialectId::Puma, 100) => {
+                    setting = true;
+                    self.g10(at)?
+                }
                 _ if is_coordinate_setting(d.id, c) => {
                     setting = true;
                     self.coordinate_setting(at)?
@@ -1149,6 +1157,8 @@ impl Interp {
                 self.canned_cycle(!was_cycle, g60.is_some())?;
             } else if let Some(at) = g60 {
                 self.g60(at)?;
+            } else if let Some((c, at)) = g45 {
+                self.tool_offset_motion(c, at)?;
             } else {
                 self.motion()?;
             }

@@ -24,7 +24,7 @@ pub static GCODES: &[GCode] = &[
     g(20, 1, false, "circular interpolation (CW)", Yes),
     g(30, 1, false, "circular interpolation (CCW)", Yes),
     g(40, 0, false, "dwell", Yes),
-    g(100, 0, false, "offset value setting", LATER_COMP), // Fanuc 0-T, not in 001's table
+    g(100, 0, false, "offset value setting", Yes), // Fanuc 0-T, not in 001's table
     g(200, 6, false, "data input (inch)", Yes),
     g(210, 6, true, "data input (mm)", Yes), // # in 001
     g(220, 4, true, "stored distance limit effective (spindle interference check on)", LATER_LATHE), // # in 001
