@@ -161,3 +161,27 @@ fn puma_t_code_applies_geometry_plus_wear_and_t00_cancels() {
     let r = run_on("puma-lathe", "G10 P1 X1. U1.\n");
     assert_eq!(alarm(&r).0, "PS009");
 }
+
+#[test]
+fn tool_length_offset_on_the_axis_normal_to_the_plane() {
+    // hx-mc G54 = machine X-400 Y-250 Z-250; H1 = 25 (#2240, 000 §14.2.3).
+    // G18 G43 H1 Y0: the offset goes on Y: machine Y = -250 + 25 = -225,
+    // Z stays at the G54 origin -250. G19 G44 H1 X0: on X, negative:
+    // machine X = -400 - 25 = -425, and Y loses its offset: -250.
+    let r = run_on(
+        "hx-mc",
+        "#2240 = 25.\n\
+         G90 G54 G00 X0 Y0 Z0\n\
+         G18 G43 H1 Y0\n\
+         G19 G44 H1 X0 Y0\n\
+         M30\n",
+    );
+    ok(&r);
+    let m: Vec<[f64; 3]> = r
+        .events
+        .iter()
+        .filter_map(|e| e.motion().map(|m| [m.mto[0], m.mto[1], m.mto[2]]))
+        .collect();
+    assert_eq!(m[1], [-400.0, -225.0, -250.0]);
+    assert_eq!(m[2], [-425.0, -250.0, -250.0]);
+}
