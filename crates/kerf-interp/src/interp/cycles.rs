@@ -333,7 +333,9 @@ impl Interp {
                 format!(
                     "{}: {} holes of {} pecks would make more than {} moves in one block",
                     name(),
-                    k, pecks, MAX_CYCLE_MOVES
+                    k,
+                    pecks,
+                    MAX_CYCLE_MOVES
                 ),
             ));
         }
