@@ -33,6 +33,7 @@ pub mod macros;
 pub mod rotary;
 pub mod state;
 pub mod stroke;
+pub mod turning;
 pub mod words;
 pub mod xform;
 
