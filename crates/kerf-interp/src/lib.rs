@@ -34,6 +34,7 @@ pub mod offsets;
 pub mod rotary;
 pub mod state;
 pub mod stroke;
+pub mod turning;
 pub mod words;
 pub mod xform;
 

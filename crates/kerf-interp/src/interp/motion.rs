@@ -283,6 +283,9 @@ impl Interp {
         match mode {
             0 | 10 if any => self.move_line(mode == 0, tw, at)?,
             330 if any && self.dialect.id == DialectId::Hx => self.thread_line(tw, at)?,
+            320 | 900 | 920 | 940 if self.dialect.id == DialectId::Puma => {
+                self.lathe_motion(mode, tw, any, at)?
+            }
             20 | 30 => self.arc(tw, any, mode == 30, at)?,
             _ => {}
         }
