@@ -145,11 +145,6 @@ fn run(
         .filter(|a| profile.has_axis(*a))
         .collect();
     let mut it = Interp::new(profile, settings);
-    if let Some(path) = &c.offsets {
-        if let Err(e) = offsets::load(path, &mut it) {
-            return usage_error(e);
-        }
-    }
     for dir in &c.lib {
         if !dir.is_dir() {
             return usage_error(format!("--lib {}: not a folder", dir.display()));
@@ -161,6 +156,15 @@ fn run(
             return usage_error(format!("--state {}: {e}", dir.display()));
         }
         if let Err(e) = kerf_interp::state::load_retained(dir, &mut it) {
+            return usage_error(e);
+        }
+        if let Err(e) = kerf_interp::state::load_offsets(dir, &mut it) {
+            return usage_error(e);
+        }
+    }
+    // An offsets file given with the run goes on top of the kept memory.
+    if let Some(path) = &c.offsets {
+        if let Err(e) = offsets::load(path, &mut it) {
             return usage_error(e);
         }
     }
@@ -220,7 +224,9 @@ fn run(
     }
     // Retained variables survive an alarm as on the control.
     if let Some(dir) = &c.state {
-        if let Err(e) = kerf_interp::state::save_retained(dir, &it) {
+        if let Err(e) = kerf_interp::state::save_retained(dir, &it)
+            .and_then(|_| kerf_interp::state::save_offsets(dir, &it))
+        {
             return usage_error(format!("--state {}: {e}", dir.display()));
         }
     }

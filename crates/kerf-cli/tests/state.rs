@@ -157,3 +157,35 @@ fn interface_inputs_from_set() {
     assert_eq!(xs(&[]), vec![0.0, 1.0, 2.0]);
     assert_eq!(xs(&["in.7000=1", "in.7033=3"]), vec![0.0, 5.0]);
 }
+
+#[test]
+fn offset_memory_survives_between_runs() {
+    let d = dir("offsets");
+    // Each run adds 0.5 to D1 (G10 G91 L12) and moves to X = D1 (#2112).
+    // Run 1: 0 + 0.5 -> X0.5; run 2: 1.0 -> X1.
+    let prog = d.join("wear.nc");
+    std::fs::write(&prog, "G10 G91 L12 P1 R0.5\nG90 G00 X#2112 Y0 Z0\nM30\n").unwrap();
+    assert_eq!(xs(&prog, "hx-mc", &d), vec![0.5]);
+    assert_eq!(xs(&prog, "hx-mc", &d), vec![1.0]);
+    let text = std::fs::read_to_string(d.join("hx-mc.offsets")).unwrap();
+    assert!(text.contains("\nD 1 1.0 0.0\n"), "{text}");
+    // Lathe: offset 3 written by G10 (X as a diameter: 2.0 -> 1.0 radius)
+    // is kept and used by T0303 in the next run: X40 (radius 20) + 1 = 21.
+    let set = d.join("set.nc");
+    std::fs::write(&set, "G10 P10003 X2. Z0.5 Q3\nM30\n").unwrap();
+    assert_eq!(xs(&set, "puma-lathe", &d), Vec::<f64>::new());
+    let t = d.join("use.nc");
+    std::fs::write(&t, "G00 X40. Z5. T0303\nM30\n").unwrap();
+    assert_eq!(xs(&t, "puma-lathe", &d), vec![21.0]);
+    // A damaged file is a usage error naming the line.
+    std::fs::write(d.join("hx-mc.offsets"), "H 1 x\n").unwrap();
+    let out = kerf()
+        .arg("run")
+        .arg(&prog)
+        .args(["--machine", "hx-mc", "--state"])
+        .arg(&d)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("hx-mc.offsets:1"));
+}

@@ -103,6 +103,25 @@ pub enum AlarmKind {
     /// `,C` and `,R` in one block, or a change of coordinate system or
     /// tool between a `,C`/`,R` block and its next move.
     CornerConflict,
+    /// G45-G48 tool position offset outside G00-G03, or with cutter
+    /// radius compensation in force.
+    ToolOffset,
+    /// G70-G73 without P (ns) or Q (nf).
+    MrcNoPq,
+    /// A G70-G76 value out of range: depth Δd, peck Δk, height k ≤ 0, divisions d < 1, tool angle a not 80/60/55/30/29/0, run-out longer than the thread, start point level with the shape.
+    MrcValue,
+    /// The sequence number P (ns) or Q (nf) of a G70-G73 shape is not in the program.
+    MrcSeqNotFound,
+    /// G71/G72 type I: the finishing shape is not monotonic in X or Z.
+    MrcNotMonotonic,
+    /// The first block ns of a finishing shape has no G00 or G01.
+    MrcFirstBlock,
+    /// A code not allowed inside a finishing shape ns-nf (one-shot G codes, G32/G90-G94, G70-G76, M98/M99, macro statements).
+    MrcIllegal,
+    /// The last block nf of a finishing shape ends with a chamfer or corner R.
+    MrcEndCorner,
+    /// A lathe cycle or thread kerf refuses: G90/G92/G94 taper R beyond the cycle (cases 3/4 need |R| ≤ |U/2|, |W|), a taper or face thread in G96, a thread chamfer longer than the thread, a finishing shape longer than 2,000 blocks.
+    LatheCycle,
 }
 
 impl AlarmKind {
@@ -148,6 +167,15 @@ impl AlarmKind {
         AlarmKind::CornerNoMove,
         AlarmKind::CornerTooLarge,
         AlarmKind::CornerConflict,
+        AlarmKind::ToolOffset,
+        AlarmKind::MrcNoPq,
+        AlarmKind::MrcValue,
+        AlarmKind::MrcSeqNotFound,
+        AlarmKind::MrcNotMonotonic,
+        AlarmKind::MrcFirstBlock,
+        AlarmKind::MrcIllegal,
+        AlarmKind::MrcEndCorner,
+        AlarmKind::LatheCycle,
     ];
 
     /// The control's code for this alarm.
@@ -194,6 +222,15 @@ impl AlarmKind {
             CornerNoMove => ("F_82103", "PS051", "HU-024"),
             CornerTooLarge => ("F_82104", "PS055", "HU-025"),
             CornerConflict => ("F_82105", "PS053", "HU-026"),
+            ToolOffset => ("F_82106", "PS042", "HU-027"),
+            MrcNoPq => ("KERF-0161", "PS061", "KERF-0161"),
+            MrcValue => ("KERF-0162", "PS062", "KERF-0162"),
+            MrcSeqNotFound => ("KERF-0163", "PS063", "KERF-0163"),
+            MrcNotMonotonic => ("KERF-0164", "PS064", "KERF-0164"),
+            MrcFirstBlock => ("KERF-0165", "PS065", "KERF-0165"),
+            MrcIllegal => ("KERF-0166", "PS066", "KERF-0166"),
+            MrcEndCorner => ("KERF-0167", "PS069", "KERF-0167"),
+            LatheCycle => ("KERF-0168", "KERF-0168", "KERF-0168"),
         };
         match d {
             DialectId::Hx => hx,

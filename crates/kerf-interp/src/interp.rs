@@ -26,11 +26,15 @@ mod corners;
 mod cycles;
 mod cylindrical;
 mod flow;
+mod lathe;
+mod lathe_mrc;
 mod motion;
+mod offset_data;
 mod polar_interp;
 mod reset;
 mod skip;
 mod sysvars;
+mod tool_offset;
 mod transforms;
 
 pub use sysvars::MacroSwitches;
@@ -213,6 +217,8 @@ pub struct Interp {
     corner: Option<Box<corners::Pending>>,
     /// Parsed blocks of text executed again (loops, jumps back).
     cache: block_cache::BlockCache,
+    /// PUMA lathe cycle data (interp/lathe.rs, interp/lathe_mrc.rs).
+    lathe: lathe::LatheData,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -307,6 +313,7 @@ impl Interp {
             cyc,
             corner: None,
             cache: block_cache::BlockCache::default(),
+            lathe: lathe::LatheData::default(),
         }
     }
 
@@ -1080,6 +1087,8 @@ impl Interp {
         let mut setting = false;
         let mut refret: Option<(u16, u32)> = None;
         let mut skip: Option<(u16, u32)> = None;
+        let mut g45: Option<(u16, u32)> = None;
+        let mut mrc: Option<(u16, u32)> = None;
         let rdata = self.rotary_interp_codes()?;
         let xdata = self.transform_codes(&one_shot[..n_one])? || rdata;
         if let Some(dw) = self.words.get(b'D') {
@@ -1102,6 +1111,12 @@ impl Interp {
                 (DialectId::Hx, 600) => g60 = Some(at),
                 (_, 530) => g53 = true,
                 (DialectId::Hx, 310..=314 | 370..=374) => skip = Some((c, at)),
+                (DialectId::Hx, 450 | 460 | 470 | 480) => g45 = Some((c, at)),
+                (DialectId::Puma, 100) => {
+                    setting = true;
+                    self.g10(at)?
+                }
+                (DialectId::Puma, 700..=760) => mrc = Some((c, at)),
                 _ if is_coordinate_setting(d.id, c) => {
                     setting = true;
                     self.coordinate_setting(at)?
@@ -1132,6 +1147,9 @@ impl Interp {
                 self.dwell()?;
             }
         }
+        if d.id == DialectId::Puma && self.words.nm > 0 {
+            self.lathe_m_codes();
+        }
         if g09 {
             self.emit(Canon::Mode(ModeChange::ExactStopBlock));
         }
@@ -1142,6 +1160,8 @@ impl Interp {
             self.reference_return(c, at)?;
         } else if let Some((c, at)) = skip {
             self.skip_block(c, at)?;
+        } else if let Some((c, at)) = mrc {
+            self.mrc(c, at)?;
         } else if !no_motion {
             if g53 {
                 self.g53()?;
@@ -1149,6 +1169,8 @@ impl Interp {
                 self.canned_cycle(!was_cycle, g60.is_some())?;
             } else if let Some(at) = g60 {
                 self.g60(at)?;
+            } else if let Some((c, at)) = g45 {
+                self.tool_offset_motion(c, at)?;
             } else {
                 self.motion()?;
             }

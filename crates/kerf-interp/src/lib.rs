@@ -35,6 +35,7 @@ pub mod offsets;
 pub mod rotary;
 pub mod state;
 pub mod stroke;
+pub mod turning;
 pub mod words;
 pub mod xform;
 

@@ -14,15 +14,36 @@
 //! flushed to disk (fsync), then renamed over the old one (and the
 //! directory synced), so a crash leaves either the old or the new file,
 //! never a torn one.
+//!
+//! The tool offset memory is kept beside it in `DIR/<profile>.offsets`
+//! (only entries that are not all zero; lengths in mm, lathe X as a
+//! radius):
+//!
+//! ```text
+//! # kerf tool offsets: H|D n geometry wear / T n x z r tip wear_x wear_z wear_r
+//! H 1 100.0 -0.25
+//! D 8 5.0 0.0
+//! T 2 0.75 -0.93 0.4 3 0.0 0.0 0.0
+//! ```
 
 use std::fs::{self, File};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
+use crate::offsets::{LatheOffset, MillOffset};
 use crate::Interp;
 
 /// The state file of a profile in `dir`.
 pub fn state_file(dir: &Path, profile: &str) -> PathBuf {
+    state_path(dir, profile, "vars")
+}
+
+/// The offset memory file of a profile in `dir`.
+pub fn offsets_file(dir: &Path, profile: &str) -> PathBuf {
+    state_path(dir, profile, "offsets")
+}
+
+fn state_path(dir: &Path, profile: &str, ext: &str) -> PathBuf {
     let safe: String = profile
         .chars()
         .map(|c| {
@@ -33,7 +54,7 @@ pub fn state_file(dir: &Path, profile: &str) -> PathBuf {
             }
         })
         .collect();
-    dir.join(format!("{safe}.vars"))
+    dir.join(format!("{safe}.{ext}"))
 }
 
 /// Loads the retained variables of `it`'s profile from `dir` (a missing
@@ -73,6 +94,104 @@ pub fn save_retained(dir: &Path, it: &Interp) -> io::Result<()> {
     for (i, v) in it.retained_vars() {
         text.push_str(&format!("#{i} = {v:?}\n"));
     }
+    write_atomic(dir, &path, &text)
+}
+
+/// Loads the offset memory of `it`'s profile from `dir` (a missing file
+/// leaves it as it is). A malformed line is an error naming it.
+pub fn load_offsets(dir: &Path, it: &mut Interp) -> Result<(), String> {
+    let path = offsets_file(dir, &it.profile().name);
+    let text = match fs::read_to_string(&path) {
+        Ok(t) => t,
+        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(()),
+        Err(e) => return Err(format!("{}: {e}", path.display())),
+    };
+    for (n, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let bad = |why: &str| format!("{}:{}: {why}", path.display(), n + 1);
+        let mut f = line.split_whitespace();
+        let page = f.next().unwrap_or("");
+        let num: usize = f
+            .next()
+            .and_then(|x| x.parse().ok())
+            .ok_or_else(|| bad("expected an offset number"))?;
+        let vals: Vec<f64> = f
+            .map(|x| x.parse::<f64>())
+            .collect::<Result<_, _>>()
+            .map_err(|_| bad("expected numbers"))?;
+        if vals.iter().any(|v| !v.is_finite()) {
+            return Err(bad("values must be finite"));
+        }
+        let table = it.offsets_mut();
+        match (page, vals.as_slice()) {
+            ("H" | "D", &[geom, wear]) => {
+                let e = if page == "H" {
+                    table.h_mut(num)
+                } else {
+                    table.d_mut(num)
+                }
+                .ok_or_else(|| bad("no such offset number on this machine"))?;
+                e.geom = geom;
+                e.wear = wear;
+            }
+            ("T", &[x, z, r, tip, wx, wz, wr]) => {
+                if tip.fract() != 0.0 || !(0.0..=9.0).contains(&tip) {
+                    return Err(bad("tip direction must be 0-9"));
+                }
+                let e = table
+                    .lathe_mut(num)
+                    .ok_or_else(|| bad("no such offset number on this machine"))?;
+                *e = LatheOffset {
+                    x,
+                    z,
+                    r,
+                    tip: tip as u8,
+                    wear_x: wx,
+                    wear_z: wz,
+                    wear_r: wr,
+                };
+            }
+            _ => {
+                return Err(bad(
+                    "expected 'H|D n geometry wear' or 'T n x z r tip wear_x wear_z wear_r'",
+                ))
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Writes the offset memory of `it` to `dir` atomically.
+pub fn save_offsets(dir: &Path, it: &Interp) -> io::Result<()> {
+    let path = offsets_file(dir, &it.profile().name);
+    let t = it.offsets();
+    let mut text = String::from(
+        "# kerf tool offsets: H|D n geometry wear / T n x z r tip wear_x wear_z wear_r\n",
+    );
+    for n in 1..=t.count() {
+        for (page, e) in [("H", t.h_entry(n)), ("D", t.d_entry(n))] {
+            if let Some(e) = e.filter(|e| **e != MillOffset::default()) {
+                text.push_str(&format!("{page} {n} {:?} {:?}\n", e.geom, e.wear));
+            }
+        }
+    }
+    for n in 1..=t.count() {
+        let o = t.lathe(n);
+        if o != LatheOffset::default() {
+            text.push_str(&format!(
+                "T {n} {:?} {:?} {:?} {} {:?} {:?} {:?}\n",
+                o.x, o.z, o.r, o.tip, o.wear_x, o.wear_z, o.wear_r
+            ));
+        }
+    }
+    write_atomic(dir, &path, &text)
+}
+
+/// Replaces `path` (in `dir`) with `text`: a temporary file, fsync, rename.
+fn write_atomic(dir: &Path, path: &Path, text: &str) -> io::Result<()> {
     let tmp = dir.join(format!(
         ".{}.tmp{}",
         path.file_name().and_then(|n| n.to_str()).unwrap_or("state"),
@@ -83,7 +202,7 @@ pub fn save_retained(dir: &Path, it: &Interp) -> io::Result<()> {
         f.write_all(text.as_bytes())?;
         f.sync_all()?;
         drop(f);
-        fs::rename(&tmp, &path)?;
+        fs::rename(&tmp, path)?;
         // Make the rename itself durable (not possible on every system).
         if let Ok(d) = File::open(dir) {
             let _ = d.sync_all();

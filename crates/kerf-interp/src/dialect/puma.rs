@@ -24,7 +24,7 @@ pub static GCODES: &[GCode] = &[
     g(20, 1, false, "circular interpolation (CW)", Yes),
     g(30, 1, false, "circular interpolation (CCW)", Yes),
     g(40, 0, false, "dwell", Yes),
-    g(100, 0, false, "offset value setting", LATER_COMP), // Fanuc 0-T, not in 001's table
+    g(100, 0, false, "offset value setting", Yes), // Fanuc 0-T, not in 001's table
     g(200, 6, false, "data input (inch)", Yes),
     g(210, 6, true, "data input (mm)", Yes), // # in 001
     g(220, 4, true, "stored distance limit effective (spindle interference check on)", LATER_LATHE), // # in 001
@@ -34,7 +34,7 @@ pub static GCODES: &[GCode] = &[
     g(290, 0, false, "return from reference", Yes),
     g(300, 0, false, "2nd reference return", Yes),
     g(310, 0, false, "skip cutting", LATER_LATHE), // Fanuc 0-T; used in 001's M86 example
-    g(320, 1, false, "thread process (thread cutting)", LATER_LATHE), // 001 prints "#G32": see docs/dialects.md
+    g(320, 1, false, "thread process (thread cutting)", Yes), // 001 prints "#G32": see docs/dialects.md
     g(400, 7, true, "cancel of compensation", Yes), // not #-marked in 001; Fanuc reset state
     g(410, 7, false, "tool nose radius compensation left", LATER_COMP),
     g(420, 7, false, "tool nose radius compensation right", LATER_COMP),
@@ -42,16 +42,16 @@ pub static GCODES: &[GCode] = &[
     g(650, 0, false, "user macro simple call", Yes), // Fanuc 0-T, not in 001's table
     g(660, 12, false, "user macro modal call", Yes),
     g(670, 12, true, "user macro modal call cancel", Yes),
-    g(700, 0, false, "compound repeat cycle (finishing cycle)", LATER_LATHE),
-    g(710, 0, false, "compound repeat cycle (stock removal in turning)", LATER_LATHE),
-    g(720, 0, false, "compound repeat cycle (stock removal in facing)", LATER_LATHE),
-    g(730, 0, false, "compound repeat cycle (pattern repeating cycle)", LATER_LATHE),
-    g(740, 0, false, "compound repeat cycle (peck drilling in Z direction)", LATER_LATHE),
-    g(750, 0, false, "compound repeat cycle (grooving in X direction)", LATER_LATHE),
-    g(760, 0, false, "compound repeat cycle (thread cutting cycle)", LATER_LATHE),
-    g(900, 1, false, "fixed cycle (process cycle in turning)", LATER_LATHE),
-    g(920, 1, false, "fixed cycle (thread process cycle)", LATER_LATHE),
-    g(940, 1, false, "fixed cycle (facing process cycle)", LATER_LATHE),
+    g(700, 0, false, "compound repeat cycle (finishing cycle)", Yes),
+    g(710, 0, false, "compound repeat cycle (stock removal in turning)", Yes),
+    g(720, 0, false, "compound repeat cycle (stock removal in facing)", Yes),
+    g(730, 0, false, "compound repeat cycle (pattern repeating cycle)", Yes),
+    g(740, 0, false, "compound repeat cycle (peck drilling in Z direction)", Yes),
+    g(750, 0, false, "compound repeat cycle (grooving in X direction)", Yes),
+    g(760, 0, false, "compound repeat cycle (thread cutting cycle)", Yes),
+    g(900, 1, false, "fixed cycle (process cycle in turning)", Yes),
+    g(920, 1, false, "fixed cycle (thread process cycle)", Yes),
+    g(940, 1, false, "fixed cycle (facing process cycle)", Yes),
     g(960, 2, false, "constant surface speed control", Yes),
     g(970, 2, true, "constant surface speed control cancel (rpm)", Yes), // # in 001
     g(980, 5, false, "feed per minute (mm/min)", Yes),

@@ -154,7 +154,18 @@ impl Interp {
                     self.st.tool = tool;
                 }
                 self.st.next_tool = self.st.tool;
+                if !self.offsets.valid(off as usize) {
+                    return Err(self.alarm(
+                        AlarmKind::OutOfRange,
+                        t.at,
+                        format!(
+                            "T{v}: no tool offset {off} (01-{:02})",
+                            self.offsets.count()
+                        ),
+                    ));
+                }
                 self.st.offset = off;
+                self.apply_lathe_offset();
                 self.emit(Canon::Tool {
                     tool: self.st.tool,
                     offset: off,
@@ -163,6 +174,18 @@ impl Interp {
             }
         }
         Ok(())
+    }
+
+    /// The lathe tool offset selected by the T code (`st.offset`, 0 =
+    /// cancel) as the tool offset vector: X (radius) and Z, geometry +
+    /// wear. The path shifts by it from the next move on (the T code
+    /// itself moves nothing; in a block with a move, that move carries
+    /// it), fanuc-semantics §5 / docs/dialects.md.
+    pub(super) fn apply_lathe_offset(&mut self) {
+        let o = self.offsets.lathe(self.st.offset as usize);
+        self.st.tlo = [0.0; NAXES];
+        self.st.tlo[Axis::X as usize] = o.total_x();
+        self.st.tlo[Axis::Z as usize] = o.total_z();
     }
 
     /// S word and spindle start codes, combined into one spindle event.

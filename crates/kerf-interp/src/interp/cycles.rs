@@ -279,13 +279,15 @@ impl Interp {
 
     /// Checks the stored data for one cycle and resolves the levels.
     fn resolve_hole(&self, code: u16, n: usize, initial: f64, at: u32) -> R<Hole> {
-        let name = format!("G{}", fmt_code(code));
+        // Only alarms need the name: built on demand, not for every hole.
+        let name = || format!("G{}", fmt_code(code));
         let Some(z) = self.cyc.z else {
             return Err(self.alarm(
                 AlarmKind::MissingArgument,
                 at,
                 format!(
-                    "{name}: no hole depth ({}) given",
+                    "{}: no hole depth ({}) given",
+                    name(),
                     ax_letter(Axis::ALL[n]) as char
                 ),
             ));
@@ -294,7 +296,7 @@ impl Interp {
             return Err(self.alarm(
                 AlarmKind::MissingArgument,
                 at,
-                format!("{name}: no R level given"),
+                format!("{}: no R level given", name()),
             ));
         };
         let peck = matches!(code, 730 | 830);
@@ -304,7 +306,7 @@ impl Interp {
                 return Err(self.alarm(
                     AlarmKind::MissingArgument,
                     at,
-                    format!("{name}: no peck depth Q given"),
+                    format!("{}: no peck depth Q given", name()),
                 ))
             }
             None => 0.0,
@@ -329,8 +331,11 @@ impl Interp {
                 AlarmKind::OutOfRange,
                 at,
                 format!(
-                    "{name}: {} holes of {} pecks would make more than {} moves in one block",
-                    k, pecks, MAX_CYCLE_MOVES
+                    "{}: {} holes of {} pecks would make more than {} moves in one block",
+                    name(),
+                    k,
+                    pecks,
+                    MAX_CYCLE_MOVES
                 ),
             ));
         }

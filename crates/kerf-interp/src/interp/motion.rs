@@ -283,6 +283,9 @@ impl Interp {
         match mode {
             0 | 10 if any => self.move_line(mode == 0, tw, at)?,
             330 if any && self.dialect.id == DialectId::Hx => self.thread_line(tw, at)?,
+            320 | 900 | 920 | 940 if self.dialect.id == DialectId::Puma => {
+                self.lathe_motion(mode, tw, any, at)?
+            }
             20 | 30 => self.arc(tw, any, mode == 30, at)?,
             _ => {}
         }
@@ -593,7 +596,8 @@ impl Interp {
 
     // ---- tool length, reference returns ----------------------------------------
 
-    /// G43/G44/G49 with H: the tool length offset on Z (mills).
+    /// G43/G44/G49 with H: the tool length offset on the axis normal to
+    /// the plane (mills).
     pub(super) fn tool_length(&mut self) -> R<()> {
         if self.profile.kind != MachineKind::Mill {
             return Ok(());
@@ -628,8 +632,11 @@ impl Interp {
             440 => -1.0,
             _ => 0.0,
         };
+        // 000 §13.1.1: the axis normal to the plane in force when the
+        // offset is taken (G17 Z, G18 Y, G19 X).
+        let normal = self.st.plane.axes().2;
         self.st.tlo = [0.0; NAXES];
-        self.st.tlo[Axis::Z as usize] = sign * self.offsets.h(self.st.h as usize);
+        self.st.tlo[normal] = sign * self.offsets.h(self.st.h as usize);
     }
 
     /// The machine position of reference point `n` (1-4) for an axis.

@@ -1,7 +1,7 @@
 //! The HX's coordinate transform and coordinate-system codes: G15/G16
 //! polar coordinate command (000 §8.3), G50/G51 scaling and mirror image
 //! (§15.2, §15.3), G68/G69 coordinate rotation (§15.4), G52 local
-//! coordinates (§7.3), `G10 L2 P_` work offset setting (Fanuc standard)
+//! coordinates (§7.3), `G10` (interp/offset_data.rs)
 //! and the G22 area of stored stroke check 2 (§15.5.3).
 //! The geometry lives in [`crate::xform`].
 
@@ -227,65 +227,5 @@ impl Interp {
                 };
             }
         }
-    }
-
-    /// `G10 L2 P_ X_ Y_ Z_`: work offset setting (Fanuc): P1-P6 = G54-G59,
-    /// P0 = the work shift (000 §7.2.4). Absolute in G90, added in G91.
-    /// The other G10 forms are offset data (issue 5).
-    fn g10(&mut self, at: u32) -> R<()> {
-        let l = self.words.get(b'L');
-        match l {
-            Some(w) if w.v == 2.0 => {}
-            Some(w) => {
-                return Err(self.alarm(
-                    AlarmKind::NotYetSupported,
-                    w.at,
-                    format!(
-                        "G10 L{} (offset data setting) is not yet supported: tool compensation (issue 5)",
-                        fmt_num(w.v)
-                    ),
-                ))
-            }
-            None => {
-                return Err(self.alarm(
-                    AlarmKind::MissingArgument,
-                    at,
-                    "G10 without L (L2 = work offset)",
-                ))
-            }
-        }
-        let p = match self.words.get(b'P') {
-            Some(p) if p.v.fract() == 0.0 && (0.0..=6.0).contains(&p.v) => p.v as usize,
-            Some(p) => {
-                return Err(self.alarm(
-                    AlarmKind::OutOfRange,
-                    p.at,
-                    "G10 L2 P must be 0 (work shift) or 1-6 (G54-G59)",
-                ))
-            }
-            None => {
-                return Err(self.alarm(
-                    AlarmKind::MissingArgument,
-                    at,
-                    "G10 L2 without P (0 = work shift, 1-6 = G54-G59)",
-                ))
-            }
-        };
-        for ax in Axis::ALL {
-            let i = ax as usize;
-            if !self.has_axis[i] {
-                continue;
-            }
-            if let Some(w) = self.words.get(ax_letter(ax)) {
-                let v = self.axis_value(ax, w);
-                let slot = if p == 0 {
-                    &mut self.st.shift[i]
-                } else {
-                    &mut self.st.wcs[p - 1][i]
-                };
-                *slot = if self.st.absolute { v } else { *slot + v };
-            }
-        }
-        Ok(())
     }
 }

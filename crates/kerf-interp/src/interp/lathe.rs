@@ -1,0 +1,204 @@
+//! PUMA (Fanuc 0-T, G-code system A) lathe motion: G32 threading and the
+//! single cycles G90/G92/G94 (001 "G32", "G90", "G92", "G94";
+//! fanuc-semantics §2), their modal data, and the M76/M77 thread
+//! chamfering switch. The paths are made by the pure geometry of
+//! [`crate::turning`]; every move goes through [`Interp::line_to`] (or
+//! [`Interp::thread_to`]) in program coordinates.
+
+use super::*;
+use crate::turning::{self, Mv, P};
+
+/// The lathe cycle state of one interpreter: the modal data of the single
+/// cycles and of the multiple repetitive cycles (interp/lathe_mrc.rs), the
+/// thread chamfer switch.
+#[derive(Clone, Debug, Default)]
+pub(super) struct LatheData {
+    /// G90/G92/G94 in force: its end point (program coordinates, X a
+    /// radius) and taper R (radius), kept for blocks that repeat the
+    /// cycle with only some words.
+    pub(super) single: Option<(P, f64)>,
+    /// M76 in force (thread chamfering on); M77 (power-on) turns it off.
+    pub(super) chamfer_on: bool,
+    /// Modal first-block values of G70-G76 (interp/lathe_mrc.rs).
+    pub(super) mrc: super::lathe_mrc::MrcModal,
+}
+
+impl Interp {
+    /// M76/M77 of the block (001 "M76, M77"): the thread chamfer switch.
+    pub(super) fn lathe_m_codes(&mut self) {
+        for i in 0..self.words.nm {
+            match self.words.m[i].0 {
+                76 => self.lathe.chamfer_on = true,
+                77 => self.lathe.chamfer_on = false,
+                _ => {}
+            }
+        }
+    }
+
+    /// The current position as a ZX point (program coordinates).
+    pub(super) fn zx_pos(&self) -> P {
+        let c = self.prog_pos();
+        turning::p(c[Axis::X as usize], c[Axis::Z as usize])
+    }
+
+    /// A ZX point as a full program-coordinate position (the other axes
+    /// where they are).
+    pub(super) fn zx_full(&self, q: P) -> Pos {
+        let mut t = self.prog_pos();
+        t[Axis::X as usize] = q.x;
+        t[Axis::Z as usize] = q.z;
+        t
+    }
+
+    /// Emits generated moves; `feed` overrides the modal feed of the cuts.
+    pub(super) fn emit_moves(&mut self, mvs: &[Mv], feed: Option<Feed>, at: u32) -> R<()> {
+        let speed = match feed {
+            Some(f) => motion::Speed::Feed(f),
+            None => motion::Speed::Modal,
+        };
+        for m in mvs {
+            let t = self.zx_full(m.to());
+            match *m {
+                Mv::Rapid(_) => {
+                    if t != self.prog_pos() {
+                        self.line_to(t, motion::Speed::Rapid, at)?
+                    }
+                }
+                Mv::Feed(_) => {
+                    if t != self.prog_pos() {
+                        self.line_to(t, speed, at)?
+                    }
+                }
+                Mv::Thread(_) => self.thread_to(t, at)?,
+                Mv::Arc { c, ccw, .. } => {
+                    let f = match feed {
+                        Some(f) => f,
+                        None => self.feed(at)?,
+                    };
+                    let cur = self.prog_pos();
+                    self.arc_to(cur, t, (c.z, c.x), ccw, f, at)?
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// A spindle-synchronised straight move to `tw` (program coordinates)
+    /// at the modal lead F: G32, and the cuts of G92 and G76. The lead
+    /// must be set, the spindle turning, and (kerf's rule, docs/dialects.md)
+    /// a thread that changes X is not cut in G96.
+    pub(super) fn thread_to(&mut self, tw: Pos, at: u32) -> R<()> {
+        let Some(lead) = self.st.feed.filter(|f| *f > 0.0) else {
+            return Err(self.alarm(AlarmKind::NoFeed, at, "threading without a thread lead (F)"));
+        };
+        if self.st.spindle == SpindleDir::Stop {
+            return Err(self.alarm(
+                AlarmKind::NoFeed,
+                at,
+                "threading with the spindle stopped: the cut would wait for the one-revolution signal forever",
+            ));
+        }
+        let cur = self.prog_pos();
+        let xi = Axis::X as usize;
+        if self.st.css && (tw[xi] - cur[xi]).abs() > 1e-9 {
+            return Err(self.alarm(
+                AlarmKind::LatheCycle,
+                at,
+                "taper or face thread in G96 (constant surface speed): the spindle speed would change during the cut; program G97",
+            ));
+        }
+        let mto = self.to_machine(&tw);
+        self.check_travel(&mto, at)?;
+        self.check_stroke(&mto, false, at)?;
+        self.st.pos = mto;
+        self.emit(Canon::Thread {
+            m: Motion {
+                to: self.work_of(&mto),
+                mto,
+            },
+            lead,
+        });
+        Ok(())
+    }
+
+    /// The block's move in G32, G90, G92 or G94 mode (PUMA).
+    pub(super) fn lathe_motion(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
+        if !any {
+            return Ok(());
+        }
+        if mode == 320 {
+            return self.thread_to(tw, at);
+        }
+        let a = self.zx_pos();
+        let fresh = self.words.gs().iter().any(|g| g.0 == mode);
+        let xi = Axis::X as usize;
+        let zi = Axis::Z as usize;
+        let has = |me: &Self, ax: Axis| me.words.has(ax_letter(ax)) || me.uvw(ax).is_some();
+        // A block that repeats the cycle takes the words it lacks from the
+        // cycle in force; a new cycle from the current position.
+        let (mut e, mut r) = match (fresh, self.lathe.single) {
+            (false, Some(s)) => s,
+            _ => (a, 0.0),
+        };
+        if has(self, Axis::X) {
+            e.x = tw[xi];
+        }
+        if has(self, Axis::Z) {
+            e.z = tw[zi];
+        }
+        if let Some(w) = self.words.get(b'R') {
+            r = self.linear(w);
+        }
+        self.lathe.single = Some((e, r));
+        let at_r = self.words.get(b'R').map(|w| w.at).unwrap_or(at);
+        // Cases 3 and 4 of the figures: |R| ≤ |U/2| (|W| for G94); beyond,
+        // the cut would start behind the start point.
+        let (len, rr) = if mode == 940 {
+            (e.z - a.z, r)
+        } else {
+            (e.x - a.x, r)
+        };
+        if len * rr < 0.0 && rr.abs() > len.abs() + 1e-9 {
+            return Err(self.alarm(
+                AlarmKind::LatheCycle,
+                at_r,
+                format!(
+                    "G{}: taper R {} is larger than the cycle's {} distance {} (cases 3/4 need |R| ≤ |{}|)",
+                    mode / 10,
+                    fmt_num(rr),
+                    if mode == 940 { "Z" } else { "X (radius)" },
+                    fmt_num(len.abs()),
+                    if mode == 940 { "W" } else { "U/2" }
+                ),
+            ));
+        }
+        let mvs: Vec<Mv> = match mode {
+            900 => turning::g90(a, e, r).to_vec(),
+            940 => turning::g94(a, e, r).to_vec(),
+            _ => {
+                let c = if self.lathe.chamfer_on {
+                    self.profile.param("thread_chamfer_leads", 1.0) * self.st.feed.unwrap_or(0.0)
+                } else {
+                    0.0
+                };
+                turning::g92(a, e, r, c)
+                    .map_err(|e| self.alarm(AlarmKind::LatheCycle, at, cycle_msg(&e)))?
+            }
+        };
+        self.emit_moves(&mvs, None, at)
+    }
+}
+
+/// The text of a geometry error.
+pub(super) fn cycle_msg(e: &turning::CycleError) -> String {
+    match e {
+        turning::CycleError::Value(s) => s.clone(),
+        turning::CycleError::NotMonotonic(i, ax) => {
+            format!("the shape is not monotonic in {ax} (segment {})", i + 1)
+        }
+        turning::CycleError::TooManyMoves => format!(
+            "the cycle would make more than {} moves",
+            turning::MAX_MOVES
+        ),
+    }
+}
