@@ -211,7 +211,8 @@ pub struct Join {
 }
 
 impl Join {
-    fn at(p: P) -> Join {
+    /// The paths meet at one point.
+    pub fn at(p: P) -> Join {
         Join {
             end1: p,
             via: [Piece::Line(p); 3],

@@ -270,6 +270,9 @@ impl Interp {
         let mode = self.st.modal[1];
         let (tw, any) = self.target()?;
         let at = self.motion_at();
+        if self.comp.is_some() {
+            return self.comp_motion(mode, tw, any, at);
+        }
         // One test for the look-ahead of ,C/,R (a move held, or this block
         // carries one): interp/corners.rs.
         if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
