@@ -343,3 +343,160 @@ fn alarms() {
     );
     assert_eq!(a(&r).0, "PS034");
 }
+
+// ---- properties ------------------------------------------------------------
+
+use proptest::prelude::*;
+
+/// Distance from `p` to the segment a-b (independent of the code under
+/// test: projection clamped to the segment).
+fn seg_dist(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let l2 = dx * dx + dy * dy;
+    let t = (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0);
+    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+}
+
+/// Distance from `p` to the infinite line through a-b.
+fn line_dist(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    ((p.0 - a.0) * dy - (p.1 - a.1) * dx).abs() / dx.hypot(dy)
+}
+
+/// Even-odd point-in-polygon.
+fn inside(p: (f64, f64), poly: &[(f64, f64)]) -> bool {
+    let mut c = false;
+    for i in 0..poly.len() {
+        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+        if (a.1 > p.1) != (b.1 > p.1) && p.0 < a.0 + (p.1 - a.1) * (b.0 - a.0) / (b.1 - a.1) {
+            c = !c;
+        }
+    }
+    c
+}
+
+/// A star-shaped polygon, counter-clockwise: vertex i at angle
+/// 2πi/n + jitter and radius 30..60 (concave where a radius dips).
+fn polygon() -> impl Strategy<Value = Vec<(f64, f64)>> {
+    (5usize..10).prop_flat_map(|n| {
+        prop::collection::vec((30.0f64..60.0, -0.25f64..0.25), n).prop_map(move |v| {
+            v.iter()
+                .enumerate()
+                .map(|(i, (r, j))| {
+                    let a = (i as f64 + j) * std::f64::consts::TAU / n as f64;
+                    (r * a.cos(), r * a.sin())
+                })
+                .collect()
+        })
+    })
+}
+
+/// A program that goes twice round `poly` (in the given order) with
+/// G41/G42 D1, from a start point far outside.
+fn contour_prog(poly: &[(f64, f64)], g: u32) -> String {
+    let mut s = String::from("G92 X100. Y0.\nG90 G01 F1000\n");
+    let v0 = poly[0];
+    s += &format!("G{g} X{:.6} Y{:.6} D1\n", v0.0, v0.1);
+    for _ in 0..2 {
+        for p in poly.iter().skip(1).chain(std::iter::once(&v0)) {
+            s += &format!("X{:.6} Y{:.6}\n", p.0, p.1);
+        }
+    }
+    s += "G40 X100. Y0.\nM30\n";
+    s
+}
+
+/// The compensated points of a run at the contour's corners: the first
+/// move (start-up), the last contour block's end (its vector belongs to
+/// the cancel, perpendicular to that block) and the cancel move left out.
+fn comp_points(r: &Run) -> Vec<(f64, f64)> {
+    let p = path(r);
+    p[1..p.len() - 2]
+        .iter()
+        .map(|m| (m.to[0], m.to[1]))
+        .collect()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// Every compensated vertex is at least r from the contour, at
+    /// exactly r from the line of one of its edges, and on the correct
+    /// side (G41 on a CCW contour: inside; G42: outside) — unless the
+    /// control stopped with its interference alarm before the move.
+    #[test]
+    fn offset_keeps_distance_and_side(poly in polygon(), r in 0.5f64..3.0, left in any::<bool>()) {
+        let g = if left { 41 } else { 42 };
+        let run = run_d("hx-mc", &[(1, r)], &[], &contour_prog(&poly, g));
+        if let Some(a) = &run.alarm {
+            prop_assert_eq!(a.code.as_str(), "F_82122");
+            return Ok(());
+        }
+        let n = poly.len();
+        for p in comp_points(&run) {
+            let d = (0..n).map(|i| seg_dist(p, poly[i], poly[(i + 1) % n])).fold(f64::INFINITY, f64::min);
+            prop_assert!(d >= r - 1e-6, "{:?} at {} < r {}", p, d, r);
+            let on_line = (0..n).any(|i| (line_dist(p, poly[i], poly[(i + 1) % n]) - r).abs() < 1e-6);
+            prop_assert!(on_line, "{:?} is on no offset line", p);
+            prop_assert_eq!(inside(p, &poly), left, "{:?} on the wrong side", p);
+        }
+    }
+
+    /// G41 on a contour makes the same corner points as G42 on the
+    /// reversed contour (vertices other than the start).
+    #[test]
+    fn g41_equals_g42_reversed(poly in polygon(), r in 0.5f64..3.0) {
+        let mut rev = poly.clone();
+        rev[1..].reverse();
+        let a = run_d("hx-mc", &[(1, r)], &[], &contour_prog(&poly, 41));
+        let b = run_d("hx-mc", &[(1, r)], &[], &contour_prog(&rev, 42));
+        prop_assert_eq!(a.alarm.is_some(), b.alarm.is_some());
+        if a.alarm.is_some() {
+            return Ok(());
+        }
+        let v0 = poly[0];
+        let away = |p: &(f64, f64)| (p.0 - v0.0).hypot(p.1 - v0.1) > 4.0 * r;
+        let pa: Vec<_> = comp_points(&a).into_iter().filter(away).collect();
+        let pb: Vec<_> = comp_points(&b).into_iter().filter(away).collect();
+        let has = |v: &[(f64, f64)], p: &(f64, f64)| v.iter().any(|q| (q.0 - p.0).hypot(q.1 - p.1) < 1e-6);
+        for p in &pa {
+            prop_assert!(has(&pb, p), "{:?} missing from the G42 run", p);
+        }
+        for p in &pb {
+            prop_assert!(has(&pa, p), "{:?} missing from the G41 run", p);
+        }
+    }
+
+    /// Arcs: a line, a random arc (CW or CCW, radius 10..40), a line; the
+    /// compensated arc ends on the circle of radius R ∓ r about the same
+    /// centre (computed here from the chord), at the perpendicular
+    /// points.
+    #[test]
+    fn arc_offset_radius(rad in 10.0f64..40.0, ccw in any::<bool>(), left in any::<bool>(), r in 0.5f64..5.0) {
+        // Arc from (0,0) to (2R·sin45°, 0)... a quarter-ish chord: end at
+        // (R, R) relative to the start with radius R (centre on the
+        // chosen side).
+        let (g2, gside) = (if ccw { 3 } else { 2 }, if left { 41 } else { 42 });
+        let prog = format!(
+            "G92 X0. Y-20.\nG90 G01 G{gside} X0. Y0. D1 F1000\nG{g2} X{:.6} Y{:.6} R{:.6}\nG01 X{:.6} Y{:.6}\nG40 X100. Y100.\nM30\n",
+            rad, rad, rad, rad + 5.0, rad + 5.0
+        );
+        let run = run_d("hx-mc", &[(1, r)], &[], &prog);
+        // Centre of the minor arc from (0,0) to (R,R) of radius R: (R,0)
+        // or (0,R) (both at distance R from the two points); CW turns
+        // right of the chord direction (1,1), i.e. towards (R,0); CCW
+        // left, towards (0,R).
+        let c = if ccw { (0.0, rad) } else { (rad, 0.0) };
+        // A left offset shrinks a CCW arc (the centre on the left).
+        let rho = if ccw == left { rad - r } else { rad + r };
+        if let Some(a) = &run.alarm {
+            prop_assert_eq!(a.code.as_str(), "F_82122");
+            return Ok(());
+        }
+        let p = path(&run);
+        let arc = p.iter().find(|m| m.kind == "arc").expect("an arc");
+        let ac = arc.center.unwrap();
+        prop_assert!(close(ac.0, c.0) && close(ac.1, c.1));
+        prop_assert!(((arc.to[0] - c.0).hypot(arc.to[1] - c.1) - rho).abs() < 1e-6);
+    }
+}
