@@ -500,3 +500,82 @@ proptest! {
         prop_assert!(((arc.to[0] - c.0).hypot(arc.to[1] - c.1) - rho).abs() < 1e-6);
     }
 }
+
+// ---- lathe tool nose radius compensation -------------------------------------
+
+/// 001's chamfer C2 on Ø30 (p.67 "Example 2": G42, the a/b values) with
+/// nose R 0.5 and 0.8, tip 3 (OD turning towards the chuck). Contour
+/// (Z, X radius): face up Z0 from Ø20 to Ø26, chamfer to (Z-2, Ø30),
+/// Z-30, G40 out. Worked by hand in (Z, X) coordinates, G42 = right of
+/// travel, tip 3 = the imaginary tip at centre + r·(−1, −1):
+/// - start-up (−Z) then +X: a right turn with the tool on the right,
+///   inner → the perpendicular vector of the face: centre (r, 10), tip
+///   (0, 10 − r) → Ø(20 − 2r);
+/// - face → chamfer: left turn, outer obtuse → offset lines Z = r and
+///   Z + X − 13 = r√2 meet at X = 13 + r√2 − r; tip X = 13 − r(2 − √2)
+///   → Ø(26 − a) with a = 2r(1 − tan 22.5°) (001: 0.937 for R0.8);
+/// - chamfer → Z-30: left turn, outer obtuse → X = 15 + r and the chamfer
+///   line give Z = −2 − r + r√2; tip Z = −2 − b, b = r(1 − tan 22.5°)
+///   (001: 0.468 for R0.8), X = Ø30;
+/// - cancel (+X after −Z): right turn, inner → perpendicular: centre
+///   (−30, 15 + r), tip (−30 − r, 15); then the rapid to Ø40 at Z−30.
+#[test]
+fn puma_chamfer_example_nose_radius() {
+    let t = (22.5f64).to_radians().tan();
+    // 001's table (printed truncated to 3 decimals), against the formula
+    // used below.
+    assert!((2.0 * 0.8 * (1.0 - t) - 0.937).abs() < 1e-3);
+    assert!((0.8 * (1.0 - t) - 0.468).abs() < 1e-3);
+    for r in [0.5, 0.8] {
+        let prog =
+            "G00 X20. Z1. T0101\nG42 G01 Z0 F0.2\nX26.\nX30. Z-2.\nZ-30.\nG40 G00 X40.\nM30\n";
+        let run = run_d("puma-lathe", &[], &[(1, r, 3)], prog);
+        ok(&run);
+        let p = path(&run);
+        let (a, b) = (2.0 * r * (1.0 - t), r * (1.0 - t));
+        // (diameter X, Z) of each move after the approach.
+        let want = [
+            (20.0 - 2.0 * r, 0.0),
+            (26.0 - a, 0.0),
+            (30.0, -2.0 - b),
+            (30.0, -30.0 - r),
+            (40.0, -30.0),
+        ];
+        assert_eq!(p.len(), 6, "{p:#?}");
+        for (m, w) in p[1..].iter().zip(want) {
+            // Motion X is a radius inside kerf.
+            assert!(
+                close(2.0 * m.to[0], w.0) && close(m.to[2], w.1),
+                "r {r}: got {m:?}, wanted Ø{} Z{}",
+                w.0,
+                w.1
+            );
+        }
+    }
+}
+
+/// Tip 0 (and 9): the programmed point is the nose centre; tip 8 (−X):
+/// only X shifts. A straight Z cut at Ø30 with G42, r = 0.4, from Z0 to
+/// Z-10 after a start-up in −X from Ø40: the start-up turns from −X to
+/// −Z (a right turn: (Z,X) (0,−1) → (−1,0), cross = −1), G42: inner →
+/// perpendicular to the Z cut: centre (0, 15.4); the cut ends at
+/// (−10, 15.4) before the cancel (+X: right turn again, inner).
+#[test]
+fn tip_directions_shift_the_control_point() {
+    for (tip, dz, dx) in [
+        (0u8, 0.0, 0.0),
+        (9, 0.0, 0.0),
+        (8, 0.0, -0.4),
+        (3, -0.4, -0.4),
+    ] {
+        let prog = "G00 X40. Z0 T0101\nG42 G01 X30. F0.2\nZ-10.\nG40 G00 X50.\nM30\n";
+        let run = run_d("puma-lathe", &[], &[(1, 0.4, tip)], prog);
+        ok(&run);
+        let p = path(&run);
+        let z_cut = &p[2];
+        assert!(
+            close(z_cut.to[0], 15.4 + dx) && close(z_cut.to[2], -10.0 + dz),
+            "tip {tip}: {z_cut:?}"
+        );
+    }
+}
