@@ -26,6 +26,7 @@ mod cycles;
 mod cylindrical;
 mod flow;
 mod lathe;
+mod lathe_chamfer;
 mod lathe_mrc;
 mod motion;
 mod polar_interp;

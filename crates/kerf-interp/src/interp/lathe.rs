@@ -19,6 +19,9 @@ pub(super) struct LatheData {
     pub(super) single: Option<(P, f64)>,
     /// M76 in force (thread chamfering on); M77 (power-on) turns it off.
     pub(super) chamfer_on: bool,
+    /// The corner B of the last chamfer / corner-R block: the next
+    /// block's incremental words count from it (interp/lathe_chamfer.rs).
+    pub(super) ddi_base: Option<Pos>,
     /// Modal first-block values of G70-G76 (interp/lathe_mrc.rs).
     pub(super) mrc: super::lathe_mrc::MrcModal,
 }
