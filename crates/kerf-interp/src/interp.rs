@@ -564,6 +564,15 @@ impl Interp {
     }
 
     fn emit(&mut self, cmd: Canon) {
+        // G96 on a lathe: the spindle follows X (interp/lathe.rs).
+        if self.st.css
+            && matches!(
+                cmd,
+                Canon::Rapid { .. } | Canon::Feed { .. } | Canon::Arc { .. } | Canon::Thread { .. }
+            )
+        {
+            self.css_follow();
+        }
         let e = Event {
             src: self.cur,
             tool: self.st.tool,

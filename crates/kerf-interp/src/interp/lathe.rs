@@ -38,6 +38,28 @@ impl Interp {
         }
     }
 
+    /// G96 (constant surface speed): before each move, a spindle event
+    /// when the rpm for the move's end point (the position is already
+    /// there when the move is emitted) differs from the last one — the
+    /// Fanuc rule for G00, and for cutting moves the speed the spindle
+    /// reaches at their end (fanuc-semantics §8.9). Clamped by G50 S and
+    /// the machine maximum.
+    pub(super) fn css_follow(&mut self) {
+        if self.st.spindle == SpindleDir::Stop || self.profile.kind != MachineKind::Lathe {
+            return;
+        }
+        let rpm = self.rpm();
+        if (rpm - self.st.last_rpm).abs() > 1e-6 {
+            self.st.last_rpm = rpm;
+            let css = self.css_speed();
+            self.emit(Canon::Spindle {
+                dir: self.st.spindle,
+                rpm,
+                css,
+            });
+        }
+    }
+
     /// The current position as a ZX point (program coordinates).
     pub(super) fn zx_pos(&self) -> P {
         let c = self.prog_pos();
