@@ -268,8 +268,17 @@ impl Interp {
             return self.rotary_interp_motion();
         }
         let mode = self.st.modal[1];
-        let (tw, any) = self.target()?;
+        let puma = self.dialect.id == DialectId::Puma;
+        let (tw, any) = if puma {
+            self.ddi_target()?
+        } else {
+            self.target()?
+        };
         let at = self.motion_at();
+        // PUMA direct chamfer / corner R (interp/lathe_chamfer.rs).
+        if puma && mode == 10 && any && self.ddi_words() {
+            return self.ddi_motion(tw, at);
+        }
         // One test for the look-ahead of ,C/,R (a move held, or this block
         // carries one): interp/corners.rs.
         if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
