@@ -500,14 +500,16 @@ impl Planner {
         (v, a)
     }
 
-    /// Junction speed limit between the end of `p` and the start of `n`.
-    fn junction(&self, p: &Seg, n: &Seg) -> f64 {
+    /// Junction speed limit between the end of `p` and the start of `n`;
+    /// `None` when the corner needs an exact stop (the smoothing would
+    /// leave the path tolerance even at zero speed).
+    fn junction(&self, p: &Seg, n: &Seg) -> Option<f64> {
         let mut v = p.vmax.min(n.vmax);
         let (u1, u2) = (&p.t_out, &n.t_in);
         let n1 = dot(u1, u1).sqrt();
         let n2 = dot(u2, u2).sqrt();
         if n1 <= 0.0 || n2 <= 0.0 {
-            return 0.0;
+            return None;
         }
         let t = self.t_smooth;
         let lmin = p.len.min(n.len);
@@ -515,14 +517,25 @@ impl Planner {
             let du = (u2[i] - u1[i]).abs();
             if du > 1e-9 {
                 let a = 0.5 * self.d.accel[i];
-                v = v.min((a * t / du).max(0.0)).min((a * lmin / du).sqrt());
+                v = v.min(a * t / du).min((a * lmin / du).sqrt());
             }
         }
         let c = (dot(u1, u2) / (n1 * n2)).clamp(-1.0, 1.0);
         let s = (1.0 - c * c).sqrt();
-        let m = if self.stages == 1 { t / 8.0 } else { t / 6.0 };
-        if s > 1e-9 && m > 0.0 {
-            v = v.min(self.d.path_tolerance / (m * s));
+        // Corner rounding of the smoothing kernel: the first and second
+        // moments of its positive half, times the speed and half the
+        // acceleration on either side.
+        let (m1, m2) = if self.stages == 1 {
+            (t / 8.0, t * t / 48.0)
+        } else {
+            (t / 6.0, t * t / 24.0)
+        };
+        if s > 1e-9 && m1 > 0.0 {
+            let room = self.d.path_tolerance / s - m2 * p.acc.max(n.acc);
+            if room <= 0.0 {
+                return None;
+            }
+            v = v.min(room / m1);
         }
         let th = c.acos();
         if th > 1e-9 && t > 0.0 {
@@ -530,7 +543,7 @@ impl Planner {
             let k = self.stages as f64;
             v = v.min((24.0 * r * self.d.path_tolerance / (k * t * t)).sqrt());
         }
-        v.max(0.0)
+        Some(v.max(0.0))
     }
 
     fn cut(&mut self, g: Geom, feed: Feed, to_work_x: f64, thread: bool) {
@@ -647,7 +660,13 @@ impl Planner {
 
     fn push_seg(&mut self, mut s: Seg) {
         s.jmax = match self.q.back() {
-            Some(p) if !p.stop => self.junction(p, &s),
+            Some(p) if !p.stop => match self.junction(p, &s) {
+                Some(v) => v,
+                None => {
+                    self.flush();
+                    0.0
+                }
+            },
             _ => 0.0,
         }
         .min(s.vmax);
