@@ -126,6 +126,19 @@ pub enum AlarmKind {
     ChamferNextBlock,
     /// Lathe direct chamfer / corner R on a block that moves both X and Z, or followed by a block that does (001 p.10 note 3).
     ChamferTaper,
+    /// Cutter / tool nose radius compensation started (G41/G42) or
+    /// cancelled (G40) in a G02/G03 block.
+    CompArc,
+    /// A plane change (G17/G18/G19) in compensation mode.
+    CompPlane,
+    /// Compensation interference (gouge): a compensated move that runs
+    /// against the programmed direction, or an offset larger than the
+    /// radius of an inside arc.
+    CompInterference,
+    /// No intersection of the compensated paths at an inside corner.
+    CompNoSolution,
+    /// G39 outside offset mode, or in a start-up or cancel block.
+    CompG39,
 }
 
 impl AlarmKind {
@@ -171,6 +184,11 @@ impl AlarmKind {
         AlarmKind::CornerNoMove,
         AlarmKind::CornerTooLarge,
         AlarmKind::CornerConflict,
+        AlarmKind::CompArc,
+        AlarmKind::CompPlane,
+        AlarmKind::CompInterference,
+        AlarmKind::CompNoSolution,
+        AlarmKind::CompG39,
         AlarmKind::ToolOffset,
         AlarmKind::MrcNoPq,
         AlarmKind::MrcValue,
@@ -228,6 +246,11 @@ impl AlarmKind {
             CornerNoMove => ("F_82103", "PS051", "HU-024"),
             CornerTooLarge => ("F_82104", "PS055", "HU-025"),
             CornerConflict => ("F_82105", "PS053", "HU-026"),
+            CompArc => ("F_82120", "PS034", "HU-060"),
+            CompPlane => ("F_82121", "PS037", "HU-061"),
+            CompInterference => ("F_82122", "PS041", "HU-062"),
+            CompNoSolution => ("F_82123", "PS033", "HU-063"),
+            CompG39 => ("F_82124", "PS035", "HU-064"),
             ToolOffset => ("F_82106", "PS042", "HU-027"),
             MrcNoPq => ("KERF-0161", "PS061", "KERF-0161"),
             MrcValue => ("KERF-0162", "PS062", "KERF-0162"),

@@ -22,6 +22,7 @@ use crate::words::{WVal, Words, MAX_CODES};
 mod block_cache;
 mod calls;
 mod codes;
+mod comp;
 mod corners;
 mod cycles;
 mod cylindrical;
@@ -216,6 +217,9 @@ pub struct Interp {
     /// A move carrying `,C`/`,R`, held until the next move is known; while
     /// it is held, events are kept back in it (interp/corners.rs).
     corner: Option<Box<corners::Pending>>,
+    /// Cutter / tool nose radius compensation (interp/comp.rs); None when
+    /// cancelled with nothing held.
+    comp: Option<Box<comp::CompState>>,
     /// Parsed blocks of text executed again (loops, jumps back).
     cache: block_cache::BlockCache,
     /// PUMA lathe cycle data (interp/lathe.rs, interp/lathe_mrc.rs).
@@ -313,6 +317,7 @@ impl Interp {
             code_calls,
             cyc,
             corner: None,
+            comp: None,
             cache: block_cache::BlockCache::default(),
             lathe: lathe::LatheData::default(),
         }
@@ -566,6 +571,7 @@ impl Interp {
                     self.finished = true;
                     self.queue.clear();
                     self.corner = None;
+                    self.comp = None;
                     return Step::Alarm(a);
                 }
             }
@@ -601,7 +607,13 @@ impl Interp {
             cmd,
         };
         match self.corner.as_mut() {
-            None => self.queue.push_back(e),
+            None if self.comp.is_none() => self.queue.push_back(e),
+            // After a held compensated move: handed out at its corner.
+            None => {
+                if let Some(e) = self.comp_hold_event(e) {
+                    self.queue.push_back(e)
+                }
+            }
             // After a held ,C/,R move: handed out once it is emitted.
             Some(p) => p.hold(e),
         }
@@ -802,6 +814,9 @@ impl Interp {
                 format!("M{code:02}")
             };
             return Err(self.corner_broken(&what));
+        }
+        if self.comp.is_some() {
+            self.comp_finish()?;
         }
         self.emit(Canon::End { code });
         Ok(())
@@ -1113,6 +1128,27 @@ impl Interp {
         {
             self.tool_length()?;
         }
+        // Cutter / tool nose radius compensation codes, before the
+        // one-shots (a G92 or G28 ends a held move first).
+        let g39 = if self.comp.is_some()
+            || self.words.has(b'D')
+            || self
+                .words
+                .gs()
+                .iter()
+                .any(|g| matches!(g.0, 390 | 400 | 410 | 420))
+        {
+            let special = cycle
+                || one_shot[..n_one].iter().any(|g| {
+                    matches!(g.0, 270 | 280 | 290 | 300 | 530 | 310..=314 | 370..=374 | 450..=480 | 700..=760)
+                });
+            let setting = one_shot[..n_one]
+                .iter()
+                .any(|g| is_coordinate_setting(d.id, g.0));
+            self.comp_codes(&one_shot[..n_one], special, setting)?
+        } else {
+            false
+        };
         for &(c, at) in &one_shot[..n_one] {
             match (d.id, c) {
                 (_, 40) => dwell = true,
@@ -1165,7 +1201,7 @@ impl Interp {
         }
         // A dwell or a coordinate-setting block does not move: its axis
         // words are the time or the new coordinates.
-        let no_motion = dwell || setting || xdata;
+        let no_motion = dwell || setting || xdata || g39;
         if let Some((c, at)) = refret {
             self.reference_return(c, at)?;
         } else if let Some((c, at)) = skip {
@@ -1191,6 +1227,9 @@ impl Interp {
                 && !matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End)
         })?;
         self.run_m(|m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End))?;
+        if self.comp.is_some() {
+            self.comp_block_end()?;
+        }
         if self.finished_by_end() {
             return Ok(false);
         }

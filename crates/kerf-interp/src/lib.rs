@@ -25,6 +25,7 @@
 
 pub mod alarms;
 pub mod arc;
+pub mod comp;
 pub mod corner;
 pub mod dialect;
 pub mod interp;

@@ -479,10 +479,10 @@ fn goto_loops_end_quickly_in_the_loop_guard() {
 fn remaining_alarm_kinds_are_positioned() {
     // Expression missing its right operand: the ']' at column 9.
     assert_eq!(alarm(&run_on("hx-mc", "G00 X[1+]\n")), ("F_82005", 1, 9));
-    // Cutter compensation (issue 5) is recognised and refused by name.
+    // Cutter compensation (issue 5) now runs: G41 with D1 = 0 ends at
+    // the programmed point (tests/cutter_comp.rs has the geometry).
     let r = run_on("hx-mc", "G90 G00 X0 Y0 Z0\nG41 D1 X1.\n");
-    assert_eq!(alarm(&r), ("KERF-0100", 2, 1));
-    assert!(r.alarm.unwrap().message.contains("issue 5"));
+    assert!(r.alarm.is_none(), "{:?}", r.alarm);
     // G29 with no G28/G30 intermediate point stored.
     assert_eq!(alarm(&run_on("hx-mc", "G90 G29 X10.\n")), ("F_82008", 1, 5));
     // Hurco G04 needs F (seconds or revolutions).

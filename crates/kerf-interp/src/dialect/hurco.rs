@@ -9,7 +9,6 @@ use super::Support::*;
 use super::*;
 
 const LATER_HURCO: Support = Later("Hurco cycles, probing, fixture offsets and loops (issue 7)");
-const LATER_COMP: Support = Later("tool compensation (issue 5)");
 
 /// G codes 002 documents (pages 14-55), with the "(default)" marks of their
 /// headings: G00, G40, G90, G94, G97, G98. 002 prints no group numbers; the
@@ -34,8 +33,8 @@ pub static GCODES: &[GCode] = &[
     g(330, 1, false, "threading", LATER_HURCO),
     g(380, 0, false, "turret probe", LATER_HURCO),
     g(400, 7, true, "cutter radius compensation off", Yes),
-    g(410, 7, false, "cutter radius compensation left", LATER_COMP),
-    g(420, 7, false, "cutter radius compensation right", LATER_COMP),
+    g(410, 7, false, "cutter radius compensation left", Yes),
+    g(420, 7, false, "cutter radius compensation right", Yes),
     g(530, 0, false, "program machine coordinates", Yes),
     g(590, 0, false, "cancel work coordinate offsets", Yes),
     g(700, 6, false, "inch mode (legacy code of the G78 samples)", Yes),

@@ -9,8 +9,6 @@ use super::MWhen::*;
 use super::Support::*;
 use super::*;
 
-const LATER_COMP: Support = Later("tool compensation (issue 5)");
-
 /// G codes of 000 §3.1. Group numbers are the ones the table prints (they
 /// are not Fanuc's: plane = 16, G43/G44/G49 = 13, G68/G69 = 18, …), with
 /// two exceptions recorded in docs/dialects.md: G31-G31.4 (printed 23, a
@@ -51,10 +49,10 @@ pub static GCODES: &[GCode] = &[
     g(372, 0, false, "automatic tool length measurement 2", Yes),
     g(373, 0, false, "automatic tool length measurement 3", Yes),
     g(374, 0, false, "automatic tool length measurement 4", Yes),
-    g(390, 0, false, "tool diameter compensation at corner arc", LATER_COMP),
+    g(390, 0, false, "tool diameter compensation at corner arc", Yes),
     g(400, 7, true, "tool diameter compensation cancel", Yes),
-    g(410, 7, false, "tool diameter compensation left", LATER_COMP),
-    g(420, 7, false, "tool diameter compensation right", LATER_COMP),
+    g(410, 7, false, "tool diameter compensation left", Yes),
+    g(420, 7, false, "tool diameter compensation right", Yes),
     g(430, 13, false, "tool length compensation +", Yes),
     g(440, 13, false, "tool length compensation -", Yes),
     g(450, 0, false, "tool offset increase", Yes),

@@ -11,7 +11,6 @@ use super::Support::*;
 use super::*;
 
 const LATER_LATHE: Support = Later("PUMA lathe cycles, threading and reference returns (issue 6)");
-const LATER_COMP: Support = Later("tool compensation (issue 5)");
 
 /// G codes of 001 (system A). G10, G31 and G65-G67 are not in 001's
 /// G-code table but are Fanuc 0-T codes (001 itself uses G31 in the M86
@@ -36,8 +35,8 @@ pub static GCODES: &[GCode] = &[
     g(310, 0, false, "skip cutting", LATER_LATHE), // Fanuc 0-T; used in 001's M86 example
     g(320, 1, false, "thread process (thread cutting)", Yes), // 001 prints "#G32": see docs/dialects.md
     g(400, 7, true, "cancel of compensation", Yes), // not #-marked in 001; Fanuc reset state
-    g(410, 7, false, "tool nose radius compensation left", LATER_COMP),
-    g(420, 7, false, "tool nose radius compensation right", LATER_COMP),
+    g(410, 7, false, "tool nose radius compensation left", Yes),
+    g(420, 7, false, "tool nose radius compensation right", Yes),
     g(500, 0, false, "coordinate system setting, max spindle speed setting", Yes),
     g(650, 0, false, "user macro simple call", Yes), // Fanuc 0-T, not in 001's table
     g(660, 12, false, "user macro modal call", Yes),

@@ -71,6 +71,7 @@ impl Interp {
         // state); a move held for its ,C/,R is dropped.
         self.cyc.clear();
         self.corner = None;
+        self.comp = None;
         // Lathe single-cycle data and M76 go with the modes (the G70-G76
         // first-block values are parameters and stay).
         self.lathe.single = None;

@@ -1,0 +1,628 @@
+//! Cutter radius compensation C (HX, Hurco: G40/G41/G42 with D, G39) and
+//! tool nose radius compensation (lathes: G40/G41/G42 with the nose
+//! radius and tip of the T code's offset): the glue that holds blocks.
+//!
+//! A move in offset mode is not emitted when its block runs: it is held
+//! ([`Held`]: its programmed path in the plane, the compensated start
+//! already decided, its speed, source and the events made after it) until
+//! the next move in the plane is known, because the vector at its end
+//! depends on that move (000 §13.2.2, fanuc-semantics §4). The next move
+//! emits it up to the corner (`crate::comp::corner`, `startup`, `cancel`),
+//! then the events kept back (blocks without motion in the plane are
+//! executed at the corner; an off-plane move takes the corner's plane
+//! point), then the corner's extra pieces, and is held in turn. More
+//! blocks without a move in the plane than the profile allows
+//! (`comp_idle_blocks`: HX 2, PUMA 1, Hurco 2) break the look-ahead: the
+//! held move ends on the vector perpendicular to its end and the next move
+//! starts slanted from there. The interpreter's position stays the
+//! programmed (uncompensated) point, so incremental words and I/J/K read
+//! from it; only the emitted events carry the compensated point.
+
+use super::motion::Speed;
+use super::*;
+use crate::comp::{self, CompError, CornerOpt, Join, Piece, Seg, P};
+
+/// The modal group of G40/G41/G42 in all three dialects.
+const COMP_GROUP: usize = 7;
+
+/// A move held until the next one is known.
+pub(crate) struct Held {
+    /// The programmed path in the plane.
+    seg: Seg,
+    /// Programmed start and end (all axes).
+    start: Pos,
+    end: Pos,
+    /// Compensated start in the plane (nose centre path on lathes).
+    cstart: P,
+    /// Rapid or the block's feed.
+    speed: Speed,
+    /// The signed offset of the block (+ left).
+    r: f64,
+    /// Lathe: imaginary tip shift added to the emitted points.
+    tip: P,
+    /// The start-up block (from the uncompensated point).
+    startup: bool,
+    /// The block (source of its events) and its motion word.
+    src: SrcRef,
+    motion: SrcRef,
+    /// Events made while the move is held.
+    events: Vec<Event>,
+}
+
+/// Compensation state; `Interp::comp` is None when compensation is
+/// cancelled and nothing is left over (so plain programs pay one test).
+pub(crate) struct CompState {
+    /// G41/G42 in force.
+    on: bool,
+    /// Signed offset for the blocks from now on (+ left of travel).
+    r: f64,
+    /// Lathe: imaginary tip shift for the blocks from now on.
+    tip: P,
+    /// Plane of the offset mode.
+    plane: Plane,
+    /// The next move in the plane is a start-up.
+    startup: bool,
+    /// Emitted point − programmed point when nothing is held (after a
+    /// broken look-ahead, G92, or the end of a cancel).
+    vec: P,
+    held: Option<Held>,
+    /// Blocks without a move in the plane since the held move.
+    idle: u32,
+    /// The current block moved in the plane.
+    moved: bool,
+    /// G39 before the next move: the direction of its end vector.
+    g39: Option<Option<P>>,
+    /// G40 with I/J/K in this block: the direction.
+    ij: Option<P>,
+    /// Start-up / cancel type B.
+    type_b: bool,
+    /// Blocks without a move in the plane the look-ahead crosses.
+    limit: u32,
+    /// Hurco "circular joining": outer corners get an arc.
+    circular: bool,
+    /// A spare event buffer (reused between held moves).
+    spare: Vec<Event>,
+}
+
+fn padd(a: P, b: P) -> P {
+    (a.0 + b.0, a.1 + b.1)
+}
+fn psub(a: P, b: P) -> P {
+    (a.0 - b.0, a.1 - b.1)
+}
+
+impl Interp {
+    fn comp_new(&self) -> CompState {
+        let (type_b, limit, circular) = match self.dialect.id {
+            DialectId::Hx => (
+                self.profile.param("PI 128", 0.0) == 1.0,
+                self.profile.param("comp_idle_blocks", 2.0),
+                false,
+            ),
+            DialectId::Puma => (
+                self.profile.param("comp_type_b", 0.0) == 1.0,
+                self.profile.param("comp_idle_blocks", 1.0),
+                false,
+            ),
+            DialectId::Hurco => (
+                self.profile.param("comp_exit_normal", 1.0) == 0.0,
+                self.profile.param("comp_idle_blocks", 2.0),
+                self.profile.param("comp_circular_joining", 0.0) == 1.0,
+            ),
+        };
+        CompState {
+            on: false,
+            r: 0.0,
+            tip: (0.0, 0.0),
+            plane: self.st.plane,
+            startup: false,
+            vec: (0.0, 0.0),
+            held: None,
+            idle: 0,
+            moved: false,
+            g39: None,
+            ij: None,
+            type_b,
+            limit: limit.clamp(0.0, 16.0) as u32,
+            circular,
+            spare: Vec::new(),
+        }
+    }
+
+    /// Keeps back an event made while a compensated move is held; gives
+    /// the event back when nothing is held.
+    pub(super) fn comp_hold_event(&mut self, e: Event) -> Option<Event> {
+        match self.comp.as_mut().and_then(|c| c.held.as_mut()) {
+            Some(h) => {
+                h.events.push(e);
+                None
+            }
+            None => Some(e),
+        }
+    }
+
+    /// The offset value and tip shift in force: D on mills, the T code's
+    /// nose radius and tip on lathes.
+    fn comp_value(&self) -> (f64, P) {
+        match self.profile.kind {
+            MachineKind::Mill => (self.offsets.d(self.sys.d.max(0.0) as usize), (0.0, 0.0)),
+            MachineKind::Lathe => {
+                let o = self.offsets.lathe(self.st.offset as usize);
+                let r = o.total_r();
+                let t = comp::tip_vector(o.tip);
+                (r, (t.0 * r, t.1 * r))
+            }
+        }
+    }
+
+    /// The block's compensation codes (G39/G40/G41/G42, D), run before its
+    /// one-shot codes. `special`: the block moves otherwise than by
+    /// G00-G03 (G28-G30, G53, cycles, G45-G48, G31); `setting`: G92/G50.
+    /// True when the block is a G39 (no move of its own).
+    pub(super) fn comp_codes(
+        &mut self,
+        one_shot: &[(u16, u32)],
+        special: bool,
+        setting: bool,
+    ) -> R<bool> {
+        if self.profile.kind == MachineKind::Mill {
+            if let Some(dw) = self.words.get(b'D') {
+                if dw.v < 0.0 || dw.v.fract() != 0.0 || !self.offsets.valid(dw.v as usize) {
+                    return Err(self.alarm(
+                        AlarmKind::OutOfRange,
+                        dw.at,
+                        format!(
+                            "D{} is not an offset number (D00-D{})",
+                            fmt_num(dw.v),
+                            self.offsets.count()
+                        ),
+                    ));
+                }
+            }
+        }
+        let mode = self.st.modal[COMP_GROUP];
+        let g39 = one_shot.iter().find(|g| g.0 == 390).map(|g| g.1);
+        if self.comp.is_none() {
+            if mode == 400 {
+                if let Some(at) = g39 {
+                    return Err(self.alarm(
+                        AlarmKind::CompG39,
+                        at,
+                        "G39 outside cutter compensation (G41/G42) mode",
+                    ));
+                }
+                return Ok(false);
+            }
+            self.comp = Some(Box::new(self.comp_new()));
+        }
+        let plane = self.st.plane;
+        let (on, cplane) = {
+            let c = self.comp.as_deref().expect("set");
+            (c.on, c.plane)
+        };
+        if on && plane != cplane {
+            let at = self
+                .words
+                .gs()
+                .iter()
+                .find(|g| matches!(g.0, 170 | 180 | 190))
+                .map(|g| g.1)
+                .unwrap_or(0);
+            return Err(self.alarm(
+                AlarmKind::CompPlane,
+                at,
+                "plane change (G17/G18/G19) in cutter compensation mode: cancel with G40 first",
+            ));
+        }
+        // Moves other than G00-G03 break the look-ahead: the held move
+        // ends on its perpendicular vector. G92 keeps the vector; G28-G30,
+        // G53 and the cycles cancel it until the next move (000 §13.2.2
+        // figures).
+        if special || setting {
+            self.comp_break()?;
+            let c = self.comp.as_deref_mut().expect("set");
+            if !setting {
+                c.vec = (0.0, 0.0);
+                c.startup = c.on;
+            }
+        }
+        let (a1, a2, _) = plane.axes();
+        let ijk = |me: &Self| -> Option<P> {
+            let l = [b'I', b'J', b'K'];
+            let v = |i: usize| me.words.get(l[i.min(2)]).map(|w| me.linear(w));
+            let (u, w) = (v(a1), v(a2));
+            (u.is_some() || w.is_some()).then(|| (u.unwrap_or(0.0), w.unwrap_or(0.0)))
+        };
+        let (value, tip) = self.comp_value();
+        match mode {
+            410 | 420 => {
+                let side = if mode == 410 { 1.0 } else { -1.0 };
+                let c = self.comp.as_deref_mut().expect("set");
+                c.r = side * value;
+                c.tip = if value < 0.0 { (0.0, 0.0) } else { tip };
+                if !c.on {
+                    c.on = true;
+                    c.plane = plane;
+                    c.startup = c.held.is_none();
+                }
+            }
+            _ => {
+                let dir = ijk(self);
+                let c = self.comp.as_deref_mut().expect("set");
+                if c.on {
+                    c.on = false;
+                    c.ij = dir;
+                }
+            }
+        }
+        if let Some(at) = g39 {
+            let c = self.comp.as_deref().expect("set");
+            if !c.on || c.held.is_none() || c.held.as_ref().is_some_and(|h| h.startup) {
+                return Err(self.alarm(
+                    AlarmKind::CompG39,
+                    at,
+                    "G39 in a start-up or cancel block: it needs a compensated move before it",
+                ));
+            }
+            let dir = match ijk(self) {
+                Some(d) => Some(d),
+                None => {
+                    let (tw, any) = self.target()?;
+                    let cur = self.prog_pos();
+                    any.then(|| (tw[a1] - cur[a1], tw[a2] - cur[a2]))
+                        .filter(|d| d.0.hypot(d.1) > 1e-9)
+                }
+            };
+            self.comp.as_deref_mut().expect("set").g39 = Some(dir);
+            return Ok(true);
+        }
+        Ok(false)
+    }
+
+    /// The block's move in compensation (offset mode, or a held move or
+    /// vector left over).
+    pub(super) fn comp_motion(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
+        if let Some((_, w)) = self.words.corner() {
+            return Err(self.alarm(
+                AlarmKind::NotYetSupported,
+                w.at,
+                ",C/,R in cutter compensation mode is not yet supported",
+            ));
+        }
+        let plane = self.st.plane;
+        let (a1, a2, _) = plane.axes();
+        let cur = self.prog_pos();
+        let arc = matches!(mode, 20 | 30);
+        if !matches!(mode, 0 | 10 | 20 | 30) {
+            // G33 and the like: uncompensated, the look-ahead broken.
+            self.comp_break()?;
+            let c = self.comp.as_deref_mut().expect("comp");
+            c.vec = (0.0, 0.0);
+            c.startup = c.on;
+            return self.plain_motion(mode, tw, any, at);
+        }
+        let (s, e) = ((cur[a1], cur[a2]), (tw[a1], tw[a2]));
+        let seg = if arc {
+            let ijk = [b'I', b'J', b'K'].iter().any(|&l| self.words.has(l));
+            if comp::dist(s, e) < comp::EPS && !ijk {
+                None
+            } else {
+                self.arc_center(tw, any, mode == 30, at)?.map(|c| Seg::Arc {
+                    a: s,
+                    b: e,
+                    c,
+                    ccw: mode == 30,
+                })
+            }
+        } else {
+            (comp::dist(s, e) >= comp::EPS).then_some(Seg::Line { a: s, b: e })
+        };
+        let Some(seg) = seg else {
+            if !any {
+                return Ok(());
+            }
+            return self.comp_offplane(mode, tw, any, at);
+        };
+        let speed = if mode == 0 {
+            Speed::Rapid
+        } else {
+            Speed::Feed(self.feed(at)?)
+        };
+        let c = self.comp.as_deref_mut().expect("comp");
+        c.moved = true;
+        c.idle = 0;
+        let (on, r, tip, vec, startup, type_b) = (c.on, c.r, c.tip, c.vec, c.startup, c.type_b);
+        let held = c.held.take();
+        let g39 = c.g39.take().or(c.circular.then_some(None));
+        let ij = c.ij.take();
+        if !on {
+            if arc {
+                return Err(self.alarm(
+                    AlarmKind::CompArc,
+                    at,
+                    "cutter compensation cancelled (G40) in a G02/G03 block: cancel in G00/G01",
+                ));
+            }
+            let base = if let Some(h) = held {
+                let k = h.seg.end();
+                let j = if h.startup {
+                    Join::at(self.comp_geom(comp::perp_end(&h.seg, h.r), h.motion)?)
+                } else {
+                    let e = match ij {
+                        Some(d) => Seg::Line {
+                            a: k,
+                            b: padd(k, d),
+                        },
+                        None => seg,
+                    };
+                    let j = comp::cancel(&h.seg, &e, h.r, type_b, ij.is_some());
+                    self.comp_geom(j, h.motion)?
+                };
+                let htip = h.tip;
+                self.comp_flush(h, &j)?;
+                padd(j.start2(), htip)
+            } else {
+                padd(s, vec)
+            };
+            let prog = self.st.pos;
+            self.st.pos = self.to_machine(&self.plane_pt(cur, base));
+            let r = self.line_to(tw, speed, at);
+            if r.is_err() {
+                self.st.pos = prog;
+            }
+            r?;
+            self.comp = None;
+            return Ok(());
+        }
+        // The offset at this block's start must exist (an inside arc
+        // larger than the offset).
+        self.comp_geom(comp::perp_start(&seg, r), self.src_here(at))?;
+        let cstart = if let Some(h) = held {
+            let j = if h.startup {
+                comp::startup(&h.seg, &seg, h.r, type_b)
+            } else {
+                comp::corner(
+                    &h.seg,
+                    h.r,
+                    &seg,
+                    r,
+                    CornerOpt {
+                        g39,
+                        perpendicular: false,
+                    },
+                )
+            };
+            let j = self.comp_geom(j, h.motion)?;
+            self.comp_flush(h, &j)?;
+            j.start2()
+        } else {
+            if startup && arc {
+                return Err(self.alarm(
+                    AlarmKind::CompArc,
+                    at,
+                    "cutter compensation start-up (G41/G42) in a G02/G03 block: start in G00/G01",
+                ));
+            }
+            // Start-up from the uncompensated point, or slanted from the
+            // vector left by a broken look-ahead.
+            psub(padd(s, vec), tip)
+        };
+        let (src, motion) = (self.cur, self.src_here(at));
+        let c = self.comp.as_deref_mut().expect("comp");
+        c.startup = false;
+        c.vec = (0.0, 0.0);
+        let events = std::mem::take(&mut c.spare);
+        c.held = Some(Held {
+            seg,
+            start: cur,
+            end: tw,
+            cstart,
+            speed,
+            r,
+            tip,
+            startup,
+            src,
+            motion,
+            events,
+        });
+        self.st.pos = self.to_machine(&tw);
+        Ok(())
+    }
+
+    /// A move without motion in the plane (Z alone in G17): with a move
+    /// held it is kept back and takes the corner's plane point; otherwise
+    /// it moves at the vector in force.
+    fn comp_offplane(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
+        let c = self.comp.as_deref().expect("comp");
+        if c.held.is_some() || (c.vec.0 == 0.0 && c.vec.1 == 0.0) {
+            return self.plain_motion(mode, tw, any, at);
+        }
+        let vec = c.vec;
+        let cur = self.prog_pos();
+        let (a1, a2, _) = self.st.plane.axes();
+        let p = padd((cur[a1], cur[a2]), vec);
+        let prog = self.st.pos;
+        self.st.pos = self.to_machine(&self.plane_pt(cur, p));
+        let r = self.plain_motion(mode, self.plane_pt(tw, p), any, at);
+        self.st.pos = if r.is_ok() {
+            self.to_machine(&tw)
+        } else {
+            prog
+        };
+        r
+    }
+
+    /// Ends a held move on the vector perpendicular to its end (the
+    /// look-ahead broken); the vector stays in force.
+    pub(super) fn comp_break(&mut self) -> R<()> {
+        let Some(c) = self.comp.as_deref_mut() else {
+            return Ok(());
+        };
+        let Some(h) = c.held.take() else {
+            return Ok(());
+        };
+        let end1 = self.comp_geom(comp::perp_end(&h.seg, h.r), h.motion)?;
+        let (a1, a2, _) = self.st.plane.axes();
+        let vec = psub(padd(end1, h.tip), (h.end[a1], h.end[a2]));
+        self.comp_flush(h, &Join::at(end1))?;
+        self.comp.as_deref_mut().expect("comp").vec = vec;
+        Ok(())
+    }
+
+    /// End of a block: blocks without a move in the plane count towards
+    /// the look-ahead limit; a state with nothing left is dropped.
+    pub(super) fn comp_block_end(&mut self) -> R<()> {
+        let Some(c) = self.comp.as_deref_mut() else {
+            return Ok(());
+        };
+        if c.moved {
+            c.moved = false;
+        } else if c.held.is_some() {
+            c.idle += 1;
+            if c.idle > c.limit {
+                c.idle = 0;
+                self.comp_break()?;
+            }
+        }
+        let c = self.comp.as_deref().expect("comp");
+        if !c.on && c.held.is_none() && c.vec == (0.0, 0.0) {
+            self.comp = None;
+        }
+        Ok(())
+    }
+
+    /// The end of the program (M02/M30, end of text) cancels compensation
+    /// (000 §13.2.1: RESET, M02, M30 → G40): a held move ends on its
+    /// perpendicular vector.
+    pub(super) fn comp_finish(&mut self) -> R<()> {
+        self.comp_break()?;
+        self.comp = None;
+        Ok(())
+    }
+
+    /// A geometry result as an alarm at `src`.
+    fn comp_geom<T>(&self, r: Result<T, CompError>, src: SrcRef) -> R<T> {
+        r.map_err(|e| {
+            let (kind, msg) = match e {
+                CompError::ArcTooSmall => (
+                    AlarmKind::CompInterference,
+                    "interference: the offset is larger than the radius of an inside arc",
+                ),
+                CompError::NoIntersection => (
+                    AlarmKind::CompNoSolution,
+                    "no intersection of the compensated paths at the corner",
+                ),
+            };
+            kind.at(self.dialect.id, src, msg)
+        })
+    }
+
+    /// Emits a held move up to `j.end1`, the events kept back (motions at
+    /// the corner's plane point), then the corner's pieces. Alarms point
+    /// at the held block's motion word.
+    fn comp_flush(&mut self, mut h: Held, j: &Join) -> R<()> {
+        let prog = self.st.pos;
+        let base = self.prog_pos();
+        let here = std::mem::replace(&mut self.cur, h.src);
+        let mut events = std::mem::take(&mut h.events);
+        let r = self.comp_emit(&h, j, base, &mut events);
+        self.cur = here;
+        self.st.pos = prog;
+        events.clear();
+        if let Some(c) = self.comp.as_deref_mut() {
+            if c.spare.capacity() < events.capacity() {
+                c.spare = events;
+            }
+        }
+        r.map_err(|mut a| {
+            a.src = h.motion;
+            a
+        })
+    }
+
+    fn comp_emit(&mut self, h: &Held, j: &Join, base: Pos, events: &mut Vec<Event>) -> R<()> {
+        // Interference: the compensated move must not run against the
+        // programmed one (fanuc-semantics §4.7).
+        let bad = match h.seg {
+            Seg::Line { a, b } => !h.startup && comp::line_reverses((a, b), (h.cstart, j.end1)),
+            Seg::Arc { .. } => comp::arc_reverses(&h.seg, (h.cstart, j.end1)),
+        };
+        if bad {
+            return Err(AlarmKind::CompInterference.at(
+                self.dialect.id,
+                h.motion,
+                "interference: the compensated move would run against the programmed direction (gouge)",
+            ));
+        }
+        let s = self.plane_pt(h.start, padd(h.cstart, h.tip));
+        let e = self.plane_pt(h.end, padd(j.end1, h.tip));
+        self.st.pos = self.to_machine(&s);
+        let feed = |me: &Self| match h.speed {
+            Speed::Feed(f) => Ok(f),
+            _ => me.feed(0),
+        };
+        match h.seg {
+            Seg::Line { .. } => {
+                if self.to_machine(&e) != self.st.pos {
+                    self.line_to(e, h.speed, 0)?;
+                }
+            }
+            Seg::Arc { c, ccw, .. } => {
+                let f = feed(self)?;
+                self.arc_to(s, e, padd(c, h.tip), ccw, f, 0)?;
+            }
+        }
+        // The events of the blocks between, at the corner.
+        if !events.is_empty() {
+            let (a1, a2, _) = self.st.plane.axes();
+            let me = self.to_machine(&e);
+            for ev in events.iter_mut() {
+                if let Canon::Rapid { m, .. } | Canon::Feed { m, .. } = &mut ev.cmd {
+                    m.mto[a1] = me[a1];
+                    m.mto[a2] = me[a2];
+                    m.to = self.work_of(&m.mto);
+                }
+            }
+            if let Some(last) = events.iter().rev().find_map(|e| e.motion()) {
+                self.st.pos = last.mto;
+            }
+            self.queue.extend(events.drain(..));
+        }
+        let mut prev = j.end1;
+        for p in j.pieces() {
+            match *p {
+                Piece::Line(q) => {
+                    let t = self.plane_pt(base, padd(q, h.tip));
+                    self.line_to(t, h.speed, 0)?;
+                }
+                Piece::Arc(q, c, ccw) => {
+                    let f = feed(self)?;
+                    let s = self.plane_pt(base, padd(prev, h.tip));
+                    let t = self.plane_pt(base, padd(q, h.tip));
+                    self.arc_to(s, t, padd(c, h.tip), ccw, f, 0)?;
+                }
+            }
+            prev = p.end();
+        }
+        Ok(())
+    }
+
+    /// `p` with its plane coordinates replaced by `uv`.
+    fn plane_pt(&self, p: Pos, uv: P) -> Pos {
+        let (a1, a2, _) = self.st.plane.axes();
+        let mut q = p;
+        q[a1] = uv.0;
+        q[a2] = uv.1;
+        q
+    }
+
+    /// The source position of a byte of the current block.
+    fn src_here(&self, at: u32) -> SrcRef {
+        let (line, col) = self.raw.line_col(at as usize);
+        SrcRef {
+            file: self.cur.file,
+            line,
+            col,
+        }
+    }
+}

@@ -1,0 +1,345 @@
+//! Cutter radius compensation C on the HX (000 §13.2.2) and tool nose
+//! radius compensation on the lathes: the compensated points worked out by
+//! hand in the comments (offset lines, circle radii ± r, unit normals),
+//! the alarms with their positions, and property tests against an
+//! independent distance computation.
+
+use kerf_canon::{ArcDir, Canon, Event};
+use kerf_interp::{Interp, Profile, Run, Settings, Step};
+
+mod common;
+use common::ok;
+
+/// Runs `text` on a built-in machine after setting D offsets (mill) or
+/// lathe offsets (n, r, tip).
+fn run_d(machine: &str, d: &[(usize, f64)], lathe: &[(usize, f64, u8)], text: &str) -> Run {
+    run_p(wide(machine), d, lathe, text)
+}
+
+/// A built-in profile with travel wide enough for any test contour.
+fn wide(machine: &str) -> Profile {
+    let mut p = Profile::builtin(machine).unwrap();
+    for a in p.axes.values_mut() {
+        a.min = -1e4;
+        a.max = 1e4;
+    }
+    p
+}
+
+fn run_p(p: Profile, d: &[(usize, f64)], lathe: &[(usize, f64, u8)], text: &str) -> Run {
+    let mut it = Interp::new(p, Settings::default());
+    for &(n, v) in d {
+        it.offsets_mut().d_mut(n).unwrap().geom = v;
+    }
+    for &(n, r, tip) in lathe {
+        let o = it.offsets_mut().lathe_mut(n).unwrap();
+        o.r = r;
+        o.tip = tip;
+    }
+    it.load_main(
+        "t.nc",
+        Box::new(std::io::Cursor::new(text.as_bytes().to_vec())),
+    );
+    let mut events = Vec::new();
+    loop {
+        match it.step() {
+            Step::Event(e) => events.push(e),
+            Step::End => {
+                return Run {
+                    events,
+                    alarm: None,
+                    blocks: it.blocks(),
+                }
+            }
+            Step::Alarm(a) => {
+                return Run {
+                    events,
+                    alarm: Some(a),
+                    blocks: it.blocks(),
+                }
+            }
+        }
+    }
+}
+
+/// A motion: kind, line, end (work X, Y, Z), arc centre (X, Y) and CW?
+#[derive(Debug, Clone)]
+struct Mv {
+    kind: &'static str,
+    line: u32,
+    to: [f64; 3],
+    center: Option<(f64, f64, bool)>,
+}
+
+fn path(r: &Run) -> Vec<Mv> {
+    r.events.iter().filter_map(mv).collect()
+}
+
+fn mv(e: &Event) -> Option<Mv> {
+    let (kind, center) = match &e.cmd {
+        Canon::Rapid { .. } => ("rapid", None),
+        Canon::Feed { .. } => ("feed", None),
+        Canon::Arc { center, dir, .. } => ("arc", Some((center[0], center[1], *dir == ArcDir::Cw))),
+        _ => return None,
+    };
+    let m = e.motion()?;
+    Some(Mv {
+        kind,
+        line: e.src.line,
+        to: [m.to[0], m.to[1], m.to[2]],
+        center,
+    })
+}
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() < 1e-6
+}
+
+/// Checks the moves' kinds and plane end points (X, Y) in order.
+fn check_xy(got: &[Mv], want: &[(&str, f64, f64)]) {
+    assert_eq!(got.len(), want.len(), "moves: {got:#?}\nwanted {want:#?}");
+    for (i, (g, w)) in got.iter().zip(want).enumerate() {
+        assert!(
+            g.kind == w.0 && close(g.to[0], w.1) && close(g.to[1], w.2),
+            "move {i}: got {g:?}, wanted {w:?}"
+        );
+    }
+}
+
+/// 000 §13.2.2 example N1-N12 (D08 = 5 here; the manual's value is not
+/// readable). Programmed contour from (0,0): N1 to (20,20), N3 (20,60),
+/// N5 (60,80), N7 CW R40 to (100,40) — centre (60,40): the chord
+/// (40,-40) has its midpoint (80,60), half-length 20√2, and the centre
+/// lies 20√2 to its right, at (60,40) —, N8 CW R20 to (80,20) — centre
+/// (80,40) likewise —, N9 to (20,20), N11 back to (0,0). G41, r = 5,
+/// s = 1/√5:
+/// - N1 start-up, inner corner (left turn of 45° with G41): ends on the
+///   vector perpendicular to N3 at its start: (20-5, 20) = (15, 20);
+/// - N2 Z-25 there; N3 to (15, 60) (offset line x = 15);
+/// - G39 (direction (40,20)): CW arc about (20,60) from (15,60) to
+///   (20,60) + 5·(-1,2)s = (17.763932, 64.472136);
+/// - N5 to (60,80) + 5·(-1,2)s = (57.763932, 84.472136);
+/// - G39 (direction (40,-20)): CW arc about (60,80) to (60,80) +
+///   5·(1,2)s = (62.236068, 84.472136), then straight to N7's start
+///   vector (60, 85);
+/// - N7 CW about (60,40), radius 45, to (105, 40); N8 tangent: about
+///   (80,40) radius 25 from (105,40) to (80, 15);
+/// - N9 to (20, 15); N10 Z+25 there; N11 cancel: the corner N9 → N11
+///   turns left (inner for G41): N9 ends on its perpendicular vector, N11
+///   runs to (0, 0) uncompensated.
+#[test]
+fn manual_example_13_2_2() {
+    let prog = "G92 X0. Y0. Z0.\n\
+        N1 G91 G17 G00 G41 X20. Y20. D08\n\
+        N2 G01 Z-25. F100\n\
+        N3 Y40. F250\n\
+        N4 G39 X40. Y20.\n\
+        N5 X40. Y20.\n\
+        N6 G39 X40. Y-20.\n\
+        N7 G02 X40. Y-40. R40.\n\
+        N8 X-20. Y-20. R20.\n\
+        N9 G01 X-60.\n\
+        N10 G00 Z25.\n\
+        N11 G40 X-20. Y-20.\n\
+        N12 M30\n";
+    let r = run_d("hx-mc", &[(8, 5.0)], &[], prog);
+    ok(&r);
+    let s = 1.0 / 5f64.sqrt();
+    let p = path(&r);
+    check_xy(
+        &p,
+        &[
+            ("rapid", 15.0, 20.0),
+            ("feed", 15.0, 20.0),
+            ("feed", 15.0, 60.0),
+            ("arc", 20.0 - 5.0 * s, 60.0 + 10.0 * s),
+            ("feed", 60.0 - 5.0 * s, 80.0 + 10.0 * s),
+            ("arc", 60.0 + 5.0 * s, 80.0 + 10.0 * s),
+            ("feed", 60.0, 85.0),
+            ("arc", 105.0, 40.0),
+            ("arc", 80.0, 15.0),
+            ("feed", 20.0, 15.0),
+            ("rapid", 20.0, 15.0),
+            ("rapid", 0.0, 0.0),
+        ],
+    );
+    // Z: down at N2, up at N10.
+    assert!(close(p[1].to[2], -25.0) && close(p[10].to[2], 0.0));
+    // Arc centres and directions: G39 arcs about the programmed corners,
+    // N7/N8 about their own centres, all CW.
+    let c: Vec<_> = p.iter().filter_map(|m| m.center).collect();
+    let want = [(20.0, 60.0), (60.0, 80.0), (60.0, 40.0), (80.0, 40.0)];
+    assert_eq!(c.len(), 4);
+    for (g, w) in c.iter().zip(want) {
+        assert!(close(g.0, w.0) && close(g.1, w.1) && g.2, "{g:?} vs {w:?}");
+    }
+    // Attribution: N1's rapid is line 2, N2's Z move line 3, N11's move
+    // line 12.
+    assert_eq!((p[0].line, p[1].line, p[11].line), (2, 3, 12));
+}
+
+/// Square pocket-free outside contour, G41 and G42, with start-up and
+/// cancel (type A, the HX default PI 128 = 0).
+#[test]
+fn square_outside_g42_and_inside_g41() {
+    // CCW square (0,0)-(40,0)-(40,30)-(0,30) from (-10,-10): G42 puts the
+    // tool outside (right of a CCW contour), r = 4.
+    // Start-up N2 → N3 (+X): S direction (10,10): turn −45° (right), G42:
+    // inner → perpendicular to N3 at (0,0): right normal (0,-1) → (0,-4).
+    // Corners outside (left turns, tool on the right): offset lines
+    // y=-4 & x=44 → (44,-4); x=44 & y=34 → (44,34); y=34 & x=-4 →
+    // (-4,34); the last side x=-4 down to the cancel: N7 G40 to (-10,-10)
+    // turns ... (0,-1) → (-10,-10)-(0,0) = (-1,-1): turn −45° → right,
+    // G42 side −1: inner → N6 ends on its perpendicular (-4, 0).
+    let prog = "G92 X-10. Y-10.\nG90 G00 G42 X0. Y0. D1\nG01 X40. F500\nY30.\nX0.\nY0.\nG40 G00 X-10. Y-10.\nM30\n";
+    let r = run_d("hx-mc", &[(1, 4.0)], &[], prog);
+    ok(&r);
+    check_xy(
+        &path(&r),
+        &[
+            ("rapid", 0.0, -4.0),
+            ("feed", 44.0, -4.0),
+            ("feed", 44.0, 34.0),
+            ("feed", -4.0, 34.0),
+            ("feed", -4.0, 0.0),
+            ("rapid", -10.0, -10.0),
+        ],
+    );
+    // G41 on the same contour: inside; corners are the offset lines'
+    // intersections (4,4)... first side y=4 from the start-up point.
+    // Start-up: turn −45° with G41 (side +1): outer (right turn, tool on
+    // the left) obtuse; type A: perpendicular to N3: (0, 4).
+    let prog = "G92 X-10. Y-10.\nG90 G00 G41 X0. Y0. D1\nG01 X40. F500\nY30.\nX0.\nY0.\nG40 G00 X-10. Y-10.\nM30\n";
+    let r = run_d("hx-mc", &[(1, 4.0)], &[], prog);
+    ok(&r);
+    // Cancel: N6 direction (0,-1) → (-1,-1): right turn, G41: outer;
+    // type A: N6 ends on its perpendicular (0+4, 0) = (4, 0).
+    check_xy(
+        &path(&r),
+        &[
+            ("rapid", 0.0, 4.0),
+            ("feed", 36.0, 4.0),
+            ("feed", 36.0, 26.0),
+            ("feed", 4.0, 26.0),
+            ("feed", 4.0, 0.0),
+            ("rapid", -10.0, -10.0),
+        ],
+    );
+}
+
+/// Type B start-up (PI 128 = 1) on an outer obtuse corner: the start-up
+/// line's offset line and the next block's offset line meet.
+#[test]
+fn type_b_startup_and_cancel() {
+    // From (-10,-10) to (0,0) then +X, G41 r = 4: right turn of 45°, tool
+    // on the left: outer obtuse. S's offset line: through (0,0) +
+    // 4·(-1,1)/√2 with direction (1,1)/√2, i.e. y = x + 4√2; N3's offset
+    // line y = 4 → x = 4 − 4√2.
+    let mut p = wide("hx-mc");
+    p.params.insert("PI 128".into(), 1.0);
+    let prog = "G92 X-10. Y-10.\nG90 G01 G41 X0. Y0. D1 F500\nX40.\nG40 X50. Y-10.\nM30\n";
+    let r = run_p(p, &[(1, 4.0)], &[], prog);
+    ok(&r);
+    let q = 4.0 * 2f64.sqrt();
+    // Cancel N3 (+X) → (10,-10): right turn 45°, G41: outer obtuse, type
+    // B: N3's offset line y = 4 meets the G40 line's offset line: the
+    // G40 line from (40,0) direction (1,-1)/√2 offset left by 4 →
+    // through (40,0) + 4·(1,1)/√2; points (40+2√2+t, 2√2−t): y = 4 at
+    // t = 2√2 − 4 → x = 40 + 4√2 − 4.
+    check_xy(
+        &path(&r),
+        &[
+            ("feed", 4.0 - q, 4.0),
+            ("feed", 40.0 + q - 4.0, 4.0),
+            ("feed", 50.0, -10.0),
+        ],
+    );
+}
+
+/// Acute outside corner: the two extension vectors.
+#[test]
+fn acute_corner_extension_vectors() {
+    // (0,0) → (40,0) → (0,20): the turn at (40,0) is to the left by
+    // 180° − atan(20/40); G42 (tool right, outside), r = 2.
+    // t1 = (1,0), t2 = (-40,20)/√2000 = (-2,1)/√5.
+    // P1 = (40,-2); E1 = P1 + 2·t1 = (42,-2). P2 = (40,0) + 2·right(t2)
+    // = (40,0) + 2·(1,2)/√5; E2 = P2 − 2·t2 = (40 + 2/√5 + 4/√5,
+    // 4/√5 − 2/√5) = (40 + 6/√5, 2/√5).
+    let s = 1.0 / 5f64.sqrt();
+    let prog = "G92 X0. Y-10.\nG90 G01 G42 X0. Y0. D1 F500\nX40.\nX0. Y20.\nG40 X0. Y40.\nM30\n";
+    let r = run_d("hx-mc", &[(1, 2.0)], &[], prog);
+    ok(&r);
+    let p = path(&r);
+    // Start-up: (0,-10) → (0,0) then +X: right turn 90°, G42 (side −1):
+    // inner → perpendicular to N3: (0,-2).
+    assert!(close(p[0].to[0], 0.0) && close(p[0].to[1], -2.0), "{p:?}");
+    assert!(close(p[1].to[0], 42.0) && close(p[1].to[1], -2.0), "{p:?}");
+    assert!(
+        close(p[2].to[0], 40.0 + 6.0 * s) && close(p[2].to[1], 2.0 * s),
+        "{p:?}"
+    );
+}
+
+/// Alarms: start-up in G02, plane change, D out of range, inside arc
+/// smaller than the offset, G39 outside offset mode.
+#[test]
+fn alarms() {
+    let a = |r: &Run| {
+        let a = r.alarm.as_ref().expect("an alarm");
+        (a.code.clone(), a.src.line, a.src.col)
+    };
+    // Start-up in a G02 block: at the G02 (line 2, column 1).
+    let r = run_d(
+        "hx-mc",
+        &[(1, 2.0)],
+        &[],
+        "G92 X0. Y0.\nG02 G41 X10. Y0. R5. D1 F100\nM30\n",
+    );
+    assert_eq!(a(&r), ("F_82120".into(), 2, 1));
+    // Plane change in offset mode: at the G18 (line 3, column 1).
+    let r = run_d(
+        "hx-mc",
+        &[(1, 2.0)],
+        &[],
+        "G92 X0. Y0.\nG01 G41 X10. D1 F100\nG18 X20.\nM30\n",
+    );
+    assert_eq!(a(&r), ("F_82121".into(), 3, 1));
+    // D out of range (HX has 128): at the D word, column 14.
+    let r = run_d(
+        "hx-mc",
+        &[],
+        &[],
+        "G92 X0. Y0.\nG01 G41 X10. D200 F100\nM30\n",
+    );
+    assert_eq!(a(&r).1, 2);
+    assert_eq!(a(&r).2, 14);
+    // Inside arc of radius 5 with offset 6: G41 on a CCW arc (centre on
+    // the left, the tool inside): at the G03 block's motion word.
+    let r = run_d(
+        "hx-mc",
+        &[(1, 6.0)],
+        &[],
+        "G92 X0. Y0.\nG01 G41 X10. D1 F100\nG03 X20. R5.\nG01 X30.\nM30\n",
+    );
+    assert_eq!(a(&r), ("F_82122".into(), 3, 1));
+    // A groove narrower than the tool: 4 wide, r = 3, G41 inside it —
+    // (0,0)→(10,0)→(10,4)→(0,4): N4's compensated move would run +X.
+    let r = run_d(
+        "hx-mc",
+        &[(1, 3.0)],
+        &[],
+        "G92 X-10. Y0.\nG01 G42 X0. Y0. D1 F100\nX10.\nY-4.\nX0.\nG40 X-10.\nM30\n",
+    );
+    assert_eq!(a(&r).0, "F_82122");
+    // G39 outside offset mode: at the G39.
+    let r = run_d("hx-mc", &[], &[], "G92 X0. Y0.\nG39 I1. J0.\nM30\n");
+    assert_eq!(a(&r), ("F_82124".into(), 2, 1));
+    // PUMA codes: start-up in G02 is PS034.
+    let r = run_d(
+        "puma-lathe",
+        &[],
+        &[(1, 0.8, 3)],
+        "T0101\nG02 G42 X20. Z-10. R10. F0.2\nM30\n",
+    );
+    assert_eq!(a(&r).0, "PS034");
+}
