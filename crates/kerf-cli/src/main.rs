@@ -2,21 +2,23 @@
 //! profile, and list the built-in machines. Exit status: 0 the program ran
 //! to its end, 1 it stopped on an alarm, 2 usage or I/O error.
 
+mod dynamics;
 mod offsets;
 mod plot;
 mod report;
 mod settings;
 mod toolpath;
 
+use std::collections::VecDeque;
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use kerf_canon::{Alarm, Axis, Canon, NAXES};
+use kerf_canon::{Alarm, Axis, Canon, Event, Pos};
 use kerf_interp::{machine::BUILTIN, Interp, Profile, Step};
-use kerf_motion::{Dynamics, Estimator};
+use kerf_motion::{Planner, Sampler};
 
 #[derive(Parser)]
 #[command(
@@ -67,6 +69,10 @@ enum Cmd {
         /// Write an SVG plot of the toolpath.
         #[arg(long)]
         plot: Option<PathBuf>,
+        /// Write the smoothed axis setpoints every DT seconds (e.g. 0.001)
+        /// to FILE as CSV (docs/formats.md).
+        #[arg(long, num_args = 2, value_names = ["DT", "FILE"])]
+        sample: Vec<String>,
     },
     /// Check a program: run it without writing outputs; report alarms.
     Check {
@@ -92,8 +98,23 @@ fn main() -> ExitCode {
             toolpath,
             report,
             plot,
-        } => run(&common, toolpath, report, plot, false),
-        Cmd::Check { common } => run(&common, None, None, None, true),
+            sample,
+        } => {
+            let sample = match sample.as_slice() {
+                [] => None,
+                [dt, file] => match dt.parse::<f64>() {
+                    Ok(v) if (1e-5..=1.0).contains(&v) => Some((v, PathBuf::from(file))),
+                    _ => {
+                        return usage_error(format!(
+                            "--sample {dt}: DT is a period in seconds, 0.00001-1"
+                        ))
+                    }
+                },
+                _ => return usage_error("--sample needs DT and FILE"),
+            };
+            run(&common, toolpath, report, plot, sample, false)
+        }
+        Cmd::Check { common } => run(&common, None, None, None, None, true),
     }
 }
 
@@ -122,22 +143,45 @@ fn run(
     toolpath: Option<PathBuf>,
     report_path: Option<PathBuf>,
     plot_path: Option<PathBuf>,
+    sample: Option<(f64, PathBuf)>,
     check: bool,
 ) -> ExitCode {
     let mut profile = match load_profile(&c.machine) {
         Ok(p) => p,
         Err(e) => return usage_error(e),
     };
-    let settings = match settings::parse(&c.set, &mut profile) {
+    // Overrides are the planner's: take them out before the interpreter's keys.
+    let (mut feed_ovr, mut rapid_ovr) = (100.0, 100.0);
+    let mut sets = Vec::new();
+    for kv in &c.set {
+        match kv.split_once('=').map(|(k, v)| (k.trim(), v.trim())) {
+            Some((k @ ("feed_override" | "rapid_override"), v)) => {
+                let Some(pct) = v.parse::<f64>().ok().filter(|p| (1.0..=1000.0).contains(p)) else {
+                    return usage_error(format!("--set {k}={v}: expected a percentage 1-1000"));
+                };
+                if k == "feed_override" {
+                    feed_ovr = pct;
+                } else {
+                    rapid_ovr = pct;
+                }
+            }
+            _ => sets.push(kv.clone()),
+        }
+    }
+    let settings = match settings::parse(&sets, &mut profile) {
         Ok(s) => s,
         Err(e) => return usage_error(e),
+    };
+    let dynamics = match dynamics::dynamics_of(&profile, feed_ovr, rapid_ovr, settings.dry_run) {
+        Ok(d) => d,
+        Err(e) => return usage_error(format!("machine {}: {e}", c.machine)),
     };
     let file = match File::open(&c.program) {
         Ok(f) => f,
         Err(e) => return usage_error(format!("{}: {e}", c.program.display())),
     };
     let name = c.program.display().to_string();
-    let dynamics = dynamics_of(&profile);
+    let max_rpm = profile.spindle.max_rpm;
     let kind = profile.kind;
     let axes: Vec<Axis> = Axis::ALL
         .iter()
@@ -178,10 +222,77 @@ fn run(
     };
     let mut rep = report::Summary::new(&axes);
     let mut plotter = plot_path.as_ref().map(|_| plot::Plot::new(kind));
-    let mut est = Estimator::new(dynamics, it.machine_position());
+    let mut planner = Planner::new(dynamics, it.machine_position(), it.work_position()[0]);
+    planner.max_rpm = max_rpm;
+    let mut sampler = match &sample {
+        Some((dt, path)) => match File::create(path) {
+            Ok(f) => {
+                planner.keep_pieces();
+                let mut w = BufWriter::with_capacity(1 << 16, f);
+                let head: Vec<&str> = axes.iter().map(|a| a.name()).collect();
+                if let Err(e) = writeln!(w, "t,{}", head.join(",")) {
+                    return usage_error(format!("{}: {e}", path.display()));
+                }
+                let s = Sampler::new(
+                    *dt,
+                    planner.stages(),
+                    planner.smoothing_time(),
+                    it.machine_position(),
+                );
+                Some((s, w, 0.0f64))
+            }
+            Err(e) => return usage_error(format!("{}: {e}", path.display())),
+        },
+        None => None,
+    };
+    // Records waiting for their end time (bounded by the look-ahead window).
+    let mut pending: VecDeque<(Event, Pos, Option<f64>)> = VecDeque::new();
     let mut start_work = it.work_position();
     let mut alarm: Option<Alarm> = None;
-    let sinks = tp.is_some() || report_path.is_some() || plotter.is_some();
+    let sinks = tp.is_some() || report_path.is_some() || plotter.is_some() || sampler.is_some();
+    let mut io_err: Option<String> = None;
+    let mut drain = |planner: &mut Planner,
+                     pending: &mut VecDeque<(Event, Pos, Option<f64>)>,
+                     it: &Interp,
+                     tp: &mut Option<toolpath::Writer<BufWriter<File>>>|
+     -> Result<(), String> {
+        while let Some(d) = planner.next_done() {
+            let Some((e, here, feed)) = pending.pop_front() else {
+                break;
+            };
+            if let Some(w) = tp.as_mut() {
+                w.write(&e, it.file_name(e.src.file), &here, d.t_end, feed)
+                    .map_err(|err| format!("toolpath: {err}"))?;
+            }
+        }
+        if let Some((s, w, covered)) = sampler.as_mut() {
+            while let Some(p) = planner.next_piece() {
+                *covered = p.t0 + p.duration();
+                s.add(p);
+            }
+            let mut err = None;
+            let axes = &axes;
+            s.run(*covered, &mut |t, p| {
+                if err.is_some() {
+                    return;
+                }
+                let mut line = String::with_capacity(64);
+                toolpath::num(&mut line, t);
+                for a in axes {
+                    line.push(',');
+                    toolpath::num(&mut line, p[*a as usize]);
+                }
+                line.push('\n');
+                if let Err(e) = w.write_all(line.as_bytes()) {
+                    err = Some(e);
+                }
+            });
+            if let Some(e) = err {
+                return Err(format!("sample: {e}"));
+            }
+        }
+        Ok(())
+    };
     loop {
         match it.step() {
             Step::Event(e) if !sinks => {
@@ -190,7 +301,6 @@ fn run(
             }
             Step::Event(e) => {
                 let from = start_work;
-                let t = est.push(&e);
                 if let Some(m) = e.motion() {
                     rep.motion(&e, &from, m);
                     if let Some(p) = plotter.as_mut() {
@@ -201,10 +311,20 @@ fn run(
                 if let Canon::Tool { tool, .. } = e.cmd {
                     rep.tool(tool);
                 }
-                if let Some(w) = tp.as_mut() {
-                    if let Err(err) = w.write(&e, it.file_name(e.src.file), &start_work, t, &est) {
-                        return usage_error(format!("toolpath: {err}"));
+                let feed = match &e.cmd {
+                    Canon::Feed { feed, m } => {
+                        Some(planner.feed_mm_min(*feed, kerf_motion::geom::line_len(&from, &m.to)))
                     }
+                    Canon::Arc { feed, .. } => Some(planner.feed_mm_min(*feed, 0.0)),
+                    _ => None,
+                };
+                planner.push(&e);
+                if e.motion().is_some() || matches!(e.cmd, Canon::Dwell { .. }) {
+                    pending.push_back((e, start_work, feed));
+                }
+                if let Err(err) = drain(&mut planner, &mut pending, &it, &mut tp) {
+                    io_err = Some(err);
+                    break;
                 }
             }
             Step::End => break,
@@ -214,9 +334,23 @@ fn run(
             }
         }
     }
+    planner.finish();
+    if io_err.is_none() {
+        if let Err(err) = drain(&mut planner, &mut pending, &it, &mut tp) {
+            io_err = Some(err);
+        }
+    }
+    if let Some(err) = io_err {
+        return usage_error(err);
+    }
     if let Some(w) = tp.as_mut() {
         if let Err(e) = w.finish() {
             return usage_error(format!("toolpath: {e}"));
+        }
+    }
+    if let Some((_, mut w, _)) = sampler {
+        if let Err(e) = w.flush() {
+            return usage_error(format!("sample: {e}"));
         }
     }
     if let Some(a) = &alarm {
@@ -231,7 +365,7 @@ fn run(
         }
     }
     if let Some(path) = report_path {
-        let r = rep.finish(&it, &est, alarm.as_ref());
+        let r = rep.finish(&it, &planner, alarm.as_ref());
         let text = serde_json::to_string_pretty(&r).expect("report serialises");
         if let Err(e) = std::fs::write(&path, text + "\n") {
             return usage_error(format!("{}: {e}", path.display()));
@@ -249,9 +383,9 @@ fn run(
         } else if sinks {
             let _ = writeln!(
                 out,
-                "{name}: completed ({} blocks, estimated cycle time {:.1} s)",
+                "{name}: completed ({} blocks, cycle time {:.1} s)",
                 it.blocks(),
-                est.now()
+                planner.now()
             );
         } else {
             let _ = writeln!(out, "{name}: completed ({} blocks)", it.blocks());
@@ -261,20 +395,6 @@ fn run(
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS
-    }
-}
-
-fn dynamics_of(p: &Profile) -> Dynamics {
-    let mut rapid = [0.0; NAXES];
-    for a in Axis::ALL {
-        if let Some(d) = p.axis(a) {
-            rapid[a as usize] = d.rapid;
-        }
-    }
-    Dynamics {
-        rapid,
-        max_feed: p.feed.max_cutting,
-        tool_change_s: p.tools.change_time_s,
     }
 }
 

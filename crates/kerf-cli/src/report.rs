@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 
 use kerf_canon::{Alarm, Axis, Canon, Event, Motion, Pos};
 use kerf_interp::Interp;
-use kerf_motion::Estimator;
+use kerf_motion::Planner;
 use serde::Serialize;
 
 /// Accumulates what the report needs while the run streams past.
@@ -43,6 +43,7 @@ pub struct TimeOut {
     cutting: f64,
     dwell: f64,
     tool_change: f64,
+    other: f64,
 }
 
 #[derive(Serialize)]
@@ -131,7 +132,7 @@ impl Summary {
     }
 
     /// The report.
-    pub fn finish(&self, it: &Interp, est: &Estimator, alarm: Option<&Alarm>) -> Report {
+    pub fn finish(&self, it: &Interp, est: &Planner, alarm: Option<&Alarm>) -> Report {
         Report {
             status: if alarm.is_some() {
                 "alarm"
@@ -164,6 +165,7 @@ impl Summary {
                 cutting: r6(est.time.cutting),
                 dwell: r6(est.time.dwell),
                 tool_change: r6(est.time.tool_change),
+                other: r6(est.time.other),
             },
         }
     }

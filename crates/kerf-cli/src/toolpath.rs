@@ -4,7 +4,6 @@
 use std::io::{self, Write};
 
 use kerf_canon::{Axis, Canon, Event, Feed, Pos};
-use kerf_motion::Estimator;
 
 /// Writes JSON Lines.
 pub struct Writer<W: Write> {
@@ -73,7 +72,7 @@ impl<W: Write> Writer<W> {
         file: &str,
         here: &Pos,
         t: f64,
-        est: &Estimator,
+        feed_mm_min: Option<f64>,
     ) -> io::Result<()> {
         let kind = match &e.cmd {
             Canon::Rapid { .. } => "rapid",
@@ -128,12 +127,7 @@ impl<W: Write> Writer<W> {
         };
         if let Some((f, _)) = feed {
             self.buf.push_str(",\"feed\":");
-            let v = match f {
-                Feed::PerMin(v) => v,
-                Feed::PerRev(v) => v * est.rpm(),
-                Feed::InverseTime(_) => est.feed_mm_min(f, est.last_cut_length),
-            };
-            num(&mut self.buf, v);
+            num(&mut self.buf, feed_mm_min.unwrap_or(0.0));
             if let Feed::PerRev(v) = f {
                 self.buf.push_str(",\"feed_per_rev\":");
                 num(&mut self.buf, v);

@@ -111,7 +111,18 @@ fn report_and_plot() {
     assert_eq!(r["feed_length_mm"], 300.0);
     assert_eq!(r["bbox"]["max"]["x"], 100.0);
     assert_eq!(r["bbox"]["max"]["y"], 50.0);
-    assert_eq!(r["time_s"]["cutting"], 30.0);
+    // hx-mc planner (docs/motion.md), worked by hand: path acceleration
+    // A = accel/2 = 1000 mm/s², smoothing T = 2·rapid_accel/jerk =
+    // 2·3000/200000 = 0.03 s, 2 stages. At the 90° corners the smoothing
+    // of the braking alone, A·T²/24 = 0.0375 mm, exceeds the 0.02 mm path
+    // tolerance: each corner is an exact stop. At F600 = 10 mm/s each move
+    // from rest to rest takes L/10 + 10/1000 s: 10.01 + 5.01 + 10.01 + 5.01
+    // = 30.04 s, plus four stops of 2·T = 0.06 s: 30.28 s.
+    assert!(
+        (r["time_s"]["cutting"].as_f64().unwrap() - 30.28).abs() < 1e-6,
+        "{}",
+        r["time_s"]
+    );
     assert_eq!(r["final"]["work"]["x"], 10.0);
     let s = std::fs::read_to_string(&svg).unwrap();
     assert!(

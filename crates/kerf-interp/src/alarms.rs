@@ -122,6 +122,10 @@ pub enum AlarmKind {
     MrcEndCorner,
     /// A lathe cycle or thread kerf refuses: G90/G92/G94 taper R beyond the cycle (cases 3/4 need |R| ≤ |U/2|, |W|), a taper or face thread in G96, a thread chamfer longer than the thread, a finishing shape longer than 2,000 blocks.
     LatheCycle,
+    /// Lathe direct chamfer / corner R (I, K, R, C on a G01): no next block, or the next block is not a G01 moving along the other axis in the direction of the sign (PUMA 001 p.10).
+    ChamferNextBlock,
+    /// Lathe direct chamfer / corner R on a block that moves both X and Z, or followed by a block that does (001 p.10 note 3).
+    ChamferTaper,
     /// Cutter / tool nose radius compensation started (G41/G42) or
     /// cancelled (G40) in a G02/G03 block.
     CompArc,
@@ -194,6 +198,8 @@ impl AlarmKind {
         AlarmKind::MrcIllegal,
         AlarmKind::MrcEndCorner,
         AlarmKind::LatheCycle,
+        AlarmKind::ChamferNextBlock,
+        AlarmKind::ChamferTaper,
     ];
 
     /// The control's code for this alarm.
@@ -254,6 +260,8 @@ impl AlarmKind {
             MrcIllegal => ("KERF-0166", "PS066", "KERF-0166"),
             MrcEndCorner => ("KERF-0167", "PS069", "KERF-0167"),
             LatheCycle => ("KERF-0168", "KERF-0168", "KERF-0168"),
+            ChamferNextBlock => ("KERF-0169", "PS052", "KERF-0169"),
+            ChamferTaper => ("KERF-0170", "PS054", "KERF-0170"),
         };
         match d {
             DialectId::Hx => hx,

@@ -28,6 +28,7 @@ mod cycles;
 mod cylindrical;
 mod flow;
 mod lathe;
+mod lathe_chamfer;
 mod lathe_mrc;
 mod motion;
 mod offset_data;
@@ -591,6 +592,15 @@ impl Interp {
     }
 
     fn emit(&mut self, cmd: Canon) {
+        // G96 on a lathe: the spindle follows X (interp/lathe.rs).
+        if self.st.css
+            && matches!(
+                cmd,
+                Canon::Rapid { .. } | Canon::Feed { .. } | Canon::Arc { .. } | Canon::Thread { .. }
+            )
+        {
+            self.css_follow();
+        }
         let e = Event {
             src: self.cur,
             tool: self.st.tool,

@@ -128,6 +128,10 @@ pub struct Profile {
     /// Control parameters the manuals name (`"PI 144" = 0`, `"PM 2097"` …).
     #[serde(default)]
     pub params: BTreeMap<String, f64>,
+    /// Motion planner data (`[motion]`): read by the CLI into kerf-motion's
+    /// `Dynamics` and validated there (docs/formats.md).
+    #[serde(default)]
+    pub motion: Option<toml::Table>,
 }
 
 fn default_block_chars() -> usize {

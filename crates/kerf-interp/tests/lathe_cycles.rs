@@ -356,3 +356,42 @@ fn g94_face_cycle() {
         ]
     );
 }
+
+/// G96 with the G50 S clamp: the rpm follows X. By hand, n = 1000·v /
+/// (π·D): S200 at Ø61 → 200000 / (π·61) = 1043.63 rpm; at Ø40 →
+/// 1591.55; at Ø20 → 3183.1, clamped to G50 S2000. A move that does not
+/// change X (Z only) makes no new spindle event.
+#[test]
+fn g96_rpm_follows_x() {
+    let r = run_on(
+        PUMA,
+        "G00 X61. Z2.\nG50 S2000\nG96 S200 M03\nG01 Z-10. F0.2\nX40.\nX20.\nZ-20.\n",
+    );
+    ok(&r);
+    let seq: Vec<(String, f64)> = r
+        .events
+        .iter()
+        .filter_map(|e| match &e.cmd {
+            Canon::Spindle { rpm, css, .. } => {
+                assert_eq!(*css, Some(200.0));
+                Some(("S".to_string(), round(*rpm)))
+            }
+            Canon::Feed { m, .. } => Some(("F".to_string(), round(2.0 * m.to[0]))),
+            _ => None,
+        })
+        .collect();
+    let rpm = |d: f64| round((200_000.0 / (std::f64::consts::PI * d)).min(2000.0));
+    assert_eq!(
+        seq,
+        vec![
+            ("S".to_string(), rpm(61.0)),
+            ("F".to_string(), 61.0),
+            ("S".to_string(), rpm(40.0)),
+            ("F".to_string(), 40.0),
+            ("S".to_string(), 2000.0),
+            ("F".to_string(), 20.0),
+            ("F".to_string(), 20.0),
+        ]
+    );
+    assert_eq!(rpm(40.0), round(1591.549431));
+}

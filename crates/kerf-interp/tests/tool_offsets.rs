@@ -98,6 +98,13 @@ fn tool_offset_alarms() {
     // G45 in G33 mode (not G00-G03).
     let r = run_on("hx-mc", "G91 G33 F1.\nG45 X10.\n");
     assert_eq!(alarm(&r).0, "F_82106");
+    // G45 with G41 in force (000 §13.3: not with cutter compensation), at
+    // the G45 code: line 3, column 1.
+    let r = run_on(
+        "hx-mc",
+        "#2112 = 5.\nG90 G17 G00 X0 Y0\nG45 G41 G01 X10. D1 F100.\n",
+    );
+    assert_eq!(alarm(&r), ("F_82106", 3, 1));
 }
 
 #[test]

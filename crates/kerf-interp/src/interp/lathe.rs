@@ -19,6 +19,9 @@ pub(super) struct LatheData {
     pub(super) single: Option<(P, f64)>,
     /// M76 in force (thread chamfering on); M77 (power-on) turns it off.
     pub(super) chamfer_on: bool,
+    /// The corner B of the last chamfer / corner-R block: the next
+    /// block's incremental words count from it (interp/lathe_chamfer.rs).
+    pub(super) ddi_base: Option<Pos>,
     /// Modal first-block values of G70-G76 (interp/lathe_mrc.rs).
     pub(super) mrc: super::lathe_mrc::MrcModal,
 }
@@ -32,6 +35,28 @@ impl Interp {
                 77 => self.lathe.chamfer_on = false,
                 _ => {}
             }
+        }
+    }
+
+    /// G96 (constant surface speed): before each move, a spindle event
+    /// when the rpm for the move's end point (the position is already
+    /// there when the move is emitted) differs from the last one — the
+    /// Fanuc rule for G00, and for cutting moves the speed the spindle
+    /// reaches at their end (fanuc-semantics §8.9). Clamped by G50 S and
+    /// the machine maximum.
+    pub(super) fn css_follow(&mut self) {
+        if self.st.spindle == SpindleDir::Stop || self.profile.kind != MachineKind::Lathe {
+            return;
+        }
+        let rpm = self.rpm();
+        if (rpm - self.st.last_rpm).abs() > 1e-6 {
+            self.st.last_rpm = rpm;
+            let css = self.css_speed();
+            self.emit(Canon::Spindle {
+                dir: self.st.spindle,
+                rpm,
+                css,
+            });
         }
     }
 

@@ -171,8 +171,13 @@ impl Interp {
                 return Err(self.alarm(k, if l == b'P' { p_at } else { q_at }, msg))
             }
         };
-        if code == 700 {
+        // G70 goes on after its own block; G71-G73 after N(nf) when the
+        // shape follows the cycle, else after the cycle block too.
+        let after_nf = self.src.as_ref().expect("loaded").tell();
+        if code == 700 || after_nf.offset <= resume.offset {
             self.seek(resume)?;
+        }
+        if code == 700 {
             return self.g70(a, &shape, at);
         }
         // The roughing cycles: Type I only (type II pockets: not yet).

@@ -1,0 +1,746 @@
+//! The streaming planner: a bounded look-ahead queue of segments, path
+//! speed planning (backward/forward passes over trapezoids), junction
+//! speeds, exact stop, and the timeline of everything else (dwell,
+//! spindle, tool change, M-code handshakes). Motion law: docs/motion.md.
+
+use std::collections::VecDeque;
+
+use kerf_canon::{Canon, Event, Feed, ModeChange, Pos, SpindleDir, NAXES};
+
+use crate::dynamics::Dynamics;
+use crate::geom::{line_len, Geom};
+use crate::trap::Trap;
+
+/// Time totals by category, seconds.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Breakdown {
+    /// Rapid moves, with their settling (smoothing drain).
+    pub rapid: f64,
+    /// Cutting moves (feed, arc, thread), with their settling.
+    pub cutting: f64,
+    /// Dwells.
+    pub dwell: f64,
+    /// Tool changes and turret indexing.
+    pub tool_change: f64,
+    /// Spindle ramps and M/S/T handshakes.
+    pub other: f64,
+}
+
+impl Breakdown {
+    /// Sum of all categories.
+    pub fn total(&self) -> f64 {
+        self.rapid + self.cutting + self.dwell + self.tool_change + self.other
+    }
+}
+
+/// A record's end time, reported in execution order for every motion
+/// (rapid, feed, arc, thread) and dwell event pushed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Done {
+    /// The sequence number of the event among the motion and dwell events
+    /// pushed (0-based).
+    pub id: u64,
+    /// Seconds from program start at its end: when the axes arrive for a
+    /// block that stops; for a block passed at speed, the end of its
+    /// interpolation plus half the smoothing delay (`stages·T/2`), the
+    /// moment the smoothed command passes its end point on a straight run.
+    pub t_end: f64,
+}
+
+/// One piece of the (pre-smoothing) timeline, for the sampler.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Piece {
+    /// Start time, s.
+    pub t0: f64,
+    /// What happens.
+    pub kind: PieceKind,
+}
+
+/// What a [`Piece`] does.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PieceKind {
+    /// Along a path with a trapezoidal speed.
+    Move { geom: Geom, trap: Trap },
+    /// Non-linear rapid: each axis its own trapezoid.
+    Axes {
+        p0: Pos,
+        p1: Pos,
+        traps: Box<[Trap; NAXES]>,
+    },
+    /// Standing still.
+    Hold { pos: Pos, dur: f64 },
+}
+
+impl Piece {
+    /// Duration, s.
+    pub fn duration(&self) -> f64 {
+        match &self.kind {
+            PieceKind::Move { trap, .. } => trap.time(),
+            PieceKind::Axes { traps, .. } => traps.iter().map(|t| t.time()).fold(0.0, f64::max),
+            PieceKind::Hold { dur, .. } => *dur,
+        }
+    }
+
+    /// Commanded position (before smoothing) at time `t` from the piece start.
+    pub fn pos_at(&self, t: f64) -> Pos {
+        match &self.kind {
+            PieceKind::Move { geom, trap } => {
+                if trap.len <= 0.0 {
+                    return geom.end();
+                }
+                geom.at(trap.s_at(t) / trap.len)
+            }
+            PieceKind::Axes { p0, p1, traps } => {
+                let mut p = *p0;
+                for i in 0..NAXES {
+                    let s = traps[i].s_at(t);
+                    p[i] += if p1[i] >= p0[i] { s } else { -s };
+                }
+                p
+            }
+            PieceKind::Hold { pos, .. } => *pos,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Seg {
+    id: u64,
+    /// Last segment of its event (the one that reports `Done`).
+    last: bool,
+    geom: Geom,
+    len: f64,
+    vmax: f64,
+    acc: f64,
+    /// Junction speed limit at the start.
+    jmax: f64,
+    /// Backward-planned bound of the entry speed.
+    vb: f64,
+    /// Stop (exact stop, smoothing drained) at the end.
+    stop: bool,
+    t_in: Pos,
+    t_out: Pos,
+}
+
+/// The planner. Push events in execution order with [`Planner::push`];
+/// take finished records with [`Planner::next_done`] and, when asked for,
+/// timeline pieces with [`Planner::next_piece`]; call [`Planner::finish`]
+/// at the end. Memory is bounded by the look-ahead window.
+#[derive(Debug)]
+pub struct Planner {
+    d: Dynamics,
+    t_smooth: f64,
+    stages: usize,
+    q: VecDeque<Seg>,
+    window: usize,
+    head_v: f64,
+    now: f64,
+    pos: Pos,
+    work_x: f64,
+    rpm: f64,
+    css: Option<f64>,
+    exact_mode: bool,
+    g09: bool,
+    tapping: bool,
+    high_speed: bool,
+    next_id: u64,
+    done: VecDeque<Done>,
+    pieces: Option<VecDeque<Piece>>,
+    /// Totals so far (final after [`Planner::finish`]).
+    pub time: Breakdown,
+    /// Cutting path length so far, mm.
+    pub feed_length: f64,
+    /// Rapid path length so far, mm.
+    pub rapid_length: f64,
+    /// Spindle speed limit used with constant surface speed, rpm.
+    pub max_rpm: f64,
+}
+
+fn dot(a: &Pos, b: &Pos) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+impl Planner {
+    /// A planner starting at rest at machine position `start`, work X
+    /// `work_x` (for constant surface speed). `d` must have passed
+    /// [`Dynamics::validate`].
+    pub fn new(d: Dynamics, start: Pos, work_x: f64) -> Planner {
+        let t_smooth = d.smoothing_time();
+        let stages = d.stages();
+        let window = d.lookahead.max(1);
+        Planner {
+            t_smooth,
+            stages,
+            q: VecDeque::with_capacity(window + 1),
+            window,
+            head_v: 0.0,
+            now: 0.0,
+            pos: start,
+            work_x,
+            rpm: 0.0,
+            css: None,
+            exact_mode: false,
+            g09: false,
+            tapping: false,
+            high_speed: false,
+            next_id: 0,
+            done: VecDeque::new(),
+            pieces: None,
+            time: Breakdown::default(),
+            feed_length: 0.0,
+            rapid_length: 0.0,
+            max_rpm: f64::INFINITY,
+            d,
+        }
+    }
+
+    /// Keeps the timeline pieces for [`Planner::next_piece`] (the sampler).
+    pub fn keep_pieces(&mut self) {
+        self.pieces = Some(VecDeque::new());
+    }
+
+    /// Width of one smoothing stage, s.
+    pub fn smoothing_time(&self) -> f64 {
+        self.t_smooth
+    }
+
+    /// Number of smoothing stages (1 linear, 2 bell).
+    pub fn stages(&self) -> usize {
+        self.stages
+    }
+
+    /// The planned time so far (final after [`Planner::finish`]), s.
+    pub fn now(&self) -> f64 {
+        self.time.total()
+    }
+
+    /// The spindle speed last commanded, rpm.
+    pub fn rpm(&self) -> f64 {
+        self.rpm
+    }
+
+    /// Next finished record, in order.
+    pub fn next_done(&mut self) -> Option<Done> {
+        self.done.pop_front()
+    }
+
+    /// Next finished timeline piece (only with [`Planner::keep_pieces`]).
+    pub fn next_piece(&mut self) -> Option<Piece> {
+        self.pieces.as_mut().and_then(|p| p.pop_front())
+    }
+
+    /// Segments waiting in the look-ahead window.
+    pub fn queued(&self) -> usize {
+        self.q.len()
+    }
+
+    /// Effective feed in mm/min for a programmed feed before the motion
+    /// limits (per-rev via the spindle speed, inverse time via the move
+    /// length, overrides, dry run, the `feed.max_cutting` clamp).
+    pub fn feed_mm_min(&self, f: Feed, len: f64) -> f64 {
+        let v = if self.d.dry_run {
+            self.d.dry_run_feed
+        } else {
+            match f {
+                Feed::PerMin(v) => v,
+                Feed::PerRev(v) => v * self.rpm,
+                Feed::InverseTime(v) => len * v,
+            }
+        };
+        let ovr = if self.tapping {
+            1.0
+        } else {
+            self.d.feed_override
+        };
+        (v * ovr).min(self.d.max_feed)
+    }
+
+    /// Stops the motion and plans everything still queued (end of program).
+    pub fn finish(&mut self) {
+        self.flush();
+    }
+
+    fn hold(&mut self, dur: f64) {
+        if dur > 0.0 {
+            if let Some(p) = self.pieces.as_mut() {
+                p.push_back(Piece {
+                    t0: self.now,
+                    kind: PieceKind::Hold { pos: self.pos, dur },
+                });
+            }
+            self.now += dur;
+        }
+    }
+
+    fn drain_time(&self) -> f64 {
+        self.stages as f64 * self.t_smooth
+    }
+
+    fn done(&mut self, t_end: f64) {
+        let id = self.next_id;
+        self.next_id += 1;
+        self.done.push_back(Done { id, t_end });
+    }
+
+    /// Accounts for one event.
+    pub fn push(&mut self, e: &Event) {
+        match &e.cmd {
+            Canon::Rapid { m, linear } => {
+                self.flush();
+                self.rapid(m.mto, *linear);
+            }
+            Canon::Feed { m, feed } => {
+                let g = Geom::Line {
+                    p0: self.pos,
+                    p1: m.mto,
+                };
+                self.cut(g, *feed, m.to[0], false);
+            }
+            Canon::Arc {
+                m,
+                mcenter,
+                plane,
+                dir,
+                turns,
+                feed,
+                ..
+            } => {
+                let g = Geom::arc(self.pos, m.mto, *mcenter, *plane, *dir, *turns);
+                self.cut(g, *feed, m.to[0], false);
+            }
+            Canon::Thread { m, lead } => {
+                let g = Geom::Line {
+                    p0: self.pos,
+                    p1: m.mto,
+                };
+                // Spindle-synchronised: lead × rpm, no override, stop at the end.
+                let v = lead * self.rpm;
+                self.cut(g, Feed::PerMin(v), m.to[0], true);
+            }
+            Canon::Dwell {
+                seconds,
+                revolutions,
+            } => {
+                self.flush();
+                let mut t = seconds.max(0.0);
+                if *revolutions > 0.0 && self.rpm > 0.0 {
+                    t += revolutions / self.rpm * 60.0;
+                }
+                self.hold(t);
+                self.time.dwell += t;
+                self.done(self.now);
+            }
+            Canon::Spindle { dir, rpm, css } => {
+                self.flush();
+                let new = if *dir == SpindleDir::Stop { 0.0 } else { *rpm };
+                let t = (new - self.rpm).abs() / self.d.spindle_accel + self.d.aux_time_s;
+                self.rpm = new;
+                self.css = *css;
+                self.hold(t);
+                self.time.other += t;
+            }
+            Canon::Tool { change, .. } => {
+                self.flush();
+                if *change {
+                    let t = self.d.tool_change_s;
+                    self.hold(t);
+                    self.time.tool_change += t;
+                }
+            }
+            Canon::Coolant { .. } | Canon::Aux { .. } | Canon::Stop { .. } => {
+                self.flush();
+                let t = self.d.aux_time_s;
+                self.hold(t);
+                self.time.other += t;
+            }
+            Canon::End { .. } => self.flush(),
+            Canon::Mode(mc) => self.mode(*mc),
+            Canon::Message(_) => {}
+        }
+    }
+
+    fn mode(&mut self, mc: ModeChange) {
+        match mc {
+            ModeChange::ExactStopBlock => self.g09 = true,
+            ModeChange::ExactStopMode(on) => {
+                self.exact_mode = on;
+                if on {
+                    self.tapping = false;
+                }
+            }
+            ModeChange::CuttingMode | ModeChange::CornerOverride => {
+                self.exact_mode = false;
+                self.tapping = false;
+            }
+            ModeChange::TappingMode => {
+                self.exact_mode = false;
+                self.tapping = true;
+            }
+            ModeChange::HighSpeed(on) => {
+                self.high_speed = on;
+                self.window = if on {
+                    self.d.lookahead_high_speed
+                } else {
+                    self.d.lookahead
+                }
+                .max(1);
+                while self.q.len() > self.window {
+                    self.finalize_head();
+                }
+            }
+            ModeChange::Stitch(_) => {}
+        }
+    }
+
+    fn rapid(&mut self, to: Pos, linear: bool) {
+        let p0 = self.pos;
+        self.rapid_length += line_len(&p0, &to);
+        let ovr = self.d.rapid_override;
+        let kind = if linear {
+            let g = Geom::Line { p0, p1: to };
+            let len = g.len();
+            let u = g.tangent(0.0);
+            let (mut v, mut a) = (f64::INFINITY, f64::INFINITY);
+            for i in 0..NAXES {
+                if u[i].abs() > 1e-12 {
+                    v = v.min(self.d.rapid[i] / 60.0 * ovr / u[i].abs());
+                    a = a.min(self.d.rapid_accel[i] / u[i].abs());
+                }
+            }
+            let trap = if v.is_finite() && a.is_finite() {
+                Trap::plan(len, 0.0, 0.0, v, a)
+            } else {
+                Trap::default()
+            };
+            PieceKind::Move { geom: g, trap }
+        } else {
+            let mut traps = [Trap::default(); NAXES];
+            for i in 0..NAXES {
+                let d = (to[i] - p0[i]).abs();
+                if d > 0.0 && self.d.rapid[i] > 0.0 {
+                    traps[i] = Trap::plan(
+                        d,
+                        0.0,
+                        0.0,
+                        self.d.rapid[i] / 60.0 * ovr,
+                        self.d.rapid_accel[i],
+                    );
+                }
+            }
+            PieceKind::Axes {
+                p0,
+                p1: to,
+                traps: Box::new(traps),
+            }
+        };
+        let piece = Piece { t0: self.now, kind };
+        let dur = piece.duration();
+        if let Some(p) = self.pieces.as_mut() {
+            p.push_back(piece);
+        }
+        self.now += dur;
+        self.pos = to;
+        let drain = if dur > 0.0 { self.drain_time() } else { 0.0 };
+        self.hold(drain);
+        self.time.rapid += dur + drain;
+        self.done(self.now);
+    }
+
+    /// Speed and acceleration limits of a path along `g`, mm/s and mm/s².
+    fn limits(&self, g: &Geom, feed: f64) -> (f64, f64) {
+        let mut v = feed / 60.0;
+        let mut a = f64::INFINITY;
+        let d = &self.d;
+        match g.radius() {
+            None => {
+                let u = g.tangent(0.0);
+                for i in 0..NAXES {
+                    let ui = u[i].abs();
+                    if ui > 1e-12 {
+                        v = v.min(d.rapid[i] / 60.0 / ui);
+                        a = a.min(0.5 * d.accel[i] / ui);
+                    }
+                }
+            }
+            Some(r) => {
+                let (p0, p1) = (g.start(), g.end());
+                let (a1, a2) = match g {
+                    Geom::Arc { plane, .. } => {
+                        let (a1, a2, _) = plane.axes();
+                        (a1, a2)
+                    }
+                    _ => (0, 1),
+                };
+                let (mut amin, mut jmin) = (f64::INFINITY, f64::INFINITY);
+                for i in 0..NAXES {
+                    if (i == a1 || i == a2 || (p1[i] - p0[i]).abs() > 0.0) && d.present[i] {
+                        {
+                            v = v.min(d.rapid[i] / 60.0);
+                            amin = amin.min(d.accel[i]);
+                            jmin = jmin.min(d.jerk[i]);
+                        }
+                    }
+                }
+                if amin.is_finite() {
+                    a = 0.5 * amin;
+                    let r = r.max(1e-9);
+                    // Centripetal acceleration and jerk within half the
+                    // axis limits; radial error of the smoothing within
+                    // the path tolerance.
+                    v = v.min((0.5 * amin * r).sqrt());
+                    v = v.min((0.5 * jmin * r * r).cbrt());
+                    let k = self.stages as f64;
+                    let t = self.t_smooth;
+                    if t > 0.0 {
+                        v = v.min((24.0 * r * d.path_tolerance / (k * t * t)).sqrt());
+                    }
+                }
+            }
+        }
+        (v, a)
+    }
+
+    /// Junction speed limit between the end of `p` and the start of `n`;
+    /// `None` when the corner needs an exact stop (the smoothing would
+    /// leave the path tolerance even at zero speed).
+    fn junction(&self, p: &Seg, n: &Seg) -> Option<f64> {
+        let mut v = p.vmax.min(n.vmax);
+        let (u1, u2) = (&p.t_out, &n.t_in);
+        let n1 = dot(u1, u1).sqrt();
+        let n2 = dot(u2, u2).sqrt();
+        if n1 <= 0.0 || n2 <= 0.0 {
+            return None;
+        }
+        let t = self.t_smooth;
+        let lmin = p.len.min(n.len);
+        for i in 0..NAXES {
+            let du = (u2[i] - u1[i]).abs();
+            if du > 1e-9 {
+                let a = 0.5 * self.d.accel[i];
+                v = v.min(a * t / du).min((a * lmin / du).sqrt());
+            }
+        }
+        let c = (dot(u1, u2) / (n1 * n2)).clamp(-1.0, 1.0);
+        let s = (1.0 - c * c).sqrt();
+        // Corner rounding of the smoothing kernel: the first and second
+        // moments of its positive half, times the speed and half the
+        // acceleration on either side.
+        let (m1, m2) = if self.stages == 1 {
+            (t / 8.0, t * t / 48.0)
+        } else {
+            (t / 6.0, t * t / 24.0)
+        };
+        if s > 1e-9 && m1 > 0.0 {
+            let room = self.d.path_tolerance / s - m2 * p.acc.max(n.acc);
+            if room <= 0.0 {
+                return None;
+            }
+            v = v.min(room / m1);
+        }
+        let th = c.acos();
+        if th > 1e-9 && t > 0.0 {
+            let r = lmin / th;
+            let k = self.stages as f64;
+            v = v.min((24.0 * r * self.d.path_tolerance / (k * t * t)).sqrt());
+        }
+        Some(v.max(0.0))
+    }
+
+    fn cut(&mut self, g: Geom, feed: Feed, to_work_x: f64, thread: bool) {
+        let len = g.len();
+        let from_x = self.work_x;
+        self.work_x = to_work_x;
+        self.feed_length += len;
+        let id = self.next_id;
+        self.next_id += 1;
+        let stop = thread || self.g09 || self.exact_mode || self.tapping;
+        self.g09 = false;
+        self.pos = g.end();
+        if len <= 0.0 {
+            self.flush();
+            self.done.push_back(Done {
+                id,
+                t_end: self.now,
+            });
+            return;
+        }
+        // Per-revolution feed with constant surface speed: the spindle
+        // speed follows X along the move; split it so that each piece
+        // runs at the speed of its middle.
+        let pieces = match (feed, self.css, thread) {
+            (Feed::PerRev(_), Some(_), false) if (to_work_x - from_x).abs() > 1e-9 => 16,
+            _ => 1,
+        };
+        for k in 0..pieces {
+            let (u0, u1) = (k as f64 / pieces as f64, (k + 1) as f64 / pieces as f64);
+            let sub = if pieces == 1 {
+                g
+            } else {
+                match g {
+                    Geom::Line { .. } => Geom::Line {
+                        p0: g.at(u0),
+                        p1: g.at(u1),
+                    },
+                    Geom::Arc {
+                        c,
+                        plane,
+                        th0,
+                        sweep,
+                        r0,
+                        r1,
+                        ..
+                    } => Geom::Arc {
+                        p0: g.at(u0),
+                        p1: g.at(u1),
+                        c,
+                        plane,
+                        th0: th0 + sweep * u0,
+                        sweep: sweep * (u1 - u0),
+                        r0: r0 + (r1 - r0) * u0,
+                        r1: r0 + (r1 - r0) * u1,
+                    },
+                }
+            };
+            let f = if thread {
+                match feed {
+                    Feed::PerMin(v) => v,
+                    _ => 0.0,
+                }
+            } else if pieces > 1 {
+                let xm = from_x + (to_work_x - from_x) * 0.5 * (u0 + u1);
+                self.feed_css(feed, xm)
+            } else {
+                self.feed_mm_min(feed, len)
+            };
+            let slen = sub.len();
+            let (vmax, acc) = self.limits(
+                &sub,
+                f.min(if thread {
+                    f64::INFINITY
+                } else {
+                    self.d.max_feed
+                }),
+            );
+            let seg = Seg {
+                id,
+                last: k + 1 == pieces,
+                geom: sub,
+                len: slen,
+                vmax: vmax.max(1e-6),
+                acc: if acc.is_finite() { acc } else { 1.0 },
+                jmax: 0.0,
+                vb: 0.0,
+                stop: stop && k + 1 == pieces,
+                t_in: sub.tangent(0.0),
+                t_out: sub.tangent(1.0),
+            };
+            self.push_seg(seg);
+        }
+    }
+
+    /// Per-rev feed at work X `x` under constant surface speed, mm/min.
+    fn feed_css(&self, feed: Feed, x: f64) -> f64 {
+        let (Feed::PerRev(f), Some(vc)) = (feed, self.css) else {
+            return self.feed_mm_min(feed, 0.0);
+        };
+        let r = x.abs().max(1e-3);
+        let rpm = (vc * 1000.0 / (std::f64::consts::TAU * r)).min(self.max_rpm);
+        let ovr = if self.tapping {
+            1.0
+        } else {
+            self.d.feed_override
+        };
+        let v = if self.d.dry_run {
+            self.d.dry_run_feed
+        } else {
+            f * rpm
+        };
+        (v * ovr).min(self.d.max_feed)
+    }
+
+    fn push_seg(&mut self, mut s: Seg) {
+        s.jmax = match self.q.back() {
+            Some(p) if !p.stop => match self.junction(p, &s) {
+                Some(v) => v,
+                None => {
+                    self.flush();
+                    0.0
+                }
+            },
+            _ => 0.0,
+        }
+        .min(s.vmax);
+        s.vb = s.jmax.min((2.0 * s.acc * s.len).sqrt());
+        let stop = s.stop;
+        self.q.push_back(s);
+        // Backward pass: raise entry bounds until one does not change.
+        let n = self.q.len();
+        for i in (0..n.saturating_sub(1)).rev() {
+            let next_vb = self.q[i + 1].vb;
+            let si = &mut self.q[i];
+            let nb = si
+                .jmax
+                .min((next_vb * next_vb + 2.0 * si.acc * si.len).sqrt());
+            if nb == si.vb {
+                break;
+            }
+            si.vb = nb;
+        }
+        if stop {
+            self.flush();
+        }
+        while self.q.len() > self.window {
+            self.finalize_head();
+        }
+    }
+
+    /// Stops at the end of what is queued and plans all of it.
+    fn flush(&mut self) {
+        if let Some(b) = self.q.back_mut() {
+            b.stop = true;
+        }
+        while !self.q.is_empty() {
+            self.finalize_head();
+        }
+    }
+
+    fn finalize_head(&mut self) {
+        let Some(s) = self.q.pop_front() else { return };
+        let v0 = self.head_v;
+        let v1 = if s.stop {
+            0.0
+        } else {
+            match self.q.front() {
+                Some(n) => n.vb.min((v0 * v0 + 2.0 * s.acc * s.len).sqrt()),
+                None => 0.0,
+            }
+        };
+        let trap = Trap::plan(s.len, v0, v1, s.vmax, s.acc);
+        self.head_v = if s.stop { 0.0 } else { trap.v1 };
+        let t0 = self.now;
+        let dt = trap.time();
+        if let Some(p) = self.pieces.as_mut() {
+            p.push_back(Piece {
+                t0,
+                kind: PieceKind::Move { geom: s.geom, trap },
+            });
+        }
+        self.now += dt;
+        let mut spent = dt;
+        let t_end = if s.stop {
+            let pos = self.pos;
+            self.pos = s.geom.end();
+            let drain = self.drain_time();
+            self.hold(drain);
+            self.pos = pos;
+            spent += drain;
+            self.now
+        } else {
+            self.now + 0.5 * self.drain_time()
+        };
+        self.time.cutting += spent;
+        if s.last {
+            self.done.push_back(Done { id: s.id, t_end });
+        }
+    }
+}
