@@ -233,6 +233,11 @@ pub struct Event {
     /// Tool number in the spindle / active turret station.
     pub tool: u32,
     pub cmd: Canon,
+    /// For a motion whose end point was moved by cutter or tool nose
+    /// radius compensation: the programmed end point (work coordinates),
+    /// where `cmd`'s `to` is the compensated control point. None when
+    /// the two are the same.
+    pub prog: Option<Box<Pos>>,
 }
 
 impl Event {

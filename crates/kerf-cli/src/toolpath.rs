@@ -98,6 +98,9 @@ impl<W: Write> Writer<W> {
                 let (to, mto) = (m.to, m.mto);
                 self.pos("to", &to);
                 self.pos("mto", &mto);
+                if let Some(p) = e.prog.as_deref() {
+                    self.pos("prog", p);
+                }
             }
             Canon::Dwell {
                 seconds,

@@ -220,6 +220,9 @@ pub struct Interp {
     /// Cutter / tool nose radius compensation (interp/comp.rs); None when
     /// cancelled with nothing held.
     comp: Option<Box<comp::CompState>>,
+    /// The programmed end point (work) of the compensated moves being
+    /// emitted (`Event::prog`).
+    comp_prog: Option<Pos>,
     /// Parsed blocks of text executed again (loops, jumps back).
     cache: block_cache::BlockCache,
     /// PUMA lathe cycle data (interp/lathe.rs, interp/lathe_mrc.rs).
@@ -318,6 +321,7 @@ impl Interp {
             cyc,
             corner: None,
             comp: None,
+            comp_prog: None,
             cache: block_cache::BlockCache::default(),
             lathe: lathe::LatheData::default(),
         }
@@ -605,6 +609,7 @@ impl Interp {
             src: self.cur,
             tool: self.st.tool,
             cmd,
+            prog: self.comp_prog.map(Box::new),
         };
         match self.corner.as_mut() {
             None if self.comp.is_none() => self.queue.push_back(e),

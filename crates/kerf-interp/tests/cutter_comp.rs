@@ -176,6 +176,14 @@ fn manual_example_13_2_2() {
     // Attribution: N1's rapid is line 2, N2's Z move line 3, N11's move
     // line 12.
     assert_eq!((p[0].line, p[1].line, p[11].line), (2, 3, 12));
+    // The programmed points ride along (Event::prog): N3 ends at (20,60),
+    // N2's Z move at (20,20,-25); the cancel move's end is programmed
+    // as it is, so it carries none.
+    let moves: Vec<_> = r.events.iter().filter(|e| e.motion().is_some()).collect();
+    let pr = |i: usize| *moves[i].prog.clone().expect("a programmed point");
+    assert!(close(pr(2)[0], 20.0) && close(pr(2)[1], 60.0));
+    assert!(close(pr(1)[0], 20.0) && close(pr(1)[1], 20.0) && close(pr(1)[2], -25.0));
+    assert!(moves[11].prog.is_none());
 }
 
 /// Square pocket-free outside contour, G41 and G42, with start-up and

@@ -34,6 +34,7 @@ fn ev(cmd: Canon) -> Event {
         src: SrcRef::default(),
         tool: 0,
         cmd,
+        prog: None,
     }
 }
 

@@ -443,7 +443,9 @@ impl Interp {
         let p = padd((cur[a1], cur[a2]), vec);
         let prog = self.st.pos;
         self.st.pos = self.to_machine(&self.plane_pt(cur, p));
+        self.comp_prog = Some(self.work_of(&self.to_machine(&tw)));
         let r = self.plain_motion(mode, self.plane_pt(tw, p), any, at);
+        self.comp_prog = None;
         self.st.pos = if r.is_ok() {
             self.to_machine(&tw)
         } else {
@@ -526,6 +528,7 @@ impl Interp {
         let here = std::mem::replace(&mut self.cur, h.src);
         let mut events = std::mem::take(&mut h.events);
         let r = self.comp_emit(&h, j, base, &mut events);
+        self.comp_prog = None;
         self.cur = here;
         self.st.pos = prog;
         events.clear();
@@ -557,6 +560,7 @@ impl Interp {
         let s = self.plane_pt(h.start, padd(h.cstart, h.tip));
         let e = self.plane_pt(h.end, padd(j.end1, h.tip));
         self.st.pos = self.to_machine(&s);
+        self.comp_prog = Some(self.work_of(&self.to_machine(&h.end)));
         let feed = |me: &Self| match h.speed {
             Speed::Feed(f) => Ok(f),
             _ => me.feed(0),
@@ -578,6 +582,7 @@ impl Interp {
             let me = self.to_machine(&e);
             for ev in events.iter_mut() {
                 if let Canon::Rapid { m, .. } | Canon::Feed { m, .. } = &mut ev.cmd {
+                    ev.prog = Some(Box::new(m.to));
                     m.mto[a1] = me[a1];
                     m.mto[a2] = me[a2];
                     m.to = self.work_of(&m.mto);
@@ -589,6 +594,8 @@ impl Interp {
             self.queue.extend(events.drain(..));
         }
         let mut prev = j.end1;
+        let corner = self.plane_pt(base, h.seg.end());
+        self.comp_prog = Some(self.work_of(&self.to_machine(&corner)));
         for p in j.pieces() {
             match *p {
                 Piece::Line(q) => {
