@@ -12,6 +12,11 @@
 //!   arithmetic and an IF in each and one motion every 10), reporting
 //!   executed statements (blocks) per second;
 //!
+//! - `comp`: cutter radius compensation: the same program in memory with
+//!   `G41 D1` (D1 = `KERF_BENCH_COMP_D`, default 0.1 mm: the raster's turn-around arcs have radius 0.25, so a larger offset is an interference alarm on them) inserted after
+//!   the first rapid, against the same in-memory text without it
+//!   (`plain`); prints the ratio of the two throughputs;
+//!
 //! each 3 times, printing the median blocks/s and MB/s. Generate the input
 //! with `python3 ../shared/bench/gen_programs.py --out bench-inputs` (see
 //! docs/benchmarks.md). Optional env: `KERF_BENCH_MACHINE` (default hx-mc),
@@ -62,13 +67,41 @@ fn parse_only(path: &PathBuf) -> Sample {
 }
 
 fn interp(path: &PathBuf, machine: &str) -> Sample {
+    let f = File::open(path).expect("open input");
+    run_reader(Box::new(f), &path.display().to_string(), machine, None)
+}
+
+/// The program text with `G41 D1` after its first rapid (a line starting
+/// `G00 X`/`G0 X`).
+fn with_g41(text: &[u8]) -> Vec<u8> {
+    let mut out = Vec::with_capacity(text.len() + 16);
+    let mut done = false;
+    for line in text.split_inclusive(|&b| b == b'\n') {
+        out.extend_from_slice(line);
+        if !done && (line.starts_with(b"G00 X") || line.starts_with(b"G0 X")) {
+            out.extend_from_slice(b"G41 D1\n");
+            done = true;
+        }
+    }
+    out
+}
+
+fn run_reader(
+    r: Box<dyn kerf_lang::ProgramRead>,
+    name: &str,
+    machine: &str,
+    d1: Option<f64>,
+) -> Sample {
     let profile =
         Profile::builtin(machine).unwrap_or_else(|| panic!("no built-in machine {machine}"));
-    let f = File::open(path).expect("open input");
     let t = Instant::now();
     let mut it = Interp::new(profile, Settings::default());
-    let name = path.display().to_string();
-    it.load_main(&name, Box::new(f));
+    if let Some(v) = d1 {
+        if let Some(d) = it.offsets_mut().d_mut(1) {
+            d.geom = v;
+        }
+    }
+    it.load_main(name, r);
     let mut events = 0u64;
     let note = loop {
         match it.step() {
@@ -240,6 +273,38 @@ fn main() {
             "interp",
             (0..runs).map(|_| interp(&path, &machine)).collect(),
             bytes,
+        );
+    }
+    if want("comp") {
+        let d: f64 = std::env::var("KERF_BENCH_COMP_D")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(0.1);
+        let plain = std::fs::read(&path).expect("read input");
+        let comp = with_g41(&plain);
+        let mem = |t: &Vec<u8>, d1: Option<f64>| {
+            run_reader(
+                Box::new(std::io::Cursor::new(t.clone())),
+                "mem",
+                &machine,
+                d1,
+            )
+        };
+        let a: Vec<Sample> = (0..runs).map(|_| mem(&plain, None)).collect();
+        let b: Vec<Sample> = (0..runs).map(|_| mem(&comp, Some(d))).collect();
+        let (ma, mb) = (
+            a.iter()
+                .map(|s| s.blocks as f64 / s.secs)
+                .fold(0.0, f64::max),
+            b.iter()
+                .map(|s| s.blocks as f64 / s.secs)
+                .fold(0.0, f64::max),
+        );
+        report("plain", a, bytes);
+        report("comp", b, bytes);
+        println!(
+            "comp/plain throughput ratio (best runs): {:.2} (G41 D1 = {d} mm)",
+            mb / ma
         );
     }
 }

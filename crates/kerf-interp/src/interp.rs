@@ -1135,14 +1135,13 @@ impl Interp {
         }
         // Cutter / tool nose radius compensation codes, before the
         // one-shots (a G92 or G28 ends a held move first).
-        let g39 = if self.comp.is_some()
-            || self.words.has(b'D')
+        let comp_words = self.words.has(b'D')
             || self
                 .words
                 .gs()
                 .iter()
-                .any(|g| matches!(g.0, 390 | 400 | 410 | 420))
-        {
+                .any(|g| matches!(g.0, 170 | 180 | 190 | 390 | 400 | 410 | 420));
+        let g39 = if comp_words || (self.comp.is_some() && (n_one > 0 || cycle)) {
             let special = cycle
                 || one_shot[..n_one].iter().any(|g| {
                     matches!(g.0, 270 | 280 | 290 | 300 | 530 | 310..=314 | 370..=374 | 450..=480 | 700..=760)

@@ -567,7 +567,7 @@ impl Interp {
         };
         match h.seg {
             Seg::Line { .. } => {
-                if self.to_machine(&e) != self.st.pos {
+                if s != e {
                     self.line_to(e, h.speed, 0)?;
                 }
             }
