@@ -103,6 +103,16 @@ pub enum AlarmKind {
     /// `,C` and `,R` in one block, or a change of coordinate system or
     /// tool between a `,C`/`,R` block and its next move.
     CornerConflict,
+    /// Hurco G78 threading: X+J of the wrong sign (X crossing the centre
+    /// line), not in G97, more than one of Z/H/T, a zero-length thread,
+    /// inconsistent depths.
+    ThreadCycle,
+    /// Hurco G38 turret probe: bad S, a direction not datumed, missing E/H
+    /// numbers, the probing axis not moving towards the contact point.
+    ProbeCycle,
+    /// Hurco G53 preconditions (CRC on, G91, not G00/G01) and drill-cycle
+    /// rules (G00 with G80).
+    HurcoMode,
 }
 
 impl AlarmKind {
@@ -148,6 +158,9 @@ impl AlarmKind {
         AlarmKind::CornerNoMove,
         AlarmKind::CornerTooLarge,
         AlarmKind::CornerConflict,
+        AlarmKind::ThreadCycle,
+        AlarmKind::ProbeCycle,
+        AlarmKind::HurcoMode,
     ];
 
     /// The control's code for this alarm.
@@ -194,6 +207,9 @@ impl AlarmKind {
             CornerNoMove => ("F_82103", "PS051", "HU-024"),
             CornerTooLarge => ("F_82104", "PS055", "HU-025"),
             CornerConflict => ("F_82105", "PS053", "HU-026"),
+            ThreadCycle => ("KERF-0104", "KERF-0104", "HU-060"),
+            ProbeCycle => ("KERF-0105", "KERF-0105", "HU-061"),
+            HurcoMode => ("KERF-0106", "KERF-0106", "HU-062"),
         };
         match d {
             DialectId::Hx => hx,
