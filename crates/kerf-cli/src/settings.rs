@@ -47,12 +47,32 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
             }
             _ if k.starts_with("in.") => set_input(&mut s.inputs, k, v)?,
             _ if k.starts_with("skip") && k.contains('.') => set_skip(&mut s.skip, k, v)?,
+            "probe.time" => s.clock = clock(v)?,
+            _ if k.starts_with("probe.") => {
+                let slot = match &k[6..] {
+                    "x" | "X" => 0,
+                    "z" | "Z" => 2,
+                    _ => {
+                        return Err(format!(
+                            "--set {k}: the probe surface is probe.x or probe.z"
+                        ))
+                    }
+                };
+                let val: f64 = v
+                    .parse()
+                    .map_err(|_| format!("--set {k}={v}: expected a number"))?;
+                s.probe[slot] = Some(val);
+            }
             _ if k.starts_with("PI ")
                 || k.starts_with("PM ")
                 || k.starts_with("PI")
                 || k.starts_with("PM")
                 || profile.params.contains_key(k)
-                || matches!(k, "arc_tolerance_mm" | "max_jumps" | "max_repeat_blocks") =>
+                || k.starts_with("probe_")
+                || matches!(
+                    k,
+                    "arc_tolerance_mm" | "max_jumps" | "max_repeat_blocks" | "peck_clearance_mm"
+                ) =>
             {
                 let val: f64 = v
                     .parse()
@@ -64,6 +84,19 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
         }
     }
     Ok(s)
+}
+
+/// `probe.time=hh:mm:ss`: seconds after midnight.
+fn clock(v: &str) -> Result<u32, String> {
+    let bad = || format!("--set probe.time={v}: expected hh:mm:ss");
+    let parts: Vec<u32> = v
+        .split(':')
+        .map(|p| p.trim().parse::<u32>().map_err(|_| bad()))
+        .collect::<Result<_, _>>()?;
+    match parts.as_slice() {
+        [h, m, s] if *h < 24 && *m < 60 && *s < 60 => Ok(h * 3600 + m * 60 + s),
+        _ => Err(bad()),
+    }
 }
 
 /// `skip.AXIS=V` / `skipN.AXIS=V` (N = 1-4): where the simulated skip
@@ -182,6 +215,28 @@ mod tests {
         assert!(parse(&["in.7000=2".into()], &mut p).is_err());
         assert!(parse(&["in.7036=1".into()], &mut p).is_err());
         assert!(parse(&["block_skip=12".into()], &mut p).is_err());
+    }
+
+    #[test]
+    fn probe_surface_and_clock() {
+        let mut p = Profile::builtin("hurco-lathe").unwrap();
+        let s = parse(
+            &[
+                "probe.x=2.5".into(),
+                "probe.Z=7.5".into(),
+                "probe.time=10:15:30".into(),
+                "probe_feed=250".into(),
+            ],
+            &mut p,
+        )
+        .unwrap();
+        assert_eq!(s.probe[0], Some(2.5));
+        assert_eq!(s.probe[2], Some(7.5));
+        // 10 h 15 min 30 s = 36000 + 900 + 30 s.
+        assert_eq!(s.clock, 36_930);
+        assert_eq!(p.params.get("probe_feed"), Some(&250.0));
+        assert!(parse(&["probe.y=1".into()], &mut p).is_err());
+        assert!(parse(&["probe.time=25:00:00".into()], &mut p).is_err());
     }
 
     #[test]

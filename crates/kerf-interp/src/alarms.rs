@@ -139,6 +139,16 @@ pub enum AlarmKind {
     CompNoSolution,
     /// G39 outside offset mode, or in a start-up or cancel block.
     CompG39,
+    /// Hurco G78 threading: X+J of the wrong sign (X crossing the centre
+    /// line), not in G97, more than one of Z/H/T, a zero-length thread,
+    /// inconsistent depths.
+    ThreadCycle,
+    /// Hurco G38 turret probe: bad S, a direction not datumed, missing E/H
+    /// numbers, the probing axis not moving towards the contact point.
+    ProbeCycle,
+    /// Hurco G53 preconditions (CRC on, G91, not G00/G01) and drill-cycle
+    /// rules (G00 with G80).
+    HurcoMode,
 }
 
 impl AlarmKind {
@@ -200,6 +210,9 @@ impl AlarmKind {
         AlarmKind::LatheCycle,
         AlarmKind::ChamferNextBlock,
         AlarmKind::ChamferTaper,
+        AlarmKind::ThreadCycle,
+        AlarmKind::ProbeCycle,
+        AlarmKind::HurcoMode,
     ];
 
     /// The control's code for this alarm.
@@ -246,11 +259,11 @@ impl AlarmKind {
             CornerNoMove => ("F_82103", "PS051", "HU-024"),
             CornerTooLarge => ("F_82104", "PS055", "HU-025"),
             CornerConflict => ("F_82105", "PS053", "HU-026"),
-            CompArc => ("F_82120", "PS034", "HU-060"),
-            CompPlane => ("F_82121", "PS037", "HU-061"),
-            CompInterference => ("F_82122", "PS041", "HU-062"),
-            CompNoSolution => ("F_82123", "PS033", "HU-063"),
-            CompG39 => ("F_82124", "PS035", "HU-064"),
+            CompArc => ("F_82120", "PS034", "HU-080"),
+            CompPlane => ("F_82121", "PS037", "HU-081"),
+            CompInterference => ("F_82122", "PS041", "HU-082"),
+            CompNoSolution => ("F_82123", "PS033", "HU-083"),
+            CompG39 => ("F_82124", "PS035", "HU-084"),
             ToolOffset => ("F_82106", "PS042", "HU-027"),
             MrcNoPq => ("KERF-0161", "PS061", "KERF-0161"),
             MrcValue => ("KERF-0162", "PS062", "KERF-0162"),
@@ -262,6 +275,9 @@ impl AlarmKind {
             LatheCycle => ("KERF-0168", "KERF-0168", "KERF-0168"),
             ChamferNextBlock => ("KERF-0169", "PS052", "KERF-0169"),
             ChamferTaper => ("KERF-0170", "PS054", "KERF-0170"),
+            ThreadCycle => ("KERF-0104", "KERF-0104", "HU-060"),
+            ProbeCycle => ("KERF-0105", "KERF-0105", "HU-061"),
+            HurcoMode => ("KERF-0106", "KERF-0106", "HU-062"),
         };
         match d {
             DialectId::Hx => hx,

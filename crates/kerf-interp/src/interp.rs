@@ -27,12 +27,16 @@ mod corners;
 mod cycles;
 mod cylindrical;
 mod flow;
+mod hurco;
+mod hurco_cycles;
+mod hurco_thread;
 mod lathe;
 mod lathe_chamfer;
 mod lathe_mrc;
 mod motion;
 mod offset_data;
 mod polar_interp;
+mod probe;
 mod reset;
 mod skip;
 mod sysvars;
@@ -64,6 +68,14 @@ pub struct Settings {
     /// happens during a skip or measurement move (`--set skip.z=-12.5`,
     /// `--set skip2.x=40`).
     pub skip: [[Option<f64>; NAXES]; 5],
+    /// Simulated part surface for the Hurco G38 probe cycles, per axis,
+    /// in program units as the G38 block writes its X/Z (X a diameter in
+    /// G08): `--set probe.x=2.5 --set probe.z=7.5`. None = no contact.
+    pub probe: [Option<f64>; NAXES],
+    /// The control's clock at the start of the run, seconds after
+    /// midnight, for the probe cycles' recorded data (`--set
+    /// probe.time=10:15:00`).
+    pub clock: u32,
 }
 
 /// What one call of [`Interp::step`] produced.
@@ -227,6 +239,9 @@ pub struct Interp {
     cache: block_cache::BlockCache,
     /// PUMA lathe cycle data (interp/lathe.rs, interp/lathe_mrc.rs).
     lathe: lathe::LatheData,
+    /// Hurco state: fixture offsets, offset activation, drill cycles,
+    /// probe datums (interp/hurco.rs).
+    hurco: Box<hurco::HurcoState>,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -247,6 +262,7 @@ impl Interp {
         let hx = dialect.id == DialectId::Hx;
         let offsets = OffsetTable::new(profile.tools.offsets as usize);
         let st = Self::power_on_state(&profile, dialect);
+        let hurco = Self::hurco_state(&st);
         let arc_tol = profile.param("arc_tolerance_mm", 0.02);
         let repeat_budget = profile.param("max_repeat_blocks", 100_000_000.0) as u64;
         let max_jumps = profile.param("max_jumps", 10_000_000.0) as u64;
@@ -324,6 +340,7 @@ impl Interp {
             comp_prog: None,
             cache: block_cache::BlockCache::default(),
             lathe: lathe::LatheData::default(),
+            hurco,
         }
     }
 
@@ -430,6 +447,10 @@ impl Interp {
     pub fn set_work_offset(&mut self, idx: usize, origin: Pos) {
         if idx < 6 {
             self.st.wcs[idx] = origin;
+        }
+        if idx == 0 && self.dialect.id == DialectId::Hurco {
+            // The Hurco's part zero is fixture offset E1.
+            self.hurco.fixtures.insert(1, origin);
         }
     }
 
@@ -1081,11 +1102,11 @@ impl Interp {
             self.corner_gate(&one_shot[..n_one], transfer.map(|t| t.0))?;
         }
         let hurco = d.hurco_order;
-        if hurco {
-            if let Some(e) = self.words.get(b'E') {
-                return Err(self.alarm(AlarmKind::NotYetSupported, e.at, "E-code fixture offsets are not yet supported: Hurco cycles, probing, fixture offsets and loops (issue 7)"));
-            }
-        }
+        let hurco_macro = if hurco {
+            self.hurco_block_checks(&one_shot[..n_one])?
+        } else {
+            None
+        };
         // Hurco: job-sync M codes first.
         if hurco {
             self.run_m(|m| (100..=199).contains(&m.0) && m.1 != MWhen::After)?;
@@ -1109,6 +1130,10 @@ impl Interp {
             self.st.modal[1] = c;
         }
         let cycle = hx && self.cycle_mode(was_cycle, motion)?;
+        let hurco_cycle = hurco && self.hurco_cycle_mode(motion)?;
+        if let Some((c, at, face_m)) = hurco_macro {
+            return self.hurco_macro_block(c, at, face_m);
+        }
         // Coordinate-setting one-shots (G92 / G50 / G59) act before motion.
         let mut g53 = false;
         let mut dwell = false;
@@ -1159,7 +1184,12 @@ impl Interp {
                 (_, 270 | 280 | 290 | 300) => refret = Some((c, at)),
                 (_, 90) => g09 = true,
                 (DialectId::Hx, 600) => g60 = Some(at),
-                (_, 530) => g53 = true,
+                (_, 530) => {
+                    if hurco {
+                        self.g53_checks(at)?;
+                    }
+                    g53 = true
+                }
                 (DialectId::Hx, 310..=314 | 370..=374) => skip = Some((c, at)),
                 (DialectId::Hx, 450 | 460 | 470 | 480) => g45 = Some((c, at)),
                 (DialectId::Puma, 100) => {
@@ -1176,9 +1206,12 @@ impl Interp {
             }
         }
         if hurco {
+            self.g96_r()?;
+        }
+        if hurco {
             self.run_m(|m| matches!(m.0, 48 | 49))?;
             self.run_m(|m| matches!(m.0, 7 | 8))?;
-            self.t_word()?;
+            self.hurco_t_e()?;
             self.spindle_words()?;
             // Other before-motion machine functions, after the spindle.
             self.run_m(|m| m.1 == MWhen::Before && !matches!(m.0, 7 | 8 | 48 | 49 | 100..=199))?;
@@ -1217,6 +1250,10 @@ impl Interp {
                 self.g53()?;
             } else if cycle {
                 self.canned_cycle(!was_cycle, g60.is_some())?;
+            } else if hurco_cycle {
+                if self.words.has(b'X') || self.words.has(b'Z') || self.words.has(b'R') {
+                    self.hurco_drill()?;
+                }
             } else if let Some(at) = g60 {
                 self.g60(at)?;
             } else if let Some((c, at)) = g45 {
@@ -1224,6 +1261,9 @@ impl Interp {
             } else {
                 self.motion()?;
             }
+        }
+        if hurco && !no_motion && self.has_axis_word() {
+            self.hurco_moved();
         }
         // After-motion M codes, then the end-of-block system codes.
         self.run_m(|m| {

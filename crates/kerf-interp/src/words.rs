@@ -31,7 +31,7 @@ pub struct Words {
     pub comma_c: Option<WVal>,
     pub comma_r: Option<WVal>,
     /// Hurco multi-letter parameters (name index, value).
-    pub long: [(u16, WVal); 16],
+    pub long: [(u16, WVal); 32],
     pub nlong: usize,
 }
 
@@ -52,7 +52,7 @@ impl Default for Words {
                     point: false,
                     at: 0,
                 },
-            ); 16],
+            ); 32],
             nlong: 0,
         }
     }

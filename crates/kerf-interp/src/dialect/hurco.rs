@@ -8,8 +8,6 @@ use super::MWhen::*;
 use super::Support::*;
 use super::*;
 
-const LATER_HURCO: Support = Later("Hurco cycles, probing, fixture offsets and loops (issue 7)");
-
 /// G codes 002 documents (pages 14-55), with the "(default)" marks of their
 /// headings: G00, G40, G90, G94, G97, G98. 002 prints no group numbers; the
 /// groups follow Fanuc where the code exists there, G07/G08 get kerf's
@@ -30,22 +28,22 @@ pub static GCODES: &[GCode] = &[
     g(90, 0, false, "exact stop", Yes),
     g(200, 6, false, "inch mode", Yes),
     g(210, 6, true, "millimeter mode", Yes), // default is a control setting; kerf: mm
-    g(330, 1, false, "threading", LATER_HURCO),
-    g(380, 0, false, "turret probe", LATER_HURCO),
+    g(330, 1, false, "threading", Yes),
+    g(380, 0, false, "turret probe", Yes),
     g(400, 7, true, "cutter radius compensation off", Yes),
     g(410, 7, false, "cutter radius compensation left", Yes),
     g(420, 7, false, "cutter radius compensation right", Yes),
     g(530, 0, false, "program machine coordinates", Yes),
     g(590, 0, false, "cancel work coordinate offsets", Yes),
     g(700, 6, false, "inch mode (legacy code of the G78 samples)", Yes),
-    g(730, 10, false, "peck drill with chip break drill cycle", LATER_HURCO),
-    g(740, 10, false, "left hand tapping", LATER_HURCO),
-    g(780, 0, false, "threading cycle", LATER_HURCO),
+    g(730, 10, false, "peck drill with chip break drill cycle", Yes),
+    g(740, 10, false, "left hand tapping", Yes),
+    g(780, 0, false, "threading cycle", Yes),
     g(800, 10, true, "cancel drill cycle", Yes),
-    g(810, 10, false, "drill cycle", LATER_HURCO),
-    g(820, 10, false, "drill cycle with dwell", LATER_HURCO),
-    g(830, 10, false, "peck drill cycle", LATER_HURCO),
-    g(840, 10, false, "right hand tapping and float tapping", LATER_HURCO),
+    g(810, 10, false, "drill cycle", Yes),
+    g(820, 10, false, "drill cycle with dwell", Yes),
+    g(830, 10, false, "peck drill cycle", Yes),
+    g(840, 10, false, "right hand tapping and float tapping", Yes),
     g(900, 3, true, "absolute programming", Yes),
     g(910, 3, false, "incremental programming", Yes),
     g(920, 0, false, "work coordinate offsets or spindle max speed", Yes),
@@ -112,23 +110,76 @@ const fn hurco_mcodes() -> [MCode; M_LOW.len() + N_SYNC + M_HIGH.len()] {
 #[rustfmt::skip]
 pub static MCODES: &[MCode] = &hurco_mcodes();
 
-/// Hurco G78 multi-letter parameter names. 002 prints exactly four:
-/// `angIn` and `ZEnd` (G78 introduction, "angIn30, ZEnd3.1") and `minR`,
-/// `minD` (Table 6). The rest of the multi-letter column of Tables 5-13 did
-/// not survive the extraction. `XEnd` is not printed; kerf keeps it as the
-/// face-thread counterpart of `ZEnd` (Table 12: face thread end = X).
-pub static LONG_NAMES: &[&str] = &["angIn", "ZEnd", "minR", "minD", "XEnd"];
+/// Hurco multi-letter parameter names (G78 and G38), matched
+/// case-insensitively, the longest name winning. 002 prints `angIn`,
+/// `ZEnd` (G78 introduction), `minR`, `minD` (Table 6) and, for G38,
+/// `XExp`, `Xadj`, `ZExp`, `Zadj`, `FRAp` and `Tol`; the rest of the
+/// multi-letter column of Tables 5-13 did not survive the extraction and
+/// the other names are kerf's (docs/dialects.md). [`LONG_LETTERS`] gives
+/// the single letter each stands for.
+pub static LONG_NAMES: &[&str] = &[
+    "angIn", "ZEnd", "minR", "minD", "XEnd", // 0-4
+    "XExp", "ZExp", "Xadj", "Zadj", "FRAp", "Tol", // 5-10 (G38)
+    "Face", "depth", "ZStart", "XStart", "pitch", "tpi", "length", // 11-17
+    "ZMaj", "XMaj", "XClr", "ZClr", "angOut", "angSt", "nStart", // 18-24
+    "taper", "dStart", "dEnd", "dFin", "nFin", "nSpring", "cVol", // 25-31
+];
 
-/// The Hurco dialect. L is accepted for G78 (Table 11, used by 002's
-/// samples). G78's U and W (Table 8) are not: the interpreter does not yet
-/// reject words a block does not use, and a Fanuc-style `U`/`W` (incremental
-/// X/Z) must not be ignored silently on this control. They come with G78
-/// (issue 7).
+/// How a multi-letter parameter's value becomes its letter's value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LongKind {
+    /// The value as written.
+    Plain,
+    /// A diameter given for a radius letter (`minD`: X = minD/2).
+    Diameter,
+    /// The letter's negative form (`tpi`: F-, `angSt`: Q-).
+    Negated,
+}
+
+/// The single letter (and conversion) of each [`LONG_NAMES`] entry.
+pub static LONG_LETTERS: &[(u8, LongKind)] = &[
+    (b'A', LongKind::Plain),
+    (b'Z', LongKind::Plain),
+    (b'X', LongKind::Plain),
+    (b'X', LongKind::Diameter),
+    (b'X', LongKind::Plain),
+    (b'X', LongKind::Plain),
+    (b'Z', LongKind::Plain),
+    (b'I', LongKind::Plain),
+    (b'K', LongKind::Plain),
+    (b'V', LongKind::Plain),
+    (b'T', LongKind::Plain),
+    (b'M', LongKind::Plain),
+    (b'J', LongKind::Plain),
+    (b'K', LongKind::Plain),
+    (b'I', LongKind::Plain),
+    (b'F', LongKind::Plain),
+    (b'F', LongKind::Negated),
+    (b'T', LongKind::Plain),
+    (b'H', LongKind::Plain),
+    (b'S', LongKind::Plain),
+    (b'U', LongKind::Plain),
+    (b'W', LongKind::Plain),
+    (b'C', LongKind::Plain),
+    (b'Q', LongKind::Negated),
+    (b'Q', LongKind::Plain),
+    (b'B', LongKind::Plain),
+    (b'D', LongKind::Plain),
+    (b'E', LongKind::Plain),
+    (b'L', LongKind::Plain),
+    (b'P', LongKind::Plain),
+    (b'R', LongKind::Plain),
+    (b'V', LongKind::Plain),
+];
+
+/// The Hurco dialect. L, U and W are accepted for G78 (Tables 8 and 11);
+/// outside a G78 block U and W are an alarm (a Fanuc-style incremental
+/// X/Z must not be ignored silently).
 pub static DIALECT: Dialect = Dialect {
     id: DialectId::Hurco,
     gcodes: GCODES,
     mcodes: MCODES,
-    letters: b"ABCDEFGHIJKLMNPQRSTVXZ",
+    letters: b"ABCDEFGHIJKLMNPQRSTUVWXZ",
     long_names: LONG_NAMES,
     diameter_default: true,
     uvw_incremental: false,

@@ -232,7 +232,11 @@ impl Interp {
         let mut rpm = if self.st.css {
             // Surface speed in m/min (ft/min in inch) at the current radius.
             let vc = self.st.s * if self.st.metric { 1000.0 } else { 304.8 };
-            let r = self.work_position()[0].abs().max(1e-3);
+            let r = match self.hurco.css_r {
+                Some(r) if self.dialect.id == DialectId::Hurco => r,
+                _ => self.work_position()[0].abs(),
+            }
+            .max(1e-3);
             vc / (std::f64::consts::TAU * r)
         } else {
             self.st.s
@@ -286,11 +290,11 @@ impl Interp {
     /// G92 (HX, Hurco) / G50 (PUMA): make the current position read as the
     /// given values; an S alone sets the spindle speed clamp.
     pub(super) fn coordinate_setting(&mut self, at: u32) -> R<()> {
-        if let Some(s) = self.words.get(b'S') {
-            if self.dialect.id != DialectId::Hurco {
-                self.st.s_clamp = Some(s.v);
-                self.words.take(b'S');
-            }
+        if self.dialect.id == DialectId::Hurco {
+            self.g92_s()?;
+        } else if let Some(s) = self.words.get(b'S') {
+            self.st.s_clamp = Some(s.v);
+            self.words.take(b'S');
         }
         let cur = self.programmed_position();
         let mut any = false;

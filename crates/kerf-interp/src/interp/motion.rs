@@ -19,9 +19,15 @@ impl Interp {
 
     /// The block's end point in work coordinates, and whether any axis moved.
     pub(super) fn target(&self) -> R<(Pos, bool)> {
-        let cur = self.prog_pos();
+        let mut cur = self.prog_pos();
         let mut t = cur;
         let mut any = false;
+        let mut programmed = [false; NAXES];
+        if self.dialect.id == DialectId::Hurco {
+            // Table 16: after a T/E code, before the next move.
+            self.hurco_activation(&mut t, &mut cur, &programmed);
+            t = self.prog_pos();
+        }
         for ax in Axis::ALL {
             let l = ax_letter(ax);
             let i = ax as usize;
@@ -39,12 +45,17 @@ impl Interp {
                 let v = self.axis_value(ax, w);
                 t[i] = if self.st.absolute { v } else { cur[i] + v };
                 any = true;
+                programmed[i] = true;
             } else if let Some(il) = inc_l {
                 let w = self.words.get(il).expect("present");
                 self.check_range(il, w)?;
                 t[i] = cur[i] + self.axis_value(ax, w);
                 any = true;
             }
+        }
+        if any && self.dialect.id == DialectId::Hurco {
+            let mut base = cur;
+            self.hurco_activation(&mut t, &mut base, &programmed);
         }
         if self.st.polar {
             self.polar_target(&cur, &mut t);
@@ -305,6 +316,7 @@ impl Interp {
             320 | 900 | 920 | 940 if self.dialect.id == DialectId::Puma => {
                 self.lathe_motion(mode, tw, any, at)?
             }
+            330 if any && self.dialect.id == DialectId::Hurco => self.hurco_g33(tw, at)?,
             20 | 30 => self.arc(tw, any, mode == 30, at)?,
             _ => {}
         }
