@@ -8,7 +8,7 @@ use kerf_canon::{ArcDir, Canon, Event};
 use kerf_interp::{Interp, Profile, Run, Settings, Step};
 
 mod common;
-use common::ok;
+use common::{alarm, ok, run_on};
 
 /// Runs `text` on a built-in machine after setting D offsets (mill) or
 /// lathe offsets (n, r, tip).
@@ -586,4 +586,28 @@ fn tip_directions_shift_the_control_point() {
             "tip {tip}: {z_cut:?}"
         );
     }
+}
+
+#[test]
+fn transform_changes_in_offset_mode_are_refused_for_now() {
+    // A held compensated move is mapped with the transform in force when
+    // it is emitted, so G68/G69/G51/G50 inside G41/G42 would misplace it
+    // (000 §15.4.2's program): KERF-0100 at the code, line 4 column 4.
+    let r = run_on(
+        "hx-mc",
+        "#2112 = 5.\nG90 G54 G00 X0 Y0 Z0\nG42 G01 X100. Y100. D1 F100.\nN3 G68 R-30.\n",
+    );
+    assert_eq!(alarm(&r), ("KERF-0100", 4, 4));
+    // Compensation started under scaling: refused at the G41 (column 5).
+    let r = run_on(
+        "hx-mc",
+        "#2112 = 5.\nG51 X0 Y0 P2000\nG01 G41 X10. Y0 D1 F100.\n",
+    );
+    assert_eq!(alarm(&r), ("KERF-0100", 3, 5));
+    // Rotation in force before G41 and cancelled after G40 is fine.
+    let r = run_on(
+        "hx-mc",
+        "#2112 = 5.\nG90 G54 G00 X0 Y0 Z0\nG68 X0 Y0 R90.\nG41 G01 X10. D1 F100.\nG40 X0\nG69\nM30\n",
+    );
+    assert!(r.alarm.is_none(), "{:?}", r.alarm);
 }

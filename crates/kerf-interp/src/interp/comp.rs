@@ -193,6 +193,19 @@ impl Interp {
                 }
                 return Ok(false);
             }
+            if self.st.xf.scale.is_some() {
+                let at = self
+                    .words
+                    .gs()
+                    .iter()
+                    .find(|g| matches!(g.0, 410 | 420))
+                    .map_or(0, |g| g.1);
+                return Err(self.alarm(
+                    AlarmKind::NotYetSupported,
+                    at,
+                    "cutter compensation under scaling (G51) is not yet supported: the offset would be scaled",
+                ));
+            }
             self.comp = Some(Box::new(self.comp_new()));
         }
         let plane = self.st.plane;

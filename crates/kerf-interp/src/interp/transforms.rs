@@ -18,6 +18,26 @@ impl Interp {
             return Ok(false);
         }
         let mut data = false;
+        // Cutter compensation holds moves in program coordinates and maps
+        // them with the transform in force when they are emitted, so a
+        // change of scaling or rotation in offset mode would misplace the
+        // held move: refused until the compensation works after the
+        // transforms (000 §15.4.2 allows it; docs/dialects.md).
+        if self.comp.is_some() {
+            for i in 0..self.words.ng {
+                let (c, at) = self.words.g[i];
+                if matches!(c, 500 | 510 | 680 | 690) {
+                    return Err(self.alarm(
+                        AlarmKind::NotYetSupported,
+                        at,
+                        format!(
+                            "G{} in cutter compensation mode is not yet supported: cancel with G40 first",
+                            fmt_code(c)
+                        ),
+                    ));
+                }
+            }
+        }
         // Cancels first, so `G69 G28 …` and `G50 G92 …` are legal.
         for i in 0..self.words.ng {
             match self.words.g[i].0 {
