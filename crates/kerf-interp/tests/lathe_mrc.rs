@@ -483,3 +483,68 @@ fn shape_is_bounded() {
     let r = run_on(PUMA, &p);
     assert_eq!(alarm(&r), ("KERF-0168", 4, 8));
 }
+
+/// G71 in a bore (the allowance Δu negative, stock left toward −X):
+/// A = Ø20 Z2 = (10, 2); shape N10 X60 (A′), N20 Z−15, N30 X40 Z−25, N40
+/// Z−40, shifted by (−0.2, 0.1): (29.8, 2.1) → (29.8, −14.9) → (19.8,
+/// −24.9) → (19.8, −39.9). Levels 10 + 2k: 12 … 28, then 29.8 (30 passes
+/// it). A cut at L ends where the shape comes below L: never for L ≤ 18
+/// (to the end, Z−39.9), on the taper Z = −14.9 − (29.8 − L) for 20 … 28,
+/// at the taper's start (−14.9) for 29.8. Escape toward −X and +Z.
+#[test]
+fn g71_bore_every_pass() {
+    let r = run_on(
+        PUMA,
+        "G97 S500 M03\nG00 X20. Z2.\nG71 U2. R0.5\nG71 P10 Q40 U-0.4 W0.1 F0.2\nN10 G00 X60.\nN20 G01 Z-15.\nN30 X40. Z-25.\nN40 Z-40.\nG00 Z50.\n",
+    );
+    ok(&r);
+    let mut want = vec![mv("R", 10.0, 2.0, 0.0)];
+    let mut levels: Vec<f64> = (1..=9).map(|k| 10.0 + 2.0 * k as f64).collect();
+    levels.push(29.8);
+    for l in levels {
+        let z = if l <= 19.8 { -39.9 } else { -14.9 - (29.8 - l) };
+        want.extend([
+            mv("R", l, 2.0, 0.0),
+            mv("F", l, z, 0.2),
+            mv("R", l - 0.5, z + 0.5, 0.0),
+            mv("R", l - 0.5, 2.0, 0.0),
+        ]);
+    }
+    want.extend([
+        mv("R", 29.8, 2.1, 0.0),
+        mv("F", 29.8, -14.9, 0.2),
+        mv("F", 19.8, -24.9, 0.2),
+        mv("F", 19.8, -39.9, 0.2),
+        mv("R", 10.0, 2.0, 0.0),
+        mv("R", 10.0, 50.0, 0.0),
+    ]);
+    assert_eq!(trace(&r), want);
+}
+
+/// G76 for an internal thread: A inside (Ø26 Z3), root at Ø30 (X30 =
+/// the major diameter of the nut), k 0.9, Δd 0.35, Δdmin 0.1, d 0.1, m 1,
+/// r 0, a 0 (radial infeed). Depths 0.35, 0.4950 (0.35·√2), 0.6062
+/// (0.35·√3); then 0.35·√4 = 0.7 is less than 0.6062 + Δdmin = 0.7062, so
+/// the floor gives 0.7062; next max(0.35·√5 = 0.7826, 0.8062) = 0.8062 ≥
+/// k − d = 0.8, so the last rough pass is 0.8; then 0.9. The infeed is
+/// toward +X: pass X radius 15 − (0.9 − D).
+#[test]
+fn g76_internal_thread() {
+    let r = run_on(
+        PUMA,
+        "G97 S400 M03\nG00 X26. Z3.\nG76 P010000 Q100 R0.1\nG76 X30. Z-20. P900 Q350 F1.5\n",
+    );
+    ok(&r);
+    let mut want = vec![mv("R", 13.0, 3.0, 0.0)];
+    let s = |n: f64| 0.35 * n.sqrt();
+    for d in [s(1.0), s(2.0), s(3.0), s(3.0) + 0.1, 0.8, 0.9] {
+        let x = 15.0 - (0.9 - d);
+        want.extend([
+            mv("R", x, 3.0, 0.0),
+            mv("T", x, -20.0, 1.5),
+            mv("R", 13.0, -20.0, 0.0),
+            mv("R", 13.0, 3.0, 0.0),
+        ]);
+    }
+    assert_eq!(trace(&r), want);
+}
