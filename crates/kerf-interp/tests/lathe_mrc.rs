@@ -548,3 +548,141 @@ fn g76_internal_thread() {
     }
     assert_eq!(trace(&r), want);
 }
+
+/// G71 type II (N10 moves X and Z: `W0`) on a shape with a groove: A =
+/// (41, 2), Δd 2, e 0.5, no allowance. Shape (radius): (20, 2) → (20,
+/// −10) → taper into the groove (15, −15) → (15, −20) → wall up (20,
+/// −20) → (20, −30) → shoulder (35, −30) → (35, −40).
+/// The start side, as type I: levels 39, 37, 35 cut to the end (Z−40: the
+/// shape never rises above them), 33 … 21 and the clamp 20 (the shape's
+/// start) to the shoulder Z−30. Then the groove, which separates below
+/// level 21: levels 19, 17, 15 (the deepest point), cut from the entry
+/// taper (x = 20 − (z + 10)·(−1): Z−11 for 19, Z−13 for 17, Z−15 for 15)
+/// to the wall Z−20. The tool travels at the escape height of level 21
+/// (21.5) to Z−11, feeds in, cuts, escapes 45°, goes to the next
+/// level's entry at the escape height of the level just cut, …; then
+/// rapid to X of A, to Z of A, and the semi-finish pass.
+#[test]
+fn g71_type2_groove() {
+    let r = run_on(
+        PUMA,
+        "G97 S500 M03\nG00 X82. Z2.\nG71 U2. R0.5\nG71 P10 Q80 U0 W0 F0.2\nN10 G00 X40. W0\nN20 G01 Z-10.\nN30 X30. Z-15.\nN40 Z-20.\nN50 X40.\nN60 Z-30.\nN70 X70.\nN80 Z-40.\n",
+    );
+    ok(&r);
+    let mut want = vec![mv("R", 41.0, 2.0, 0.0)];
+    let mut main: Vec<(f64, f64)> = [39.0, 37.0, 35.0].iter().map(|&l| (l, -40.0)).collect();
+    for k in 0..7 {
+        main.push((33.0 - 2.0 * k as f64, -30.0));
+    }
+    main.push((20.0, -30.0));
+    for (l, z) in main {
+        want.extend([
+            mv("R", l, 2.0, 0.0),
+            mv("F", l, z, 0.2),
+            mv("R", l + 0.5, z + 0.5, 0.0),
+            mv("R", l + 0.5, 2.0, 0.0),
+        ]);
+    }
+    // The groove.
+    want.extend([mv("R", 21.5, 2.0, 0.0), mv("R", 21.5, -11.0, 0.0)]);
+    let levels = [(19.0, -11.0), (17.0, -13.0), (15.0, -15.0)];
+    for (i, &(l, z0)) in levels.iter().enumerate() {
+        if i > 0 {
+            // Up to the escape height of the level above (already there),
+            // then along to this level's entry point.
+            let h = levels[i - 1].0 + 0.5;
+            want.push(mv("R", h, z0, 0.0));
+        }
+        want.extend([
+            mv("F", l, z0, 0.2),
+            mv("F", l, -20.0, 0.2),
+            mv("R", l + 0.5, -19.5, 0.0),
+        ]);
+    }
+    want.extend([
+        mv("R", 41.0, -19.5, 0.0),
+        mv("R", 41.0, 2.0, 0.0),
+        // Semi-finish pass (N10 is G00).
+        mv("R", 20.0, 2.0, 0.0),
+        mv("F", 20.0, -10.0, 0.2),
+        mv("F", 15.0, -15.0, 0.2),
+        mv("F", 15.0, -20.0, 0.2),
+        mv("F", 20.0, -20.0, 0.2),
+        mv("F", 20.0, -30.0, 0.2),
+        mv("F", 35.0, -30.0, 0.2),
+        mv("F", 35.0, -40.0, 0.2),
+        mv("R", 41.0, 2.0, 0.0),
+    ]);
+    assert_eq!(trace(&r), want);
+}
+
+/// G71 type II with two pockets, the first a half-circle groove (G02 R4
+/// from (20, −10) to (20, −18), centre (20, −14), bottom at radius 16),
+/// the second a square groove (17, −25 … −28). A = (41, 2), Δd 2, e 0.5.
+/// The start side: levels 39, 37, 35 to Z−40, 33 … 21 and 20 to the
+/// shoulder Z−35. The arc pocket (first in the cutting direction): level
+/// 19 from Z −14 + √(16 − 1) to −14 − √15, level 17 ±√(16 − 9) = ±√7;
+/// level 16 only touches the arc's bottom (nothing cut). The square
+/// groove: levels 19 and 17 from Z−25 to −28. Travel between pockets at
+/// the escape height of level 21.
+#[test]
+fn g71_type2_two_pockets_with_arc() {
+    let r = run_on(
+        PUMA,
+        "G97 S500 M03\nG00 X82. Z2.\nG71 U2. R0.5\nG71 P10 Q99 U0 W0 F0.2\nN10 G00 X40. W0\nN20 G01 Z-10.\nN30 G02 X40. Z-18. R4.\nN40 G01 Z-25.\nN50 X34.\nN60 Z-28.\nN70 X40.\nN80 Z-35.\nN90 X70.\nN99 Z-40.\n",
+    );
+    ok(&r);
+    let mut want = vec![mv("R", 41.0, 2.0, 0.0)];
+    let mut main: Vec<(f64, f64)> = [39.0, 37.0, 35.0].iter().map(|&l| (l, -40.0)).collect();
+    for k in 0..7 {
+        main.push((33.0 - 2.0 * k as f64, -35.0));
+    }
+    main.push((20.0, -35.0));
+    for (l, z) in main {
+        want.extend([
+            mv("R", l, 2.0, 0.0),
+            mv("F", l, z, 0.2),
+            mv("R", l + 0.5, z + 0.5, 0.0),
+            mv("R", l + 0.5, 2.0, 0.0),
+        ]);
+    }
+    let (s15, s7) = (15f64.sqrt(), 7f64.sqrt());
+    // Arc pocket.
+    want.extend([
+        mv("R", 21.5, 2.0, 0.0),
+        mv("R", 21.5, -14.0 + s15, 0.0),
+        mv("F", 19.0, -14.0 + s15, 0.2),
+        mv("F", 19.0, -14.0 - s15, 0.2),
+        mv("R", 19.5, -14.0 - s15 + 0.5, 0.0),
+        mv("R", 19.5, -14.0 + s7, 0.0),
+        mv("F", 17.0, -14.0 + s7, 0.2),
+        mv("F", 17.0, -14.0 - s7, 0.2),
+        mv("R", 17.5, -14.0 - s7 + 0.5, 0.0),
+    ]);
+    // Square groove.
+    want.extend([
+        mv("R", 21.5, -14.0 - s7 + 0.5, 0.0),
+        mv("R", 21.5, -25.0, 0.0),
+        mv("F", 19.0, -25.0, 0.2),
+        mv("F", 19.0, -28.0, 0.2),
+        mv("R", 19.5, -27.5, 0.0),
+        mv("R", 19.5, -25.0, 0.0),
+        mv("F", 17.0, -25.0, 0.2),
+        mv("F", 17.0, -28.0, 0.2),
+        mv("R", 17.5, -27.5, 0.0),
+        mv("R", 41.0, -27.5, 0.0),
+        mv("R", 41.0, 2.0, 0.0),
+        mv("R", 20.0, 2.0, 0.0),
+        mv("F", 20.0, -10.0, 0.2),
+        mv("A", 20.0, -18.0, 0.2),
+        mv("F", 20.0, -25.0, 0.2),
+        mv("F", 17.0, -25.0, 0.2),
+        mv("F", 17.0, -28.0, 0.2),
+        mv("F", 20.0, -28.0, 0.2),
+        mv("F", 20.0, -35.0, 0.2),
+        mv("F", 35.0, -35.0, 0.2),
+        mv("F", 35.0, -40.0, 0.2),
+        mv("R", 41.0, 2.0, 0.0),
+    ]);
+    assert_eq!(trace(&r), want);
+}

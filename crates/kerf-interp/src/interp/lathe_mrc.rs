@@ -180,22 +180,8 @@ impl Interp {
         if code == 700 {
             return self.g70(a, &shape, at);
         }
-        // The roughing cycles: Type I only (type II pockets: not yet).
-        let type2 = match code {
-            710 => shape.ns_z,
-            720 => shape.ns_x,
-            _ => false,
-        };
-        if type2 {
-            return Err(self.alarm(
-                AlarmKind::NotYetSupported,
-                p_at,
-                format!(
-                    "G{} type II (block N{ns} moves both X and Z) is not yet supported",
-                    code / 10
-                ),
-            ));
-        }
+        // Type II (pockets) when block ns moves both axes.
+        let type2 = shape.ns_x && shape.ns_z;
         let mut out = Vec::with_capacity(64 + shape.segs.len());
         let res = match code {
             710 | 720 => {
@@ -213,10 +199,22 @@ impl Interp {
                     allow_x: du,
                     allow_z: dw,
                 };
-                if code == 710 {
-                    turning::g71(a, shape.start, &shape.segs, r, shape.ns_rapid, &mut out)
-                } else {
-                    turning::g72(a, shape.start, &shape.segs, r, shape.ns_rapid, &mut out)
+                match (code, type2) {
+                    (710, false) => {
+                        turning::g71(a, shape.start, &shape.segs, r, shape.ns_rapid, &mut out)
+                    }
+                    (710, true) => {
+                        turning::g71_type2(a, shape.start, &shape.segs, r, shape.ns_rapid, &mut out)
+                    }
+                    _ => turning::g72(
+                        a,
+                        shape.start,
+                        &shape.segs,
+                        r,
+                        shape.ns_rapid,
+                        type2,
+                        &mut out,
+                    ),
                 }
             }
             _ => {
@@ -250,8 +248,9 @@ impl Interp {
                     AlarmKind::MrcNotMonotonic,
                     p_at,
                     format!(
-                        "G{} type I: the shape N{ns}-N{nf} is not monotonic in {ax} (segment {} after N{ns})",
+                        "G{} type {}: the shape N{ns}-N{nf} is not monotonic in {ax} (segment {} after N{ns})",
                         code / 10,
+                        if type2 { "II" } else { "I" },
                         i + 1
                     ),
                 ));
