@@ -686,3 +686,76 @@ fn g71_type2_two_pockets_with_arc() {
     ]);
     assert_eq!(trace(&r), want);
 }
+
+/// Direct corner R and chamfer inside the shape (001 p.10 words in
+/// N20/N30): N10 X20 (A′ radius 10, Z2), N20 Z−20 R5 (+X next), N30 X60
+/// K−2 (−Z next), N40 Z−40. The expanded shape (radius): (10, 2) → (10,
+/// −15) → arc R5 about (15, −15), clockwise, to (15, −20) → (28, −20) →
+/// chamfer to (30, −22) → (30, −40). G71 from (41, 2), Δd 2: levels 39 … 31
+/// run to Z−40; 29 meets the chamfer at Z −20 − (29 − 28) = −21; 27 … 15
+/// meet the face at Z−20; 13 and 11 the arc at Z −15 − √(25 − (L − 15)²)
+/// (−19.582576, −18); the clamp 10 leaves at the arc's start, Z−15. G70
+/// follows the expanded shape.
+#[test]
+fn shape_with_direct_chamfer_and_corner_r() {
+    let r = run_on(
+        PUMA,
+        "G97 S500 M03\nG00 X82. Z2.\nG71 U2. R0.5\nG71 P10 Q40 F0.2\nN10 G00 X20.\nN20 G01 Z-20. R5.\nN30 X60. K-2.\nN40 Z-40.\nG70 P10 Q40\n",
+    );
+    ok(&r);
+    let mut want = vec![mv("R", 41.0, 2.0, 0.0)];
+    let mut levels: Vec<f64> = (1..=15).map(|k| 41.0 - 2.0 * k as f64).collect();
+    levels.push(10.0);
+    for l in levels {
+        let z = if l > 30.0 {
+            -40.0
+        } else if l > 28.0 {
+            -20.0 - (l - 28.0)
+        } else if l >= 15.0 {
+            -20.0
+        } else if l > 10.0 {
+            -15.0 - (25.0 - (l - 15.0) * (l - 15.0)).sqrt()
+        } else {
+            -15.0
+        };
+        want.extend([
+            mv("R", l, 2.0, 0.0),
+            mv("F", l, z, 0.2),
+            mv("R", l + 0.5, z + 0.5, 0.0),
+            mv("R", l + 0.5, 2.0, 0.0),
+        ]);
+    }
+    let pass = [
+        mv("R", 10.0, 2.0, 0.0),
+        mv("F", 10.0, -15.0, 0.2),
+        mv("A", 15.0, -20.0, 0.2),
+        mv("F", 28.0, -20.0, 0.2),
+        mv("F", 30.0, -22.0, 0.2),
+        mv("F", 30.0, -40.0, 0.2),
+        mv("R", 41.0, 2.0, 0.0),
+    ];
+    want.extend(pass);
+    want.extend(pass);
+    assert_eq!(trace(&r), want);
+    assert_eq!(centres(&r), vec![(15.0, -15.0), (15.0, -15.0)]);
+    let cw = r
+        .events
+        .iter()
+        .filter(|e| {
+            matches!(
+                e.cmd,
+                Canon::Arc {
+                    dir: kerf_canon::ArcDir::Cw,
+                    ..
+                }
+            )
+        })
+        .count();
+    assert_eq!(cw, 2);
+    // A corner R whose next block turns the other way: PS052 on it.
+    let r = run_on(
+        PUMA,
+        "G97 S500 M03\nG00 X82. Z2.\nG71 U2. R0.5\nG71 P10 Q40 F0.2\nN10 G00 X20.\nN20 G01 Z-20. R-5.\nN30 X60.\nN40 Z-40.\n",
+    );
+    assert_eq!(alarm(&r), ("PS052", 7, 1));
+}
