@@ -365,14 +365,272 @@ fn cut_end(level: f64, sx: f64, first: P, segs: &[Seg]) -> f64 {
     segs.last().map(|s| s.to.z).unwrap_or(first.z)
 }
 
-/// G72 type I: G71 with X and Z exchanged (levels in Z by Δd, cuts
-/// parallel to X, return in X). `r.depth` is the Z depth per pass.
+/// The Z intervals (in cutting order) where the shape lies at or beyond
+/// X = `level` in the infeed direction `sx` — where a cut at that level
+/// is in material. The flag: the first interval begins at the shape's
+/// start (it is connected to the start side).
+pub fn level_intervals(level: f64, sx: f64, first: P, segs: &[Seg]) -> (Vec<(f64, f64)>, bool) {
+    let inside = |x: f64| sx * (x - level) >= -1e-7;
+    let mut out = Vec::new();
+    let mut open = inside(first.x).then_some(first.z);
+    let connected = open.is_some();
+    let mut toggle = |z: f64, open: &mut Option<f64>| match open.take() {
+        Some(z0) => out.push((z0, z)),
+        None => *open = Some(z),
+    };
+    for s in segs {
+        match s.arc {
+            None => {
+                // Sub-ranges split where x = level.
+                let mut cuts = vec![0.0];
+                let dx = s.to.x - s.from.x;
+                if dx.abs() > 1e-12 {
+                    let t = (level - s.from.x) / dx;
+                    if t > 1e-12 && t < 1.0 - 1e-12 {
+                        cuts.push(t);
+                    }
+                }
+                cuts.push(1.0);
+                for w in cuts.windows(2) {
+                    let xm = s.from.x + dx * (w[0] + w[1]) / 2.0;
+                    if inside(xm) != open.is_some() {
+                        toggle(s.from.z + (s.to.z - s.from.z) * w[0], &mut open);
+                    }
+                }
+            }
+            Some((c, ccw)) => {
+                let r = (s.from.x - c.x).hypot(s.from.z - c.z);
+                let sweep = crate::arc::sweep(s.from.zx(), s.to.zx(), c.zx(), ccw);
+                let a0 = (s.from.x - c.x).atan2(s.from.z - c.z);
+                let at = |d: f64| {
+                    let a = if ccw { a0 + d } else { a0 - d };
+                    p(c.x + r * a.sin(), c.z + r * a.cos())
+                };
+                let mut cuts = vec![0.0];
+                let sn = (level - c.x) / r;
+                if sn.abs() <= 1.0 {
+                    let b = sn.asin();
+                    let mut ds: Vec<f64> = [b, std::f64::consts::PI - b]
+                        .iter()
+                        .map(|&phi| {
+                            let d = if ccw { phi - a0 } else { a0 - phi };
+                            d.rem_euclid(std::f64::consts::TAU)
+                        })
+                        .filter(|&d| d > 1e-12 && d < sweep - 1e-12)
+                        .collect();
+                    ds.sort_by(f64::total_cmp);
+                    cuts.extend(ds);
+                }
+                cuts.push(sweep);
+                for w in cuts.windows(2) {
+                    let m = at((w[0] + w[1]) / 2.0);
+                    if inside(m.x) != open.is_some() {
+                        let q = if w[0] == 0.0 { s.from } else { at(w[0]) };
+                        toggle(q.z, &mut open);
+                    }
+                }
+            }
+        }
+    }
+    if let Some(z0) = open {
+        let end = segs.last().map(|s| s.to.z).unwrap_or(first.z);
+        out.push((z0, end));
+    }
+    // A level that only touches the shape (the bottom of an arc) cuts
+    // nothing there.
+    let mut k = 0;
+    out.retain(|iv| {
+        k += 1;
+        (k == 1 && connected) || (iv.1 - iv.0).abs() > 1e-9
+    });
+    (out, connected)
+}
+
+/// G71 type II (fanuc-semantics §1.2 "Type II", marked uncertain there;
+/// kerf's reading is in docs/dialects.md): the shape may go back in X
+/// (pockets), Z stays monotonic. First the region connected to the start
+/// side, level by level exactly as type I (levels down to the shape's
+/// start); then each pocket in turn in the cutting direction, roughed
+/// level by level from the level where it separates: the tool travels
+/// at the escape height of the level above the pocket, feeds down at the
+/// pocket's entry wall, cuts to its exit wall and escapes at 45°; a
+/// pocket that splits at a deeper level is finished branch by branch.
+/// Then a rapid to X of the start point, to the start point's Z, and the
+/// semi-finish pass as in type I.
+pub fn g71_type2(
+    a: P,
+    start: P,
+    shape: &[Seg],
+    r: Rough,
+    ns_rapid: bool,
+    out: &mut Vec<Mv>,
+) -> Result<(), CycleError> {
+    if r.depth <= 0.0 {
+        return Err(CycleError::Value(format!(
+            "depth of cut Δd = {} must be positive",
+            r.depth
+        )));
+    }
+    if r.escape < 0.0 {
+        return Err(CycleError::Value("escape e must not be negative".into()));
+    }
+    let shift = p(r.allow_x, r.allow_z);
+    let first = start.add(shift);
+    let segs: Vec<Seg> = shape.iter().map(|s| s.shifted(shift)).collect();
+    let last = segs.last().map(|s| s.to).unwrap_or(first);
+    let sx = sign(first.x - a.x);
+    let sz = sign(last.z - first.z);
+    if sx == 0.0 {
+        return Err(CycleError::Value(
+            "the start point is level with the shape's first point in X: nothing to rough".into(),
+        ));
+    }
+    if sz == 0.0 {
+        return Err(CycleError::Value("the shape has no length in Z".into()));
+    }
+    // Z monotonic (flat allowed); X free.
+    for (i, s) in segs.iter().enumerate() {
+        let (_, z0, _, z1) = s.bounds();
+        let (zlo, zhi) = (s.from.z.min(s.to.z), s.from.z.max(s.to.z));
+        if sz * (s.to.z - s.from.z) < -1e-6 || z0 < zlo - 1e-6 || z1 > zhi + 1e-6 {
+            return Err(CycleError::NotMonotonic(i, 'Z'));
+        }
+    }
+    // The deepest point of the shape in the infeed direction.
+    let mut deep = first.x;
+    for s in &segs {
+        let (x0, _, x1, _) = s.bounds();
+        for x in [x0, x1] {
+            if sx * (x - deep) > 0.0 {
+                deep = x;
+            }
+        }
+    }
+    let n = ((deep - a.x).abs() / r.depth).ceil();
+    if n * (4.0 + 4.0 * segs.len() as f64) > MAX_MOVES as f64 {
+        return Err(CycleError::TooManyMoves);
+    }
+    // General levels down to the deepest point.
+    let mut levels = Vec::new();
+    let mut k = 1.0;
+    loop {
+        let l = a.x + sx * k * r.depth;
+        if sx * (l - deep) >= -EPS {
+            levels.push(deep);
+            break;
+        }
+        levels.push(l);
+        k += 1.0;
+    }
+    let ivs: Vec<(Vec<(f64, f64)>, bool)> = levels
+        .iter()
+        .map(|&l| level_intervals(l, sx, first, &segs))
+        .collect();
+    let infeed = |t: P| if ns_rapid { Mv::Rapid(t) } else { Mv::Feed(t) };
+    // 1. The region connected to the start side: type I levels.
+    let mut k = 1.0;
+    loop {
+        let mut level = a.x + sx * k * r.depth;
+        let is_last = sx * (level - first.x) >= -EPS;
+        if is_last {
+            level = first.x;
+        }
+        let (iv, conn) = level_intervals(level, sx, first, &segs);
+        let zh = if conn { iv[0].1 } else { first.z };
+        push(out, infeed(p(level, a.z)))?;
+        push(out, Mv::Feed(p(level, zh)))?;
+        push(out, Mv::Rapid(p(level - sx * r.escape, zh - sz * r.escape)))?;
+        push(out, Mv::Rapid(p(level - sx * r.escape, a.z)))?;
+        if is_last {
+            break;
+        }
+        k += 1.0;
+    }
+    // 2. Pockets: intervals not connected to the start side whose parent
+    // (the interval one level up that holds them) is connected.
+    let within = |inner: (f64, f64), outer: (f64, f64)| {
+        let (lo, hi) = (outer.0.min(outer.1) - 1e-7, outer.0.max(outer.1) + 1e-7);
+        inner.0 >= lo && inner.0 <= hi && inner.1 >= lo && inner.1 <= hi
+    };
+    let mut roots: Vec<(usize, (f64, f64))> = Vec::new();
+    for (i, (iv, conn)) in ivs.iter().enumerate() {
+        for (j, &int) in iv.iter().enumerate() {
+            if j == 0 && *conn {
+                continue;
+            }
+            let parent_connected = if i == 0 {
+                true
+            } else {
+                let (piv, pconn) = &ivs[i - 1];
+                *pconn && within(int, piv[0])
+            };
+            if parent_connected {
+                roots.push((i, int));
+            }
+        }
+    }
+    roots.sort_by(|x, y| (sz * x.1 .0).total_cmp(&(sz * y.1 .0)));
+    let level_of = |i: usize| if i == 0 { a.x } else { levels[i - 1] };
+    let mut travel: Option<f64> = None;
+    for root in &roots {
+        let lp = level_of(root.0) - sx * r.escape;
+        // Travel at the shallower of this and the last pocket's heights.
+        let h = match travel {
+            Some(t) if sx * (t - lp) < 0.0 => t,
+            _ => lp,
+        };
+        let cur = out.last().map(|m| m.to()).unwrap_or(a);
+        push(out, Mv::Rapid(p(h, cur.z)))?;
+        push(out, Mv::Rapid(p(h, root.1 .0)))?;
+        travel = Some(lp);
+        // Depth first through the pocket.
+        let mut stack = vec![(root.0, root.1, true)];
+        while let Some((i, (z0, z1), first_child)) = stack.pop() {
+            let l = levels[i];
+            if !first_child {
+                let cur = out.last().map(|m| m.to()).unwrap_or(a);
+                let hp = level_of(i) - sx * r.escape;
+                push(out, Mv::Rapid(p(hp, cur.z)))?;
+                push(out, Mv::Rapid(p(hp, z0)))?;
+            }
+            push(out, Mv::Feed(p(l, z0)))?;
+            push(out, Mv::Feed(p(l, z1)))?;
+            push(out, Mv::Rapid(p(l - sx * r.escape, z1 - sz * r.escape)))?;
+            if i + 1 < levels.len() {
+                let kids: Vec<(f64, f64)> = ivs[i + 1]
+                    .0
+                    .iter()
+                    .copied()
+                    .filter(|&c| within(c, (z0, z1)))
+                    .collect();
+                for c in kids.into_iter().rev() {
+                    stack.push((i + 1, c, false));
+                }
+            }
+        }
+    }
+    if !roots.is_empty() {
+        let cur = out.last().map(|m| m.to()).unwrap_or(a);
+        push(out, Mv::Rapid(p(a.x, cur.z)))?;
+        push(out, Mv::Rapid(p(a.x, a.z)))?;
+    }
+    push(out, infeed(first))?;
+    for s in &segs {
+        push(out, s.mv())?;
+    }
+    push(out, Mv::Rapid(a))
+}
+
+/// G72: G71 with X and Z exchanged (levels in Z by Δd, cuts parallel to
+/// X, return in X); `r.depth` is the Z depth per pass, `type2` selects
+/// [`g71_type2`] (pockets in Z).
 pub fn g72(
     a: P,
     start: P,
     shape: &[Seg],
     r: Rough,
     ns_rapid: bool,
+    type2: bool,
     out: &mut Vec<Mv>,
 ) -> Result<(), CycleError> {
     let sw: Vec<Seg> = shape.iter().map(Seg::swap).collect();
@@ -382,7 +640,11 @@ pub fn g72(
         ..r
     };
     let n0 = out.len();
-    let res = g71(a.swap(), start.swap(), &sw, rs, ns_rapid, out);
+    let res = if type2 {
+        g71_type2(a.swap(), start.swap(), &sw, rs, ns_rapid, out)
+    } else {
+        g71(a.swap(), start.swap(), &sw, rs, ns_rapid, out)
+    };
     for m in &mut out[n0..] {
         *m = m.swap();
     }

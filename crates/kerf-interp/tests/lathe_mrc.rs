@@ -483,3 +483,279 @@ fn shape_is_bounded() {
     let r = run_on(PUMA, &p);
     assert_eq!(alarm(&r), ("KERF-0168", 4, 8));
 }
+
+/// G71 in a bore (the allowance Δu negative, stock left toward −X):
+/// A = Ø20 Z2 = (10, 2); shape N10 X60 (A′), N20 Z−15, N30 X40 Z−25, N40
+/// Z−40, shifted by (−0.2, 0.1): (29.8, 2.1) → (29.8, −14.9) → (19.8,
+/// −24.9) → (19.8, −39.9). Levels 10 + 2k: 12 … 28, then 29.8 (30 passes
+/// it). A cut at L ends where the shape comes below L: never for L ≤ 18
+/// (to the end, Z−39.9), on the taper Z = −14.9 − (29.8 − L) for 20 … 28,
+/// at the taper's start (−14.9) for 29.8. Escape toward −X and +Z.
+#[test]
+fn g71_bore_every_pass() {
+    let r = run_on(
+        PUMA,
+        "G97 S500 M03\nG00 X20. Z2.\nG71 U2. R0.5\nG71 P10 Q40 U-0.4 W0.1 F0.2\nN10 G00 X60.\nN20 G01 Z-15.\nN30 X40. Z-25.\nN40 Z-40.\nG00 Z50.\n",
+    );
+    ok(&r);
+    let mut want = vec![mv("R", 10.0, 2.0, 0.0)];
+    let mut levels: Vec<f64> = (1..=9).map(|k| 10.0 + 2.0 * k as f64).collect();
+    levels.push(29.8);
+    for l in levels {
+        let z = if l <= 19.8 { -39.9 } else { -14.9 - (29.8 - l) };
+        want.extend([
+            mv("R", l, 2.0, 0.0),
+            mv("F", l, z, 0.2),
+            mv("R", l - 0.5, z + 0.5, 0.0),
+            mv("R", l - 0.5, 2.0, 0.0),
+        ]);
+    }
+    want.extend([
+        mv("R", 29.8, 2.1, 0.0),
+        mv("F", 29.8, -14.9, 0.2),
+        mv("F", 19.8, -24.9, 0.2),
+        mv("F", 19.8, -39.9, 0.2),
+        mv("R", 10.0, 2.0, 0.0),
+        mv("R", 10.0, 50.0, 0.0),
+    ]);
+    assert_eq!(trace(&r), want);
+}
+
+/// G76 for an internal thread: A inside (Ø26 Z3), root at Ø30 (X30 =
+/// the major diameter of the nut), k 0.9, Δd 0.35, Δdmin 0.1, d 0.1, m 1,
+/// r 0, a 0 (radial infeed). Depths 0.35, 0.4950 (0.35·√2), 0.6062
+/// (0.35·√3); then 0.35·√4 = 0.7 is less than 0.6062 + Δdmin = 0.7062, so
+/// the floor gives 0.7062; next max(0.35·√5 = 0.7826, 0.8062) = 0.8062 ≥
+/// k − d = 0.8, so the last rough pass is 0.8; then 0.9. The infeed is
+/// toward +X: pass X radius 15 − (0.9 − D).
+#[test]
+fn g76_internal_thread() {
+    let r = run_on(
+        PUMA,
+        "G97 S400 M03\nG00 X26. Z3.\nG76 P010000 Q100 R0.1\nG76 X30. Z-20. P900 Q350 F1.5\n",
+    );
+    ok(&r);
+    let mut want = vec![mv("R", 13.0, 3.0, 0.0)];
+    let s = |n: f64| 0.35 * n.sqrt();
+    for d in [s(1.0), s(2.0), s(3.0), s(3.0) + 0.1, 0.8, 0.9] {
+        let x = 15.0 - (0.9 - d);
+        want.extend([
+            mv("R", x, 3.0, 0.0),
+            mv("T", x, -20.0, 1.5),
+            mv("R", 13.0, -20.0, 0.0),
+            mv("R", 13.0, 3.0, 0.0),
+        ]);
+    }
+    assert_eq!(trace(&r), want);
+}
+
+/// G71 type II (N10 moves X and Z: `W0`) on a shape with a groove: A =
+/// (41, 2), Δd 2, e 0.5, no allowance. Shape (radius): (20, 2) → (20,
+/// −10) → taper into the groove (15, −15) → (15, −20) → wall up (20,
+/// −20) → (20, −30) → shoulder (35, −30) → (35, −40).
+/// The start side, as type I: levels 39, 37, 35 cut to the end (Z−40: the
+/// shape never rises above them), 33 … 21 and the clamp 20 (the shape's
+/// start) to the shoulder Z−30. Then the groove, which separates below
+/// level 21: levels 19, 17, 15 (the deepest point), cut from the entry
+/// taper (x = 20 − (z + 10)·(−1): Z−11 for 19, Z−13 for 17, Z−15 for 15)
+/// to the wall Z−20. The tool travels at the escape height of level 21
+/// (21.5) to Z−11, feeds in, cuts, escapes 45°, goes to the next
+/// level's entry at the escape height of the level just cut, …; then
+/// rapid to X of A, to Z of A, and the semi-finish pass.
+#[test]
+fn g71_type2_groove() {
+    let r = run_on(
+        PUMA,
+        "G97 S500 M03\nG00 X82. Z2.\nG71 U2. R0.5\nG71 P10 Q80 U0 W0 F0.2\nN10 G00 X40. W0\nN20 G01 Z-10.\nN30 X30. Z-15.\nN40 Z-20.\nN50 X40.\nN60 Z-30.\nN70 X70.\nN80 Z-40.\n",
+    );
+    ok(&r);
+    let mut want = vec![mv("R", 41.0, 2.0, 0.0)];
+    let mut main: Vec<(f64, f64)> = [39.0, 37.0, 35.0].iter().map(|&l| (l, -40.0)).collect();
+    for k in 0..7 {
+        main.push((33.0 - 2.0 * k as f64, -30.0));
+    }
+    main.push((20.0, -30.0));
+    for (l, z) in main {
+        want.extend([
+            mv("R", l, 2.0, 0.0),
+            mv("F", l, z, 0.2),
+            mv("R", l + 0.5, z + 0.5, 0.0),
+            mv("R", l + 0.5, 2.0, 0.0),
+        ]);
+    }
+    // The groove.
+    want.extend([mv("R", 21.5, 2.0, 0.0), mv("R", 21.5, -11.0, 0.0)]);
+    let levels = [(19.0, -11.0), (17.0, -13.0), (15.0, -15.0)];
+    for (i, &(l, z0)) in levels.iter().enumerate() {
+        if i > 0 {
+            // Up to the escape height of the level above (already there),
+            // then along to this level's entry point.
+            let h = levels[i - 1].0 + 0.5;
+            want.push(mv("R", h, z0, 0.0));
+        }
+        want.extend([
+            mv("F", l, z0, 0.2),
+            mv("F", l, -20.0, 0.2),
+            mv("R", l + 0.5, -19.5, 0.0),
+        ]);
+    }
+    want.extend([
+        mv("R", 41.0, -19.5, 0.0),
+        mv("R", 41.0, 2.0, 0.0),
+        // Semi-finish pass (N10 is G00).
+        mv("R", 20.0, 2.0, 0.0),
+        mv("F", 20.0, -10.0, 0.2),
+        mv("F", 15.0, -15.0, 0.2),
+        mv("F", 15.0, -20.0, 0.2),
+        mv("F", 20.0, -20.0, 0.2),
+        mv("F", 20.0, -30.0, 0.2),
+        mv("F", 35.0, -30.0, 0.2),
+        mv("F", 35.0, -40.0, 0.2),
+        mv("R", 41.0, 2.0, 0.0),
+    ]);
+    assert_eq!(trace(&r), want);
+}
+
+/// G71 type II with two pockets, the first a half-circle groove (G02 R4
+/// from (20, −10) to (20, −18), centre (20, −14), bottom at radius 16),
+/// the second a square groove (17, −25 … −28). A = (41, 2), Δd 2, e 0.5.
+/// The start side: levels 39, 37, 35 to Z−40, 33 … 21 and 20 to the
+/// shoulder Z−35. The arc pocket (first in the cutting direction): level
+/// 19 from Z −14 + √(16 − 1) to −14 − √15, level 17 ±√(16 − 9) = ±√7;
+/// level 16 only touches the arc's bottom (nothing cut). The square
+/// groove: levels 19 and 17 from Z−25 to −28. Travel between pockets at
+/// the escape height of level 21.
+#[test]
+fn g71_type2_two_pockets_with_arc() {
+    let r = run_on(
+        PUMA,
+        "G97 S500 M03\nG00 X82. Z2.\nG71 U2. R0.5\nG71 P10 Q99 U0 W0 F0.2\nN10 G00 X40. W0\nN20 G01 Z-10.\nN30 G02 X40. Z-18. R4.\nN40 G01 Z-25.\nN50 X34.\nN60 Z-28.\nN70 X40.\nN80 Z-35.\nN90 X70.\nN99 Z-40.\n",
+    );
+    ok(&r);
+    let mut want = vec![mv("R", 41.0, 2.0, 0.0)];
+    let mut main: Vec<(f64, f64)> = [39.0, 37.0, 35.0].iter().map(|&l| (l, -40.0)).collect();
+    for k in 0..7 {
+        main.push((33.0 - 2.0 * k as f64, -35.0));
+    }
+    main.push((20.0, -35.0));
+    for (l, z) in main {
+        want.extend([
+            mv("R", l, 2.0, 0.0),
+            mv("F", l, z, 0.2),
+            mv("R", l + 0.5, z + 0.5, 0.0),
+            mv("R", l + 0.5, 2.0, 0.0),
+        ]);
+    }
+    let (s15, s7) = (15f64.sqrt(), 7f64.sqrt());
+    // Arc pocket.
+    want.extend([
+        mv("R", 21.5, 2.0, 0.0),
+        mv("R", 21.5, -14.0 + s15, 0.0),
+        mv("F", 19.0, -14.0 + s15, 0.2),
+        mv("F", 19.0, -14.0 - s15, 0.2),
+        mv("R", 19.5, -14.0 - s15 + 0.5, 0.0),
+        mv("R", 19.5, -14.0 + s7, 0.0),
+        mv("F", 17.0, -14.0 + s7, 0.2),
+        mv("F", 17.0, -14.0 - s7, 0.2),
+        mv("R", 17.5, -14.0 - s7 + 0.5, 0.0),
+    ]);
+    // Square groove.
+    want.extend([
+        mv("R", 21.5, -14.0 - s7 + 0.5, 0.0),
+        mv("R", 21.5, -25.0, 0.0),
+        mv("F", 19.0, -25.0, 0.2),
+        mv("F", 19.0, -28.0, 0.2),
+        mv("R", 19.5, -27.5, 0.0),
+        mv("R", 19.5, -25.0, 0.0),
+        mv("F", 17.0, -25.0, 0.2),
+        mv("F", 17.0, -28.0, 0.2),
+        mv("R", 17.5, -27.5, 0.0),
+        mv("R", 41.0, -27.5, 0.0),
+        mv("R", 41.0, 2.0, 0.0),
+        mv("R", 20.0, 2.0, 0.0),
+        mv("F", 20.0, -10.0, 0.2),
+        mv("A", 20.0, -18.0, 0.2),
+        mv("F", 20.0, -25.0, 0.2),
+        mv("F", 17.0, -25.0, 0.2),
+        mv("F", 17.0, -28.0, 0.2),
+        mv("F", 20.0, -28.0, 0.2),
+        mv("F", 20.0, -35.0, 0.2),
+        mv("F", 35.0, -35.0, 0.2),
+        mv("F", 35.0, -40.0, 0.2),
+        mv("R", 41.0, 2.0, 0.0),
+    ]);
+    assert_eq!(trace(&r), want);
+}
+
+/// Direct corner R and chamfer inside the shape (001 p.10 words in
+/// N20/N30): N10 X20 (A′ radius 10, Z2), N20 Z−20 R5 (+X next), N30 X60
+/// K−2 (−Z next), N40 Z−40. The expanded shape (radius): (10, 2) → (10,
+/// −15) → arc R5 about (15, −15), clockwise, to (15, −20) → (28, −20) →
+/// chamfer to (30, −22) → (30, −40). G71 from (41, 2), Δd 2: levels 39 … 31
+/// run to Z−40; 29 meets the chamfer at Z −20 − (29 − 28) = −21; 27 … 15
+/// meet the face at Z−20; 13 and 11 the arc at Z −15 − √(25 − (L − 15)²)
+/// (−19.582576, −18); the clamp 10 leaves at the arc's start, Z−15. G70
+/// follows the expanded shape.
+#[test]
+fn shape_with_direct_chamfer_and_corner_r() {
+    let r = run_on(
+        PUMA,
+        "G97 S500 M03\nG00 X82. Z2.\nG71 U2. R0.5\nG71 P10 Q40 F0.2\nN10 G00 X20.\nN20 G01 Z-20. R5.\nN30 X60. K-2.\nN40 Z-40.\nG70 P10 Q40\n",
+    );
+    ok(&r);
+    let mut want = vec![mv("R", 41.0, 2.0, 0.0)];
+    let mut levels: Vec<f64> = (1..=15).map(|k| 41.0 - 2.0 * k as f64).collect();
+    levels.push(10.0);
+    for l in levels {
+        let z = if l > 30.0 {
+            -40.0
+        } else if l > 28.0 {
+            -20.0 - (l - 28.0)
+        } else if l >= 15.0 {
+            -20.0
+        } else if l > 10.0 {
+            -15.0 - (25.0 - (l - 15.0) * (l - 15.0)).sqrt()
+        } else {
+            -15.0
+        };
+        want.extend([
+            mv("R", l, 2.0, 0.0),
+            mv("F", l, z, 0.2),
+            mv("R", l + 0.5, z + 0.5, 0.0),
+            mv("R", l + 0.5, 2.0, 0.0),
+        ]);
+    }
+    let pass = [
+        mv("R", 10.0, 2.0, 0.0),
+        mv("F", 10.0, -15.0, 0.2),
+        mv("A", 15.0, -20.0, 0.2),
+        mv("F", 28.0, -20.0, 0.2),
+        mv("F", 30.0, -22.0, 0.2),
+        mv("F", 30.0, -40.0, 0.2),
+        mv("R", 41.0, 2.0, 0.0),
+    ];
+    want.extend(pass);
+    want.extend(pass);
+    assert_eq!(trace(&r), want);
+    assert_eq!(centres(&r), vec![(15.0, -15.0), (15.0, -15.0)]);
+    let cw = r
+        .events
+        .iter()
+        .filter(|e| {
+            matches!(
+                e.cmd,
+                Canon::Arc {
+                    dir: kerf_canon::ArcDir::Cw,
+                    ..
+                }
+            )
+        })
+        .count();
+    assert_eq!(cw, 2);
+    // A corner R whose next block turns the other way: PS052 on it.
+    let r = run_on(
+        PUMA,
+        "G97 S500 M03\nG00 X82. Z2.\nG71 U2. R0.5\nG71 P10 Q40 F0.2\nN10 G00 X20.\nN20 G01 Z-20. R-5.\nN30 X60.\nN40 Z-40.\n",
+    );
+    assert_eq!(alarm(&r), ("PS052", 7, 1));
+}

@@ -81,16 +81,17 @@ impl Interp {
             Some(f) => motion::Speed::Feed(f),
             None => motion::Speed::Modal,
         };
+        let same = |a: &Pos, b: &Pos| a.iter().zip(b).all(|(u, v)| (u - v).abs() < 1e-9);
         for m in mvs {
             let t = self.zx_full(m.to());
             match *m {
                 Mv::Rapid(_) => {
-                    if t != self.prog_pos() {
+                    if !same(&t, &self.prog_pos()) {
                         self.line_to(t, motion::Speed::Rapid, at)?
                     }
                 }
                 Mv::Feed(_) => {
-                    if t != self.prog_pos() {
+                    if !same(&t, &self.prog_pos()) {
                         self.line_to(t, speed, at)?
                     }
                 }

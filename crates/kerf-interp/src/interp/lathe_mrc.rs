@@ -61,6 +61,19 @@ struct Shape {
     ns_feed: Option<f64>,
 }
 
+/// A chamfer / corner-R word on a shape block, applied once the shape is
+/// read.
+struct ShapeCorner {
+    /// Index of the block's segment.
+    seg: usize,
+    letter: u8,
+    amount: f64,
+    /// Where the word is.
+    word: SrcRef,
+    /// Block counter of the block.
+    block: usize,
+}
+
 /// Why a shape could not be read: an alarm already positioned in a shape
 /// block, or one to position on a word of the cycle block.
 enum ShapeErr {
@@ -180,22 +193,8 @@ impl Interp {
         if code == 700 {
             return self.g70(a, &shape, at);
         }
-        // The roughing cycles: Type I only (type II pockets: not yet).
-        let type2 = match code {
-            710 => shape.ns_z,
-            720 => shape.ns_x,
-            _ => false,
-        };
-        if type2 {
-            return Err(self.alarm(
-                AlarmKind::NotYetSupported,
-                p_at,
-                format!(
-                    "G{} type II (block N{ns} moves both X and Z) is not yet supported",
-                    code / 10
-                ),
-            ));
-        }
+        // Type II (pockets) when block ns moves both axes.
+        let type2 = shape.ns_x && shape.ns_z;
         let mut out = Vec::with_capacity(64 + shape.segs.len());
         let res = match code {
             710 | 720 => {
@@ -213,10 +212,22 @@ impl Interp {
                     allow_x: du,
                     allow_z: dw,
                 };
-                if code == 710 {
-                    turning::g71(a, shape.start, &shape.segs, r, shape.ns_rapid, &mut out)
-                } else {
-                    turning::g72(a, shape.start, &shape.segs, r, shape.ns_rapid, &mut out)
+                match (code, type2) {
+                    (710, false) => {
+                        turning::g71(a, shape.start, &shape.segs, r, shape.ns_rapid, &mut out)
+                    }
+                    (710, true) => {
+                        turning::g71_type2(a, shape.start, &shape.segs, r, shape.ns_rapid, &mut out)
+                    }
+                    _ => turning::g72(
+                        a,
+                        shape.start,
+                        &shape.segs,
+                        r,
+                        shape.ns_rapid,
+                        type2,
+                        &mut out,
+                    ),
                 }
             }
             _ => {
@@ -250,8 +261,9 @@ impl Interp {
                     AlarmKind::MrcNotMonotonic,
                     p_at,
                     format!(
-                        "G{} type I: the shape N{ns}-N{nf} is not monotonic in {ax} (segment {} after N{ns})",
+                        "G{} type {}: the shape N{ns}-N{nf} is not monotonic in {ax} (segment {} after N{ns})",
                         code / 10,
+                        if type2 { "II" } else { "I" },
                         i + 1
                     ),
                 ));
@@ -333,6 +345,8 @@ impl Interp {
         };
         let mut count = 0usize;
         let mut last_corner = false;
+        let mut corners: Vec<ShapeCorner> = Vec::new();
+        let mut seg_blocks: Vec<(usize, u32)> = Vec::new();
         loop {
             let src = self.src.as_mut().expect("loaded");
             match src.next_block(&mut self.raw) {
@@ -487,11 +501,35 @@ impl Interp {
                         format!("the last block N{nf} of the finishing shape ends with a chamfer or corner R"),
                     )));
                 }
-                return Err(ShapeErr::Here(self.alarm(
-                    AlarmKind::NotYetSupported,
-                    w.at,
-                    "chamfer / corner R inside a finishing shape is not yet supported",
-                )));
+                if first {
+                    return Err(ShapeErr::Here(self.alarm(
+                        AlarmKind::NotYetSupported,
+                        w.at,
+                        "chamfer / corner R on the first block ns of a finishing shape is not yet supported",
+                    )));
+                }
+                let n = [b'C', b'R', b'I', b'K']
+                    .iter()
+                    .filter(|&&l| self.words.has(l))
+                    .count();
+                if n > 1 {
+                    return Err(ShapeErr::Here(self.alarm(
+                        AlarmKind::CornerConflict,
+                        w.at,
+                        "two of I, K, R, C in one block (001 p.10 note 3)",
+                    )));
+                }
+                let letter = [b'C', b'R', b'I', b'K']
+                    .into_iter()
+                    .find(|&l| self.words.has(l))
+                    .expect("one");
+                corners.push(ShapeCorner {
+                    seg: shape.segs.len(),
+                    letter,
+                    amount: self.linear(w),
+                    word: self.alarm(AlarmKind::CornerConflict, w.at, "").src,
+                    block: count,
+                });
             }
             last_corner = false;
             if first {
@@ -518,6 +556,7 @@ impl Interp {
                         arc,
                     });
                     shape.modes.push((m == 0, feed));
+                    seg_blocks.push((count, self.raw.mark.line));
                 }
             }
             cur = t;
@@ -526,7 +565,138 @@ impl Interp {
             }
         }
         let _ = last_corner;
+        for c in corners.into_iter().rev() {
+            self.shape_corner(&mut shape, &c, &seg_blocks)
+                .map_err(ShapeErr::Here)?;
+        }
         Ok(shape)
+    }
+
+    /// A chamfer or corner R on shape segment `c.seg` (001 p.10, the same
+    /// rules as interp/lathe_chamfer.rs): the segment is shortened and the
+    /// corner inserted before the next segment, which starts at C′.
+    fn shape_corner(&self, shape: &mut Shape, c: &ShapeCorner, blocks: &[(usize, u32)]) -> R<()> {
+        let d = self.dialect.id;
+        let at_word = |k: AlarmKind, msg: String| k.at(d, c.word, msg);
+        let i = c.seg;
+        let next_line = blocks.get(i + 1).map(|b| b.1).unwrap_or(c.word.line);
+        let at_next = |k: AlarmKind, msg: &str| {
+            k.at(
+                d,
+                SrcRef {
+                    line: next_line,
+                    col: 1,
+                    ..c.word
+                },
+                msg,
+            )
+        };
+        let seg = shape.segs[i];
+        let (dx, dz) = (seg.to.x - seg.from.x, seg.to.z - seg.from.z);
+        if dx.abs() > 1e-9 && dz.abs() > 1e-9 {
+            return Err(at_word(
+                AlarmKind::ChamferTaper,
+                "chamfer or corner R on a block that moves both X and Z".into(),
+            ));
+        }
+        let along_z = dz.abs() > 1e-9;
+        if (c.letter == b'I' && !along_z) || (c.letter == b'K' && along_z) {
+            return Err(at_word(
+                AlarmKind::CornerConflict,
+                "I goes with a Z move, K with an X move (001 p.10 note 3)".into(),
+            ));
+        }
+        let Some(next) = shape.segs.get(i + 1).copied() else {
+            return Err(at_word(
+                AlarmKind::ChamferNextBlock,
+                "chamfer or corner R without a next move".into(),
+            ));
+        };
+        if blocks[i + 1].0 != c.block + 1 || next.arc.is_some() || shape.modes[i + 1].0 {
+            return Err(at_next(
+                AlarmKind::ChamferNextBlock,
+                "the block after a chamfer or corner R must be a G01 move",
+            ));
+        }
+        let (nx, nz) = (next.to.x - next.from.x, next.to.z - next.from.z);
+        let (na, nb) = if along_z { (nx, nz) } else { (nz, nx) };
+        if nb.abs() > 1e-9 {
+            return Err(at_next(
+                if na.abs() > 1e-9 {
+                    AlarmKind::ChamferTaper
+                } else {
+                    AlarmKind::ChamferNextBlock
+                },
+                "the block after a chamfer or corner R must move along the other axis only",
+            ));
+        }
+        let amt = c.amount.abs();
+        let s = if c.letter == b'C' {
+            na.signum()
+        } else {
+            c.amount.signum()
+        };
+        if na.abs() < 1e-9 || na.signum() != s {
+            return Err(at_next(
+                AlarmKind::ChamferNextBlock,
+                "the block after the chamfer or corner R goes the other way than its sign",
+            ));
+        }
+        let len = if along_z { dz } else { dx };
+        if amt > len.abs() + 1e-9 {
+            return Err(at_word(
+                AlarmKind::CornerTooLarge,
+                format!(
+                    "chamfer / corner R {} is longer than the block's move",
+                    fmt_num(amt)
+                ),
+            ));
+        }
+        if amt > na.abs() + 1e-9 {
+            return Err(at_next(
+                AlarmKind::CornerTooLarge,
+                "the move after a chamfer / corner R is shorter than it",
+            ));
+        }
+        if amt == 0.0 {
+            return Ok(());
+        }
+        let d1 = len.signum();
+        let b = seg.to;
+        let (pre, post) = if along_z {
+            (
+                turning::p(b.x, b.z - d1 * amt),
+                turning::p(b.x + s * amt, b.z),
+            )
+        } else {
+            (
+                turning::p(b.x - d1 * amt, b.z),
+                turning::p(b.x, b.z + s * amt),
+            )
+        };
+        let arc = (c.letter == b'R').then(|| {
+            let cen = if along_z {
+                turning::p(pre.x + s * amt, pre.z)
+            } else {
+                turning::p(pre.x, pre.z + s * amt)
+            };
+            let (u1, v1) = if along_z { (d1, 0.0) } else { (0.0, d1) };
+            let (u2, v2) = if along_z { (0.0, s) } else { (s, 0.0) };
+            (cen, u1 * v2 - v1 * u2 > 0.0)
+        });
+        shape.segs[i].to = pre;
+        shape.segs[i + 1].from = post;
+        shape.segs.insert(
+            i + 1,
+            Seg {
+                from: pre,
+                to: post,
+                arc,
+            },
+        );
+        let mode = shape.modes[i];
+        shape.modes.insert(i + 1, mode);
+        Ok(())
     }
 
     /// The centre of a shape block's arc from R or I/K (001: I, K radius

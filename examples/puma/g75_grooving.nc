@@ -1,0 +1,10 @@
+(001 G75 grooving example; its "G97 S_" has lost the speed: S280 here)
+N10 G50 S500 T0100 ;
+G97 S280 M03 ;
+G00 X90.0 Z1.0 T0101 ;
+X82.0 Z-60.0 ;
+G75 R1.0 ;
+G75 X60.0 Z-20.0 P3000 Q20000 F0.1 ;
+G00 X90.0 ;
+X200.0 Z200.0 T0100 ;
+M30 ;
