@@ -1165,7 +1165,7 @@ impl Interp {
                 self.dwell()?;
             }
         }
-        if g09 {
+        if g09 && !hurco {
             self.emit(Canon::Mode(ModeChange::ExactStopBlock));
         }
         // A dwell or a coordinate-setting block does not move: its axis
@@ -1192,6 +1192,10 @@ impl Interp {
         }
         if hurco && !no_motion && self.has_axis_word() {
             self.hurco_moved();
+        }
+        if g09 && hurco {
+            // Table 1: exact stop after the motion.
+            self.emit(Canon::Mode(ModeChange::ExactStopBlock));
         }
         // After-motion M codes, then the end-of-block system codes.
         self.run_m(|m| {

@@ -230,6 +230,14 @@ impl Interp {
         let w = &self.words;
         let (secs, revs) = if self.dialect.id == DialectId::Hurco {
             match w.get(b'F') {
+                // Table 3: 3.4 seconds or revolutions (0.0001-999.9999).
+                Some(f) if f.v > 999.9999 => {
+                    return Err(self.alarm(
+                        AlarmKind::OutOfRange,
+                        f.at,
+                        format!("G04 F{} out of range (0.0001-999.9999)", fmt_num(f.v)),
+                    ))
+                }
                 Some(f) if self.st.feed_mode == FeedMode::PerRev => (0.0, f.v),
                 Some(f) => (f.v, 0.0),
                 None => {
