@@ -135,6 +135,9 @@ fn m200_and_unknown_codes() {
     assert_eq!(alarm(&r), ("HU-010", 2, 1));
     let r = run_on("hurco-lathe", "G0 X1 Y2\n");
     assert_eq!(alarm(&r), ("HU-001", 1, 7));
+    // Letters only G78/G38 use, in another block.
+    let r = run_on("hurco-lathe", "G01 X1 D2 F1\n");
+    assert_eq!(alarm(&r), ("HU-001", 1, 8));
 }
 
 #[test]

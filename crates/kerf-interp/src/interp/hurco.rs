@@ -341,12 +341,16 @@ impl Interp {
                     format!("{name} is a G78/G38 parameter: not used in this block"),
                 ));
             }
-            for l in [b'U', b'W'] {
+            // Letters only the G78/G38 macros use ("Unused Data").
+            for &l in b"BCDJLUVW" {
                 if let Some(w) = self.words.get(l) {
                     return Err(self.alarm(
                         AlarmKind::IllegalAddress,
                         w.at,
-                        format!("address {} is only used by G78 (clearance)", l as char),
+                        format!(
+                            "address {} is only used by G78 threading or G38 probing",
+                            l as char
+                        ),
                     ));
                 }
             }
