@@ -46,6 +46,9 @@ pub struct Settings {
     pub block_skip: u16,
     /// Optional stop (M01) switch.
     pub optional_stop: bool,
+    /// The Hurco M01 switch state "On (turn off)": the first M01 that
+    /// stops switches `optional_stop` off (`--set optional_stop=once`).
+    pub optional_stop_once: bool,
     /// Single block switch (recorded; a batch run does not pause).
     pub single_block: bool,
     /// Dry run switch (recorded for the planner).
@@ -1308,13 +1311,22 @@ impl Interp {
                         change: true,
                     });
                 }
-                MAction::Stop => self.emit(Canon::Stop { optional: false }),
+                MAction::Stop => {
+                    self.hurco_stop_spindle();
+                    self.emit(Canon::Stop { optional: false })
+                }
                 MAction::OptionalStop => {
                     if self.settings.optional_stop {
+                        self.hurco_stop_spindle();
                         self.emit(Canon::Stop { optional: true });
+                        if self.settings.optional_stop_once {
+                            // Hurco M01 "On (turn off)": acts once.
+                            self.settings.optional_stop = false;
+                        }
                     }
                 }
                 MAction::End => {
+                    self.hurco_stop_spindle();
                     self.emit_end(m)?;
                     self.finished = true;
                 }

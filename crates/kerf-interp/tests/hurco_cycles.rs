@@ -190,7 +190,9 @@ fn g84_and_g74_reverse_the_spindle() {
             "Ccw",
             "feed 0.2",
             "Cw",
-            "rapid 1"
+            "rapid 1",
+            // M30 turns the spindle off (002).
+            "Stop"
         ]
     );
     // G74 left hand: the spindle runs CCW into the hole, CW out.
@@ -207,7 +209,15 @@ fn g84_and_g74_reverse_the_spindle() {
             _ => None,
         })
         .collect();
-    assert_eq!(dirs, vec![SpindleDir::Ccw, SpindleDir::Cw, SpindleDir::Ccw]);
+    assert_eq!(
+        dirs,
+        vec![
+            SpindleDir::Ccw,
+            SpindleDir::Cw,
+            SpindleDir::Ccw,
+            SpindleDir::Stop
+        ]
+    );
 }
 
 #[test]

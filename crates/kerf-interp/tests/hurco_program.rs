@@ -73,6 +73,7 @@ fn table_1_order_in_one_block() {
             "coolant false true",
             "spindle Cw 300",
             "dwell 2 0",
+            "spindle Stop 0",
             "end 30"
         ]
     );
@@ -137,6 +138,34 @@ fn m200_and_unknown_codes() {
     assert_eq!(alarm(&r), ("HU-001", 1, 7));
     // Letters only G78/G38 use, in another block.
     let r = run_on("hurco-lathe", "G01 X1 D2 F1\n");
+    assert_eq!(alarm(&r), ("HU-001", 1, 8));
+}
+
+#[test]
+fn stops_turn_the_spindle_off_and_m01_once() {
+    // 002: M00 and M30 turn the spindle off; M01 "On (turn off)" acts once.
+    let st = Settings {
+        optional_stop: true,
+        optional_stop_once: true,
+        ..Settings::default()
+    };
+    let r = run_with("hurco-lathe", st, "M03 S100\nM01\nM03\nM01\nM00\nM30\n");
+    ok(&r);
+    assert_eq!(
+        trace(&r),
+        vec![
+            "spindle Cw 100",
+            "spindle Stop 0",
+            "stop true",
+            "spindle Cw 100",
+            // The second M01 is ignored: the switch turned itself off.
+            "spindle Stop 0",
+            "stop false",
+            "end 30"
+        ]
+    );
+    // G04 takes only F.
+    let r = run_on("hurco-lathe", "G04 F1 X2\n");
     assert_eq!(alarm(&r), ("HU-001", 1, 8));
 }
 

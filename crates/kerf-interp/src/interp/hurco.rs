@@ -177,6 +177,20 @@ impl Interp {
         self.hurco.pending = None;
     }
 
+    /// 002: M00, M01 (when it stops), M02 and M30 turn the spindle off.
+    pub(super) fn hurco_stop_spindle(&mut self) {
+        if self.dialect.id != DialectId::Hurco || self.st.spindle == SpindleDir::Stop {
+            return;
+        }
+        self.st.spindle = SpindleDir::Stop;
+        self.st.last_rpm = 0.0;
+        self.emit(Canon::Spindle {
+            dir: SpindleDir::Stop,
+            rpm: 0.0,
+            css: None,
+        });
+    }
+
     /// G53 preconditions (002): CRC off, G90, G00 or G01 mode.
     pub(super) fn g53_checks(&self, at: u32) -> R<()> {
         let why = if self.st.modal[7] != 400 {
