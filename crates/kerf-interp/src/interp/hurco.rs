@@ -287,6 +287,13 @@ impl Interp {
         let Some(lead) = self.hurco.g33_lead else {
             return Err(self.alarm(AlarmKind::MissingArgument, at, "G33 needs a lead (K or I)"));
         };
+        if self.st.spindle == SpindleDir::Stop {
+            return Err(self.alarm(
+                AlarmKind::ThreadCycle,
+                at,
+                "G33 with the spindle stopped: the threading move would wait forever",
+            ));
+        }
         if let Some(p) = self.words.get(b'P') {
             if !(-360.0..=360.0).contains(&p.v) {
                 return Err(self.alarm(
