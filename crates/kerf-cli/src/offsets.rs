@@ -21,6 +21,9 @@
 //! z = -0.93
 //! r = 0.4
 //! tip = 3
+//!
+//! [fixture.2]    # Hurco fixture offset E2: machine coordinates of its
+//! z = -300.0     # part zero, mm (X a radius), like [g54] (= E1)
 //! ```
 
 use std::path::Path;
@@ -47,6 +50,11 @@ pub fn load(path: &Path, it: &mut Interp) -> Result<(), String> {
             "tool" => {
                 for (n, e) in t {
                     lathe_entry(n, e, it).map_err(|e| format!("{p}: {e}"))?;
+                }
+            }
+            "fixture" => {
+                for (n, e) in t {
+                    fixture_entry(n, e, it).map_err(|e| format!("{p}: {e}"))?;
                 }
             }
             _ => work_system(&key, v, it).map_err(|e| format!("{p}: {e}"))?,
@@ -137,7 +145,7 @@ fn work_system(k: &str, v: &Value, it: &mut Interp) -> Result<(), String> {
         "g59" => 5,
         other => {
             return Err(format!(
-                "unknown table '{other}' (g54 … g59, h, h_wear, d, d_wear, tool.N)"
+                "unknown table '{other}' (g54 … g59, h, h_wear, d, d_wear, tool.N, fixture.N)"
             ))
         }
     };
@@ -149,5 +157,33 @@ fn work_system(k: &str, v: &Value, it: &mut Interp) -> Result<(), String> {
         }
     }
     it.set_work_offset(idx, Profile::pos_of(&axes));
+    Ok(())
+}
+
+/// `[fixture.N]`: Hurco fixture offset E`N` (1-9999), machine coordinates
+/// of its part zero in mm, X as a radius ([g54] is E1).
+fn fixture_entry(n: &str, v: &Value, it: &mut Interp) -> Result<(), String> {
+    let i: u32 = n
+        .parse()
+        .map_err(|_| format!("[fixture.{n}]: not a fixture offset number (1-9999)"))?;
+    let axes: AxisMap = v
+        .clone()
+        .try_into()
+        .map_err(|e| format!("[fixture.{n}]: {e}"))?;
+    for a in axes.keys() {
+        match axis_by_name(a) {
+            Some(ax) if it.profile().has_axis(ax) => {}
+            _ => {
+                return Err(format!(
+                    "[fixture.{n}] names axis '{a}' the machine does not have"
+                ))
+            }
+        }
+    }
+    if !it.set_fixture_offset(i, Profile::pos_of(&axes)) {
+        return Err(format!(
+            "[fixture.{n}]: not a fixture offset number (1-9999)"
+        ));
+    }
     Ok(())
 }

@@ -37,6 +37,10 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
                     s.block_skip |= 1 << n;
                 }
             }
+            "optional_stop" if v.eq_ignore_ascii_case("once") => {
+                s.optional_stop = true;
+                s.optional_stop_once = true;
+            }
             "optional_stop" => s.optional_stop = on_off(k, v)?,
             "single_block" => s.single_block = on_off(k, v)?,
             "dry_run" => s.dry_run = on_off(k, v)?,

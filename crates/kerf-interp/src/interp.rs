@@ -52,6 +52,9 @@ pub struct Settings {
     pub block_skip: u16,
     /// Optional stop (M01) switch.
     pub optional_stop: bool,
+    /// The Hurco M01 switch state "On (turn off)": the first M01 that
+    /// stops switches `optional_stop` off (`--set optional_stop=once`).
+    pub optional_stop_once: bool,
     /// Single block switch (recorded; a batch run does not pause).
     pub single_block: bool,
     /// Dry run switch (recorded for the planner).
@@ -1233,7 +1236,7 @@ impl Interp {
         if d.id == DialectId::Puma && self.words.nm > 0 {
             self.lathe_m_codes();
         }
-        if g09 {
+        if g09 && !hurco {
             self.emit(Canon::Mode(ModeChange::ExactStopBlock));
         }
         // A dwell or a coordinate-setting block does not move: its axis
@@ -1264,6 +1267,10 @@ impl Interp {
         }
         if hurco && !no_motion && self.has_axis_word() {
             self.hurco_moved();
+        }
+        if g09 && hurco {
+            // Table 1: exact stop after the motion.
+            self.emit(Canon::Mode(ModeChange::ExactStopBlock));
         }
         // After-motion M codes, then the end-of-block system codes.
         self.run_m(|m| {
@@ -1379,13 +1386,22 @@ impl Interp {
                         change: true,
                     });
                 }
-                MAction::Stop => self.emit(Canon::Stop { optional: false }),
+                MAction::Stop => {
+                    self.hurco_stop_spindle();
+                    self.emit(Canon::Stop { optional: false })
+                }
                 MAction::OptionalStop => {
                     if self.settings.optional_stop {
+                        self.hurco_stop_spindle();
                         self.emit(Canon::Stop { optional: true });
+                        if self.settings.optional_stop_once {
+                            // Hurco M01 "On (turn off)": acts once.
+                            self.settings.optional_stop = false;
+                        }
                     }
                 }
                 MAction::End => {
+                    self.hurco_stop_spindle();
                     self.emit_end(m)?;
                     self.finished = true;
                 }

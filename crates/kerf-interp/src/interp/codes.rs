@@ -252,7 +252,26 @@ impl Interp {
     pub(super) fn dwell(&mut self) -> R<()> {
         let w = &self.words;
         let (secs, revs) = if self.dialect.id == DialectId::Hurco {
+            // 002: "F is the only entry allowed in a G04 block".
+            if let Some(x) = [b'X', b'Z', b'I', b'K', b'R', b'P', b'Q', b'A', b'H']
+                .iter()
+                .find_map(|&l| w.get(l))
+            {
+                return Err(self.alarm(
+                    AlarmKind::IllegalAddress,
+                    x.at,
+                    "G04 takes only F (the dwell)",
+                ));
+            }
             match w.get(b'F') {
+                // Table 3: 3.4 seconds or revolutions (0.0001-999.9999).
+                Some(f) if f.v > 999.9999 => {
+                    return Err(self.alarm(
+                        AlarmKind::OutOfRange,
+                        f.at,
+                        format!("G04 F{} out of range (0.0001-999.9999)", fmt_num(f.v)),
+                    ))
+                }
                 Some(f) if self.st.feed_mode == FeedMode::PerRev => (0.0, f.v),
                 Some(f) => (f.v, 0.0),
                 None => {

@@ -168,6 +168,20 @@ impl Interp {
         self.hurco.pending = None;
     }
 
+    /// 002: M00, M01 (when it stops), M02 and M30 turn the spindle off.
+    pub(super) fn hurco_stop_spindle(&mut self) {
+        if self.dialect.id != DialectId::Hurco || self.st.spindle == SpindleDir::Stop {
+            return;
+        }
+        self.st.spindle = SpindleDir::Stop;
+        self.st.last_rpm = 0.0;
+        self.emit(Canon::Spindle {
+            dir: SpindleDir::Stop,
+            rpm: 0.0,
+            css: None,
+        });
+    }
+
     /// G53 preconditions (002): CRC off, G90, G00 or G01 mode.
     pub(super) fn g53_checks(&self, at: u32) -> R<()> {
         let why = if self.st.modal[7] != 400 {
@@ -264,6 +278,13 @@ impl Interp {
         let Some(lead) = self.hurco.g33_lead else {
             return Err(self.alarm(AlarmKind::MissingArgument, at, "G33 needs a lead (K or I)"));
         };
+        if self.st.spindle == SpindleDir::Stop {
+            return Err(self.alarm(
+                AlarmKind::ThreadCycle,
+                at,
+                "G33 with the spindle stopped: the threading move would wait forever",
+            ));
+        }
         if let Some(p) = self.words.get(b'P') {
             if !(-360.0..=360.0).contains(&p.v) {
                 return Err(self.alarm(
@@ -332,12 +353,16 @@ impl Interp {
                     format!("{name} is a G78/G38 parameter: not used in this block"),
                 ));
             }
-            for l in [b'U', b'W'] {
+            // Letters only the G78/G38 macros use ("Unused Data").
+            for &l in b"BCDJLUVW" {
                 if let Some(w) = self.words.get(l) {
                     return Err(self.alarm(
                         AlarmKind::IllegalAddress,
                         w.at,
-                        format!("address {} is only used by G78 (clearance)", l as char),
+                        format!(
+                            "address {} is only used by G78 threading or G38 probing",
+                            l as char
+                        ),
                     ));
                 }
             }

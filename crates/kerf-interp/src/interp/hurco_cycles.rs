@@ -142,8 +142,8 @@ impl Interp {
                     }
                 };
                 let n = ((z - r).abs() / q).ceil().max(1.0);
-                if n > 100_000.0 {
-                    return Err(self.alarm(AlarmKind::OutOfRange, at, "more than 100,000 pecks"));
+                if n > 10_000.0 {
+                    return Err(self.alarm(AlarmKind::OutOfRange, at, "more than 10,000 pecks"));
                 }
                 let mut last = r;
                 for k in 1..=n as u64 {
@@ -182,12 +182,8 @@ impl Interp {
                 } else {
                     1.0
                 };
-                if n > 100_000.0 {
-                    return Err(self.alarm(
-                        AlarmKind::OutOfRange,
-                        at,
-                        "more than 100,000 in-feeds",
-                    ));
+                if n > 10_000.0 {
+                    return Err(self.alarm(AlarmKind::OutOfRange, at, "more than 10,000 in-feeds"));
                 }
                 if self.st.spindle != fwd {
                     self.drill_spindle(fwd);

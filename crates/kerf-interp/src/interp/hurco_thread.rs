@@ -89,12 +89,15 @@ impl ThreadPlan {
 }
 
 /// Rough pass depths (cumulative) for rough depth `rt`, start depth `d`,
-/// final depth `e` (ignored with constant volume).
+/// final depth `e` (ignored with constant volume). More than
+/// [`MAX_PASSES`] passes: the list stops at `MAX_PASSES + 1` entries (the
+/// caller alarms), nothing larger is ever allocated.
 pub(super) fn rough_depths(rt: f64, d: f64, e: f64, const_volume: bool) -> Vec<f64> {
     let mut out = Vec::new();
     if rt <= 1e-12 {
         return out;
     }
+    let too_many = || vec![rt; MAX_PASSES + 1];
     if const_volume {
         let mut k = 1.0f64;
         loop {
@@ -107,12 +110,20 @@ pub(super) fn rough_depths(rt: f64, d: f64, e: f64, const_volume: bool) -> Vec<f
             k += 1.0;
         }
     }
-    let n = ((2.0 * rt / (d + e)) - 1e-9).ceil().max(1.0) as usize;
+    let nf = ((2.0 * rt / (d + e)) - 1e-9).ceil().max(1.0);
+    if nf.is_nan() || nf > MAX_PASSES as f64 {
+        return too_many();
+    }
+    let n = nf as usize;
     let first = 2.0 * rt / n as f64 - e;
     let cuts: Vec<f64> = if n == 1 {
         vec![rt]
     } else if first < e - 1e-12 {
-        let n = ((rt / d) - 1e-9).ceil().max(1.0) as usize;
+        let nf = ((rt / d) - 1e-9).ceil().max(1.0);
+        if nf > MAX_PASSES as f64 {
+            return too_many();
+        }
+        let n = nf as usize;
         vec![rt / n as f64; n]
     } else {
         let step = (first - e) / (n - 1) as f64;
@@ -465,6 +476,13 @@ impl Interp {
                 ))
             }
         };
+        if depths.len() * starts.len() > MAX_PASSES {
+            return Err(self.alarm(
+                AlarmKind::OutOfRange,
+                dw.at,
+                format!("G78 would cut more than {MAX_PASSES} passes (depths x starts)"),
+            ));
+        }
         let plan = ThreadPlan {
             face,
             depths,

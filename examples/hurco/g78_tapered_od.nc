@@ -1,0 +1,5 @@
+(002 Tapered OD Thread: taper angle B14.7)
+G70 G90 M03 S120
+G0Z4.1
+G78 X.9 J.6 B14.7 Z1.2 K4 F.375 D.1 E.08 P2 L.02 R3
+M30
