@@ -10,7 +10,8 @@ use super::MWhen::*;
 use super::Support::*;
 use super::*;
 
-const LATER_LATHE: Support = Later("PUMA G22 interference area and G31 skip (not modelled; docs/dialects.md)");
+const LATER_LATHE: Support =
+    Later("PUMA G22 interference area and G31 skip (not modelled; docs/dialects.md)");
 const LATER_COMP: Support = Later("tool compensation (issue 5)");
 
 /// G codes of 001 (system A). G10, G31 and G65-G67 are not in 001's

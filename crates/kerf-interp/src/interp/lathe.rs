@@ -130,7 +130,7 @@ impl Interp {
             return Err(self.alarm(
                 AlarmKind::LatheCycle,
                 at,
-                "taper or face thread in G96 (constant surface speed): the spindle speed would change during the cut; program G97",
+                "threading move that changes X (taper or face thread, run-out chamfer) in G96 (constant surface speed): the spindle speed would change during the cut; program G97",
             ));
         }
         let mto = self.to_machine(&tw);
