@@ -256,7 +256,6 @@ impl Interp {
         match res {
             Ok(()) => {}
             Err(turning::CycleError::NotMonotonic(i, ax)) => {
-                let _ = i;
                 return Err(self.alarm(
                     AlarmKind::MrcNotMonotonic,
                     p_at,
@@ -344,7 +343,6 @@ impl Interp {
             ns_feed: None,
         };
         let mut count = 0usize;
-        let mut last_corner = false;
         let mut corners: Vec<ShapeCorner> = Vec::new();
         let mut seg_blocks: Vec<(usize, u32)> = Vec::new();
         loop {
@@ -531,7 +529,6 @@ impl Interp {
                     block: count,
                 });
             }
-            last_corner = false;
             if first {
                 shape.start = t;
                 shape.ns_x = hx;
@@ -564,7 +561,6 @@ impl Interp {
                 break;
             }
         }
-        let _ = last_corner;
         for c in corners.into_iter().rev() {
             self.shape_corner(&mut shape, &c, &seg_blocks)
                 .map_err(ShapeErr::Here)?;
@@ -735,10 +731,11 @@ impl Interp {
 
     /// G74 / G75.
     fn mrc_peck(&mut self, code: u16, at: u32) -> R<()> {
-        let (long, long_inc, cross, cross_inc) = if code == 740 {
-            (b'Z', b'W', b'X', b'U')
+        // The axis along which the columns (G74) / grooves (G75) step.
+        let (cross, cross_inc) = if code == 740 {
+            (b'X', b'U')
         } else {
-            (b'X', b'U', b'Z', b'W')
+            (b'Z', b'W')
         };
         let has_end = [b'X', b'U', b'Z', b'W'].iter().any(|&l| self.words.has(l));
         if !has_end {
@@ -761,7 +758,6 @@ impl Interp {
             val(self, b'X', b'U', a.x, true),
             val(self, b'Z', b'W', a.z, false),
         );
-        let _ = (long, long_inc);
         let columns = self.words.has(cross) || self.words.has(cross_inc);
         // G74: P = shift Δi (X), Q = peck Δk (Z); G75: P = peck Δi (X),
         // Q = shift Δk (Z).
