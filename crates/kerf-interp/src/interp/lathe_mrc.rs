@@ -57,6 +57,10 @@ struct Shape {
     /// Per segment: a G00 block, and the F in force in the shape (mm, per
     /// the feed mode), None = the modal F.
     modes: Vec<(bool, Option<f64>)>,
+    /// Per segment: the S in force in the shape (None = the modal S).
+    speeds: Vec<Option<f64>>,
+    /// S in block ns.
+    ns_speed: Option<f64>,
     /// F in block ns.
     ns_feed: Option<f64>,
 }
@@ -299,14 +303,42 @@ impl Interp {
         } else {
             Mv::Feed(s.start)
         };
+        let s0 = self.st.s;
         let f0 = feed_of(self, s.ns_feed);
+        self.g70_speed(s.ns_speed.unwrap_or(s0));
         self.emit_moves(&[first], f0, at)?;
-        for (seg, &(rapid, f)) in s.segs.iter().zip(&s.modes) {
+        for ((seg, &(rapid, f)), &sp) in s.segs.iter().zip(&s.modes).zip(&s.speeds) {
             let m = if rapid { Mv::Rapid(seg.to) } else { seg.mv() };
             let f = feed_of(self, f);
+            self.g70_speed(sp.unwrap_or(s0));
             self.emit_moves(&[m], f, at)?;
         }
-        self.emit_moves(&[Mv::Rapid(a)], None, at)
+        self.emit_moves(&[Mv::Rapid(a)], None, at)?;
+        // The S of the shape was for G70 only.
+        self.g70_speed(s0);
+        Ok(())
+    }
+
+    /// G70: the S in force for the next shape block; a spindle event when
+    /// the rpm changes (the spindle running).
+    fn g70_speed(&mut self, sv: f64) {
+        if (sv - self.st.s).abs() < 1e-12 {
+            return;
+        }
+        self.st.s = sv;
+        if self.st.spindle == SpindleDir::Stop {
+            return;
+        }
+        let rpm = self.rpm();
+        if (rpm - self.st.last_rpm).abs() > 1e-6 {
+            self.st.last_rpm = rpm;
+            let css = self.css_speed();
+            self.emit(Canon::Spindle {
+                dir: self.st.spindle,
+                rpm,
+                css,
+            });
+        }
     }
 
     /// Reads the shape N(ns)..N(nf) (see the module documentation).
@@ -333,6 +365,7 @@ impl Interp {
         let mut cur = a;
         let mut mode: Option<u16> = None;
         let mut feed: Option<f64> = None;
+        let mut speed: Option<f64> = None;
         let mut shape = Shape {
             start: a,
             ns_x: false,
@@ -340,7 +373,9 @@ impl Interp {
             ns_rapid: false,
             segs: Vec::new(),
             modes: Vec::new(),
+            speeds: Vec::new(),
             ns_feed: None,
+            ns_speed: None,
         };
         let mut count = 0usize;
         let mut corners: Vec<ShapeCorner> = Vec::new();
@@ -451,6 +486,9 @@ impl Interp {
             if let Some(f) = self.words.get(b'F') {
                 feed = Some(f.v * self.unit());
             }
+            if let Some(w) = self.words.get(b'S') {
+                speed = Some(w.v);
+            }
             // End point.
             let mut t = cur;
             let (mut hx, mut hz) = (false, false);
@@ -535,6 +573,7 @@ impl Interp {
                 shape.ns_z = hz;
                 shape.ns_rapid = m == 0;
                 shape.ns_feed = feed;
+                shape.ns_speed = speed;
             } else if hx
                 || hz
                 || matches!(m, 20 | 30) && self.words.has(b'I') | self.words.has(b'K')
@@ -553,6 +592,7 @@ impl Interp {
                         arc,
                     });
                     shape.modes.push((m == 0, feed));
+                    shape.speeds.push(speed);
                     seg_blocks.push((count, self.raw.mark.line));
                 }
             }
@@ -692,6 +732,8 @@ impl Interp {
         );
         let mode = shape.modes[i];
         shape.modes.insert(i + 1, mode);
+        let speed = shape.speeds[i];
+        shape.speeds.insert(i + 1, speed);
         Ok(())
     }
 
