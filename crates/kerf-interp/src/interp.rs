@@ -28,6 +28,7 @@ mod flow;
 mod lathe;
 mod lathe_chamfer;
 mod lathe_mrc;
+mod lathe_shape;
 mod motion;
 mod polar_interp;
 mod reset;
