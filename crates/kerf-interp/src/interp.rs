@@ -1161,6 +1161,9 @@ impl Interp {
             m.1 == MWhen::After
                 && !matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End)
         })?;
+        if d.id == DialectId::Puma && self.words.nm > 0 {
+            self.lathe_m_after();
+        }
         self.run_m(|m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End))?;
         if self.finished_by_end() {
             return Ok(false);
