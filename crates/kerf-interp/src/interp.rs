@@ -33,6 +33,7 @@ mod hurco_thread;
 mod lathe;
 mod lathe_chamfer;
 mod lathe_mrc;
+mod lathe_shape;
 mod motion;
 mod offset_data;
 mod polar_interp;
@@ -1277,6 +1278,9 @@ impl Interp {
             m.1 == MWhen::After
                 && !matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End)
         })?;
+        if d.id == DialectId::Puma && self.words.nm > 0 {
+            self.lathe_m_after();
+        }
         self.run_m(|m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End))?;
         if self.comp.is_some() {
             self.comp_block_end()?;

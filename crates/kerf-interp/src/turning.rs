@@ -507,7 +507,7 @@ pub fn g71_type2(
         }
     }
     let n = ((deep - a.x).abs() / r.depth).ceil();
-    if n * (4.0 + 4.0 * segs.len() as f64) > MAX_MOVES as f64 {
+    if n * 4.0 > MAX_MOVES as f64 {
         return Err(CycleError::TooManyMoves);
     }
     // General levels down to the deepest point.

@@ -395,3 +395,33 @@ fn g96_rpm_follows_x() {
     );
     assert_eq!(rpm(40.0), round(1591.549431));
 }
+
+/// 001's M63/M64/M65: the spindle and the coolant together (the list:
+/// "MAIN-SPDL CW & COOLANT ON", "MAIN-SPDL & COOLANT OFF").
+#[test]
+fn m63_m65_spindle_and_coolant() {
+    let r = run_on(PUMA, "G97 S600 M63\nG00 X50. Z5.\nM65\nM64\nM65\n");
+    ok(&r);
+    let seq: Vec<String> = r
+        .events
+        .iter()
+        .filter_map(|e| match &e.cmd {
+            Canon::Spindle { dir, rpm, .. } => Some(format!("S {dir:?} {rpm}")),
+            Canon::Coolant { flood, .. } => Some(format!("C {flood}")),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(
+        seq,
+        vec![
+            "S Cw 600",
+            "C true",
+            "S Stop 0",
+            "C false",
+            "S Ccw 600",
+            "C true",
+            "S Stop 0",
+            "C false"
+        ]
+    );
+}

@@ -759,3 +759,32 @@ fn shape_with_direct_chamfer_and_corner_r() {
     );
     assert_eq!(alarm(&r), ("PS052", 7, 1));
 }
+
+/// S inside ns-nf is for G70 only (fanuc-semantics §1.1): G71 roughs at
+/// the S500 in force; G70 turns at S800 from N20 on and the S500 comes
+/// back after the cycle (G97, so the rpm is the S).
+#[test]
+fn shape_s_for_g70_only() {
+    let r = run_on(
+        PUMA,
+        "G97 S500 M03\nG00 X70. Z2.\nG71 U2. R0.5\nG71 P1 Q3 F0.3\nN1 G01 X60.\nN2 Z-10. S800\nN3 X68.\nG70 P1 Q3\nG00 X80.\n",
+    );
+    ok(&r);
+    let seq: Vec<String> = r
+        .events
+        .iter()
+        .filter_map(|e| match &e.cmd {
+            Canon::Spindle { rpm, .. } => Some(format!("S{}", round(*rpm))),
+            Canon::Feed { m, .. } => Some(format!("F{},{}", round(2.0 * m.to[0]), round(m.to[2]))),
+            _ => None,
+        })
+        .collect();
+    let g70_start = seq.iter().rposition(|s| s == "F60,2").unwrap();
+    // Before G70 only the S500 of the first block.
+    assert_eq!(seq.iter().filter(|s| s.starts_with('S')).count(), 3);
+    assert_eq!(seq[0], "S500");
+    assert_eq!(
+        seq[g70_start..].to_vec(),
+        vec!["F60,2", "S800", "F60,-10", "F68,-10", "S500"]
+    );
+}

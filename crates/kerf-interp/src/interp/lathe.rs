@@ -27,14 +27,39 @@ pub(super) struct LatheData {
 }
 
 impl Interp {
-    /// M76/M77 of the block (001 "M76, M77"): the thread chamfer switch.
+    /// The PUMA M codes the dialect table cannot express with one action,
+    /// before the block's motion: M76/M77 (001 "M76, M77") switch thread
+    /// chamfering; M63/M64 (main spindle CW/CCW and coolant on) start the
+    /// coolant too (the table's action is the spindle part).
     pub(super) fn lathe_m_codes(&mut self) {
         for i in 0..self.words.nm {
             match self.words.m[i].0 {
                 76 => self.lathe.chamfer_on = true,
                 77 => self.lathe.chamfer_on = false,
+                63 | 64 => self.lathe_coolant(true),
                 _ => {}
             }
+        }
+    }
+
+    /// After the block's motion: M65 (main spindle and coolant stop) stops
+    /// the coolant too.
+    pub(super) fn lathe_m_after(&mut self) {
+        if self.words.ms().iter().any(|m| m.0 == 65) {
+            self.lathe_coolant(false);
+        }
+    }
+
+    fn lathe_coolant(&mut self, on: bool) {
+        if self.st.flood != on || (!on && self.st.mist) {
+            self.st.flood = on;
+            if !on {
+                self.st.mist = false;
+            }
+            self.emit(Canon::Coolant {
+                mist: self.st.mist,
+                flood: self.st.flood,
+            });
         }
     }
 
@@ -130,7 +155,7 @@ impl Interp {
             return Err(self.alarm(
                 AlarmKind::LatheCycle,
                 at,
-                "taper or face thread in G96 (constant surface speed): the spindle speed would change during the cut; program G97",
+                "threading move that changes X (taper or face thread, run-out chamfer) in G96 (constant surface speed): the spindle speed would change during the cut; program G97",
             ));
         }
         let mto = self.to_machine(&tw);

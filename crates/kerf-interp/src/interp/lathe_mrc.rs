@@ -1,24 +1,12 @@
 //! PUMA (Fanuc 0-T) multiple repetitive cycles G70-G76 (001 "G71"-"G76";
 //! fanuc-semantics §1 and Appendix A): the two-block formats with their
-//! modal first-block values, the finishing shape ns..nf read from the
-//! program text, and the emission of the passes computed by
-//! [`crate::turning`].
-//!
-//! The shape is read with the program's own [`kerf_lang::LineSource`]:
-//! the source is moved to block N(ns) ([`Interp::seek_sequence`], forward
-//! first, then from the program start), the blocks up to N(nf) are parsed
-//! and evaluated one at a time into segments (at most
-//! [`MAX_SHAPE_BLOCKS`]), and the source is left after N(nf) (G71-G73:
-//! execution continues there) or put back after the cycle block (G70).
-//! The block being executed is set aside while the shape is read, so the
-//! parsed-block cache and the alarm positions stay right.
+//! modal first-block values, and the emission of the passes computed by
+//! [`crate::turning`]. The finishing shape of G70-G73 is read by
+//! interp/lathe_shape.rs.
 
+use super::lathe_shape::{Shape, ShapeErr};
 use super::*;
-use crate::turning::{self, Mv, Seg, P};
-
-/// Most blocks a finishing shape may have (memory bound; more is an
-/// alarm).
-pub(super) const MAX_SHAPE_BLOCKS: usize = 2000;
+use crate::turning::{self, Mv, P};
 
 /// The modal first-block values (fanuc-semantics §1.1: they overwrite the
 /// parameters, so a later cycle may omit its first block). `None` = the
@@ -41,44 +29,6 @@ pub(super) struct MrcModal {
     min_depth: Option<f64>,
     /// G76 d (mm).
     allowance: Option<f64>,
-}
-
-/// The finishing shape A → A′ → B.
-struct Shape {
-    /// A′: the end of block ns.
-    start: P,
-    /// Block ns moved X / Z.
-    ns_x: bool,
-    ns_z: bool,
-    /// Block ns is G00.
-    ns_rapid: bool,
-    /// The segments A′ → B.
-    segs: Vec<Seg>,
-    /// Per segment: a G00 block, and the F in force in the shape (mm, per
-    /// the feed mode), None = the modal F.
-    modes: Vec<(bool, Option<f64>)>,
-    /// F in block ns.
-    ns_feed: Option<f64>,
-}
-
-/// A chamfer / corner-R word on a shape block, applied once the shape is
-/// read.
-struct ShapeCorner {
-    /// Index of the block's segment.
-    seg: usize,
-    letter: u8,
-    amount: f64,
-    /// Where the word is.
-    word: SrcRef,
-    /// Block counter of the block.
-    block: usize,
-}
-
-/// Why a shape could not be read: an alarm already positioned in a shape
-/// block, or one to position on a word of the cycle block.
-enum ShapeErr {
-    Here(Alarm),
-    AtCycle(AlarmKind, u8, String),
 }
 
 impl Interp {
@@ -256,7 +206,6 @@ impl Interp {
         match res {
             Ok(()) => {}
             Err(turning::CycleError::NotMonotonic(i, ax)) => {
-                let _ = i;
                 return Err(self.alarm(
                     AlarmKind::MrcNotMonotonic,
                     p_at,
@@ -300,445 +249,51 @@ impl Interp {
         } else {
             Mv::Feed(s.start)
         };
+        let s0 = self.st.s;
         let f0 = feed_of(self, s.ns_feed);
+        self.g70_speed(s.ns_speed.unwrap_or(s0));
         self.emit_moves(&[first], f0, at)?;
-        for (seg, &(rapid, f)) in s.segs.iter().zip(&s.modes) {
+        for ((seg, &(rapid, f)), &sp) in s.segs.iter().zip(&s.modes).zip(&s.speeds) {
             let m = if rapid { Mv::Rapid(seg.to) } else { seg.mv() };
             let f = feed_of(self, f);
+            self.g70_speed(sp.unwrap_or(s0));
             self.emit_moves(&[m], f, at)?;
         }
-        self.emit_moves(&[Mv::Rapid(a)], None, at)
-    }
-
-    /// Reads the shape N(ns)..N(nf) (see the module documentation).
-    fn read_shape(&mut self, ns: u32, nf: u32) -> Result<Shape, ShapeErr> {
-        if !self.seek_sequence(ns, true) {
-            return Err(ShapeErr::AtCycle(
-                AlarmKind::MrcSeqNotFound,
-                b'P',
-                format!("sequence number N{ns} (P) not found"),
-            ));
-        }
-        let saved_raw = std::mem::take(&mut self.raw);
-        let saved_block = std::mem::take(&mut self.block);
-        let saved_words = self.words.clone();
-        let r = self.read_shape_blocks(ns, nf);
-        self.raw = saved_raw;
-        self.block = saved_block;
-        self.words = saved_words;
-        r
-    }
-
-    fn read_shape_blocks(&mut self, ns: u32, nf: u32) -> Result<Shape, ShapeErr> {
-        let a = self.zx_pos();
-        let mut cur = a;
-        let mut mode: Option<u16> = None;
-        let mut feed: Option<f64> = None;
-        let mut shape = Shape {
-            start: a,
-            ns_x: false,
-            ns_z: false,
-            ns_rapid: false,
-            segs: Vec::new(),
-            modes: Vec::new(),
-            ns_feed: None,
-        };
-        let mut count = 0usize;
-        let mut last_corner = false;
-        let mut corners: Vec<ShapeCorner> = Vec::new();
-        let mut seg_blocks: Vec<(usize, u32)> = Vec::new();
-        loop {
-            let src = self.src.as_mut().expect("loaded");
-            match src.next_block(&mut self.raw) {
-                Ok(true) => {}
-                _ => {
-                    return Err(ShapeErr::AtCycle(
-                        AlarmKind::MrcSeqNotFound,
-                        b'Q',
-                        format!("sequence number N{nf} (Q) not found after N{ns}"),
-                    ))
-                }
-            }
-            self.parse_raw().map_err(ShapeErr::Here)?;
-            if self.block.percent || self.block.program.is_some() {
-                return Err(ShapeErr::AtCycle(
-                    AlarmKind::MrcSeqNotFound,
-                    b'Q',
-                    format!("sequence number N{nf} (Q) not found after N{ns} in this program"),
-                ));
-            }
-            let mut nwords = self.block.words.len();
-            let mut skip = false;
-            for &(idx, mask) in &self.block.deletes {
-                if mask & self.settings.block_skip != 0 {
-                    if idx == 0 {
-                        skip = true;
-                    }
-                    nwords = nwords.min(idx as usize);
-                    break;
-                }
-            }
-            let is_last = self.block.n == Some(nf);
-            if skip {
-                if is_last {
-                    break;
-                }
-                continue;
-            }
-            if self.block.stmt.is_some() {
-                return Err(ShapeErr::Here(self.alarm(
-                    AlarmKind::MrcIllegal,
-                    self.block.stmt_at,
-                    "macro statement inside the finishing shape ns-nf",
-                )));
-            }
-            count += 1;
-            if count > MAX_SHAPE_BLOCKS {
-                return Err(ShapeErr::AtCycle(
-                    AlarmKind::LatheCycle,
-                    b'Q',
-                    format!("finishing shape longer than {MAX_SHAPE_BLOCKS} blocks"),
-                ));
-            }
-            self.collect(nwords).map_err(ShapeErr::Here)?;
-            let first = mode.is_none();
-            let mut blk_mode = None;
-            for &(g, gat) in self.words.gs() {
-                match g {
-                    0 | 10 | 20 | 30 => blk_mode = Some(g),
-                    40 | 200 | 210 | 400 | 960 | 970 | 980 | 990 => {}
-                    410 | 420 => {
-                        return Err(ShapeErr::Here(self.alarm(
-                            AlarmKind::NotYetSupported,
-                            gat,
-                            "tool nose radius compensation in a finishing shape is not yet supported (issue 5)",
-                        )))
-                    }
-                    _ => {
-                        return Err(ShapeErr::Here(self.alarm(
-                            AlarmKind::MrcIllegal,
-                            gat,
-                            format!("G{} is not allowed inside the finishing shape ns-nf", fmt_code(g)),
-                        )))
-                    }
-                }
-            }
-            for &(m, mat) in self.words.ms() {
-                if matches!(m, 98 | 99) {
-                    return Err(ShapeErr::Here(self.alarm(
-                        AlarmKind::MrcIllegal,
-                        mat,
-                        format!("M{m} is not allowed inside the finishing shape ns-nf"),
-                    )));
-                }
-            }
-            if first {
-                match blk_mode {
-                    Some(0 | 10) => {}
-                    _ => {
-                        return Err(ShapeErr::Here(self.alarm(
-                            AlarmKind::MrcFirstBlock,
-                            blk_mode.map(|_| self.words.gs()[0].1).unwrap_or(0),
-                            format!(
-                                "the first block N{ns} of the finishing shape has no G00 or G01"
-                            ),
-                        )))
-                    }
-                }
-            }
-            if let Some(m) = blk_mode {
-                mode = Some(m);
-            }
-            let m = mode.expect("set by the first block");
-            if let Some(f) = self.words.get(b'F') {
-                feed = Some(f.v * self.unit());
-            }
-            // End point.
-            let mut t = cur;
-            let (mut hx, mut hz) = (false, false);
-            let half = if self.st.diameter { 0.5 } else { 1.0 };
-            if let Some(w) = self.words.get(b'X') {
-                t.x = self.linear(w) * half;
-                hx = true;
-            } else if let Some(w) = self.words.get(b'U') {
-                t.x = cur.x + self.linear(w) * half;
-                hx = true;
-            }
-            if let Some(w) = self.words.get(b'Z') {
-                t.z = self.linear(w);
-                hz = true;
-            } else if let Some(w) = self.words.get(b'W') {
-                t.z = cur.z + self.linear(w);
-                hz = true;
-            }
-            if self.words.has(b'X') && self.words.has(b'U')
-                || self.words.has(b'Z') && self.words.has(b'W')
-            {
-                let w = self
-                    .words
-                    .get(b'U')
-                    .or(self.words.get(b'W'))
-                    .expect("present");
-                return Err(ShapeErr::Here(self.alarm(
-                    AlarmKind::DuplicateAddress,
-                    w.at,
-                    "an axis and its incremental address in one block",
-                )));
-            }
-            // Chamfer / corner R words on a G01 (direct drawing input).
-            let corner_word = if m == 10 {
-                [b'C', b'R', b'I', b'K']
-                    .iter()
-                    .find_map(|&l| self.words.get(l))
-            } else {
-                None
-            };
-            if let Some(w) = corner_word {
-                if is_last {
-                    return Err(ShapeErr::Here(self.alarm(
-                        AlarmKind::MrcEndCorner,
-                        w.at,
-                        format!("the last block N{nf} of the finishing shape ends with a chamfer or corner R"),
-                    )));
-                }
-                if first {
-                    return Err(ShapeErr::Here(self.alarm(
-                        AlarmKind::NotYetSupported,
-                        w.at,
-                        "chamfer / corner R on the first block ns of a finishing shape is not yet supported",
-                    )));
-                }
-                let n = [b'C', b'R', b'I', b'K']
-                    .iter()
-                    .filter(|&&l| self.words.has(l))
-                    .count();
-                if n > 1 {
-                    return Err(ShapeErr::Here(self.alarm(
-                        AlarmKind::CornerConflict,
-                        w.at,
-                        "two of I, K, R, C in one block (001 p.10 note 3)",
-                    )));
-                }
-                let letter = [b'C', b'R', b'I', b'K']
-                    .into_iter()
-                    .find(|&l| self.words.has(l))
-                    .expect("one");
-                corners.push(ShapeCorner {
-                    seg: shape.segs.len(),
-                    letter,
-                    amount: self.linear(w),
-                    word: self.alarm(AlarmKind::CornerConflict, w.at, "").src,
-                    block: count,
-                });
-            }
-            last_corner = false;
-            if first {
-                shape.start = t;
-                shape.ns_x = hx;
-                shape.ns_z = hz;
-                shape.ns_rapid = m == 0;
-                shape.ns_feed = feed;
-            } else if hx
-                || hz
-                || matches!(m, 20 | 30) && self.words.has(b'I') | self.words.has(b'K')
-            {
-                let arc = if matches!(m, 20 | 30) {
-                    let ccw = m == 30;
-                    let c = self.shape_arc_center(cur, t, ccw).map_err(ShapeErr::Here)?;
-                    Some((c, ccw))
-                } else {
-                    None
-                };
-                if arc.is_some() || t != cur {
-                    shape.segs.push(Seg {
-                        from: cur,
-                        to: t,
-                        arc,
-                    });
-                    shape.modes.push((m == 0, feed));
-                    seg_blocks.push((count, self.raw.mark.line));
-                }
-            }
-            cur = t;
-            if is_last {
-                break;
-            }
-        }
-        let _ = last_corner;
-        for c in corners.into_iter().rev() {
-            self.shape_corner(&mut shape, &c, &seg_blocks)
-                .map_err(ShapeErr::Here)?;
-        }
-        Ok(shape)
-    }
-
-    /// A chamfer or corner R on shape segment `c.seg` (001 p.10, the same
-    /// rules as interp/lathe_chamfer.rs): the segment is shortened and the
-    /// corner inserted before the next segment, which starts at C′.
-    fn shape_corner(&self, shape: &mut Shape, c: &ShapeCorner, blocks: &[(usize, u32)]) -> R<()> {
-        let d = self.dialect.id;
-        let at_word = |k: AlarmKind, msg: String| k.at(d, c.word, msg);
-        let i = c.seg;
-        let next_line = blocks.get(i + 1).map(|b| b.1).unwrap_or(c.word.line);
-        let at_next = |k: AlarmKind, msg: &str| {
-            k.at(
-                d,
-                SrcRef {
-                    line: next_line,
-                    col: 1,
-                    ..c.word
-                },
-                msg,
-            )
-        };
-        let seg = shape.segs[i];
-        let (dx, dz) = (seg.to.x - seg.from.x, seg.to.z - seg.from.z);
-        if dx.abs() > 1e-9 && dz.abs() > 1e-9 {
-            return Err(at_word(
-                AlarmKind::ChamferTaper,
-                "chamfer or corner R on a block that moves both X and Z".into(),
-            ));
-        }
-        let along_z = dz.abs() > 1e-9;
-        if (c.letter == b'I' && !along_z) || (c.letter == b'K' && along_z) {
-            return Err(at_word(
-                AlarmKind::CornerConflict,
-                "I goes with a Z move, K with an X move (001 p.10 note 3)".into(),
-            ));
-        }
-        let Some(next) = shape.segs.get(i + 1).copied() else {
-            return Err(at_word(
-                AlarmKind::ChamferNextBlock,
-                "chamfer or corner R without a next move".into(),
-            ));
-        };
-        if blocks[i + 1].0 != c.block + 1 || next.arc.is_some() || shape.modes[i + 1].0 {
-            return Err(at_next(
-                AlarmKind::ChamferNextBlock,
-                "the block after a chamfer or corner R must be a G01 move",
-            ));
-        }
-        let (nx, nz) = (next.to.x - next.from.x, next.to.z - next.from.z);
-        let (na, nb) = if along_z { (nx, nz) } else { (nz, nx) };
-        if nb.abs() > 1e-9 {
-            return Err(at_next(
-                if na.abs() > 1e-9 {
-                    AlarmKind::ChamferTaper
-                } else {
-                    AlarmKind::ChamferNextBlock
-                },
-                "the block after a chamfer or corner R must move along the other axis only",
-            ));
-        }
-        let amt = c.amount.abs();
-        let s = if c.letter == b'C' {
-            na.signum()
-        } else {
-            c.amount.signum()
-        };
-        if na.abs() < 1e-9 || na.signum() != s {
-            return Err(at_next(
-                AlarmKind::ChamferNextBlock,
-                "the block after the chamfer or corner R goes the other way than its sign",
-            ));
-        }
-        let len = if along_z { dz } else { dx };
-        if amt > len.abs() + 1e-9 {
-            return Err(at_word(
-                AlarmKind::CornerTooLarge,
-                format!(
-                    "chamfer / corner R {} is longer than the block's move",
-                    fmt_num(amt)
-                ),
-            ));
-        }
-        if amt > na.abs() + 1e-9 {
-            return Err(at_next(
-                AlarmKind::CornerTooLarge,
-                "the move after a chamfer / corner R is shorter than it",
-            ));
-        }
-        if amt == 0.0 {
-            return Ok(());
-        }
-        let d1 = len.signum();
-        let b = seg.to;
-        let (pre, post) = if along_z {
-            (
-                turning::p(b.x, b.z - d1 * amt),
-                turning::p(b.x + s * amt, b.z),
-            )
-        } else {
-            (
-                turning::p(b.x - d1 * amt, b.z),
-                turning::p(b.x, b.z + s * amt),
-            )
-        };
-        let arc = (c.letter == b'R').then(|| {
-            let cen = if along_z {
-                turning::p(pre.x + s * amt, pre.z)
-            } else {
-                turning::p(pre.x, pre.z + s * amt)
-            };
-            let (u1, v1) = if along_z { (d1, 0.0) } else { (0.0, d1) };
-            let (u2, v2) = if along_z { (0.0, s) } else { (s, 0.0) };
-            (cen, u1 * v2 - v1 * u2 > 0.0)
-        });
-        shape.segs[i].to = pre;
-        shape.segs[i + 1].from = post;
-        shape.segs.insert(
-            i + 1,
-            Seg {
-                from: pre,
-                to: post,
-                arc,
-            },
-        );
-        let mode = shape.modes[i];
-        shape.modes.insert(i + 1, mode);
+        self.emit_moves(&[Mv::Rapid(a)], None, at)?;
+        // The S of the shape was for G70 only.
+        self.g70_speed(s0);
         Ok(())
     }
 
-    /// The centre of a shape block's arc from R or I/K (001: I, K radius
-    /// values from the start point; R wins over I/K).
-    fn shape_arc_center(&self, s: P, e: P, ccw: bool) -> R<P> {
-        let at = self.words.gs().first().map(|g| g.1).unwrap_or(0);
-        if let Some(r) = self.words.get(b'R') {
-            let rv = self.linear(r);
-            let c = crate::arc::center_from_radius(s.zx(), e.zx(), rv, ccw, f64::INFINITY)
-                .map_err(|_| {
-                    self.alarm(AlarmKind::ArcRadius, r.at, "arc radius zero in the shape")
-                })?;
-            return Ok(turning::p(c.1, c.0));
+    /// G70: the S in force for the next shape block; a spindle event when
+    /// the rpm changes (the spindle running).
+    fn g70_speed(&mut self, sv: f64) {
+        if (sv - self.st.s).abs() < 1e-12 {
+            return;
         }
-        if !(self.words.has(b'I') || self.words.has(b'K')) {
-            return Err(self.alarm(
-                AlarmKind::ArcNoCenter,
-                at,
-                "arc without centre (I/K) or radius (R) in the shape",
-            ));
+        self.st.s = sv;
+        if self.st.spindle == SpindleDir::Stop {
+            return;
         }
-        let i = self.words.get(b'I').map(|w| self.linear(w)).unwrap_or(0.0);
-        let k = self.words.get(b'K').map(|w| self.linear(w)).unwrap_or(0.0);
-        let c = turning::p(s.x + i, s.z + k);
-        if let Err(e) = crate::arc::check_end(s.zx(), e.zx(), c.zx(), self.arc_tol) {
-            let msg = match e {
-                ArcError::EndNotOnCircle { r_start, r_end } => format!(
-                    "arc end point is not on the circle: start radius {r_start:.4}, end radius {r_end:.4}"
-                ),
-                _ => "arc centre coincides with the start point".into(),
-            };
-            return Err(self.alarm(AlarmKind::ArcEndPoint, at, msg));
+        let rpm = self.rpm();
+        if (rpm - self.st.last_rpm).abs() > 1e-6 {
+            self.st.last_rpm = rpm;
+            let css = self.css_speed();
+            self.emit(Canon::Spindle {
+                dir: self.st.spindle,
+                rpm,
+                css,
+            });
         }
-        Ok(c)
     }
 
     /// G74 / G75.
     fn mrc_peck(&mut self, code: u16, at: u32) -> R<()> {
-        let (long, long_inc, cross, cross_inc) = if code == 740 {
-            (b'Z', b'W', b'X', b'U')
+        // The axis along which the columns (G74) / grooves (G75) step.
+        let (cross, cross_inc) = if code == 740 {
+            (b'X', b'U')
         } else {
-            (b'X', b'U', b'Z', b'W')
+            (b'Z', b'W')
         };
         let has_end = [b'X', b'U', b'Z', b'W'].iter().any(|&l| self.words.has(l));
         if !has_end {
@@ -761,7 +316,6 @@ impl Interp {
             val(self, b'X', b'U', a.x, true),
             val(self, b'Z', b'W', a.z, false),
         );
-        let _ = (long, long_inc);
         let columns = self.words.has(cross) || self.words.has(cross_inc);
         // G74: P = shift Δi (X), Q = peck Δk (Z); G75: P = peck Δi (X),
         // Q = shift Δk (Z).

@@ -76,6 +76,7 @@ impl Interp {
         // first-block values are parameters and stay).
         self.lathe.single = None;
         self.lathe.chamfer_on = false;
+        self.lathe.ddi_base = None;
         self.queue.clear();
         self.after_block = None;
         self.finished = false;
