@@ -367,6 +367,8 @@ fn g78_alarms() {
         ("G78 X1 J.1 K2 Z1 F.1 D.05 B50", "HU-014", "B50"),
         // X beyond Table 2 (845 in).
         ("G78 X900 J.1 K2 Z1 F.1 D.05", "HU-014", "X900"),
+        // A face thread from X2 to X-.5 crosses the centre line (at X).
+        ("G78 M1 Z-.1 J.1 I2 X-.5 F.1 D.05", "HU-060", "X-.5"),
         // Absurdly many passes: alarm before anything is allocated.
         ("G78 X1 J1 K2 Z1 F.1 D.0000001", "HU-014", "D.0000001"),
         ("G78 X1 J.1 K2 Z1 F.1 D.0001 Q360", "HU-014", "D.0001"),
