@@ -78,7 +78,11 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
                 || k.starts_with("probe_")
                 || matches!(
                     k,
-                    "arc_tolerance_mm" | "max_jumps" | "max_repeat_blocks" | "peck_clearance_mm"
+                    "arc_tolerance_mm"
+                        | "max_jumps"
+                        | "max_repeat_blocks"
+                        | "peck_clearance_mm"
+                        | "optional_format"
                 ) =>
             {
                 let val: f64 = v

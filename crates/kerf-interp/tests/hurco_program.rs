@@ -246,6 +246,16 @@ fn number_formats_tables_2_and_3() {
         let col = last.find(at).unwrap() as u32 + 1;
         assert_eq!(alarm(&r), ("HU-014", line, col), "{text}");
     }
+    // The optional formats (one place smaller): X84.6 in is out, 84.5 in.
+    let r = run_with_param("hurco-lathe", "optional_format", 1.0, "G20 G01 X84.6 F1\n");
+    assert_eq!(alarm(&r), ("HU-014", 1, 9));
+    let r = run_with_param(
+        "hurco-lathe",
+        "optional_format",
+        1.0,
+        "G20 G07 G01 X8.45 F1\nM30\n",
+    );
+    ok(&r);
     // In range: X845 inch; T 9 digits (tool 0 offset 0 is fine: T000000000).
     let r = run_on("hurco-lathe", "G20 G07 G53 X0\nT000000000\nM30\n");
     ok(&r);

@@ -274,12 +274,9 @@ impl Interp {
                     ),
                 ));
             }
-            let (lo, hi) = if self.st.metric {
-                (0.00001, 254.0)
-            } else {
-                (0.000001, 10.0)
-            };
-            if w.v < lo || w.v > hi {
+            let (lo, hi) = self.hurco_lead_range();
+            let (lo, hi) = (lo / self.unit(), hi / self.unit());
+            if w.v < lo * (1.0 - 1e-9) || w.v > hi * (1.0 + 1e-9) {
                 return Err(self.alarm(
                     AlarmKind::OutOfRange,
                     w.at,

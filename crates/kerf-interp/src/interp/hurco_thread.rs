@@ -361,12 +361,8 @@ impl Interp {
         } else {
             fw.v * self.unit()
         };
-        let (lo, hi) = if self.st.metric {
-            (0.00001, 254.0)
-        } else {
-            (0.000001 * 25.4, 10.0 * 25.4)
-        };
-        if !(lo..=hi + 1e-9).contains(&lead) {
+        let (lo, hi) = self.hurco_lead_range();
+        if lead < lo * (1.0 - 1e-9) || lead > hi * (1.0 + 1e-9) {
             return Err(self.alarm(
                 AlarmKind::OutOfRange,
                 fw.at,
