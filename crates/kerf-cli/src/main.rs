@@ -67,6 +67,10 @@ enum Cmd {
         /// Write an SVG plot of the toolpath.
         #[arg(long)]
         plot: Option<PathBuf>,
+        /// Write the operator messages (Hurco probe records, #3006 …), one
+        /// per line.
+        #[arg(long)]
+        log: Option<PathBuf>,
     },
     /// Check a program: run it without writing outputs; report alarms.
     Check {
@@ -92,8 +96,9 @@ fn main() -> ExitCode {
             toolpath,
             report,
             plot,
-        } => run(&common, toolpath, report, plot, false),
-        Cmd::Check { common } => run(&common, None, None, None, true),
+            log,
+        } => run(&common, toolpath, report, plot, log, false),
+        Cmd::Check { common } => run(&common, None, None, None, None, true),
     }
 }
 
@@ -122,6 +127,7 @@ fn run(
     toolpath: Option<PathBuf>,
     report_path: Option<PathBuf>,
     plot_path: Option<PathBuf>,
+    log_path: Option<PathBuf>,
     check: bool,
 ) -> ExitCode {
     let mut profile = match load_profile(&c.machine) {
@@ -177,7 +183,11 @@ fn run(
     let mut est = Estimator::new(dynamics, it.machine_position());
     let mut start_work = it.work_position();
     let mut alarm: Option<Alarm> = None;
-    let sinks = tp.is_some() || report_path.is_some() || plotter.is_some();
+    let mut log = match log_path.as_ref().map(File::create).transpose() {
+        Ok(f) => f.map(BufWriter::new),
+        Err(e) => return usage_error(format!("{}: {e}", log_path.unwrap().display())),
+    };
+    let sinks = tp.is_some() || report_path.is_some() || plotter.is_some() || log.is_some();
     loop {
         match it.step() {
             Step::Event(e) if !sinks => {
@@ -197,6 +207,14 @@ fn run(
                 if let Canon::Tool { tool, .. } = e.cmd {
                     rep.tool(tool);
                 }
+                if let Canon::Message(text) = &e.cmd {
+                    rep.message(e.src.line, text);
+                    if let Some(l) = log.as_mut() {
+                        if let Err(err) = writeln!(l, "{text}") {
+                            return usage_error(format!("log: {err}"));
+                        }
+                    }
+                }
                 if let Some(w) = tp.as_mut() {
                     if let Err(err) = w.write(&e, it.file_name(e.src.file), &start_work, t, &est) {
                         return usage_error(format!("toolpath: {err}"));
@@ -213,6 +231,11 @@ fn run(
     if let Some(w) = tp.as_mut() {
         if let Err(e) = w.finish() {
             return usage_error(format!("toolpath: {e}"));
+        }
+    }
+    if let Some(l) = log.as_mut() {
+        if let Err(e) = l.flush() {
+            return usage_error(format!("log: {e}"));
         }
     }
     if let Some(a) = &alarm {
