@@ -73,6 +73,10 @@ enum Cmd {
         /// to FILE as CSV (docs/formats.md).
         #[arg(long, num_args = 2, value_names = ["DT", "FILE"])]
         sample: Vec<String>,
+        /// Write the operator messages (Hurco probe records, #3006 …), one
+        /// per line.
+        #[arg(long)]
+        log: Option<PathBuf>,
     },
     /// Check a program: run it without writing outputs; report alarms.
     Check {
@@ -99,6 +103,7 @@ fn main() -> ExitCode {
             report,
             plot,
             sample,
+            log,
         } => {
             let sample = match sample.as_slice() {
                 [] => None,
@@ -112,9 +117,9 @@ fn main() -> ExitCode {
                 },
                 _ => return usage_error("--sample needs DT and FILE"),
             };
-            run(&common, toolpath, report, plot, sample, false)
+            run(&common, toolpath, report, plot, sample, log, false)
         }
-        Cmd::Check { common } => run(&common, None, None, None, None, true),
+        Cmd::Check { common } => run(&common, None, None, None, None, None, true),
     }
 }
 
@@ -144,6 +149,7 @@ fn run(
     report_path: Option<PathBuf>,
     plot_path: Option<PathBuf>,
     sample: Option<(f64, PathBuf)>,
+    log_path: Option<PathBuf>,
     check: bool,
 ) -> ExitCode {
     let mut profile = match load_profile(&c.machine) {
@@ -249,7 +255,15 @@ fn run(
     let mut pending: VecDeque<(Event, Pos, Option<f64>)> = VecDeque::new();
     let mut start_work = it.work_position();
     let mut alarm: Option<Alarm> = None;
-    let sinks = tp.is_some() || report_path.is_some() || plotter.is_some() || sampler.is_some();
+    let mut log = match log_path.as_ref().map(File::create).transpose() {
+        Ok(f) => f.map(BufWriter::new),
+        Err(e) => return usage_error(format!("{}: {e}", log_path.unwrap().display())),
+    };
+    let sinks = tp.is_some()
+        || report_path.is_some()
+        || plotter.is_some()
+        || sampler.is_some()
+        || log.is_some();
     let mut io_err: Option<String> = None;
     let mut drain = |planner: &mut Planner,
                      pending: &mut VecDeque<(Event, Pos, Option<f64>)>,
@@ -311,6 +325,14 @@ fn run(
                 if let Canon::Tool { tool, .. } = e.cmd {
                     rep.tool(tool);
                 }
+                if let Canon::Message(text) = &e.cmd {
+                    rep.message(e.src.line, text);
+                    if let Some(l) = log.as_mut() {
+                        if let Err(err) = writeln!(l, "{text}") {
+                            return usage_error(format!("log: {err}"));
+                        }
+                    }
+                }
                 let feed = match &e.cmd {
                     Canon::Feed { feed, m } => {
                         Some(planner.feed_mm_min(*feed, kerf_motion::geom::line_len(&from, &m.to)))
@@ -351,6 +373,11 @@ fn run(
     if let Some((_, mut w, _)) = sampler {
         if let Err(e) = w.flush() {
             return usage_error(format!("sample: {e}"));
+        }
+    }
+    if let Some(l) = log.as_mut() {
+        if let Err(e) = l.flush() {
+            return usage_error(format!("log: {e}"));
         }
     }
     if let Some(a) = &alarm {

@@ -14,6 +14,18 @@ pub struct Summary {
     motions: u64,
     bbox: Option<(Pos, Pos)>,
     tools: Vec<u32>,
+    messages: Vec<MessageOut>,
+}
+
+/// Most operator messages kept in a report.
+const MAX_MESSAGES: usize = 10_000;
+
+/// One operator message (`Canon::Message`: #3006, Hurco probe records,
+/// thread start angles) with its source line.
+#[derive(Clone, Serialize)]
+pub struct MessageOut {
+    line: u32,
+    text: String,
 }
 
 #[derive(Serialize)]
@@ -58,6 +70,7 @@ pub struct Report {
     #[serde(rename = "final")]
     final_: Final,
     tools: Vec<u32>,
+    messages: Vec<MessageOut>,
     cycle_time_s: f64,
     time_s: TimeOut,
 }
@@ -78,6 +91,7 @@ impl Summary {
             motions: 0,
             bbox: None,
             tools: Vec::new(),
+            messages: Vec::new(),
         }
     }
 
@@ -114,6 +128,16 @@ impl Summary {
                 b.0[i] = b.0[i].min(*v);
                 b.1[i] = b.1[i].max(*v);
             }
+        }
+    }
+
+    /// Records an operator message (the first 10,000).
+    pub fn message(&mut self, line: u32, text: &str) {
+        if self.messages.len() < MAX_MESSAGES {
+            self.messages.push(MessageOut {
+                line,
+                text: text.to_string(),
+            });
         }
     }
 
@@ -159,6 +183,7 @@ impl Summary {
                 machine: self.map(&it.machine_position()),
             },
             tools: self.tools.clone(),
+            messages: self.messages.clone(),
             cycle_time_s: r6(est.now()),
             time_s: TimeOut {
                 rapid: r6(est.time.rapid),

@@ -37,6 +37,9 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
                     s.block_skip |= 1 << n;
                 }
             }
+            "immediate_offsets" | "tools.immediate_offsets" => {
+                profile.tools.immediate_offsets = on_off(k, v)?
+            }
             "optional_stop" if v.eq_ignore_ascii_case("once") => {
                 s.optional_stop = true;
                 s.optional_stop_once = true;
@@ -75,7 +78,11 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
                 || k.starts_with("probe_")
                 || matches!(
                     k,
-                    "arc_tolerance_mm" | "max_jumps" | "max_repeat_blocks" | "peck_clearance_mm"
+                    "arc_tolerance_mm"
+                        | "max_jumps"
+                        | "max_repeat_blocks"
+                        | "peck_clearance_mm"
+                        | "optional_format"
                 ) =>
             {
                 let val: f64 = v
@@ -240,6 +247,10 @@ mod tests {
         assert_eq!(s.clock, 36_930);
         assert_eq!(p.params.get("probe_feed"), Some(&250.0));
         assert!(parse(&["probe.y=1".into()], &mut p).is_err());
+        // Table 16 activation as a switch.
+        assert!(p.tools.immediate_offsets);
+        parse(&["immediate_offsets=off".into()], &mut p).unwrap();
+        assert!(!p.tools.immediate_offsets);
         assert!(parse(&["probe.time=25:00:00".into()], &mut p).is_err());
     }
 

@@ -325,3 +325,44 @@ fn inverse_time_feed_is_reported_in_mm_per_min() {
     assert_eq!(recs[1]["kind"], "feed");
     assert_eq!(recs[1]["feed"], 101.6);
 }
+
+#[test]
+fn message_log_and_report_messages() {
+    // Hurco G38 S0 against a surface at Z7.55 (expected 7.6): the recorded
+    // datum line in 002's format goes to --log and to the report.
+    let p = tmp(
+        "probe.nc",
+        "G20\nG0 X10 Z10\nG38 S0 Z7.6 A.5 T.125 V20 F10\nM30\n",
+    );
+    let log = p.with_extension("log");
+    let rep = p.with_extension("json");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .args([
+            "--machine",
+            "hurco-lathe",
+            "--set",
+            "probe.z=7.55",
+            "--set",
+            "probe.time=08:30:05",
+            "--log",
+        ])
+        .arg(&log)
+        .arg("--report")
+        .arg(&rep)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // -Z offset = 7.6 - 7.55 = .05; at X10 (diameter) Z7.55.
+    let line = "08:30:05 Probe Datum: Probe #-1; -Z Offset 0.0500 at X10.0000, Z7.5500";
+    assert_eq!(std::fs::read_to_string(&log).unwrap(), format!("{line}\n"));
+    let r: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
+    assert_eq!(r["messages"][0]["line"], 3);
+    assert_eq!(r["messages"][0]["text"], line);
+}

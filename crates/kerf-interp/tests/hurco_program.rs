@@ -170,6 +170,32 @@ fn stops_turn_the_spindle_off_and_m01_once() {
 }
 
 #[test]
+fn ten_codes_per_block_and_continuation() {
+    // 002: 0 to 10 G codes and 0 to 10 M codes per block.
+    let r = run_on(
+        "hurco-lathe",
+        "G90 G40 G94 G97 G98 G80 G21 G08 G01 G09 X10 F100\nM100 M101 M102 M103 M104 M105 M106 M107 M108 M109\nM30\n",
+    );
+    ok(&r);
+    let r = run_on(
+        "hurco-lathe",
+        "G90 G40 G94 G97 G98 G80 G21 G08 G01 G09 G90 X10\n",
+    );
+    // The 11th G code: column 4 * 10 + 1.
+    assert_eq!(alarm(&r), ("HU-014", 1, 41));
+    let r = run_on(
+        "hurco-lathe",
+        "M100 M101 M102 M103 M104 M105 M106 M107 M108 M109 M110\n",
+    );
+    // The 11th M code: column 5 * 10 + 1.
+    assert_eq!(alarm(&r), ("HU-016", 1, 51));
+    // A \ at the end of a line continues the block: one feed to (5, -5).
+    let r = run_on("hurco-lathe", "G21 G07 G01 X5 \\\nZ-5 F100\nM30\n");
+    ok(&r);
+    assert_eq!(moves(&r), vec![("feed", 5.0, 0.0, -5.0)]);
+}
+
+#[test]
 fn loops_repeat_a_section() {
     // (LOOP 3) ... (END LOOP) around an incremental move: 3 x -1 mm;
     // nested (REPEAT 2) inside: 3 x 2 = 6 feeds of -0.5.
@@ -220,6 +246,16 @@ fn number_formats_tables_2_and_3() {
         let col = last.find(at).unwrap() as u32 + 1;
         assert_eq!(alarm(&r), ("HU-014", line, col), "{text}");
     }
+    // The optional formats (one place smaller): X84.6 in is out, 84.5 in.
+    let r = run_with_param("hurco-lathe", "optional_format", 1.0, "G20 G01 X84.6 F1\n");
+    assert_eq!(alarm(&r), ("HU-014", 1, 9));
+    let r = run_with_param(
+        "hurco-lathe",
+        "optional_format",
+        1.0,
+        "G20 G07 G01 X8.45 F1\nM30\n",
+    );
+    ok(&r);
     // In range: X845 inch; T 9 digits (tool 0 offset 0 is fine: T000000000).
     let r = run_on("hurco-lathe", "G20 G07 G53 X0\nT000000000\nM30\n");
     ok(&r);

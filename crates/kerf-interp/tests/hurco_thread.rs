@@ -347,6 +347,30 @@ fn face_thread() {
 }
 
 #[test]
+fn face_thread_multi_letter_names() {
+    // Face1 = M1, ZEnd = Z (final depth), depth = J, XStart = I, XEnd = X,
+    // pitch = F, dStart = D, XClr = U, ZClr = W, angSt = Q- (start angle).
+    let single = run_on(
+        "hurco-lathe",
+        &format!("{HEAD}G0 X3 Z1\nG78 M1 Z-.1 J.1 I2 X.5 F.1 D.05 U.2 W.3 Q-90\nM30\n"),
+    );
+    let long = run_on(
+        "hurco-lathe",
+        &format!(
+            "{HEAD}G0 X3 Z1\nG78 Face1 ZEnd-.1 depth.1 XStart2 XEnd.5 pitch.1 dStart.05 \
+             XClr.2 ZClr.3 angSt90\nM30\n"
+        ),
+    );
+    ok(&single);
+    ok(&long);
+    assert_eq!(path(&single), path(&long));
+    assert_eq!(single.events, long.events);
+    // U .2 is the X clearance before the start (2.2), W .3 the Z
+    // clearance (Z .3): the start point.
+    assert_eq!(path(&single)[1], ("rapid", 2.2, 0.3));
+}
+
+#[test]
 fn g78_alarms() {
     // (block, alarm, the text the alarm points at).
     let cases: &[(&str, &str, &str)] = &[
@@ -367,6 +391,8 @@ fn g78_alarms() {
         ("G78 X1 J.1 K2 Z1 F.1 D.05 B50", "HU-014", "B50"),
         // X beyond Table 2 (845 in).
         ("G78 X900 J.1 K2 Z1 F.1 D.05", "HU-014", "X900"),
+        // A face thread from X2 to X-.5 crosses the centre line (at X).
+        ("G78 M1 Z-.1 J.1 I2 X-.5 F.1 D.05", "HU-060", "X-.5"),
         // Absurdly many passes: alarm before anything is allocated.
         ("G78 X1 J1 K2 Z1 F.1 D.0000001", "HU-014", "D.0000001"),
         ("G78 X1 J.1 K2 Z1 F.1 D.0001 Q360", "HU-014", "D.0001"),

@@ -51,19 +51,15 @@ impl Interp {
     }
 
     pub(super) fn check_range_hurco(&self, l: u8, w: WVal) -> R<()> {
+        // Table 2: the optional formats (profile `optional_format = 1`)
+        // move the decimal point one place left.
+        let scale = self.hurco_format_scale();
         let limit = match l {
-            b'X' | b'Z' | b'I' | b'K' | b'R' | b'U' | b'W' => {
+            b'X' | b'Z' | b'I' | b'K' | b'R' | b'U' | b'W' | b'F' => {
                 if self.st.metric {
-                    21463.0
+                    21463.0 * scale
                 } else {
-                    845.0
-                }
-            }
-            b'F' => {
-                if self.st.metric {
-                    21463.0
-                } else {
-                    845.0
+                    845.0 * scale
                 }
             }
             b'E' => 9999.0,
@@ -84,6 +80,27 @@ impl Interp {
             ));
         }
         Ok(())
+    }
+
+    /// 1, or 0.1 with 002 Table 2's optional formats (profile
+    /// `optional_format = 1`).
+    pub(super) fn hurco_format_scale(&self) -> f64 {
+        if self.profile.param("optional_format", 0.0) != 0.0 {
+            0.1
+        } else {
+            1.0
+        }
+    }
+
+    /// Table 2's thread lead range in mm/rev (G33 K/I, G78 F).
+    pub(super) fn hurco_lead_range(&self) -> (f64, f64) {
+        let optional = self.hurco_format_scale() < 1.0;
+        match (self.st.metric, optional) {
+            (true, false) => (0.00001, 254.0),
+            (true, true) => (0.000001, 24.0),
+            (false, false) => (0.000001 * 25.4, 10.0 * 25.4),
+            (false, true) => (0.0000001 * 25.4, 1.0 * 25.4),
+        }
     }
 
     // ---- F S T ---------------------------------------------------------------

@@ -143,21 +143,30 @@ impl Interp {
         Ok(())
     }
 
-    /// Table 16 in a move's end point: the base of incremental words is
-    /// the program position before the offset change; with immediate
-    /// activation the axes not programmed go to that position relative to
-    /// the new offsets too (deferred: they stay where they are).
-    pub(super) fn hurco_activation(&self, t: &mut Pos, base: &mut Pos, programmed: &[bool; NAXES]) {
+    /// Table 16, the base of a move's incremental words: after a T/E code
+    /// and before the next move, the program position before the change.
+    pub(super) fn hurco_base(&self, base: &mut Pos) {
+        if let Some(p) = self.hurco.pending {
+            for i in 0..NAXES {
+                if self.has_axis[i] {
+                    base[i] = p[i];
+                }
+            }
+        }
+    }
+
+    /// Table 16, immediate activation: the axes a move does not program go
+    /// to their program position before the change, relative to the new
+    /// offsets (deferred: they stay where they are).
+    pub(super) fn hurco_immediate(&self, t: &mut Pos, programmed: &[bool; NAXES]) {
         let Some(p) = self.hurco.pending else {
             return;
         };
-        let immediate = self.profile.tools.immediate_offsets;
+        if !self.profile.tools.immediate_offsets {
+            return;
+        }
         for i in 0..NAXES {
-            if !self.has_axis[i] {
-                continue;
-            }
-            base[i] = p[i];
-            if !programmed[i] && immediate {
+            if self.has_axis[i] && !programmed[i] {
                 t[i] = p[i];
             }
         }
@@ -256,12 +265,9 @@ impl Interp {
                     ),
                 ));
             }
-            let (lo, hi) = if self.st.metric {
-                (0.00001, 254.0)
-            } else {
-                (0.000001, 10.0)
-            };
-            if w.v < lo || w.v > hi {
+            let (lo, hi) = self.hurco_lead_range();
+            let (lo, hi) = (lo / self.unit(), hi / self.unit());
+            if w.v < lo * (1.0 - 1e-9) || w.v > hi * (1.0 + 1e-9) {
                 return Err(self.alarm(
                     AlarmKind::OutOfRange,
                     w.at,

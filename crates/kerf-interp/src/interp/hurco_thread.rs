@@ -361,12 +361,8 @@ impl Interp {
         } else {
             fw.v * self.unit()
         };
-        let (lo, hi) = if self.st.metric {
-            (0.00001, 254.0)
-        } else {
-            (0.000001 * 25.4, 10.0 * 25.4)
-        };
-        if !(lo..=hi + 1e-9).contains(&lead) {
+        let (lo, hi) = self.hurco_lead_range();
+        if lead < lo * (1.0 - 1e-9) || lead > hi * (1.0 + 1e-9) {
             return Err(self.alarm(
                 AlarmKind::OutOfRange,
                 fw.at,
@@ -510,7 +506,19 @@ impl Interp {
                 "G78: the lead-in and lead-out lines overlap (thread too short for A and C)",
             ));
         }
-        if !face {
+        if face {
+            // The thread runs along X: its start (with the clearance) and
+            // end must stay on one side of the centre line.
+            let a0 = plan.a_start - s * clear_a;
+            let a3 = plan.a_end_major + s * clear_d * tan_c;
+            if a0 * a3 < 0.0 || a0 * plan.a_start < 0.0 {
+                return Err(self.alarm(
+                    AlarmKind::ThreadCycle,
+                    end_w.at,
+                    "G78: the face thread would take the X axis across the centre line",
+                ));
+            }
+        } else {
             let clear = plan.d_at(-clear_d, plan.a_start - s * clear_a);
             let clear_end = plan.d_at(-clear_d, a_out + s * (clear_d + total) * tan_c);
             if clear * out < 0.0 || clear_end * out < 0.0 || plan.d_at(total, a_out) * out < 0.0 {

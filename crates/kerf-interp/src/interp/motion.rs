@@ -23,10 +23,10 @@ impl Interp {
         let mut t = cur;
         let mut any = false;
         let mut programmed = [false; NAXES];
-        if self.dialect.id == DialectId::Hurco {
+        let hurco = self.dialect.id == DialectId::Hurco;
+        if hurco {
             // Table 16: after a T/E code, before the next move.
-            self.hurco_activation(&mut t, &mut cur, &programmed);
-            t = self.prog_pos();
+            self.hurco_base(&mut cur);
         }
         for ax in Axis::ALL {
             let l = ax_letter(ax);
@@ -53,9 +53,8 @@ impl Interp {
                 any = true;
             }
         }
-        if any && self.dialect.id == DialectId::Hurco {
-            let mut base = cur;
-            self.hurco_activation(&mut t, &mut base, &programmed);
+        if any && hurco {
+            self.hurco_immediate(&mut t, &programmed);
         }
         if self.st.polar {
             self.polar_target(&cur, &mut t);

@@ -70,6 +70,13 @@ impl Interp {
         // Canned-cycle data goes with the cycle mode (G80 is the power-on
         // state); a move held for its ,C/,R is dropped.
         self.cyc.clear();
+        if self.dialect.id == DialectId::Hurco {
+            // The T offset stays active with its number; drill data and an
+            // offset change waiting for its move go.
+            st.tlo = old.tlo;
+            self.hurco.drill = Default::default();
+            self.hurco.pending = None;
+        }
         self.corner = None;
         self.comp = None;
         // Lathe single-cycle data and M76 go with the modes (the G70-G76
