@@ -447,13 +447,12 @@ impl Planner {
     }
 
     /// Speed and acceleration limits of a path along `g`, mm/s and mm/s².
-    fn limits(&self, g: &Geom, feed: f64) -> (f64, f64) {
+    fn limits(&self, g: &Geom, u: &Pos, feed: f64) -> (f64, f64) {
         let mut v = feed / 60.0;
         let mut a = f64::INFINITY;
         let d = &self.d;
         match g.radius() {
             None => {
-                let u = g.tangent(0.0);
                 for i in 0..NAXES {
                     let ui = u[i].abs();
                     if ui > 1e-12 {
@@ -612,9 +611,23 @@ impl Planner {
             } else {
                 self.feed_mm_min(feed, len)
             };
-            let slen = sub.len();
+            let slen = if pieces == 1 { len } else { sub.len() };
+            let (t_in, t_out) = match sub {
+                Geom::Line { p0, p1 } => {
+                    let mut u = [0.0; NAXES];
+                    if slen > 0.0 {
+                        let inv = 1.0 / slen;
+                        for i in 0..NAXES {
+                            u[i] = (p1[i] - p0[i]) * inv;
+                        }
+                    }
+                    (u, u)
+                }
+                Geom::Arc { .. } => (sub.tangent(0.0), sub.tangent(1.0)),
+            };
             let (vmax, acc) = self.limits(
                 &sub,
+                &t_in,
                 f.min(if thread {
                     f64::INFINITY
                 } else {
@@ -631,8 +644,8 @@ impl Planner {
                 jmax: 0.0,
                 vb: 0.0,
                 stop: stop && k + 1 == pieces,
-                t_in: sub.tangent(0.0),
-                t_out: sub.tangent(1.0),
+                t_in,
+                t_out,
             };
             self.push_seg(seg);
         }
