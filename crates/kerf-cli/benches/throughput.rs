@@ -28,6 +28,11 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use kerf_interp::{Interp, Profile, Settings, Step};
+use kerf_motion::Planner;
+
+#[path = "../src/dynamics.rs"]
+#[allow(dead_code)]
+mod dynamics;
 use kerf_lang::{parse_block, Block, LexOptions, LineSource, RawBlock};
 
 struct Sample {
@@ -123,6 +128,75 @@ fn run_reader(
     Sample {
         secs,
         blocks: it.blocks(),
+        note,
+    }
+}
+
+/// The planner alone: the interpreter's events are collected in chunks of
+/// 65 536 and only `Planner::push` (look-ahead, junctions, all limits) and
+/// the draining of its finished records are timed. Counts motion events.
+fn plan(path: &PathBuf, machine: &str) -> Sample {
+    let profile =
+        Profile::builtin(machine).unwrap_or_else(|| panic!("no built-in machine {machine}"));
+    let d = dynamics::dynamics_of(&profile, 100.0, 100.0, false).expect("profile dynamics");
+    let f = File::open(path).expect("open input");
+    let mut it = Interp::new(profile, Settings::default());
+    it.load_main(&path.display().to_string(), Box::new(f));
+    let mut pl = Planner::new(d, it.machine_position(), it.work_position()[0]);
+    let mut chunk = Vec::with_capacity(65_536);
+    let mut secs = 0.0;
+    let mut segments = 0u64;
+    let mut done = 0u64;
+    let mut note = String::new();
+    loop {
+        chunk.clear();
+        let mut end = false;
+        while chunk.len() < 65_536 {
+            match it.step() {
+                Step::Event(e) => chunk.push(e),
+                Step::End => {
+                    end = true;
+                    break;
+                }
+                Step::Alarm(a) => {
+                    note = format!("STOPPED ON ALARM: {a}");
+                    end = true;
+                    break;
+                }
+            }
+        }
+        let t = Instant::now();
+        for e in &chunk {
+            if e.motion().is_some() {
+                segments += 1;
+            }
+            pl.push(e);
+            while pl.next_done().is_some() {
+                done += 1;
+            }
+        }
+        if end {
+            pl.finish();
+            while pl.next_done().is_some() {
+                done += 1;
+            }
+        }
+        secs += t.elapsed().as_secs_f64();
+        if end {
+            break;
+        }
+    }
+    black_box(done);
+    println!(
+        "        plan: {segments} motions, cycle time {:.3} s (rapid {:.3}, cutting {:.3}, other {:.3})",
+        pl.now(),
+        pl.time.rapid,
+        pl.time.cutting,
+        pl.time.other + pl.time.tool_change + pl.time.dwell
+    );
+    Sample {
+        secs,
+        blocks: segments,
         note,
     }
 }
@@ -265,6 +339,13 @@ fn main() {
         report(
             "parse",
             (0..runs).map(|_| parse_only(&path)).collect(),
+            bytes,
+        );
+    }
+    if want("plan") {
+        report(
+            "plan",
+            (0..runs).map(|_| plan(&path, &machine)).collect(),
             bytes,
         );
     }

@@ -365,6 +365,12 @@ fn run(
     if let Some(err) = io_err {
         return usage_error(err);
     }
+    if planner.stalled > 0 {
+        eprintln!(
+            "kerf: warning: {} cutting moves with the spindle stopped (per-revolution feed or thread) timed as 0 s",
+            planner.stalled
+        );
+    }
     if let Some(w) = tp.as_mut() {
         if let Err(e) = w.finish() {
             return usage_error(format!("toolpath: {e}"));

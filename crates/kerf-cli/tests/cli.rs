@@ -366,3 +366,93 @@ fn message_log_and_report_messages() {
     assert_eq!(r["messages"][0]["line"], 3);
     assert_eq!(r["messages"][0]["text"], line);
 }
+
+#[test]
+fn sample_output_and_t_end() {
+    // hx-mc: X -20 mm at F1200 (20 mm/s) from the start position, then back.
+    let p = tmp("sample.nc", "G91 G01 X-20. F1200.\nX20.\nM30\n");
+    let csv = p.with_extension("csv");
+    let tp = p.with_extension("jsonl");
+    let rep = p.with_extension("json");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .args(["--sample", "0.001"])
+        .arg(&csv)
+        .arg("--toolpath")
+        .arg(&tp)
+        .arg("--report")
+        .arg(&rep)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next().unwrap(), "t,x,y,z,c");
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    // hx-mc starts at machine zero.
+    assert_eq!(rows[0], vec![0.0, 0.0, 0.0, 0.0, 0.0]);
+    let xmin = rows.iter().map(|r| r[1]).fold(f64::MAX, f64::min);
+    assert!((xmin + 20.0).abs() < 1e-9, "{xmin}");
+    // By hand (docs/motion.md): T = 2·3000/200000 = 0.03 s, A = 1000 mm/s².
+    // The reversal is an exact stop: the smoothing of the braking alone
+    // would miss the turning point by 2·A·T²/24 = 0.075 mm > 0.02 mm. Each
+    // move from rest to rest: 20/20 + 20/1000 = 1.02 s, plus the stop
+    // 2·T = 0.06 s: t_end 1.08 s and 2.16 s.
+    let r: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
+    let ct = r["cycle_time_s"].as_f64().unwrap();
+    assert!((ct - 2.16).abs() < 1e-6, "{ct}");
+    let last_t = rows.last().unwrap()[0];
+    assert!((last_t - 2.16).abs() < 1e-9, "{last_t}");
+    assert_eq!(rows.last().unwrap()[1], 0.0);
+    let recs: Vec<serde_json::Value> = std::fs::read_to_string(&tp)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(recs.len(), 2);
+    assert!((recs[0]["t_end"].as_f64().unwrap() - 1.08).abs() < 1e-6);
+    assert!((recs[1]["t_end"].as_f64().unwrap() - 2.16).abs() < 1e-6);
+}
+
+#[test]
+fn profile_without_a_limit_names_the_parameter() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../machines/hx-mc.toml"
+    ))
+    .unwrap();
+    let bad = text.replacen("jerk = 200000.0", "jerk = 0.0", 1);
+    assert_ne!(bad, text);
+    let prof = tmp("nojerk.toml", &bad);
+    let p = tmp("ok.nc", "G00 X0\nM30\n");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .arg("--machine")
+        .arg(&prof)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("motion.axes.x.jerk"), "{err}");
+    let missing = text.replacen("path_tolerance_mm = 0.02", "", 1);
+    let prof = tmp("notol.toml", &missing);
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .arg("--machine")
+        .arg(&prof)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("motion.path_tolerance_mm is missing"), "{err}");
+}

@@ -154,6 +154,10 @@ pub struct Planner {
     pub rapid_length: f64,
     /// Spindle speed limit used with constant surface speed, rpm.
     pub max_rpm: f64,
+    /// Cutting moves with no feed (per-revolution feed or thread with the
+    /// spindle stopped): the control would wait for ever; they are timed
+    /// as 0 s and counted here.
+    pub stalled: u64,
 }
 
 fn dot(a: &Pos, b: &Pos) -> f64 {
@@ -190,6 +194,7 @@ impl Planner {
             feed_length: 0.0,
             rapid_length: 0.0,
             max_rpm: f64::INFINITY,
+            stalled: 0,
             d,
         }
     }
@@ -447,13 +452,12 @@ impl Planner {
     }
 
     /// Speed and acceleration limits of a path along `g`, mm/s and mm/s².
-    fn limits(&self, g: &Geom, feed: f64) -> (f64, f64) {
+    fn limits(&self, g: &Geom, u: &Pos, feed: f64) -> (f64, f64) {
         let mut v = feed / 60.0;
         let mut a = f64::INFINITY;
         let d = &self.d;
         match g.radius() {
             None => {
-                let u = g.tangent(0.0);
                 for i in 0..NAXES {
                     let ui = u[i].abs();
                     if ui > 1e-12 {
@@ -521,9 +525,11 @@ impl Planner {
             }
         }
         let c = (dot(u1, u2) / (n1 * n2)).clamp(-1.0, 1.0);
-        let s = (1.0 - c * c).sqrt();
+        // Distance from the corner to the rounded path per unit of the
+        // kernel's offset: |u2 − u1| = 2·sin(θ/2).
+        let s = (2.0 * (1.0 - c)).max(0.0).sqrt();
         // Corner rounding of the smoothing kernel: the first and second
-        // moments of its positive half, times the speed and half the
+        // moments of its positive half, times the speed and the
         // acceleration on either side.
         let (m1, m2) = if self.stages == 1 {
             (t / 8.0, t * t / 48.0)
@@ -612,9 +618,37 @@ impl Planner {
             } else {
                 self.feed_mm_min(feed, len)
             };
-            let slen = sub.len();
+            let slen = if pieces == 1 { len } else { sub.len() };
+            if f.is_nan() || f <= 0.0 {
+                // Per-revolution feed or thread with the spindle stopped:
+                // the control would wait for ever; counted and timed as 0.
+                self.stalled += 1;
+                self.pos = g.end();
+                if k + 1 == pieces {
+                    self.flush();
+                    self.done.push_back(Done {
+                        id,
+                        t_end: self.now,
+                    });
+                }
+                continue;
+            }
+            let (t_in, t_out) = match sub {
+                Geom::Line { p0, p1 } => {
+                    let mut u = [0.0; NAXES];
+                    if slen > 0.0 {
+                        let inv = 1.0 / slen;
+                        for i in 0..NAXES {
+                            u[i] = (p1[i] - p0[i]) * inv;
+                        }
+                    }
+                    (u, u)
+                }
+                Geom::Arc { .. } => (sub.tangent(0.0), sub.tangent(1.0)),
+            };
             let (vmax, acc) = self.limits(
                 &sub,
+                &t_in,
                 f.min(if thread {
                     f64::INFINITY
                 } else {
@@ -631,8 +665,8 @@ impl Planner {
                 jmax: 0.0,
                 vb: 0.0,
                 stop: stop && k + 1 == pieces,
-                t_in: sub.tangent(0.0),
-                t_out: sub.tangent(1.0),
+                t_in,
+                t_out,
             };
             self.push_seg(seg);
         }
@@ -742,5 +776,194 @@ impl Planner {
         if s.last {
             self.done.push_back(Done { id: s.id, t_end });
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kerf_canon::{Motion, SrcRef};
+
+    fn ev(cmd: Canon) -> Event {
+        Event {
+            src: SrcRef::default(),
+            tool: 0,
+            cmd,
+            prog: None,
+        }
+    }
+
+    fn feed_to(x: f64, y: f64) -> Event {
+        let p = [x, y, 0.0, 0.0, 0.0, 0.0];
+        ev(Canon::Feed {
+            m: Motion { to: p, mto: p },
+            feed: Feed::PerMin(1200.0),
+        })
+    }
+
+    fn dynm() -> Dynamics {
+        let mut d = Dynamics::uniform(
+            [true, true, true, false, false, false],
+            24000.0,
+            2000.0,
+            1e5,
+            10000.0,
+        );
+        d.lookahead = 8;
+        d.lookahead_high_speed = 100;
+        d
+    }
+
+    /// A gentle zig-zag (±0.5°) that never needs a stop.
+    fn zigzag(pl: &mut Planner, n: usize) {
+        for k in 1..=n {
+            let y = if k % 2 == 0 { 0.0 } else { 0.05 };
+            pl.push(&feed_to(k as f64 * 5.0, y));
+        }
+    }
+
+    #[test]
+    fn window_bounds_the_queue_and_g10_3_widens_it() {
+        let mut pl = Planner::new(dynm(), [0.0; NAXES], 0.0);
+        let mut most = 0;
+        for k in 1..=200 {
+            pl.push(&feed_to(
+                k as f64 * 5.0,
+                if k % 2 == 0 { 0.0 } else { 0.05 },
+            ));
+            most = most.max(pl.queued());
+        }
+        assert_eq!(most, 8);
+        pl.push(&ev(Canon::Mode(ModeChange::HighSpeed(true))));
+        for k in 201..=400 {
+            pl.push(&feed_to(
+                k as f64 * 5.0,
+                if k % 2 == 0 { 0.0 } else { 0.05 },
+            ));
+            most = most.max(pl.queued());
+        }
+        assert_eq!(most, 100);
+        pl.push(&ev(Canon::Mode(ModeChange::HighSpeed(false))));
+        assert_eq!(pl.queued(), 8);
+        pl.finish();
+        assert_eq!(pl.queued(), 0);
+        let mut n = 0;
+        let mut last = 0.0;
+        while let Some(d) = pl.next_done() {
+            assert_eq!(d.id, n);
+            assert!(d.t_end >= last);
+            last = d.t_end;
+            n += 1;
+        }
+        assert_eq!(n, 400);
+        // The last record ends at rest: its t_end is the cycle time.
+        assert!((last - pl.now()).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_longer_window_is_never_slower() {
+        let mut short = dynm();
+        short.lookahead = 1;
+        let mut a = Planner::new(short, [0.0; NAXES], 0.0);
+        let mut b = Planner::new(dynm(), [0.0; NAXES], 0.0);
+        zigzag(&mut a, 100);
+        zigzag(&mut b, 100);
+        a.finish();
+        b.finish();
+        assert!(b.now() <= a.now() + 1e-9, "{} vs {}", b.now(), a.now());
+        // 500 mm at 20 mm/s is 25 s; both add only ramps and one stop.
+        assert!(b.now() > 25.0 && b.now() < 25.2, "{}", b.now());
+    }
+
+    #[test]
+    fn degenerate_input_takes_no_time_and_does_not_hang() {
+        let mut pl = Planner::new(dynm(), [0.0; NAXES], 0.0);
+        for _ in 0..1000 {
+            pl.push(&feed_to(0.0, 0.0));
+        }
+        pl.push(&ev(Canon::Dwell {
+            seconds: 0.0,
+            revolutions: 5.0,
+        }));
+        pl.push(&ev(Canon::Thread {
+            m: Motion {
+                to: [0.0, 0.0, -5.0, 0.0, 0.0, 0.0],
+                mto: [0.0, 0.0, -5.0, 0.0, 0.0, 0.0],
+            },
+            lead: 1.0,
+        }));
+        pl.finish();
+        assert_eq!(pl.now(), 0.0);
+        assert_eq!(pl.stalled, 1);
+        let mut n = 0;
+        while pl.next_done().is_some() {
+            n += 1;
+        }
+        assert_eq!(n, 1002);
+    }
+
+    #[test]
+    fn validation_names_the_parameter() {
+        let mut d = dynm();
+        d.jerk[1] = 0.0;
+        let e = d.validate().unwrap_err();
+        assert!(e.contains("motion.axes.y.jerk"), "{e}");
+        let mut d = dynm();
+        d.path_tolerance = -1.0;
+        assert!(d
+            .validate()
+            .unwrap_err()
+            .contains("motion.path_tolerance_mm"));
+        let mut d = dynm();
+        d.rapid[0] = f64::NAN;
+        assert!(d.validate().unwrap_err().contains("axes.x.rapid"));
+        assert!(dynm().validate().is_ok());
+    }
+
+    #[test]
+    fn overrides_and_dry_run_change_the_feed() {
+        let mut d = dynm();
+        d.feed_override = 0.5;
+        let mut pl = Planner::new(d.clone(), [0.0; NAXES], 0.0);
+        assert_eq!(pl.feed_mm_min(Feed::PerMin(1200.0), 1.0), 600.0);
+        pl.push(&ev(Canon::Mode(ModeChange::TappingMode)));
+        assert_eq!(pl.feed_mm_min(Feed::PerMin(1200.0), 1.0), 1200.0);
+        d.dry_run = true;
+        d.dry_run_feed = 3000.0;
+        let pl = Planner::new(d, [0.0; NAXES], 0.0);
+        assert_eq!(pl.feed_mm_min(Feed::PerMin(1200.0), 1.0), 1500.0);
+    }
+
+    #[test]
+    fn breakdown_adds_up() {
+        let mut pl = Planner::new(dynm(), [0.0; NAXES], 0.0);
+        let p = [10.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        pl.push(&ev(Canon::Rapid {
+            m: Motion { to: p, mto: p },
+            linear: false,
+        }));
+        pl.push(&ev(Canon::Spindle {
+            dir: SpindleDir::Cw,
+            rpm: 1000.0,
+            css: None,
+        }));
+        pl.push(&ev(Canon::Tool {
+            tool: 1,
+            offset: 1,
+            change: true,
+        }));
+        pl.push(&ev(Canon::Dwell {
+            seconds: 1.5,
+            revolutions: 0.0,
+        }));
+        pl.push(&feed_to(20.0, 0.0));
+        pl.finish();
+        let b = pl.time;
+        assert_eq!(b.tool_change, 2.0);
+        assert_eq!(b.dwell, 1.5);
+        // 1000 rpm at 2000 rpm/s.
+        assert!((b.other - 0.5).abs() < 1e-12);
+        assert!((b.total() - pl.now()).abs() < 1e-12);
+        assert!(b.rapid > 0.0 && b.cutting > 0.0);
     }
 }
