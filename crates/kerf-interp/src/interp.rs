@@ -1117,6 +1117,7 @@ impl Interp {
         }
         let hx = d.id == DialectId::Hx;
         let was_cycle = hx && self.st.modal[cycles::CYCLE_GROUP] != 800;
+        let plane_before = self.st.plane;
         // Modal (and specific) G codes.
         for i in 0..self.words.ng {
             let (c, _) = self.words.g[i];
@@ -1133,7 +1134,7 @@ impl Interp {
         if let Some((c, _)) = motion {
             self.st.modal[1] = c;
         }
-        let cycle = hx && self.cycle_mode(was_cycle, motion)?;
+        let cycle = hx && self.cycle_mode(was_cycle, self.st.plane != plane_before, motion)?;
         let hurco_cycle = hurco && self.hurco_cycle_mode(motion)?;
         if let Some((c, at, face_m)) = hurco_macro {
             return self.hurco_macro_block(c, at, face_m);

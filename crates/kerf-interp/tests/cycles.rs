@@ -543,3 +543,26 @@ fn bad_cycle_input_alarms() {
     // A hole below the Z travel: overtravel, not a panic.
     assert_eq!(alarm(&run("G81 Z-300. R2. F100\n")), ("F_84100", 2));
 }
+
+#[test]
+fn plane_code_in_cycle_mode() {
+    // Naming the plane already in force (G17 in a G17 cycle) is no change:
+    // the hole is drilled (rapid to 10,0 at 100, R2, feed -3, back to 100).
+    let r = run("G98 G81 X5. Z-3. R2. F100\nG17 X10.\nG80\n");
+    assert_eq!(
+        t(&r),
+        [
+            "R 5 0 100",
+            "R 5 0 2",
+            "F 5 0 -3",
+            "R 5 0 100",
+            "R 10 0 100",
+            "R 10 0 2",
+            "F 10 0 -3",
+            "R 10 0 100"
+        ]
+    );
+    // A real change (G18) inside the mode is the alarm, at the G18 word.
+    let r = run("G98 G81 X5. Z-3. R2. F100\nG18 X10.\nG80\n");
+    assert_eq!(alarm(&r), ("KERF-0103", 3));
+}

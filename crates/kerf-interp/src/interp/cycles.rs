@@ -99,9 +99,15 @@ struct Hole {
 impl Interp {
     /// Block-level bookkeeping of the cycle mode, after the block's modal
     /// codes are set: a group-01 code cancels it, G80 clears the data, a
-    /// plane change inside the mode is an alarm. True if the block runs
-    /// in cycle mode.
-    pub(super) fn cycle_mode(&mut self, was_cycle: bool, motion: Option<(u16, u32)>) -> R<bool> {
+    /// plane change inside the mode is an alarm (a plane code naming the
+    /// plane already in force is not a change). True if the block runs in
+    /// cycle mode.
+    pub(super) fn cycle_mode(
+        &mut self,
+        was_cycle: bool,
+        plane_changed: bool,
+        motion: Option<(u16, u32)>,
+    ) -> R<bool> {
         let cyc_code = self.words.gs().iter().copied().find(|g| {
             self.gcode(g.0)
                 .is_some_and(|c| c.group as usize == CYCLE_GROUP)
@@ -126,7 +132,7 @@ impl Interp {
             }
             return Ok(false);
         }
-        if was_cycle {
+        if was_cycle && plane_changed {
             if let Some(&(c, at)) = self
                 .words
                 .gs()
