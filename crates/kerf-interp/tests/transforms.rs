@@ -486,3 +486,47 @@ fn polar_bolt_circle_example_with_g81() {
     // G28 from the power-on position (the reference position) makes no move.
     assert_eq!(m, want);
 }
+
+/// A bolt circle in polar coordinates under scaling and rotation, drilled
+/// with a G91 angle step repeated by K. By hand: radius 10 scaled ×2 about
+/// the origin = 20; program angles 0, 90, then 90 + 120 = 210 and
+/// 210 + 120 = 330 (each repeat turns by the angle again, as the repeated
+/// block would), plus the 30° rotation: 30°, 120°, 240°, 360° →
+/// (17.3205, 10), (-10, 17.3205), (-10, -17.3205), (20, 0). Z is scaled
+/// about the current Z50 (the omitted centre axis): R2 → 50 + 2·(2 − 50)
+/// = -46, Z-5 → 50 + 2·(-5 − 50) = -60.
+#[test]
+fn polar_bolt_circle_with_scaling_rotation_and_k() {
+    let r = run_on(
+        "hx-mc",
+        "G10 L2 P1 X-400. Y-300. Z-250.\n\
+         G54 G17 G90 G00 X0 Y0 Z50.\n\
+         G51 X0 Y0 P2000\n\
+         G68 X0 Y0 R30.\n\
+         G16\n\
+         G99 G81 X10. Y0 Z-5. R2. F100\n\
+         Y90.\n\
+         G91 Y120. K2\n\
+         G90 G80 G15 G69 G50\n\
+         M30\n",
+    );
+    ok(&r);
+    let holes: Vec<_> = moves(&r)
+        .into_iter()
+        .filter(|m| m.0 == "feed")
+        .map(|m| (m.1, m.2, m.3))
+        .collect();
+    let s = 17.320508;
+    let want = [(s, 10.0), (-10.0, s), (-10.0, -s), (20.0, 0.0)];
+    assert_eq!(holes.len(), 4, "{holes:?}");
+    for (h, w) in holes.iter().zip(want) {
+        assert!((h.0 - w.0).abs() < 1e-5 && (h.1 - w.1).abs() < 1e-5, "{holes:?}");
+        assert!((h.2 + 60.0).abs() < 1e-9, "{holes:?}");
+    }
+    // The return level of G99 is the scaled R.
+    let rapids_at_r = moves(&r)
+        .iter()
+        .filter(|m| m.0 == "rapid" && (m.3 + 46.0).abs() < 1e-9)
+        .count();
+    assert_eq!(rapids_at_r, 8);
+}

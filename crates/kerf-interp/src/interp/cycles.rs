@@ -266,12 +266,21 @@ impl Interp {
                 step[i] = t[i] - cur[i];
             }
         }
+        // G91 in polar mode (G16): each repeat turns by the angle again
+        // (and keeps the radius), as a repeated block would; elsewhere the
+        // Cartesian step is repeated.
+        let polar_step = !abs && self.st.polar;
         for k in 0..count {
+            let tk = if polar_step && k > 0 {
+                self.target()?.0
+            } else {
+                t
+            };
             let mut p = self.prog_pos();
             for i in 0..NAXES {
                 if i != n {
-                    p[i] = if abs {
-                        t[i]
+                    p[i] = if abs || polar_step {
+                        tk[i]
                     } else {
                         cur[i] + step[i] * f64::from(k + 1)
                     };
