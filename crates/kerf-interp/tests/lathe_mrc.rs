@@ -40,6 +40,18 @@ fn mv(k: &'static str, x: f64, z: f64, f: f64) -> (&'static str, f64, f64, f64) 
     (k, round(2.0 * x), round(z), f)
 }
 
+/// One G71 type I roughing level from the start point's Z2 with e = 0.5
+/// (radius values): rapid to the level, feed to `z`, escape 45° by e,
+/// rapid back to Z2 (001's G71 figure).
+fn g71_level(l: f64, z: f64, f: f64) -> [(&'static str, f64, f64, f64); 4] {
+    [
+        mv("R", l, 2.0, 0.0),
+        mv("F", l, z, f),
+        mv("R", l + 0.5, z + 0.5, 0.0),
+        mv("R", l + 0.5, 2.0, 0.0),
+    ]
+}
+
 /// The arc centres (X radius, Z) of the run's arcs.
 fn centres(r: &Run) -> Vec<(f64, f64)> {
     r.events
@@ -96,12 +108,7 @@ fn g71_type1_every_pass() {
         } else {
             -19.9
         };
-        want.extend([
-            mv("R", l, 2.0, 0.0),
-            mv("F", l, z, 0.25),
-            mv("R", l + 0.5, z + 0.5, 0.0),
-            mv("R", l + 0.5, 2.0, 0.0),
-        ]);
+        want.extend(g71_level(l, z, 0.25));
     }
     want.extend([
         mv("R", 15.2, 2.1, 0.0),
@@ -576,12 +583,7 @@ fn g71_type2_groove() {
     }
     main.push((20.0, -30.0));
     for (l, z) in main {
-        want.extend([
-            mv("R", l, 2.0, 0.0),
-            mv("F", l, z, 0.2),
-            mv("R", l + 0.5, z + 0.5, 0.0),
-            mv("R", l + 0.5, 2.0, 0.0),
-        ]);
+        want.extend(g71_level(l, z, 0.2));
     }
     // The groove.
     want.extend([mv("R", 21.5, 2.0, 0.0), mv("R", 21.5, -11.0, 0.0)]);
@@ -639,12 +641,7 @@ fn g71_type2_two_pockets_with_arc() {
     }
     main.push((20.0, -35.0));
     for (l, z) in main {
-        want.extend([
-            mv("R", l, 2.0, 0.0),
-            mv("F", l, z, 0.2),
-            mv("R", l + 0.5, z + 0.5, 0.0),
-            mv("R", l + 0.5, 2.0, 0.0),
-        ]);
+        want.extend(g71_level(l, z, 0.2));
     }
     let (s15, s7) = (15f64.sqrt(), 7f64.sqrt());
     // Arc pocket.
@@ -718,12 +715,7 @@ fn shape_with_direct_chamfer_and_corner_r() {
         } else {
             -15.0
         };
-        want.extend([
-            mv("R", l, 2.0, 0.0),
-            mv("F", l, z, 0.2),
-            mv("R", l + 0.5, z + 0.5, 0.0),
-            mv("R", l + 0.5, 2.0, 0.0),
-        ]);
+        want.extend(g71_level(l, z, 0.2));
     }
     let pass = [
         mv("R", 10.0, 2.0, 0.0),

@@ -520,7 +520,10 @@ fn polar_bolt_circle_with_scaling_rotation_and_k() {
     let want = [(s, 10.0), (-10.0, s), (-10.0, -s), (20.0, 0.0)];
     assert_eq!(holes.len(), 4, "{holes:?}");
     for (h, w) in holes.iter().zip(want) {
-        assert!((h.0 - w.0).abs() < 1e-5 && (h.1 - w.1).abs() < 1e-5, "{holes:?}");
+        assert!(
+            (h.0 - w.0).abs() < 1e-5 && (h.1 - w.1).abs() < 1e-5,
+            "{holes:?}"
+        );
         assert!((h.2 + 60.0).abs() < 1e-9, "{holes:?}");
     }
     // The return level of G99 is the scaled R.
