@@ -588,26 +588,117 @@ fn tip_directions_shift_the_control_point() {
     }
 }
 
+/// 000 §15.4.2 (N1-N8): rotation commanded and cancelled in offset mode.
+/// D01 = 100 here (the manual's value is not readable). G42 (right of
+/// travel), r = 100, type A start-up and cancel. N3 rotates by −30°
+/// about the current point (1000, 1000); c = cos 30° = √3/2, s = 1/2.
+/// Worked in the program frame relative to (1000, 1000), then rotated
+/// (u, v) → (u·c + v·s, −u·s + v·c) + (1000, 1000):
+/// - N2 start-up (0,0) → (1000,1000), the next block is N4: type A ends
+///   on the vector perpendicular to N4 at its start: N4 runs along
+///   (c, −s) in the work frame, its right normal is (−s, −c), so
+///   (1000 − 50, 1000 − 50√3) = (950, 913.397460);
+/// - N4 (program (0,0) → (2000,0) in the frame) and N5 (CCW semicircle
+///   about (2000,500), radius 500, starting at its bottom moving +u) are
+///   tangent: the offset line v = −100 meets the offset circle (radius
+///   500 + 100: right of a CCW arc is outside) at (2000, −100) →
+///   (2000c − 50, −1000 − 50√3) + (1000,1000) = (2682.050808, −86.602540);
+/// - N5 ends on its circle at the top (2000, 1100), tangent to N6 (−u):
+///   → (2000c + 550, −1000 + 1100c) + (1000,1000)
+///   = (3282.050808, 952.627944), about the rotated centre
+///   (2000c + 250, −1000 + 250√3) + (1000,1000) = (2982.050808, 433.012702);
+/// - N6 → N7 turns left (−u then −v) with the tool on the right: outer
+///   obtuse (90°): the offset lines v = 1100 and u = −100 meet at
+///   (−100, 1100) → (−50√3 + 550, 50 + 1100c) + (1000,1000)
+///   = (1463.397460, 2002.627944);
+/// - N8 cancels (G69 in the same block: the G40 line runs unrotated to
+///   (0,0)); type A: N7 ends on its perpendicular vector at (−100, 0) in
+///   the frame → (1000 − 50√3, 1000 + 50) = (913.397460, 1050), then the
+///   straight move to (0, 0).
 #[test]
-fn transform_changes_in_offset_mode_are_refused_for_now() {
-    // A held compensated move is mapped with the transform in force when
-    // it is emitted, so G68/G69/G51/G50 inside G41/G42 would misplace it
-    // (000 §15.4.2's program): KERF-0100 at the code, line 4 column 4.
-    let r = run_on(
-        "hx-mc",
-        "#2112 = 5.\nG90 G54 G00 X0 Y0 Z0\nG42 G01 X100. Y100. D1 F100.\nN3 G68 R-30.\n",
+fn manual_15_4_2_rotation_in_offset_mode() {
+    let prog = "N1 G92 X0 Y0 G69 G01\n\
+        N2 G42 G90 X1000. Y1000. F100 D01\n\
+        N3 G68 R-30.0\n\
+        N4 G91 X2000.0\n\
+        N5 G3 Y1000.0 J500.\n\
+        N6 G1 X-2000.\n\
+        N7 Y-1000.\n\
+        N8 G69 G40 G90 X0 Y0 M30\n";
+    let r = run_d("hx-mc", &[(1, 100.0)], &[], prog);
+    ok(&r);
+    let h = 50.0 * 3f64.sqrt();
+    let c = 3f64.sqrt() / 2.0;
+    let p = path(&r);
+    check_xy(
+        &p,
+        &[
+            ("feed", 950.0, 1000.0 - h),
+            ("feed", 1000.0 + 2000.0 * c - 50.0, -h),
+            ("arc", 2000.0 + 2000.0 * c + 550.0 - 1000.0, 1100.0 * c),
+            ("feed", 1550.0 - h, 1050.0 + 1100.0 * c),
+            ("feed", 1000.0 - h, 1050.0),
+            ("feed", 0.0, 0.0),
+        ],
     );
-    assert_eq!(alarm(&r), ("KERF-0100", 4, 4));
-    // Compensation started under scaling: refused at the G41 (column 5).
+    let (cx, cy, cw) = p[2].center.unwrap();
+    assert!(close(cx, 1000.0 + 2000.0 * c + 250.0) && close(cy, 250.0 * 3f64.sqrt()) && !cw);
+    // Attribution: the arc is N5 (line 5), the cancel move N8 (line 8).
+    assert_eq!((p[2].line, p[5].line), (5, 8));
+}
+
+/// Scaling before G41/G42 (000 §15.4.2 order): the path is scaled, the
+/// offset is not. The square of `square_outside_g42_and_inside_g41`
+/// programmed at half size under ×2 about (0,0) gives exactly that test's
+/// points for r = 4 (the offset lines 4 from the scaled sides).
+#[test]
+fn scaling_scales_the_path_not_the_offset() {
+    let prog = "G92 X-10. Y-10.\nG51 X0 Y0 P2000\nG90 G00 G42 X0. Y0. D1\nG01 X20. F500\nY15.\nX0.\nY0.\nG40 G00 X-5. Y-5.\nG50\nM30\n";
+    let r = run_d("hx-mc", &[(1, 4.0)], &[], prog);
+    ok(&r);
+    let want = [
+        ("rapid", 0.0, -4.0),
+        ("feed", 44.0, -4.0),
+        ("feed", 44.0, 34.0),
+        ("feed", -4.0, 34.0),
+        ("feed", -4.0, 0.0),
+        ("rapid", -10.0, -10.0),
+    ];
+    check_xy(&path(&r), &want);
+    // Mirror image of X (I-1000, 000 §15.3) reverses the side: the
+    // contour (0,0) → (−40,0) → (−40,30) → (0,30) → (0,0) is clockwise,
+    // G41 puts the tool outside it; mirrored it is the CCW square above
+    // with the tool outside, i.e. the same points as G42 there.
+    let prog = "G92 X-10. Y-10.\nG51 X0 Y0 I-1000 J1000\nG90 G00 G41 X0. Y0. D1\nG01 X-40. F500\nY30.\nX0.\nY0.\nG40 G00 X10. Y-10.\nG50\nM30\n";
+    let r = run_d("hx-mc", &[(1, 4.0)], &[], prog);
+    ok(&r);
+    check_xy(&path(&r), &want);
+}
+
+#[test]
+fn transform_alarms_in_offset_mode() {
+    // Scaling commanded inside G41/G42 breaks 000 §15.4.2's order (G51
+    // before G41, G50 after G40): F_82210 at the G51 (line 4, column 1).
     let r = run_on(
         "hx-mc",
-        "#2112 = 5.\nG51 X0 Y0 P2000\nG01 G41 X10. Y0 D1 F100.\n",
+        "#2112 = 5.\nG90 G54 G00 X0 Y0 Z0\nG42 G01 X100. Y100. D1 F100.\nG51 X0 Y0 P2000\n",
     );
-    assert_eq!(alarm(&r), ("KERF-0100", 3, 5));
-    // Rotation in force before G41 and cancelled after G40 is fine.
+    assert_eq!(alarm(&r), ("F_82210", 4, 1));
     let r = run_on(
         "hx-mc",
-        "#2112 = 5.\nG90 G54 G00 X0 Y0 Z0\nG68 X0 Y0 R90.\nG41 G01 X10. D1 F100.\nG40 X0\nG69\nM30\n",
+        "#2112 = 5.\nG51 X0 Y0 P2000\nG01 G41 X10. Y0 D1 F100.\nX20.\nG50\n",
+    );
+    assert_eq!(alarm(&r), ("F_82210", 5, 1));
+    // G50 with the G40 in the same block is in order.
+    let r = run_on(
+        "hx-mc",
+        "#2112 = 5.\nG51 X0 Y0 P2000\nG01 G41 X10. Y0 D1 F100.\nX20.\nG50 G40 X30.\nM30\n",
     );
     assert!(r.alarm.is_none(), "{:?}", r.alarm);
+    // G28 in rotation stays refused (000 §15.4.1) also in offset mode.
+    let r = run_on(
+        "hx-mc",
+        "#2112 = 5.\nG68 X0 Y0 R90.\nG41 G01 X10. D1 F100.\nG28 X0\n",
+    );
+    assert_eq!(alarm(&r), ("F_82210", 4, 1));
 }

@@ -84,6 +84,13 @@ pub(crate) struct CompState {
     spare: Vec<Event>,
 }
 
+impl CompState {
+    /// G41/G42 in force.
+    pub(crate) fn on(&self) -> bool {
+        self.on
+    }
+}
+
 fn padd(a: P, b: P) -> P {
     (a.0 + b.0, a.1 + b.1)
 }
@@ -193,19 +200,6 @@ impl Interp {
                 }
                 return Ok(false);
             }
-            if self.st.xf.scale.is_some() {
-                let at = self
-                    .words
-                    .gs()
-                    .iter()
-                    .find(|g| matches!(g.0, 410 | 420))
-                    .map_or(0, |g| g.1);
-                return Err(self.alarm(
-                    AlarmKind::NotYetSupported,
-                    at,
-                    "cutter compensation under scaling (G51) is not yet supported: the offset would be scaled",
-                ));
-            }
             self.comp = Some(Box::new(self.comp_new()));
         }
         let plane = self.st.plane;
@@ -260,7 +254,7 @@ impl Interp {
                 }
             }
             _ => {
-                let dir = ijk(self);
+                let dir = ijk(self).map(|d| self.xf_dir(d));
                 let c = self.comp.as_deref_mut().expect("set");
                 if c.on {
                     c.on = false;
@@ -285,7 +279,8 @@ impl Interp {
                     any.then(|| (tw[a1] - cur[a1], tw[a2] - cur[a2]))
                         .filter(|d| d.0.hypot(d.1) > 1e-9)
                 }
-            };
+            }
+            .map(|d| self.xf_dir(d));
             self.comp.as_deref_mut().expect("set").g39 = Some(dir);
             return Ok(true);
         }
@@ -314,18 +309,24 @@ impl Interp {
             c.startup = c.on;
             return self.plain_motion(mode, tw, any, at);
         }
-        let (s, e) = ((cur[a1], cur[a2]), (tw[a1], tw[a2]));
+        // The compensation works on the path after scaling, mirror and
+        // rotation (000 §15.4.2): the block's points are mapped with the
+        // block's own transform here, so a held move keeps it whatever the
+        // next block changes.
+        let (cur_t, tw_t) = (self.xf_point(&cur), self.xf_point(&tw));
+        let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
         let seg = if arc {
             let ijk = [b'I', b'J', b'K'].iter().any(|&l| self.words.has(l));
             if comp::dist(s, e) < comp::EPS && !ijk {
                 None
             } else {
-                self.arc_center(tw, any, mode == 30, at)?.map(|c| Seg::Arc {
-                    a: s,
-                    b: e,
-                    c,
-                    ccw: mode == 30,
-                })
+                match self.arc_center(tw, any, mode == 30, at)? {
+                    None => None,
+                    Some(c) => {
+                        let (_, _, c, ccw) = self.transform_arc(cur, tw, c, mode == 30, at)?;
+                        Some(Seg::Arc { a: s, b: e, c, ccw })
+                    }
+                }
             }
         } else {
             (comp::dist(s, e) >= comp::EPS).then_some(Seg::Line { a: s, b: e })
@@ -345,6 +346,10 @@ impl Interp {
         c.moved = true;
         c.idle = 0;
         let (on, r, tip, vec, startup, type_b) = (c.on, c.r, c.tip, c.vec, c.startup, c.type_b);
+        // A mirror image on one axis of the plane reverses the path's
+        // turning sense: the offset goes to the other side of travel
+        // (000 §15.3); its value is not scaled.
+        let r = if self.st.xf.mirrors(plane) { -r } else { r };
         let held = c.held.take();
         let g39 = c.g39.take().or(c.circular.then_some(None));
         let ij = c.ij.take();
@@ -378,7 +383,7 @@ impl Interp {
                 padd(s, vec)
             };
             let prog = self.st.pos;
-            self.st.pos = self.to_machine(&self.plane_pt(cur, base));
+            self.st.pos = self.offset_to_machine(&self.plane_pt(cur_t, base));
             let r = self.line_to(tw, speed, at);
             if r.is_err() {
                 self.st.pos = prog;
@@ -427,8 +432,8 @@ impl Interp {
         let events = std::mem::take(&mut c.spare);
         c.held = Some(Held {
             seg,
-            start: cur,
-            end: tw,
+            start: cur_t,
+            end: tw_t,
             cstart,
             speed,
             r,
@@ -451,13 +456,22 @@ impl Interp {
             return self.plain_motion(mode, tw, any, at);
         }
         let vec = c.vec;
-        let cur = self.prog_pos();
+        let cur_t = self.xf_point(&self.prog_pos());
+        let tw_t = self.xf_point(&tw);
         let (a1, a2, _) = self.st.plane.axes();
-        let p = padd((cur[a1], cur[a2]), vec);
+        let p = padd((cur_t[a1], cur_t[a2]), vec);
         let prog = self.st.pos;
-        self.st.pos = self.to_machine(&self.plane_pt(cur, p));
+        self.st.pos = self.offset_to_machine(&self.plane_pt(cur_t, p));
         self.comp_prog = Some(self.work_of(&self.to_machine(&tw)));
-        let r = self.plain_motion(mode, self.plane_pt(tw, p), any, at);
+        // The vector is in the transformed plane: the target back in
+        // program coordinates for the move.
+        let target = self.plane_pt(tw_t, p);
+        let target = if self.st.xf.active() {
+            self.st.xf.inverse(&target)
+        } else {
+            target
+        };
+        let r = self.plain_motion(mode, target, any, at);
         self.comp_prog = None;
         self.st.pos = if r.is_ok() {
             self.to_machine(&tw)
@@ -537,10 +551,15 @@ impl Interp {
     /// at the held block's motion word.
     fn comp_flush(&mut self, mut h: Held, j: &Join) -> R<()> {
         let prog = self.st.pos;
+        // The held points are already transformed (scaling, mirror,
+        // rotation of their own block): emitted through the offset stack
+        // only.
+        let xf = std::mem::take(&mut self.st.xf);
         let base = self.prog_pos();
         let here = std::mem::replace(&mut self.cur, h.src);
         let mut events = std::mem::take(&mut h.events);
         let r = self.comp_emit(&h, j, base, &mut events);
+        self.st.xf = xf;
         self.comp_prog = None;
         self.cur = here;
         self.st.pos = prog;
@@ -625,6 +644,29 @@ impl Interp {
             prev = p.end();
         }
         Ok(())
+    }
+
+    /// A program point mapped by the transforms in force (scaling,
+    /// mirror, rotation): the coordinates the compensation works in.
+    fn xf_point(&self, p: &Pos) -> Pos {
+        if self.st.xf.active() {
+            self.st.xf.forward(p)
+        } else {
+            *p
+        }
+    }
+
+    /// A direction in the plane (program coordinates) mapped by the
+    /// transforms in force.
+    fn xf_dir(&self, d: P) -> P {
+        if !self.st.xf.active() {
+            return d;
+        }
+        let o = [0.0; NAXES];
+        let q = self.plane_pt(o, d);
+        let (a1, a2, _) = self.st.plane.axes();
+        let (fo, fq) = (self.st.xf.forward(&o), self.st.xf.forward(&q));
+        (fq[a1] - fo[a1], fq[a2] - fo[a2])
     }
 
     /// `p` with its plane coordinates replaced by `uv`.
