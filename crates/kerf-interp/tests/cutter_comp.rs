@@ -702,3 +702,127 @@ fn transform_alarms_in_offset_mode() {
     );
     assert_eq!(alarm(&r), ("F_82210", 4, 1));
 }
+
+// ---- ,C / ,R in offset mode (000 §4.3) ----------------------------------------
+
+/// The chamfer is cut in the programmed contour, then compensated like any
+/// other path. Contour from (0,0): +X to (40,0) with ,C5, +Y to (40,30),
+/// −X to (0,30); G41 (inside this CCW contour), r = 2, type A.
+/// Programmed chamfer: (35,0) → (40,5), direction (1,1)/√2, left normal
+/// (−1,1)/√2, so its offset line is x − y = 35 − 2√2.
+/// - start-up (0,−10) → (0,0), then +X: a right turn with the tool on the
+///   left (outer), type A: perpendicular to the next block: (0, 2);
+/// - first side y = 2 meets the chamfer's offset line (left turn of 45°,
+///   inner): x = 37 − 2√2 = 34.171573;
+/// - the chamfer's offset line meets x = 38 (inner): y = 3 + 2√2;
+/// - x = 38 meets y = 28 (inner): (38, 28);
+/// - cancel G40 to (0,40): +Y after −X is a right turn, tool left: outer,
+///   type A: the −X side ends on its perpendicular (0, 28).
+#[test]
+fn chamfer_in_offset_mode() {
+    let prog = "G92 X0. Y-10.\nG90 G01 G41 X0. Y0. D1 F500\nX40. ,C5.\nY30.\nX0.\nG40 Y40.\nM30\n";
+    let r = run_d("hx-mc", &[(1, 2.0)], &[], prog);
+    ok(&r);
+    let q = 2.0 * 2f64.sqrt();
+    let p = path(&r);
+    check_xy(
+        &p,
+        &[
+            ("feed", 0.0, 2.0),
+            ("feed", 37.0 - q, 2.0),
+            ("feed", 38.0, 3.0 + q),
+            ("feed", 38.0, 28.0),
+            ("feed", 0.0, 28.0),
+            ("feed", 0.0, 40.0),
+        ],
+    );
+    // The chamfer belongs to its block (line 3), the side after it to
+    // line 4.
+    assert_eq!((p[2].line, p[3].line), (3, 4));
+}
+
+/// Corner R in offset mode: the programmed fillet ,R5 at (40,0) has its
+/// centre (35,5) and tangent points (35,0), (40,5) (CCW quarter). Same
+/// contour as `chamfer_in_offset_mode`, r = 2:
+/// - G41 (inside, the fillet centre's side): the fillet's offset circle
+///   has radius 5 − 2 = 3; y = 2 touches it at (35, 2), x = 38 at (38, 5);
+///   then (38, 28), (0, 28) as before;
+/// - G42 (outside): radius 5 + 2 = 7: (35, −2), arc to (42, 5); the side
+///   x = 42 meets y = 32 (left turn, tool right: outer obtuse) at
+///   (42, 32); the cancel (+Y after −X, right turn, tool right: inner)
+///   ends the top on its perpendicular (0, 32). Start-up: right turn with
+///   the tool on the right (inner): perpendicular (0, −2).
+#[test]
+fn corner_round_in_offset_mode() {
+    for (g, want) in [
+        (
+            41,
+            [
+                ("feed", 0.0, 2.0),
+                ("feed", 35.0, 2.0),
+                ("arc", 38.0, 5.0),
+                ("feed", 38.0, 28.0),
+                ("feed", 0.0, 28.0),
+                ("feed", 0.0, 40.0),
+            ],
+        ),
+        (
+            42,
+            [
+                ("feed", 0.0, -2.0),
+                ("feed", 35.0, -2.0),
+                ("arc", 42.0, 5.0),
+                ("feed", 42.0, 32.0),
+                ("feed", 0.0, 32.0),
+                ("feed", 0.0, 40.0),
+            ],
+        ),
+    ] {
+        let prog = format!(
+            "G92 X0. Y-10.\nG90 G01 G{g} X0. Y0. D1 F500\nX40. ,R5.\nY30.\nX0.\nG40 Y40.\nM30\n"
+        );
+        let r = run_d("hx-mc", &[(1, 2.0)], &[], &prog);
+        ok(&r);
+        let p = path(&r);
+        check_xy(&p, &want);
+        let (cx, cy, cw) = p[2].center.unwrap();
+        assert!(close(cx, 35.0) && close(cy, 5.0) && !cw, "G{g}: {:?}", p[2]);
+    }
+}
+
+/// ,C/,R alarms in offset mode, at the ,C/,R word: the next block a G00
+/// (CornerNoMove F_82103), a chamfer that uses up the next side
+/// (CornerTooLarge F_82104), a ,C on the G40 block, the end of the
+/// program after the ,C block.
+#[test]
+fn corner_alarms_in_offset_mode() {
+    let a = |prog: &str| {
+        let r = run_d("hx-mc", &[(1, 2.0)], &[], prog);
+        let a = r.alarm.as_ref().expect("an alarm");
+        (a.code.clone(), a.src.line, a.src.col)
+    };
+    let head = "G92 X0. Y-10.\nG90 G01 G41 X0. Y0. D1 F500\n";
+    assert_eq!(
+        a(&format!("{head}X40. ,C5.\nG00 Y30.\nM30\n")),
+        ("F_82103".into(), 3, 6)
+    );
+    // Y3.: the chamfer's 5 mm do not fit on a 3 mm side.
+    assert_eq!(
+        a(&format!("{head}X40. ,C5.\nY3.\nX0.\nM30\n")),
+        ("F_82104".into(), 3, 6)
+    );
+    // Exactly the side's length: fits in the contour but leaves no side
+    // to offset.
+    assert_eq!(
+        a(&format!("{head}X40. ,C5.\nY5.\nX0.\nM30\n")),
+        ("F_82104".into(), 3, 6)
+    );
+    assert_eq!(
+        a(&format!("{head}X40.\nG40 Y-10. ,C2.\nM30\n")),
+        ("F_82103".into(), 4, 11)
+    );
+    assert_eq!(
+        a(&format!("{head}X40. ,R5.\nM30\n")),
+        ("F_82103".into(), 3, 6)
+    );
+}
