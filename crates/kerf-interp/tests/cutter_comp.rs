@@ -826,3 +826,68 @@ fn corner_alarms_in_offset_mode() {
         ("F_82103".into(), 3, 6)
     );
 }
+
+// ---- offset changes in offset mode ---------------------------------------------
+
+/// A new offset value in offset mode applies from the end of the next
+/// compensated block: that block runs slanted from the old vector to the
+/// new one (000 §13.2.2; Fanuc "change of offset value"). Square contour
+/// (0,0) → (40,0) → (40,30) → (0,30), G41 (inside), D1 = 2, then 4 for
+/// the +Y side, given three ways: a D word on the block, `G10 L12 P1 R4.`
+/// in a block of its own, and D2 (= 4) on a block of its own (the D word
+/// and G10 blocks run the compensation codes, so these worked before the
+/// value was read on every move; the lathe test below did not).
+/// - start-up from (0,−10): right turn with the tool left (outer), type
+///   A: (0, 2);
+/// - the +X side ends at the inner corner with r = 2 (the corner at the
+///   start of the changed block uses the old value): (38, 2);
+/// - the +Y side ends at the inner corner with r = 4: x = 36, y = 26;
+/// - the −X side (y = 26) ends on its perpendicular for the type-A cancel
+///   (+Y after −X: right turn, outer): (0, 26); then (0, 40).
+#[test]
+fn offset_value_change_in_offset_mode() {
+    let want = [
+        ("feed", 0.0, 2.0),
+        ("feed", 38.0, 2.0),
+        ("feed", 36.0, 26.0),
+        ("feed", 0.0, 26.0),
+        ("feed", 0.0, 40.0),
+    ];
+    let head = "G92 X0. Y-10.\nG90 G01 G41 X0. Y0. D1 F500\nX40.\n";
+    for mid in ["Y30. D2\n", "G10 L12 P1 R4.\nY30.\n", "D2\nY30.\n"] {
+        let prog = format!("{head}{mid}X0.\nG40 Y40.\nM30\n");
+        let r = run_d("hx-mc", &[(1, 2.0), (2, 4.0)], &[], &prog);
+        ok(&r);
+        check_xy(&path(&r), &want);
+    }
+}
+
+/// Lathe: a T code changing the offset number in nose radius
+/// compensation. T0101 (nose R 0.4) then T0102 (R 0.8), both tip 3, no
+/// position offsets, G42 on a straight Z cut at Ø30 (X radius 15). The
+/// imaginary tip of tip 3 is the centre + R·(−1, −1) in (Z, X); on a
+/// straight −Z cut the centre runs at X = 15 + R, so the tip stays on
+/// Ø30 and only Z shifts by −R at each end:
+/// - the first cut ends at the straight-on joint with R 0.4: centre
+///   (−10, 15.4), tip (−10.4, 15) → Z −10.4, X Ø30;
+/// - the second cut (after T0102) ends with R 0.8 on the cancel's
+///   perpendicular (+X after −Z with the tool on the right: inner):
+///   centre (−20, 15.8), tip (−20.8, 15) → Z −20.8, Ø30.
+#[test]
+fn lathe_offset_change_in_offset_mode() {
+    let prog = "G00 X40. Z0 T0101\nG42 G01 X30. F0.2\nZ-10.\nT0102\nZ-20.\nG40 G00 X50.\nM30\n";
+    let r = run_d("puma-lathe", &[], &[(1, 0.4, 3), (2, 0.8, 3)], prog);
+    ok(&r);
+    let p: Vec<_> = path(&r).into_iter().filter(|m| m.kind == "feed").collect();
+    // Feeds (X in `to` is the radius): the start-up −X then the −Z cut:
+    // a right turn with the tool on the right, inner: the perpendicular
+    // to the cut, centre (0, 15.4), tip (−0.4, 15); then the two cuts.
+    // (Before the fix the second cut kept R 0.4 and ended at Z −20.4.)
+    assert_eq!(p.len(), 3, "{p:?}");
+    for (m, z) in p.iter().zip([-0.4, -10.4, -20.8]) {
+        assert!(
+            close(m.to[0], 15.0) && close(m.to[2], z),
+            "{m:?} wanted X15 (radius) Z{z}"
+        );
+    }
+}

@@ -73,6 +73,8 @@ pub(crate) struct CompState {
     on: bool,
     /// Signed offset for the blocks from now on (+ left of travel).
     r: f64,
+    /// +1 for G41, −1 for G42.
+    side: f64,
     /// Lathe: imaginary tip shift for the blocks from now on.
     tip: P,
     /// Plane of the offset mode.
@@ -137,6 +139,7 @@ impl Interp {
         CompState {
             on: false,
             r: 0.0,
+            side: 1.0,
             tip: (0.0, 0.0),
             plane: self.st.plane,
             startup: false,
@@ -262,6 +265,7 @@ impl Interp {
             410 | 420 => {
                 let side = if mode == 410 { 1.0 } else { -1.0 };
                 let c = self.comp.as_deref_mut().expect("set");
+                c.side = side;
                 c.r = side * value;
                 c.tip = if value < 0.0 { (0.0, 0.0) } else { tip };
                 if !c.on {
@@ -386,7 +390,16 @@ impl Interp {
         } else {
             Speed::Feed(self.feed(at)?)
         };
+        // The offset value is read for every move: a D word, a lathe T
+        // code or G10 changing the value in offset mode takes effect at
+        // the end of the next compensated move (000 §13.2.2: that block
+        // runs slanted from the old vector to the new one).
+        let (value, vtip) = self.comp_value();
         let c = self.comp.as_deref_mut().expect("comp");
+        if c.on {
+            c.r = c.side * value;
+            c.tip = if value < 0.0 { (0.0, 0.0) } else { vtip };
+        }
         c.moved = true;
         c.idle = 0;
         let (on, r, tip, vec, startup, type_b) = (c.on, c.r, c.tip, c.vec, c.startup, c.type_b);
