@@ -891,3 +891,119 @@ fn lathe_offset_change_in_offset_mode() {
         );
     }
 }
+
+// ---- G28 / G92 / G53 in offset mode (000 §13.2.2 figures) -------------------------
+
+/// 000 §13.2.2's G92 figure (N5-N8, G41), here with D1 = 5 and a start-up
+/// N4 before it. G92 in offset mode keeps the vector: the block before
+/// it ends on its perpendicular vector, the block after it starts from
+/// that vector in the new coordinates. Unit normals (left of travel):
+/// N4 +X; N5 (70,30): d5 = (7,3)/√58, n5 = (−3,7)/√58; N6 (60,−30):
+/// d6 = (2,−1)/√5, n6 = (1,2)/√5; N8 (60,30) in the new frame:
+/// d8 = (2,1)/√5, n8 = (−1,2)/√5.
+/// - N4 → N5 turns left with the tool left (inner), type A start-up:
+///   (20,0) + 5·n5;
+/// - N5 → N6 turns right (outer obtuse): the offset lines meet at
+///   K + r·(n5 + n6)/(1 + n5·n6), K = (90,30), n5·n6 = 11/√290;
+/// - N6 ends on its perpendicular (150,0) + 5·n6 = (150 + √5, 2√5)
+///   (before the G92, in the old frame);
+/// - N7 G92 X20 Y10 makes the programmed point (150,0) read (20,10);
+/// - N8 ends at the type-A cancel vector (N9 +X after N8: right turn,
+///   outer): (80,40) + 5·n8 = (80 − √5, 40 + 2√5); N9 to (100,40).
+#[test]
+fn g92_in_offset_mode_keeps_the_vector() {
+    let prog = "G92 X0 Y0\nN4 G91 G01 G41 X20. D1 F100\nN5 X70.0 Y30.0\nN6 X60.0 Y-30.0\nN7 G92 X20.0 Y10.0\nN8 G90 G01 X80.0 Y40.0\nN9 G40 X100.\nM30\n";
+    let r = run_d("hx-mc", &[(1, 5.0)], &[], prog);
+    ok(&r);
+    let s58 = 58f64.sqrt();
+    let s5 = 5f64.sqrt();
+    let n5 = (-3.0 / s58, 7.0 / s58);
+    let n6 = (1.0 / s5, 2.0 / s5);
+    let k = 5.0 / (1.0 + 11.0 / 290f64.sqrt());
+    check_xy(
+        &path(&r),
+        &[
+            ("feed", 20.0 + 5.0 * n5.0, 5.0 * n5.1),
+            ("feed", 90.0 + k * (n5.0 + n6.0), 30.0 + k * (n5.1 + n6.1)),
+            ("feed", 150.0 + s5, 2.0 * s5),
+            ("feed", 80.0 - s5, 40.0 + 2.0 * s5),
+            ("feed", 100.0, 40.0),
+        ],
+    );
+}
+
+/// G28 in offset mode (000 §13.2.2's G28 figure, Fanuc "temporary
+/// cancel"): the block before it ends on its perpendicular vector, the
+/// G28 moves (intermediate point, reference) are uncompensated, and the
+/// next move starts the offset again (type A start-up). CCW square, G41
+/// (inside), r = 2:
+/// - start-up (0,−10) → (0,0), then +X: outer, type A: (0, 2);
+/// - +X side ends on its perpendicular: (40, 2);
+/// - `G91 G28 Z0`: intermediate point = the programmed point (40, 0),
+///   then the reference (Z only moves: X/Y stay (40, 0));
+/// - `Y30.` is a start-up from (40,0): the next block runs −X, so it ends
+///   on that block's perpendicular: (40,30) + 2·(0,−1) = (40, 28);
+/// - −X side ends on its perpendicular for the cancel (+Y after −X:
+///   right turn, outer, type A): (0, 28); then (0, 40).
+#[test]
+fn g28_in_offset_mode_cancels_and_restarts() {
+    let prog = "G92 X0. Y-10. Z0.\nG00 Z-20.\nG90 G01 G41 X0. Y0. D1 F500\nX40.\nG91 G28 Z0.\nG90 Y30.\nX0.\nG40 Y40.\nM30\n";
+    let r = run_d("hx-mc", &[(1, 2.0)], &[], prog);
+    ok(&r);
+    let p = path(&r);
+    let xy: Vec<_> = p
+        .iter()
+        .map(|m| (m.kind, m.to[0], m.to[1], m.line))
+        .collect();
+    // (The first rapid is `G00 Z-20.`; the G28's move to the intermediate
+    // point is zero and not emitted, its move to the reference is.)
+    let want = [
+        ("rapid", 0.0, -10.0, 2),
+        ("feed", 0.0, 2.0, 3),
+        ("feed", 40.0, 2.0, 4),
+        ("rapid", 40.0, 0.0, 5),
+        ("feed", 40.0, 28.0, 6),
+        ("feed", 0.0, 28.0, 7),
+        ("feed", 0.0, 40.0, 8),
+    ];
+    assert_eq!(xy.len(), want.len(), "{xy:?}");
+    assert!(close(p[3].to[2], 0.0) && close(p[2].to[2], -20.0), "{p:?}");
+    for (g, w) in xy.iter().zip(want) {
+        assert!(
+            g.0 == w.0 && close(g.1, w.1) && close(g.2, w.2) && g.3 == w.3,
+            "{g:?} vs {w:?}"
+        );
+    }
+}
+
+/// G41/G42 in a G28 or G53 block: the offset starts in G00/G01 moves only
+/// (000 §13.2.1), F_82120 at the G41/G42 code; G40 with G28 cancels.
+#[test]
+fn g41_with_g28_or_g53_alarms() {
+    let a = |prog: &str| {
+        let r = run_d("hx-mc", &[(1, 2.0)], &[], prog);
+        let a = r.alarm.as_ref().expect("an alarm");
+        (a.code.clone(), a.src.line, a.src.col)
+    };
+    assert_eq!(
+        a("G92 X0. Y0. Z0.\nG91 G28 G41 X0. Y0. D1\nM30\n"),
+        ("F_82120".into(), 2, 9)
+    );
+    assert_eq!(
+        a("G92 X0. Y0. Z0.\nG90 G53 G42 X0. Y0. D1\nM30\n"),
+        ("F_82120".into(), 2, 9)
+    );
+    // G40 with G28: the +X side ends on its perpendicular (40, 2), the
+    // G28 moves are uncompensated, nothing is left in force.
+    let r = run_d(
+        "hx-mc",
+        &[(1, 2.0)],
+        &[],
+        "G92 X0. Y-10. Z0.\nG90 G01 G41 X0. Y0. D1 F500\nX40.\nG91 G28 G40 Z0.\nG90 G01 Y30.\nM30\n",
+    );
+    ok(&r);
+    let p = path(&r);
+    let last = p.last().unwrap();
+    assert!(close(p[1].to[0], 40.0) && close(p[1].to[1], 2.0), "{p:?}");
+    assert!(close(last.to[0], 40.0) && close(last.to[1], 30.0), "{p:?}");
+}

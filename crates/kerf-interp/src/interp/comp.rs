@@ -209,6 +209,25 @@ impl Interp {
         }
         let mode = self.st.modal[COMP_GROUP];
         let g39 = one_shot.iter().find(|g| g.0 == 390).map(|g| g.1);
+        // G41/G42 go with G00/G01 (000 §13.2.1: "[G00/G01] X_ Y_ G41");
+        // a reference return or machine-coordinate move cannot start the
+        // offset (G40 with them is a cancel: allowed).
+        if let Some(&(g, _)) = one_shot
+            .iter()
+            .find(|g| matches!(g.0, 270 | 280 | 290 | 300 | 530))
+        {
+            if let Some(&(c, at)) = self.words.gs().iter().find(|x| matches!(x.0, 410 | 420)) {
+                return Err(self.alarm(
+                    AlarmKind::CompArc,
+                    at,
+                    format!(
+                        "G{} in a G{} block: cutter compensation starts in a G00/G01 move",
+                        fmt_code(c),
+                        fmt_code(g)
+                    ),
+                ));
+            }
+        }
         if self.comp.is_none() {
             if mode == 400 {
                 if let Some(at) = g39 {
