@@ -426,7 +426,7 @@ fn comp_points(r: &Run) -> Vec<(f64, f64)> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
 
     /// Every compensated vertex is at least r from the contour, at
     /// exactly r from the line of one of its edges, and on the correct
@@ -1006,4 +1006,265 @@ fn g41_with_g28_or_g53_alarms() {
     let last = p.last().unwrap();
     assert!(close(p[1].to[0], 40.0) && close(p[1].to[1], 2.0), "{p:?}");
     assert!(close(last.to[0], 40.0) && close(last.to[1], 30.0), "{p:?}");
+}
+
+// ---- property tests on arc chains ---------------------------------------------
+
+/// One block of a closed contour: the end point and, for an arc, its
+/// radius (R word, minor arc) and direction.
+#[derive(Clone, Copy, Debug)]
+struct Edge {
+    to: (f64, f64),
+    arc: Option<(f64, bool)>,
+}
+
+/// Rounds to the 6 decimals the program text carries, so the test's own
+/// geometry uses the numbers the interpreter reads.
+fn r6(v: f64) -> f64 {
+    format!("{v:.6}").parse().unwrap()
+}
+
+/// A closed contour around the origin (counter-clockwise star polygon,
+/// radii 30..60) whose edges are lines or arcs: convex arcs (CCW, centre
+/// inside) of 15°..100°, concave arcs (CW, bulging inwards) of 10°..40°.
+fn arc_chain() -> impl Strategy<Value = (f64, f64, Vec<Edge>)> {
+    (5usize..9).prop_flat_map(|n| {
+        prop::collection::vec((30.0f64..60.0, -0.2f64..0.2, 0u8..3, 0.0f64..1.0), n).prop_map(
+            move |v| {
+                let pts: Vec<(f64, f64)> = v
+                    .iter()
+                    .enumerate()
+                    .map(|(i, (r, j, _, _))| {
+                        let a = (i as f64 + j) * std::f64::consts::TAU / n as f64;
+                        (r6(r * a.cos()), r6(r * a.sin()))
+                    })
+                    .collect();
+                let edges = (0..n)
+                    .map(|i| {
+                        let (a, b) = (pts[i], pts[(i + 1) % n]);
+                        let chord = (b.0 - a.0).hypot(b.1 - a.1);
+                        let (_, _, kind, t) = v[i];
+                        let arc = match kind {
+                            0 => None,
+                            1 => Some(((15.0 + 85.0 * t), true)),
+                            _ => Some(((10.0 + 30.0 * t), false)),
+                        }
+                        .map(|(deg, ccw): (f64, bool)| {
+                            (r6(chord / (2.0 * (deg.to_radians() / 2.0).sin())), ccw)
+                        });
+                        Edge { to: b, arc }
+                    })
+                    .collect();
+                (pts[0].0, pts[0].1, edges)
+            },
+        )
+    })
+}
+
+/// The centre of the minor arc from `a` to `b` of radius `r`: on the left
+/// of the chord for CCW, the right for CW, √(r² − (c/2)²) from its middle.
+fn minor_center(a: (f64, f64), b: (f64, f64), r: f64, ccw: bool) -> (f64, f64) {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let c = dx.hypot(dy);
+    let d = (r * r - c * c / 4.0).max(0.0).sqrt();
+    let s = if ccw { 1.0 } else { -1.0 };
+    (
+        (a.0 + b.0) / 2.0 - s * d * dy / c,
+        (a.1 + b.1) / 2.0 + s * d * dx / c,
+    )
+}
+
+/// A contour element for the distance checks: a line or an arc (centre,
+/// radius, CCW).
+#[derive(Clone, Copy, Debug)]
+enum El {
+    Line((f64, f64), (f64, f64)),
+    Arc((f64, f64), (f64, f64), (f64, f64), f64, bool),
+}
+
+fn elements(start: (f64, f64), edges: &[Edge]) -> Vec<El> {
+    let mut a = start;
+    edges
+        .iter()
+        .map(|e| {
+            let el = match e.arc {
+                None => El::Line(a, e.to),
+                Some((r, ccw)) => El::Arc(a, e.to, minor_center(a, e.to, r, ccw), r, ccw),
+            };
+            a = e.to;
+            el
+        })
+        .collect()
+}
+
+/// The counter-clockwise angle from `a` to `b` about `c`, in [0, 2π).
+fn ccw_angle(a: (f64, f64), b: (f64, f64), c: (f64, f64)) -> f64 {
+    let t = (b.1 - c.1).atan2(b.0 - c.0) - (a.1 - c.1).atan2(a.0 - c.0);
+    t.rem_euclid(std::f64::consts::TAU)
+}
+
+/// True distance from `p` to an element (arc: the radial distance where
+/// `p` lies within the arc's sweep, else the nearer end point).
+fn el_dist(p: (f64, f64), e: &El) -> f64 {
+    match *e {
+        El::Line(a, b) => seg_dist(p, a, b),
+        El::Arc(a, b, c, r, ccw) => {
+            let (from, to) = if ccw { (a, b) } else { (b, a) };
+            if ccw_angle(from, p, c) <= ccw_angle(from, to, c) {
+                ((p.0 - c.0).hypot(p.1 - c.1) - r).abs()
+            } else {
+                (p.0 - a.0)
+                    .hypot(p.1 - a.1)
+                    .min((p.0 - b.0).hypot(p.1 - b.1))
+            }
+        }
+    }
+}
+
+/// The program: start-up from (100, 0) to the start, twice round, G40 back.
+fn chain_prog(start: (f64, f64), edges: &[Edge], g: u32) -> String {
+    let mut s = String::from("G92 X100. Y0.\nG90 G01 F1000\n");
+    s += &format!("G{g} X{:.6} Y{:.6} D1\n", start.0, start.1);
+    for _ in 0..2 {
+        for e in edges {
+            match e.arc {
+                None => s += &format!("G01 X{:.6} Y{:.6}\n", e.to.0, e.to.1),
+                Some((r, ccw)) => {
+                    s += &format!(
+                        "G0{} X{:.6} Y{:.6} R{:.6}\n",
+                        if ccw { 3 } else { 2 },
+                        e.to.0,
+                        e.to.1,
+                        r
+                    )
+                }
+            }
+        }
+    }
+    s += "G40 G01 X100. Y0.\nM30\n";
+    s
+}
+
+/// The reversed contour: the same elements run backwards (arcs change
+/// direction, keep their centre and radius), starting at the same point.
+fn reversed(start: (f64, f64), edges: &[Edge]) -> Vec<Edge> {
+    let n = edges.len();
+    let from = |i: usize| if i == 0 { start } else { edges[i - 1].to };
+    (0..n)
+        .rev()
+        .map(|i| Edge {
+            to: from(i),
+            arc: edges[i].arc.map(|(r, ccw)| (r, !ccw)),
+        })
+        .collect()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+
+    /// Arc chains, convex and concave, G41 or G42: the compensated path
+    /// stays at least r from the contour at every vertex (no gouge); every
+    /// compensated arc is concentric with a programmed arc at radius
+    /// R ∓ r on the correct side (left of a CCW arc = towards the centre)
+    /// and its middle is exactly r from the contour; every programmed line
+    /// has a compensated line on its offset line (signed distance ±r)
+    /// whose middle is exactly r from the contour. Only the interference
+    /// alarms are accepted instead (offset larger than an inside arc,
+    /// offset paths that do not meet).
+    #[test]
+    fn arc_chain_offset_keeps_distance_and_side(
+        (sx, sy, edges) in arc_chain(),
+        r in 0.5f64..3.0,
+        left in any::<bool>(),
+    ) {
+        let start = (sx, sy);
+        let g = if left { 41 } else { 42 };
+        let run = run_d("hx-mc", &[(1, r)], &[], &chain_prog(start, &edges, g));
+        if let Some(a) = &run.alarm {
+            prop_assert!(matches!(a.code.as_str(), "F_82122" | "F_82123"), "{:?}", a);
+            return Ok(());
+        }
+        let els = elements(start, &edges);
+        let side = if left { 1.0 } else { -1.0 };
+        let dist = |p: (f64, f64)| els.iter().map(|e| el_dist(p, e)).fold(f64::INFINITY, f64::min);
+        let p = path(&run);
+        // Moves 1..len-2: the start-up and the last block (ending on the
+        // cancel's vector) and the cancel itself left out.
+        let (mut lines, mut arcs) = (0usize, 0usize);
+        for i in 1..p.len() - 2 {
+            let (a, b) = ((p[i - 1].to[0], p[i - 1].to[1]), (p[i].to[0], p[i].to[1]));
+            prop_assert!(dist(b) >= r - 1e-6, "vertex {:?} only {} from the contour (r {})", b, dist(b), r);
+            match p[i].center {
+                Some((cx, cy, cw)) => {
+                    let c = (cx, cy);
+                    let hit = els.iter().any(|e| match *e {
+                        El::Arc(_, _, pc, pr, ccw) => {
+                            let want = if ccw { pr - side * r } else { pr + side * r };
+                            (pc.0 - c.0).hypot(pc.1 - c.1) < 1e-6
+                                && ccw == !cw
+                                && ((b.0 - c.0).hypot(b.1 - c.1) - want).abs() < 1e-6
+                        }
+                        _ => false,
+                    });
+                    prop_assert!(hit, "arc to {:?} about {:?} matches no programmed arc", b, c);
+                    // Its middle: half the sweep from the start.
+                    let sw = if cw { ccw_angle(b, a, c) } else { ccw_angle(a, b, c) };
+                    let a0 = (a.1 - c.1).atan2(a.0 - c.0) + if cw { -sw / 2.0 } else { sw / 2.0 };
+                    let rho = (a.0 - c.0).hypot(a.1 - c.1);
+                    let m = (c.0 + rho * a0.cos(), c.1 + rho * a0.sin());
+                    prop_assert!((dist(m) - r).abs() < 1e-6, "arc middle {:?} at {}", m, dist(m));
+                    arcs += 1;
+                }
+                None => {
+                    let len = (b.0 - a.0).hypot(b.1 - a.1);
+                    let on = els.iter().any(|e| match *e {
+                        El::Line(u, v) => {
+                            let (dx, dy) = (v.0 - u.0, v.1 - u.1);
+                            let l = dx.hypot(dy);
+                            let sd = |q: (f64, f64)| (dx * (q.1 - u.1) - dy * (q.0 - u.0)) / l;
+                            len > 1e-6
+                                && (sd(a) - side * r).abs() < 1e-6
+                                && (sd(b) - side * r).abs() < 1e-6
+                                && (dx * (b.0 - a.0) + dy * (b.1 - a.1)) > 0.0
+                        }
+                        _ => false,
+                    });
+                    if on {
+                        let m = ((a.0 + b.0) / 2.0, (a.1 + b.1) / 2.0);
+                        prop_assert!((dist(m) - r).abs() < 1e-6, "line middle {:?} at {}", m, dist(m));
+                        lines += 1;
+                    }
+                }
+            }
+        }
+        // Twice round, less the last block: every programmed line and arc
+        // of the first round at least once.
+        let n_lines = edges.iter().filter(|e| e.arc.is_none()).count();
+        let n_arcs = edges.len() - n_lines;
+        prop_assert!(lines >= n_lines && arcs >= n_arcs, "{} lines / {} arcs for {} / {}", lines, arcs, n_lines, n_arcs);
+    }
+
+    /// G41 on an arc chain makes the same points as G42 on the reversed
+    /// chain (vertices away from the start, where the start-up and cancel
+    /// differ).
+    #[test]
+    fn arc_chain_g41_equals_g42_reversed((sx, sy, edges) in arc_chain(), r in 0.5f64..3.0) {
+        let start = (sx, sy);
+        let a = run_d("hx-mc", &[(1, r)], &[], &chain_prog(start, &edges, 41));
+        let b = run_d("hx-mc", &[(1, r)], &[], &chain_prog(start, &reversed(start, &edges), 42));
+        prop_assert_eq!(a.alarm.is_some(), b.alarm.is_some(), "{:?} vs {:?}", a.alarm, b.alarm);
+        if a.alarm.is_some() {
+            return Ok(());
+        }
+        let away = |p: &(f64, f64)| (p.0 - start.0).hypot(p.1 - start.1) > 4.0 * r;
+        let pa: Vec<_> = comp_points(&a).into_iter().filter(away).collect();
+        let pb: Vec<_> = comp_points(&b).into_iter().filter(away).collect();
+        let has = |v: &[(f64, f64)], p: &(f64, f64)| v.iter().any(|q| (q.0 - p.0).hypot(q.1 - p.1) < 1e-6);
+        for p in &pa {
+            prop_assert!(has(&pb, p), "{:?} missing from the G42 run", p);
+        }
+        for p in &pb {
+            prop_assert!(has(&pa, p), "{:?} missing from the G41 run", p);
+        }
+    }
 }
