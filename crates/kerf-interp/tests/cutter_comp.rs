@@ -1268,3 +1268,115 @@ proptest! {
         }
     }
 }
+
+// ---- lathe tip directions 2, 3, 8 with offsets set by G10 -------------------------
+
+/// The feed end points of a lathe run as (Z, X radius).
+fn lathe_feeds(r: &Run) -> Vec<(f64, f64)> {
+    path(r)
+        .into_iter()
+        .filter(|m| m.kind == "feed")
+        .map(|m| (m.to[2], m.to[0]))
+        .collect()
+}
+
+fn check_zx(got: &[(f64, f64)], want: &[(f64, f64)]) {
+    assert_eq!(got.len(), want.len(), "{got:?} vs {want:?}");
+    for (g, w) in got.iter().zip(want) {
+        assert!(close(g.0, w.0) && close(g.1, w.1), "{got:?} vs {want:?}");
+    }
+}
+
+/// Tip 8 (the imaginary tip at −X of the nose centre, 001 p.29) on 001's
+/// C2 chamfer (face up Z0 to Ø26, chamfer to Z−2 Ø30, Z−30), G42, nose R
+/// 0.8 and tip set by `G10 P10001 R0.8 Q8`. Worked in (Z, X radius): the
+/// nose centre path is the same as for any tip (offset lines Z = 0.8,
+/// Z + X = 13 + 0.8√2, X = 15.8), the tip is centre + (0, −0.8):
+/// - start-up (−Z then +X, a right turn with the tool on the right:
+///   inner) on the face's perpendicular: centre (0.8, 10) → tip (0.8, 9.2);
+/// - face → chamfer (left turn, outer obtuse): centre (0.8, 12.2 + 0.8√2)
+///   → tip (0.8, 11.4 + 0.8√2);
+/// - chamfer → Z cut (left turn, outer obtuse): centre (−2.8 + 0.8√2,
+///   15.8) → tip (−2.8 + 0.8√2, 15): on Ø30, as a tip-8 tool must be on a
+///   Z cut;
+/// - the cancel (+X after −Z, right turn, inner): the Z cut ends on its
+///   perpendicular, centre (−30, 15.8) → tip (−30, 15).
+#[test]
+fn lathe_tip_8_chamfer_with_g10() {
+    let q = 0.8 * 2f64.sqrt();
+    let prog = "G10 P10001 R0.8 Q8\nG00 X20. Z2. T0101\nG42 G01 Z0. F0.2\nX26.\nX30. Z-2.\nZ-30.\nG40 G00 X40.\nM30\n";
+    let r = run_d("puma-lathe", &[], &[], prog);
+    ok(&r);
+    check_zx(
+        &lathe_feeds(&r),
+        &[(0.8, 9.2), (0.8, 11.4 + q), (-2.8 + q, 15.0), (-30.0, 15.0)],
+    );
+}
+
+/// Tip 3 on the same chamfer (001 p.28's a = 0.937, b = 0.468 for R0.8),
+/// then `G10 P10001 R0.4` in offset mode before the Z cut: the Z cut
+/// starts on the R0.8 vector (the chamfer → Z-cut corner keeps 0.8:
+/// tip (−2.8 + 0.8√2 − 0.8, 15)) and ends with R0.4 on the cancel's
+/// perpendicular: centre (−30, 15.4), tip 3 = centre + 0.4·(−1, −1)
+/// = (−30.4, 15). Start-up and face → chamfer as worked in
+/// `puma_chamfer_example_nose_radius`: tips (0, 9.2) and
+/// (0, 12.2 + 0.8√2 − 0.8).
+#[test]
+fn lathe_tip_3_radius_changed_by_g10_in_offset_mode() {
+    let q = 0.8 * 2f64.sqrt();
+    let prog = "G10 P10001 R0.8 Q3\nG00 X20. Z2. T0101\nG42 G01 Z0. F0.2\nX26.\nX30. Z-2.\nG10 P10001 R0.4\nZ-30.\nG40 G00 X40.\nM30\n";
+    let r = run_d("puma-lathe", &[], &[], prog);
+    ok(&r);
+    check_zx(
+        &lathe_feeds(&r),
+        &[(0.0, 9.2), (0.0, 11.4 + q), (-3.6 + q, 15.0), (-30.4, 15.0)],
+    );
+    // 001's a and b, printed cut to 3 decimals: 26 − Ø(2·(11.4 + 0.8√2))
+    // = 0.937258 → 0.937, −2 − Z = 0.468629 → 0.468.
+    let p = lathe_feeds(&r);
+    let a = 26.0 - 2.0 * p[1].1;
+    let b = -2.0 - p[2].0;
+    assert!(
+        (0.937..0.938).contains(&a) && (0.468..0.469).contains(&b),
+        "{a} {b}"
+    );
+}
+
+/// Tip 2 (boring towards the chuck: the tip at −Z, +X of the centre), G41
+/// inside a bore, nose R 0.4 from `G10 P10002 R0.4 Q2`, changed to 0.8
+/// by G10 before the shoulder. Contour (Z, X radius): mouth chamfer
+/// (0,12) → (−2,10), bore X = 10 to Z−20, shoulder down to X = 8, G40
+/// out along +Z. G41 = left of travel (−X side on a −Z cut: inside the
+/// hole). Tip vector 2: (−1, +1)·R.
+/// - start-up −Z then the chamfer (−1,−1)/√2: a left turn, tool left:
+///   inner → the chamfer's perpendicular at its start: centre
+///   (0,12) + 0.4·(1,−1)/√2 = (0.2√2, 12 − 0.2√2) → tip (0.2√2 − 0.4,
+///   12.4 − 0.2√2);
+/// - chamfer → bore, a right turn (outer obtuse): offset lines
+///   X − Z = 12 − 0.4√2 and X = 9.6 → Z = −2.4 + 0.4√2; tip Z − 0.4,
+///   X = 10;
+/// - bore → shoulder, a left turn (inner): X = 9.6 and Z = −19.6 (the
+///   corner keeps R0.4, the new value is for the shoulder's end) → tip
+///   (−20, 10), the programmed corner;
+/// - shoulder → cancel (+Z after −X: left turn, inner): the shoulder ends
+///   on its perpendicular with R0.8: centre (−19.2, 8) → tip (−20, 8.8)
+///   (R0.4 would give 8.4).
+#[test]
+fn lathe_tip_2_bore_with_g10_change() {
+    let s = 0.2 * 2f64.sqrt();
+    let prog = "G10 P10002 R0.4 Q2\nG00 X24. Z2. T0202\nG41 G01 Z0. F0.1\nX20. Z-2.\nZ-20.\nG10 P10002 R0.8\nX16.\nG40 G00 Z2.\nM30\n";
+    let r = run_d("puma-lathe", &[], &[], prog);
+    ok(&r);
+    check_zx(
+        &lathe_feeds(&r),
+        &[
+            (s - 0.4, 12.4 - s),
+            (-2.8 + 2.0 * s, 10.0),
+            (-20.0, 10.0),
+            (-20.0, 8.8),
+        ],
+    );
+    // The cancel rapid ends at the programmed (Z2, Ø16).
+    let last = path(&r).last().unwrap().clone();
+    assert!(close(last.to[2], 2.0) && close(last.to[0], 8.0), "{last:?}");
+}
