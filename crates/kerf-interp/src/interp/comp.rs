@@ -438,7 +438,7 @@ impl Interp {
             let mut h = held.take().expect("held");
             let cut = (mode, on, off_plane, e);
             let (mut mid, p2) = self.comp_cut_corner(&mut h, &hc, cut, &seg_p, cur)?;
-            mid.cstart = self.comp_join(h, &mid.seg, mid.r, g39.take(), type_b)?;
+            mid.cstart = self.comp_join(&mut h, &mid.seg, mid.r, g39.take(), type_b)?;
             held = Some(mid);
             seg = seg.with_start(p2);
             cur_t = self.plane_pt(cur_t, p2);
@@ -452,7 +452,7 @@ impl Interp {
                     "cutter compensation cancelled (G40) in a G02/G03 block: cancel in G00/G01",
                 ));
             }
-            let base = if let Some(h) = held {
+            let base = if let Some(mut h) = held {
                 let k = h.seg.end();
                 let j = if h.startup {
                     Join::at(self.comp_geom(comp::perp_end(&h.seg, h.r), h.motion)?)
@@ -468,7 +468,7 @@ impl Interp {
                     self.comp_geom(j, h.motion)?
                 };
                 let htip = h.tip;
-                self.comp_flush(h, &j)?;
+                self.comp_flush(&mut h, &j)?;
                 padd(j.start2(), htip)
             } else {
                 padd(s, vec)
@@ -486,8 +486,8 @@ impl Interp {
         // The offset at this block's start must exist (an inside arc
         // larger than the offset).
         self.comp_geom(comp::perp_start(&seg, r), self.src_here(at))?;
-        let cstart = if let Some(h) = held {
-            self.comp_join(h, &seg, r, g39, type_b)?
+        let cstart = if let Some(mut h) = held {
+            self.comp_join(&mut h, &seg, r, g39, type_b)?
         } else {
             if startup && arc {
                 return Err(self.alarm(
@@ -528,7 +528,7 @@ impl Interp {
     /// it. Returns where `next` starts.
     fn comp_join(
         &mut self,
-        h: Held,
+        h: &mut Held,
         next: &Seg,
         r: f64,
         g39: Option<Option<P>>,
@@ -708,7 +708,7 @@ impl Interp {
         let Some(c) = self.comp.as_deref_mut() else {
             return Ok(());
         };
-        let Some(h) = c.held.take() else {
+        let Some(mut h) = c.held.take() else {
             return Ok(());
         };
         if let Some(hc) = &h.corner {
@@ -722,7 +722,7 @@ impl Interp {
         let end1 = self.comp_geom(comp::perp_end(&h.seg, h.r), h.motion)?;
         let (a1, a2, _) = self.st.plane.axes();
         let vec = psub(padd(end1, h.tip), (h.end[a1], h.end[a2]));
-        self.comp_flush(h, &Join::at(end1))?;
+        self.comp_flush(&mut h, &Join::at(end1))?;
         self.comp.as_deref_mut().expect("comp").vec = vec;
         Ok(())
     }
@@ -778,7 +778,7 @@ impl Interp {
     /// Emits a held move up to `j.end1`, the events kept back (motions at
     /// the corner's plane point), then the corner's pieces. Alarms point
     /// at the held block's motion word.
-    fn comp_flush(&mut self, mut h: Held, j: &Join) -> R<()> {
+    fn comp_flush(&mut self, h: &mut Held, j: &Join) -> R<()> {
         let prog = self.st.pos;
         // The held points are already transformed (scaling, mirror,
         // rotation of their own block): emitted through the offset stack
@@ -787,7 +787,7 @@ impl Interp {
         let base = self.prog_pos();
         let here = std::mem::replace(&mut self.cur, h.src);
         let mut events = std::mem::take(&mut h.events);
-        let r = self.comp_emit(&h, j, base, &mut events);
+        let r = self.comp_emit(h, j, base, &mut events);
         self.st.xf = xf;
         self.comp_prog = None;
         self.cur = here;
