@@ -1201,7 +1201,7 @@ proptest! {
                         El::Arc(_, _, pc, pr, ccw) => {
                             let want = if ccw { pr - side * r } else { pr + side * r };
                             (pc.0 - c.0).hypot(pc.1 - c.1) < 1e-6
-                                && ccw == !cw
+                                && ccw != cw
                                 && ((b.0 - c.0).hypot(b.1 - c.1) - want).abs() < 1e-6
                         }
                         _ => false,
