@@ -47,6 +47,23 @@ pub(crate) struct Held {
     motion: SrcRef,
     /// Events made while the move is held.
     events: Vec<Event>,
+    /// The block carries `,C`/`,R`: the corner is cut in the programmed
+    /// contour when the next move is known.
+    corner: Option<Box<HeldCorner>>,
+}
+
+/// A `,C`/`,R` on a held compensated move (000 §4.3): the corner goes into
+/// the programmed contour, then is compensated like any other path.
+struct HeldCorner {
+    chamfer: bool,
+    size: f64,
+    /// The block's path in program coordinates (the corner is cut there,
+    /// then transformed with the block).
+    seg: Seg,
+    /// The transforms of the block: the next move must have the same.
+    xf: crate::xform::Xform,
+    /// The `,C`/`,R` word.
+    word: SrcRef,
 }
 
 /// Compensation state; `Interp::comp` is None when compensation is
@@ -56,6 +73,8 @@ pub(crate) struct CompState {
     on: bool,
     /// Signed offset for the blocks from now on (+ left of travel).
     r: f64,
+    /// +1 for G41, −1 for G42.
+    side: f64,
     /// Lathe: imaginary tip shift for the blocks from now on.
     tip: P,
     /// Plane of the offset mode.
@@ -82,6 +101,13 @@ pub(crate) struct CompState {
     circular: bool,
     /// A spare event buffer (reused between held moves).
     spare: Vec<Event>,
+}
+
+impl CompState {
+    /// G41/G42 in force.
+    pub(crate) fn on(&self) -> bool {
+        self.on
+    }
 }
 
 fn padd(a: P, b: P) -> P {
@@ -113,6 +139,7 @@ impl Interp {
         CompState {
             on: false,
             r: 0.0,
+            side: 1.0,
             tip: (0.0, 0.0),
             plane: self.st.plane,
             startup: false,
@@ -182,6 +209,25 @@ impl Interp {
         }
         let mode = self.st.modal[COMP_GROUP];
         let g39 = one_shot.iter().find(|g| g.0 == 390).map(|g| g.1);
+        // G41/G42 go with G00/G01 (000 §13.2.1: "[G00/G01] X_ Y_ G41");
+        // a reference return or machine-coordinate move cannot start the
+        // offset (G40 with them is a cancel: allowed).
+        if let Some(&(g, _)) = one_shot
+            .iter()
+            .find(|g| matches!(g.0, 270 | 280 | 290 | 300 | 530))
+        {
+            if let Some(&(c, at)) = self.words.gs().iter().find(|x| matches!(x.0, 410 | 420)) {
+                return Err(self.alarm(
+                    AlarmKind::CompArc,
+                    at,
+                    format!(
+                        "G{} in a G{} block: cutter compensation starts in a G00/G01 move",
+                        fmt_code(c),
+                        fmt_code(g)
+                    ),
+                ));
+            }
+        }
         if self.comp.is_none() {
             if mode == 400 {
                 if let Some(at) = g39 {
@@ -192,19 +238,6 @@ impl Interp {
                     ));
                 }
                 return Ok(false);
-            }
-            if self.st.xf.scale.is_some() {
-                let at = self
-                    .words
-                    .gs()
-                    .iter()
-                    .find(|g| matches!(g.0, 410 | 420))
-                    .map_or(0, |g| g.1);
-                return Err(self.alarm(
-                    AlarmKind::NotYetSupported,
-                    at,
-                    "cutter compensation under scaling (G51) is not yet supported: the offset would be scaled",
-                ));
             }
             self.comp = Some(Box::new(self.comp_new()));
         }
@@ -251,6 +284,7 @@ impl Interp {
             410 | 420 => {
                 let side = if mode == 410 { 1.0 } else { -1.0 };
                 let c = self.comp.as_deref_mut().expect("set");
+                c.side = side;
                 c.r = side * value;
                 c.tip = if value < 0.0 { (0.0, 0.0) } else { tip };
                 if !c.on {
@@ -260,7 +294,7 @@ impl Interp {
                 }
             }
             _ => {
-                let dir = ijk(self);
+                let dir = ijk(self).map(|d| self.xf_dir(d));
                 let c = self.comp.as_deref_mut().expect("set");
                 if c.on {
                     c.on = false;
@@ -285,7 +319,8 @@ impl Interp {
                     any.then(|| (tw[a1] - cur[a1], tw[a2] - cur[a2]))
                         .filter(|d| d.0.hypot(d.1) > 1e-9)
                 }
-            };
+            }
+            .map(|d| self.xf_dir(d));
             self.comp.as_deref_mut().expect("set").g39 = Some(dir);
             return Ok(true);
         }
@@ -295,12 +330,9 @@ impl Interp {
     /// The block's move in compensation (offset mode, or a held move or
     /// vector left over).
     pub(super) fn comp_motion(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
-        if let Some((_, w)) = self.words.corner() {
-            return Err(self.alarm(
-                AlarmKind::NotYetSupported,
-                w.at,
-                ",C/,R in cutter compensation mode is not yet supported",
-            ));
+        if self.corner.is_some() {
+            // A ,C/,R move held before the compensation started.
+            return Err(self.corner_broken("a cutter compensation start-up (G41/G42)"));
         }
         let plane = self.st.plane;
         let (a1, a2, _) = plane.axes();
@@ -314,40 +346,104 @@ impl Interp {
             c.startup = c.on;
             return self.plain_motion(mode, tw, any, at);
         }
-        let (s, e) = ((cur[a1], cur[a2]), (tw[a1], tw[a2]));
+        // The compensation works on the path after scaling, mirror and
+        // rotation (000 §15.4.2): the block's points are mapped with the
+        // block's own transform here, so a held move keeps it whatever the
+        // next block changes.
+        let (cur_t, tw_t) = (self.xf_point(&cur), self.xf_point(&tw));
+        let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
+        let (sp, ep) = ((cur[a1], cur[a2]), (tw[a1], tw[a2]));
         let seg = if arc {
             let ijk = [b'I', b'J', b'K'].iter().any(|&l| self.words.has(l));
             if comp::dist(s, e) < comp::EPS && !ijk {
                 None
             } else {
-                self.arc_center(tw, any, mode == 30, at)?.map(|c| Seg::Arc {
-                    a: s,
-                    b: e,
-                    c,
-                    ccw: mode == 30,
-                })
+                match self.arc_center(tw, any, mode == 30, at)? {
+                    None => None,
+                    Some(pc) => {
+                        let (_, _, c, ccw) = self.transform_arc(cur, tw, pc, mode == 30, at)?;
+                        let prog = Seg::Arc {
+                            a: sp,
+                            b: ep,
+                            c: pc,
+                            ccw: mode == 30,
+                        };
+                        Some((Seg::Arc { a: s, b: e, c, ccw }, prog))
+                    }
+                }
             }
         } else {
-            (comp::dist(s, e) >= comp::EPS).then_some(Seg::Line { a: s, b: e })
+            (comp::dist(s, e) >= comp::EPS)
+                .then_some((Seg::Line { a: s, b: e }, Seg::Line { a: sp, b: ep }))
         };
-        let Some(seg) = seg else {
+        let word = self.corner_word()?;
+        let Some((mut seg, seg_p)) = seg else {
             if !any {
                 return Ok(());
             }
+            if let Some((_, w)) = word {
+                return Err(self.corner_no_move(w, "a block that does not move in the plane"));
+            }
             return self.comp_offplane(mode, tw, any, at);
+        };
+        // ,C/,R on this block: a cutting move in the plane alone.
+        let off_plane = (0..NAXES).any(|i| i != a1 && i != a2 && (tw[i] - cur[i]).abs() > 1e-9);
+        let on_now = self.comp.as_deref().is_some_and(|c| c.on);
+        let corner = match word {
+            None => None,
+            Some((_, w)) if mode == 0 => return Err(self.corner_no_move(w, "a G00 block")),
+            Some((_, w)) if !on_now => return Err(self.corner_no_move(w, "a G40 block")),
+            Some((_, w)) if off_plane => {
+                return Err(self.corner_no_move(w, "a block that does not move in the plane alone"))
+            }
+            Some((chamfer, w)) => Some(Box::new(HeldCorner {
+                chamfer,
+                size: self.linear(w),
+                seg: seg_p,
+                xf: self.st.xf,
+                word: self.src_here(w.at),
+            })),
         };
         let speed = if mode == 0 {
             Speed::Rapid
         } else {
             Speed::Feed(self.feed(at)?)
         };
+        // The offset value is read for every move: a D word, a lathe T
+        // code or G10 changing the value in offset mode takes effect at
+        // the end of the next compensated move (000 §13.2.2: that block
+        // runs slanted from the old vector to the new one).
+        let (value, vtip) = self.comp_value();
         let c = self.comp.as_deref_mut().expect("comp");
+        if c.on {
+            c.r = c.side * value;
+            c.tip = if value < 0.0 { (0.0, 0.0) } else { vtip };
+        }
         c.moved = true;
         c.idle = 0;
         let (on, r, tip, vec, startup, type_b) = (c.on, c.r, c.tip, c.vec, c.startup, c.type_b);
-        let held = c.held.take();
+        // A mirror image on one axis of the plane reverses the path's
+        // turning sense: the offset goes to the other side of travel
+        // (000 §15.3); its value is not scaled.
+        let r = if self.st.xf.mirrors(plane) { -r } else { r };
+        let mut held = c.held.take();
         let g39 = c.g39.take().or(c.circular.then_some(None));
         let ij = c.ij.take();
+        let mut cur_t = cur_t;
+        // A held ,C/,R: the corner cut in the programmed contour; the held
+        // move ends at its first point, the corner becomes a held path of
+        // that block and this move starts at its second point.
+        let mut g39 = g39;
+        if let Some(hc) = held.as_mut().and_then(|h| h.corner.take()) {
+            let mut h = held.take().expect("held");
+            let cut = (mode, on, off_plane, e);
+            let (mut mid, p2) = self.comp_cut_corner(&mut h, &hc, cut, &seg_p, cur)?;
+            mid.cstart = self.comp_join(&mut h, &mid.seg, mid.r, g39.take(), type_b)?;
+            held = Some(mid);
+            seg = seg.with_start(p2);
+            cur_t = self.plane_pt(cur_t, p2);
+        }
+        let held = held;
         if !on {
             if arc {
                 return Err(self.alarm(
@@ -356,7 +452,7 @@ impl Interp {
                     "cutter compensation cancelled (G40) in a G02/G03 block: cancel in G00/G01",
                 ));
             }
-            let base = if let Some(h) = held {
+            let base = if let Some(mut h) = held {
                 let k = h.seg.end();
                 let j = if h.startup {
                     Join::at(self.comp_geom(comp::perp_end(&h.seg, h.r), h.motion)?)
@@ -372,13 +468,13 @@ impl Interp {
                     self.comp_geom(j, h.motion)?
                 };
                 let htip = h.tip;
-                self.comp_flush(h, &j)?;
+                self.comp_flush(&mut h, &j)?;
                 padd(j.start2(), htip)
             } else {
                 padd(s, vec)
             };
             let prog = self.st.pos;
-            self.st.pos = self.to_machine(&self.plane_pt(cur, base));
+            self.st.pos = self.offset_to_machine(&self.plane_pt(cur_t, base));
             let r = self.line_to(tw, speed, at);
             if r.is_err() {
                 self.st.pos = prog;
@@ -390,24 +486,8 @@ impl Interp {
         // The offset at this block's start must exist (an inside arc
         // larger than the offset).
         self.comp_geom(comp::perp_start(&seg, r), self.src_here(at))?;
-        let cstart = if let Some(h) = held {
-            let j = if h.startup {
-                comp::startup(&h.seg, &seg, h.r, type_b)
-            } else {
-                comp::corner(
-                    &h.seg,
-                    h.r,
-                    &seg,
-                    r,
-                    CornerOpt {
-                        g39,
-                        perpendicular: false,
-                    },
-                )
-            };
-            let j = self.comp_geom(j, h.motion)?;
-            self.comp_flush(h, &j)?;
-            j.start2()
+        let cstart = if let Some(mut h) = held {
+            self.comp_join(&mut h, &seg, r, g39, type_b)?
         } else {
             if startup && arc {
                 return Err(self.alarm(
@@ -427,8 +507,8 @@ impl Interp {
         let events = std::mem::take(&mut c.spare);
         c.held = Some(Held {
             seg,
-            start: cur,
-            end: tw,
+            start: cur_t,
+            end: tw_t,
             cstart,
             speed,
             r,
@@ -437,9 +517,147 @@ impl Interp {
             src,
             motion,
             events,
+            corner,
         });
         self.st.pos = self.to_machine(&tw);
         Ok(())
+    }
+
+    /// The corner between the held move `h` and the next path `next`
+    /// (offset `r`), or the start-up when `h` is one; `h` is emitted up to
+    /// it. Returns where `next` starts.
+    fn comp_join(
+        &mut self,
+        h: &mut Held,
+        next: &Seg,
+        r: f64,
+        g39: Option<Option<P>>,
+        type_b: bool,
+    ) -> R<P> {
+        let j = if h.startup {
+            comp::startup(&h.seg, next, h.r, type_b)
+        } else {
+            comp::corner(
+                &h.seg,
+                h.r,
+                next,
+                r,
+                CornerOpt {
+                    g39,
+                    perpendicular: false,
+                },
+            )
+        };
+        let j = self.comp_geom(j, h.motion)?;
+        self.comp_flush(h, &j)?;
+        Ok(j.start2())
+    }
+
+    /// `,C`/`,R` of the held move `h` with the next move (`seg_p` in
+    /// program coordinates from `cur`; `cut`: its motion mode, offset mode
+    /// on, moving off the plane, transformed end): the chamfer or corner
+    /// arc cut in the programmed contour (000 §4.3) and transformed with
+    /// the block. `h` is trimmed to the corner's first point; returns the
+    /// corner as a held path of `h`'s block (with `h`'s events, which come
+    /// after the corner) and the corner's second point, where the next
+    /// move starts.
+    fn comp_cut_corner(
+        &mut self,
+        h: &mut Held,
+        hc: &HeldCorner,
+        cut: (u16, bool, bool, P),
+        seg_p: &Seg,
+        cur: Pos,
+    ) -> R<(Held, P)> {
+        let (mode, on, off_plane, end2) = cut;
+        let k = if hc.chamfer { 'C' } else { 'R' };
+        let id = self.dialect.id;
+        let broken = |what: &str| {
+            AlarmKind::CornerNoMove.at(
+                id,
+                hc.word,
+                format!("{what} after a ,{k} block: the next move must be G01/G02/G03 in the same plane"),
+            )
+        };
+        if !on {
+            return Err(broken("G40"));
+        }
+        if mode == 0 {
+            return Err(broken("G00"));
+        }
+        if off_plane {
+            return Err(broken("a move off the plane"));
+        }
+        if hc.xf != self.st.xf {
+            return Err(AlarmKind::CornerConflict.at(
+                id,
+                hc.word,
+                format!("the coordinate transform changed between a ,{k} block and its next move"),
+            ));
+        }
+        let size = fmt_num(hc.size);
+        let found = if hc.chamfer {
+            crate::corner::chamfer(&hc.seg, seg_p, hc.size)
+        } else {
+            crate::corner::round(&hc.seg, seg_p, hc.size)
+        };
+        let c = found.map_err(|e| {
+            let why = match e {
+                crate::corner::CornerError::TooLarge => {
+                    format!(",{k}{size} does not fit on the two paths at this corner")
+                }
+                crate::corner::CornerError::NoCorner => {
+                    format!(",{k}{size}: the paths meet without a corner (tangent or reversing)")
+                }
+            };
+            AlarmKind::CornerTooLarge.at(id, hc.word, why)
+        })?;
+        let (a1, a2, _) = self.st.plane.axes();
+        let fwd = |me: &Self, q: P| {
+            let p = me.xf_point(&me.plane_pt(cur, q));
+            (p[a1], p[a2])
+        };
+        let (p1, p2) = (fwd(self, c.p1()), fwd(self, c.p2()));
+        // In offset mode both paths must keep a part: a path used up by
+        // the corner has no direction to offset.
+        if comp::dist(h.seg.start(), p1) < comp::EPS || comp::dist(p2, end2) < comp::EPS {
+            return Err(AlarmKind::CornerTooLarge.at(
+                id,
+                hc.word,
+                format!(",{k}{size} uses up a whole path: in cutter compensation mode the corner must leave part of both paths"),
+            ));
+        }
+        let seg = match c {
+            crate::corner::Corner::Chamfer { .. } => Seg::Line { a: p1, b: p2 },
+            crate::corner::Corner::Round { c: pc, ccw, .. } => {
+                let (q1, q2) = (self.plane_pt(cur, c.p1()), self.plane_pt(cur, c.p2()));
+                let (_, _, ct, ccw) = self.transform_arc(q1, q2, pc, ccw, 0)?;
+                Seg::Arc {
+                    a: p1,
+                    b: p2,
+                    c: ct,
+                    ccw,
+                }
+            }
+        };
+        h.seg = h.seg.with_end(p1);
+        let end = h.end;
+        h.end = self.plane_pt(end, p1);
+        let mid = Held {
+            seg,
+            start: h.end,
+            end: self.plane_pt(end, p2),
+            cstart: (0.0, 0.0),
+            speed: h.speed,
+            r: h.r,
+            tip: h.tip,
+            startup: false,
+            src: h.src,
+            motion: h.motion,
+            events: std::mem::take(&mut h.events),
+            corner: None,
+        };
+        Ok((mid, p2))
     }
 
     /// A move without motion in the plane (Z alone in G17): with a move
@@ -447,17 +665,34 @@ impl Interp {
     /// it moves at the vector in force.
     fn comp_offplane(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
         let c = self.comp.as_deref().expect("comp");
+        if let Some(hc) = c.held.as_ref().and_then(|h| h.corner.as_ref()) {
+            let k = if hc.chamfer { 'C' } else { 'R' };
+            return Err(AlarmKind::CornerNoMove.at(
+                self.dialect.id,
+                hc.word,
+                format!("a move off the plane after a ,{k} block: the next move must be G01/G02/G03 in the same plane"),
+            ));
+        }
         if c.held.is_some() || (c.vec.0 == 0.0 && c.vec.1 == 0.0) {
             return self.plain_motion(mode, tw, any, at);
         }
         let vec = c.vec;
-        let cur = self.prog_pos();
+        let cur_t = self.xf_point(&self.prog_pos());
+        let tw_t = self.xf_point(&tw);
         let (a1, a2, _) = self.st.plane.axes();
-        let p = padd((cur[a1], cur[a2]), vec);
+        let p = padd((cur_t[a1], cur_t[a2]), vec);
         let prog = self.st.pos;
-        self.st.pos = self.to_machine(&self.plane_pt(cur, p));
+        self.st.pos = self.offset_to_machine(&self.plane_pt(cur_t, p));
         self.comp_prog = Some(self.work_of(&self.to_machine(&tw)));
-        let r = self.plain_motion(mode, self.plane_pt(tw, p), any, at);
+        // The vector is in the transformed plane: the target back in
+        // program coordinates for the move.
+        let target = self.plane_pt(tw_t, p);
+        let target = if self.st.xf.active() {
+            self.st.xf.inverse(&target)
+        } else {
+            target
+        };
+        let r = self.plain_motion(mode, target, any, at);
         self.comp_prog = None;
         self.st.pos = if r.is_ok() {
             self.to_machine(&tw)
@@ -473,13 +708,21 @@ impl Interp {
         let Some(c) = self.comp.as_deref_mut() else {
             return Ok(());
         };
-        let Some(h) = c.held.take() else {
+        let Some(mut h) = c.held.take() else {
             return Ok(());
         };
+        if let Some(hc) = &h.corner {
+            let k = if hc.chamfer { 'C' } else { 'R' };
+            return Err(AlarmKind::CornerNoMove.at(
+                self.dialect.id,
+                hc.word,
+                format!("no G01/G02/G03 move in the plane follows the ,{k} block (a move of another kind, too many blocks without a move, or the end)"),
+            ));
+        }
         let end1 = self.comp_geom(comp::perp_end(&h.seg, h.r), h.motion)?;
         let (a1, a2, _) = self.st.plane.axes();
         let vec = psub(padd(end1, h.tip), (h.end[a1], h.end[a2]));
-        self.comp_flush(h, &Join::at(end1))?;
+        self.comp_flush(&mut h, &Join::at(end1))?;
         self.comp.as_deref_mut().expect("comp").vec = vec;
         Ok(())
     }
@@ -535,12 +778,17 @@ impl Interp {
     /// Emits a held move up to `j.end1`, the events kept back (motions at
     /// the corner's plane point), then the corner's pieces. Alarms point
     /// at the held block's motion word.
-    fn comp_flush(&mut self, mut h: Held, j: &Join) -> R<()> {
+    fn comp_flush(&mut self, h: &mut Held, j: &Join) -> R<()> {
         let prog = self.st.pos;
+        // The held points are already transformed (scaling, mirror,
+        // rotation of their own block): emitted through the offset stack
+        // only.
+        let xf = std::mem::take(&mut self.st.xf);
         let base = self.prog_pos();
         let here = std::mem::replace(&mut self.cur, h.src);
         let mut events = std::mem::take(&mut h.events);
-        let r = self.comp_emit(&h, j, base, &mut events);
+        let r = self.comp_emit(h, j, base, &mut events);
+        self.st.xf = xf;
         self.comp_prog = None;
         self.cur = here;
         self.st.pos = prog;
@@ -625,6 +873,29 @@ impl Interp {
             prev = p.end();
         }
         Ok(())
+    }
+
+    /// A program point mapped by the transforms in force (scaling,
+    /// mirror, rotation): the coordinates the compensation works in.
+    fn xf_point(&self, p: &Pos) -> Pos {
+        if self.st.xf.active() {
+            self.st.xf.forward(p)
+        } else {
+            *p
+        }
+    }
+
+    /// A direction in the plane (program coordinates) mapped by the
+    /// transforms in force.
+    fn xf_dir(&self, d: P) -> P {
+        if !self.st.xf.active() {
+            return d;
+        }
+        let o = [0.0; NAXES];
+        let q = self.plane_pt(o, d);
+        let (a1, a2, _) = self.st.plane.axes();
+        let (fo, fq) = (self.st.xf.forward(&o), self.st.xf.forward(&q));
+        (fq[a1] - fo[a1], fq[a2] - fo[a2])
     }
 
     /// `p` with its plane coordinates replaced by `uv`.

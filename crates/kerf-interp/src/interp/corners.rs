@@ -276,7 +276,7 @@ impl Interp {
 
     /// The block's `,C`/`,R` (chamfer?, word), None for none or a zero
     /// value; a negative value is an alarm.
-    fn corner_word(&self) -> R<Option<(bool, WVal)>> {
+    pub(super) fn corner_word(&self) -> R<Option<(bool, WVal)>> {
         let Some((chamfer, w)) = self.words.corner() else {
             return Ok(None);
         };
@@ -345,7 +345,7 @@ impl Interp {
         )
     }
 
-    fn corner_no_move(&self, w: WVal, what: &str) -> Alarm {
+    pub(super) fn corner_no_move(&self, w: WVal, what: &str) -> Alarm {
         self.alarm(
             AlarmKind::CornerNoMove,
             w.at,

@@ -473,7 +473,7 @@ impl Interp {
     /// direction (000 §15.3). With unequal plane factors the arc keeps its
     /// transformed end points and takes its radius times the larger
     /// factor, on the same side (fanuc-semantics §8.3).
-    fn transform_arc(
+    pub(super) fn transform_arc(
         &self,
         start: Pos,
         tw: Pos,

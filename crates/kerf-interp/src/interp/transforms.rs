@@ -18,20 +18,19 @@ impl Interp {
             return Ok(false);
         }
         let mut data = false;
-        // Cutter compensation holds moves in program coordinates and maps
-        // them with the transform in force when they are emitted, so a
-        // change of scaling or rotation in offset mode would misplace the
-        // held move: refused until the compensation works after the
-        // transforms (000 §15.4.2 allows it; docs/dialects.md).
-        if self.comp.is_some() {
+        // Cutter compensation works on the transformed path, so G68/G69
+        // may change the rotation in offset mode (000 §15.4.2's N1-N8).
+        // Scaling is set before G41/G42 and cancelled after G40 (000
+        // §15.4.2: G51, G68, G41 … G40, G69, G50).
+        if self.comp.as_deref().is_some_and(|c| c.on()) && self.st.modal[7] != 400 {
             for i in 0..self.words.ng {
                 let (c, at) = self.words.g[i];
-                if matches!(c, 500 | 510 | 680 | 690) {
+                if matches!(c, 500 | 510) {
                     return Err(self.alarm(
-                        AlarmKind::NotYetSupported,
+                        AlarmKind::TransformConflict,
                         at,
                         format!(
-                            "G{} in cutter compensation mode is not yet supported: cancel with G40 first",
+                            "G{} in cutter compensation mode: command scaling before G41/G42 and cancel it after G40 (000 §15.4.2)",
                             fmt_code(c)
                         ),
                     ));
