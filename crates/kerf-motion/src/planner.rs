@@ -5,7 +5,7 @@
 
 use std::collections::VecDeque;
 
-use kerf_canon::{Canon, Event, Feed, ModeChange, Pos, SpindleDir, NAXES};
+use kerf_canon::{Canon, Event, Feed, ModeChange, Motion, Plane, Pos, SpindleDir, NAXES};
 
 use crate::dynamics::Dynamics;
 use crate::geom::{line_len, Geom};
@@ -120,6 +120,42 @@ struct Seg {
     stop: bool,
     t_in: Pos,
     t_out: Pos,
+    /// Programmed feed after overrides and clamp (before the axis
+    /// limits), mm/s: what the G62 override scales.
+    feed: f64,
+    /// Cutter compensation at the end: tool centre minus programmed
+    /// point (X Y Z), zero without compensation.
+    off: [f64; 3],
+}
+
+/// Tool centre minus programmed end point of a compensated move.
+fn comp_offset(m: &Motion, prog: Option<&Pos>) -> [f64; 3] {
+    match prog {
+        Some(p) => [m.to[0] - p[0], m.to[1] - p[1], m.to[2] - p[2]],
+        None => [0.0; 3],
+    }
+}
+
+/// Splits a segment at fraction `frac` of its length; the first part
+/// ends inside the move (no stop, no record, no compensation corner).
+fn split(s: &Seg, frac: f64) -> (Seg, Seg) {
+    let (g0, g1) = (s.geom.sub(0.0, frac), s.geom.sub(frac, 1.0));
+    let mut h = *s;
+    let mut t = *s;
+    h.geom = g0;
+    h.len = s.len * frac;
+    h.last = false;
+    h.stop = false;
+    h.off = [0.0; 3];
+    t.geom = g1;
+    t.len = s.len - h.len;
+    if let Geom::Arc { .. } = s.geom {
+        h.t_out = g0.tangent(1.0);
+        t.t_in = g1.tangent(0.0);
+    }
+    // Inside one move the path is smooth: only the speed limits meet.
+    t.jmax = h.vmax.min(t.vmax);
+    (h, t)
 }
 
 /// The planner. Push events in execution order with [`Planner::push`];
@@ -140,6 +176,7 @@ pub struct Planner {
     rpm: f64,
     css: Option<f64>,
     exact_mode: bool,
+    corner_mode: bool,
     g09: bool,
     tapping: bool,
     high_speed: bool,
@@ -184,6 +221,7 @@ impl Planner {
             rpm: 0.0,
             css: None,
             exact_mode: false,
+            corner_mode: false,
             g09: false,
             tapping: false,
             high_speed: false,
@@ -299,19 +337,22 @@ impl Planner {
                     p0: self.pos,
                     p1: m.mto,
                 };
-                self.cut(g, *feed, m.to[0], false);
+                let off = comp_offset(m, e.prog.as_deref());
+                self.cut(g, *feed, m.to[0], false, off, 1.0);
             }
             Canon::Arc {
                 m,
+                center,
                 mcenter,
                 plane,
                 dir,
                 turns,
                 feed,
-                ..
             } => {
                 let g = Geom::arc(self.pos, m.mto, *mcenter, *plane, *dir, *turns);
-                self.cut(g, *feed, m.to[0], false);
+                let off = comp_offset(m, e.prog.as_deref());
+                let ratio = self.internal_arc_ratio(&m.to, center, *plane, e.prog.as_deref());
+                self.cut(g, *feed, m.to[0], false, off, ratio);
             }
             Canon::Thread { m, lead } => {
                 let g = Geom::Line {
@@ -320,7 +361,7 @@ impl Planner {
                 };
                 // Spindle-synchronised: lead × rpm, no override, stop at the end.
                 let v = lead * self.rpm;
-                self.cut(g, Feed::PerMin(v), m.to[0], true);
+                self.cut(g, Feed::PerMin(v), m.to[0], true, [0.0; 3], 1.0);
             }
             Canon::Dwell {
                 seconds,
@@ -371,15 +412,23 @@ impl Planner {
                 self.exact_mode = on;
                 if on {
                     self.tapping = false;
+                    self.corner_mode = false;
                 }
             }
-            ModeChange::CuttingMode | ModeChange::CornerOverride => {
+            ModeChange::CuttingMode => {
                 self.exact_mode = false;
                 self.tapping = false;
+                self.corner_mode = false;
+            }
+            ModeChange::CornerOverride => {
+                self.exact_mode = false;
+                self.tapping = false;
+                self.corner_mode = true;
             }
             ModeChange::TappingMode => {
                 self.exact_mode = false;
                 self.tapping = true;
+                self.corner_mode = false;
             }
             ModeChange::HighSpeed(on) => {
                 self.high_speed = on;
@@ -552,7 +601,92 @@ impl Planner {
         Some(v.max(0.0))
     }
 
-    fn cut(&mut self, g: Geom, feed: Feed, to_work_x: f64, thread: bool) {
+    /// Internal circular cutting feed change (000 §5.3.6): on an arc
+    /// whose tool centre radius `Rc` is smaller than the programmed
+    /// radius `Rp` (the compensated tool inside the arc), the feed is
+    /// scaled by `Rc/Rp`, not below the lower limit (PI 132).
+    fn internal_arc_ratio(&self, to: &Pos, center: &Pos, plane: Plane, prog: Option<&Pos>) -> f64 {
+        let (Some(min), Some(pp)) = (self.d.internal_arc_min, prog) else {
+            return 1.0;
+        };
+        let (a1, a2, _) = plane.axes();
+        let rc = (to[a1] - center[a1]).hypot(to[a2] - center[a2]);
+        let rp = (pp[a1] - center[a1]).hypot(pp[a2] - center[a2]);
+        if rp > 0.0 && rc < rp {
+            (rc / rp).max(min)
+        } else {
+            1.0
+        }
+    }
+
+    /// G62 (or PI 131 always): the junction from the last queued segment
+    /// into `n` is an inside corner of the compensated path whose angle
+    /// is from 2° up to PI 130. Inside: the tool centre's corner lies
+    /// towards the turn from the programmed corner
+    /// (`off · (u2 − u1) > 0`, `off` = tool centre − programmed point).
+    fn inside_corner(&self, n: &Seg) -> bool {
+        if !(self.corner_mode || (self.d.corner.always && !self.tapping)) {
+            return false;
+        }
+        let Some(p) = self.q.back() else {
+            return false;
+        };
+        let on = p.off[0].hypot(p.off[1]).hypot(p.off[2]);
+        if p.stop || on <= 0.0 {
+            return false;
+        }
+        let (u1, u2) = (&p.t_out, &n.t_in);
+        let (n1, n2) = (dot(u1, u1).sqrt(), dot(u2, u2).sqrt());
+        if n1 <= 0.0 || n2 <= 0.0 {
+            return false;
+        }
+        let c = (dot(u1, u2) / (n1 * n2)).clamp(-1.0, 1.0);
+        let angle = 180.0 - c.acos().to_degrees();
+        if !(2.0..=self.d.corner.angle_deg).contains(&angle) {
+            return false;
+        }
+        let inward: f64 = (0..3).map(|i| p.off[i] * (u2[i] / n2 - u1[i] / n1)).sum();
+        inward > 1e-9 * on
+    }
+
+    /// G62 before the corner: the last `before` mm of the last queued
+    /// segment run at the overridden feed.
+    fn override_before(&mut self) {
+        let (f, ls) = (self.d.corner.factor, self.d.corner.before);
+        if ls <= 0.0 {
+            return;
+        }
+        let Some(mut p) = self.q.pop_back() else {
+            return;
+        };
+        let red = p.vmax.min(p.feed * f).max(1e-6);
+        if ls >= p.len {
+            p.vmax = red;
+            p.jmax = p.jmax.min(red);
+            p.vb = p.jmax.min((2.0 * p.acc * p.len).sqrt());
+            self.q.push_back(p);
+        } else {
+            let (mut h, mut t) = split(&p, (p.len - ls) / p.len);
+            t.vmax = red;
+            t.jmax = t.jmax.min(red);
+            t.vb = t.jmax.min((2.0 * t.acc * t.len).sqrt());
+            // Recomputed by the backward pass below.
+            h.vb = -1.0;
+            self.q.push_back(h);
+            self.q.push_back(t);
+        }
+        self.backward();
+    }
+
+    fn cut(
+        &mut self,
+        g: Geom,
+        feed: Feed,
+        to_work_x: f64,
+        thread: bool,
+        off: [f64; 3],
+        ratio: f64,
+    ) {
         let len = g.len();
         let from_x = self.work_x;
         self.work_x = to_work_x;
@@ -618,6 +752,7 @@ impl Planner {
             } else {
                 self.feed_mm_min(feed, len)
             };
+            let f = if thread { f } else { f * ratio };
             let slen = if pieces == 1 { len } else { sub.len() };
             if f.is_nan() || f <= 0.0 {
                 // Per-revolution feed or thread with the spindle stopped:
@@ -646,15 +781,12 @@ impl Planner {
                 }
                 Geom::Arc { .. } => (sub.tangent(0.0), sub.tangent(1.0)),
             };
-            let (vmax, acc) = self.limits(
-                &sub,
-                &t_in,
-                f.min(if thread {
-                    f64::INFINITY
-                } else {
-                    self.d.max_feed
-                }),
-            );
+            let f = f.min(if thread {
+                f64::INFINITY
+            } else {
+                self.d.max_feed
+            });
+            let (vmax, acc) = self.limits(&sub, &t_in, f);
             let seg = Seg {
                 id,
                 last: k + 1 == pieces,
@@ -667,7 +799,25 @@ impl Planner {
                 stop: stop && k + 1 == pieces,
                 t_in,
                 t_out,
+                feed: f / 60.0,
+                off: if k + 1 == pieces { off } else { [0.0; 3] },
             };
+            if k == 0 && self.inside_corner(&seg) {
+                self.override_before();
+                let (f, le) = (self.d.corner.factor, self.d.corner.after);
+                let red = seg.vmax.min(seg.feed * f).max(1e-6);
+                if le >= seg.len {
+                    self.push_seg(Seg { vmax: red, ..seg });
+                } else if le > 0.0 {
+                    let (mut h, t) = split(&seg, le / seg.len);
+                    h.vmax = red;
+                    self.push_seg(h);
+                    self.push_seg(t);
+                } else {
+                    self.push_seg(seg);
+                }
+                continue;
+            }
             self.push_seg(seg);
         }
     }
@@ -707,7 +857,18 @@ impl Planner {
         s.vb = s.jmax.min((2.0 * s.acc * s.len).sqrt());
         let stop = s.stop;
         self.q.push_back(s);
-        // Backward pass: raise entry bounds until one does not change.
+        self.backward();
+        if stop {
+            self.flush();
+        }
+        while self.q.len() > self.window {
+            self.finalize_head();
+        }
+    }
+
+    /// Backward pass from the last queued segment: lower entry bounds to
+    /// what can still brake to the next one's, until one does not change.
+    fn backward(&mut self) {
         let n = self.q.len();
         for i in (0..n.saturating_sub(1)).rev() {
             let next_vb = self.q[i + 1].vb;
@@ -719,12 +880,6 @@ impl Planner {
                 break;
             }
             si.vb = nb;
-        }
-        if stop {
-            self.flush();
-        }
-        while self.q.len() > self.window {
-            self.finalize_head();
         }
     }
 
