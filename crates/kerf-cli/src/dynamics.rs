@@ -163,6 +163,7 @@ pub fn dynamics_of(
         None if p.kind == kerf_interp::machine::MachineKind::Mill => Some(0.1),
         None => None,
     };
+    d.position_gain = num(m, "position_gain", "motion.position_gain")?.unwrap_or(30.0);
     d.tool_change_s = p.tools.change_time_s;
     d.feed_override = feed_override / 100.0;
     d.rapid_override = rapid_override / 100.0;

@@ -191,10 +191,38 @@ pub struct Planner {
     pub rapid_length: f64,
     /// Spindle speed limit used with constant surface speed, rpm.
     pub max_rpm: f64,
+    /// Following error of each axis's position loop behind the
+    /// unsmoothed command (see [`lag_phase`]), mm.
+    lag: Pos,
+    /// Position loop gain, 1/s (infinite: no servo lag).
+    gain: f64,
+    /// Factor from the loop's error behind the unsmoothed command at the
+    /// end of the interpolation to its error when the smoothed command
+    /// arrives: `((1 − e^(−K·T))/(K·T))^k`.
+    lag_c: f64,
     /// Cutting moves with no feed (per-revolution feed or thread with the
     /// spindle stopped): the control would wait for ever; they are timed
     /// as 0 s and counted here.
     pub stalled: u64,
+}
+
+/// The following error `e` of a first-order position loop of gain `k`
+/// (`de/dt = v − k·e`) after `dt` seconds of a command whose speed is
+/// `v0 + a·t`: `e·E + v0·(1 − E)/k + a·(k·dt − (1 − E))/k²`, `E = e^(−k·dt)`.
+/// Returns (E, the increment for e = 0).
+fn lag_phase(k: f64, v0: f64, a: f64, dt: f64) -> (f64, f64) {
+    if dt <= 0.0 || k.is_nan() || !k.is_finite() {
+        return (1.0, 0.0);
+    }
+    let x = k * dt;
+    let one_minus_e = -(-x).exp_m1();
+    // x − (1 − e^−x), by its series where the difference cancels.
+    let g = if x < 1e-3 {
+        x * x * (0.5 - x / 6.0 + x * x / 24.0)
+    } else {
+        x - one_minus_e
+    };
+    (1.0 - one_minus_e, v0 * one_minus_e / k + a * g / (k * k))
 }
 
 fn dot(a: &Pos, b: &Pos) -> f64 {
@@ -209,6 +237,13 @@ impl Planner {
         let t_smooth = d.smoothing_time();
         let stages = d.stages();
         let window = d.lookahead.max(1);
+        let gain = d.position_gain;
+        let lag_c = if gain.is_finite() && gain > 0.0 && t_smooth > 0.0 {
+            let x = gain * t_smooth;
+            (-(-x).exp_m1() / x).powi(stages as i32)
+        } else {
+            1.0
+        };
         Planner {
             t_smooth,
             stages,
@@ -233,6 +268,9 @@ impl Planner {
             rapid_length: 0.0,
             max_rpm: f64::INFINITY,
             stalled: 0,
+            lag: [0.0; NAXES],
+            gain,
+            lag_c,
             d,
         }
     }
@@ -317,6 +355,80 @@ impl Planner {
 
     fn drain_time(&self) -> f64 {
         self.stages as f64 * self.t_smooth
+    }
+
+    /// Runs the position loops through one trapezoid along the fixed
+    /// direction `u` (per axis, per mm of path).
+    fn track_lag(&mut self, u: &Pos, trap: &Trap) {
+        for (v0, a, dt) in [
+            (trap.v0, trap.a, trap.ta),
+            (trap.vp, 0.0, trap.tc),
+            (trap.vp, -trap.a, trap.td),
+        ] {
+            if dt > 0.0 {
+                let (e, inc) = lag_phase(self.gain, v0, a, dt);
+                for i in 0..NAXES {
+                    self.lag[i] = self.lag[i] * e + u[i] * inc;
+                }
+            }
+        }
+    }
+
+    /// The same along a segment: lines at their direction; arcs in steps
+    /// of at most 0.02 rad of the sweep (at most 256 per phase of the
+    /// trapezoid), each at the tangent of its middle.
+    fn track_lag_seg(&mut self, g: &Geom, u_line: &Pos, trap: &Trap) {
+        let sweep = match g {
+            Geom::Line { .. } => return self.track_lag(u_line, trap),
+            Geom::Arc { sweep, .. } => sweep.abs(),
+        };
+        let len = trap.len.max(1e-300);
+        let mut t0 = 0.0;
+        for (v0, a, dt) in [
+            (trap.v0, trap.a, trap.ta),
+            (trap.vp, 0.0, trap.tc),
+            (trap.vp, -trap.a, trap.td),
+        ] {
+            if dt > 0.0 {
+                let ds = trap.s_at(t0 + dt) - trap.s_at(t0);
+                let n = (sweep * ds / len / 0.02).ceil().clamp(1.0, 256.0);
+                let h = dt / n;
+                let (e, _) = lag_phase(self.gain, 0.0, 0.0, h);
+                for k in 0..n as usize {
+                    let tk = k as f64 * h;
+                    let u = g.tangent(trap.s_at(t0 + tk + 0.5 * h) / len);
+                    let (_, inc) = lag_phase(self.gain, v0 + a * tk, a, h);
+                    for i in 0..NAXES {
+                        self.lag[i] = self.lag[i] * e + u[i] * inc;
+                    }
+                }
+            }
+            t0 += dt;
+        }
+    }
+
+    /// In-position wait at a stop, s: when the smoothed command arrives,
+    /// each loop's error is `lag_c·|lag_i|`; it then decays as
+    /// `e^(−K·t)` until inside the axis's in-position width. The loops
+    /// are taken as settled afterwards.
+    fn settle(&mut self) -> f64 {
+        if !self.gain.is_finite() {
+            return 0.0;
+        }
+        let mut w: f64 = 0.0;
+        for i in 0..NAXES {
+            let width = self.d.in_position[i];
+            let e = self.lag_c * self.lag[i].abs();
+            if self.d.present[i] && width > 0.0 && e > width {
+                w = w.max((e / width).ln() / self.gain);
+            }
+        }
+        self.lag = [0.0; NAXES];
+        if w.is_finite() {
+            w
+        } else {
+            0.0
+        }
     }
 
     fn done(&mut self, t_end: f64) {
@@ -489,12 +601,42 @@ impl Planner {
         };
         let piece = Piece { t0: self.now, kind };
         let dur = piece.duration();
+        if self.gain.is_finite() && dur > 0.0 {
+            // Servo lag behind the positioning (each from a settled start).
+            match &piece.kind {
+                PieceKind::Move { geom, trap } => {
+                    let u = geom.tangent(0.0);
+                    self.lag = [0.0; NAXES];
+                    self.track_lag(&u, trap);
+                }
+                PieceKind::Axes { p0, p1, traps } => {
+                    for i in 0..NAXES {
+                        let sign = if p1[i] >= p0[i] { 1.0 } else { -1.0 };
+                        let mut u = [0.0; NAXES];
+                        u[i] = sign;
+                        let keep = self.lag;
+                        self.lag = [0.0; NAXES];
+                        self.track_lag(&u, &traps[i]);
+                        // At rest until the slowest axis arrives.
+                        let (e, _) = lag_phase(self.gain, 0.0, 0.0, dur - traps[i].time());
+                        let li = self.lag[i] * e;
+                        self.lag = keep;
+                        self.lag[i] = li;
+                    }
+                }
+                PieceKind::Hold { .. } => {}
+            }
+        }
         if let Some(p) = self.pieces.as_mut() {
             p.push_back(piece);
         }
         self.now += dur;
         self.pos = to;
-        let drain = if dur > 0.0 { self.drain_time() } else { 0.0 };
+        let drain = if dur > 0.0 {
+            self.drain_time() + self.settle()
+        } else {
+            0.0
+        };
         self.hold(drain);
         self.time.rapid += dur + drain;
         self.done(self.now);
@@ -906,6 +1048,9 @@ impl Planner {
         };
         let trap = Trap::plan(s.len, v0, v1, s.vmax, s.acc);
         self.head_v = if s.stop { 0.0 } else { trap.v1 };
+        if self.gain.is_finite() {
+            self.track_lag_seg(&s.geom, &s.t_in, &trap);
+        }
         let t0 = self.now;
         let dt = trap.time();
         if let Some(p) = self.pieces.as_mut() {
@@ -919,7 +1064,7 @@ impl Planner {
         let t_end = if s.stop {
             let pos = self.pos;
             self.pos = s.geom.end();
-            let drain = self.drain_time();
+            let drain = self.drain_time() + self.settle();
             self.hold(drain);
             self.pos = pos;
             spent += drain;

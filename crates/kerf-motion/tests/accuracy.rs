@@ -397,3 +397,110 @@ fn sampled_arcs_stay_on_path_and_within_limits() {
         assert!(j <= J * 1.0001, "r {r}: axis jerk {j}");
     }
 }
+
+/// The in-position wait by numeric integration, independent of the
+/// planner's closed form: the position loop `dx/dt = K·(c − x)` of every
+/// axis driven by the sampled smoothed command `c` (integrated exactly
+/// for `c` linear between samples), continued at the end point until
+/// every axis's error is within `w`; returns that moment minus the last
+/// sample's time (the command's arrival).
+fn servo_wait(s: &[(f64, Pos)], dt: f64, k: f64, w: f64) -> f64 {
+    let e = (-k * dt).exp();
+    let mut x = s[0].1;
+    for win in s.windows(2) {
+        let (c0, c1) = (win[0].1, win[1].1);
+        for i in 0..6 {
+            let slope = (c1[i] - c0[i]) / dt;
+            // x(dt) = c1 − slope/K + (x0 − c0 + slope/K)·e^(−K·dt)
+            x[i] = c1[i] - slope / k + (x[i] - c0[i] + slope / k) * e;
+        }
+    }
+    let end = s.last().unwrap().1;
+    let err = |x: &Pos| (0..6).map(|i| (end[i] - x[i]).abs()).fold(0.0, f64::max);
+    let h = 1e-6;
+    let eh = (-k * h).exp();
+    let mut t = 0.0;
+    let mut prev = err(&x);
+    while prev > w {
+        for i in 0..6 {
+            x[i] = end[i] + (x[i] - end[i]) * eh;
+        }
+        let now = err(&x);
+        t += h;
+        if now <= w {
+            // Linear interpolation inside the last step.
+            t -= h * (w - now) / (prev - now);
+            break;
+        }
+        prev = now;
+        assert!(t < 10.0, "no settling");
+    }
+    t
+}
+
+#[test]
+fn in_position_wait_by_hand() {
+    // X 20 mm at F1200 (20 mm/s), path acceleration A/2 = 1000 mm/s²,
+    // T = 0.04 s (two stages), position gain K = 30/s, width 0.01 mm.
+    // In the cruise the loop lags v/K = 0.666667 mm; braking 0.02 s
+    // (x = K·0.02 = 0.6, E = e^-0.6 = 0.548812):
+    // 0.666667·E + 20·(1 − E)/30 − 1000·(0.6 − (1 − E))/900 = 0.501320 mm.
+    // When the smoothed command arrives the error is that times
+    // ((1 − e^-1.2)/1.2)² = 0.339118: 0.170007 mm; it decays as e^(−30 t)
+    // to 0.01 mm in ln(17.0007)/30 = 0.094442 s.
+    let mut d = dynm();
+    d.position_gain = 30.0;
+    let (t, _) = run(&[feed(20.0, 0.0, 1200.0)], d, None);
+    let want = trap_time(20.0, 20.0, 1000.0) + 2.0 * T + 0.094442;
+    assert!((t - want).abs() < 2e-6, "{t} vs {want}");
+    // An ideal servo (infinite gain) waits nothing.
+    let (t, _) = run(&[feed(20.0, 0.0, 1200.0)], dynm(), None);
+    assert!((t - (want - 0.094442)).abs() < 1e-12);
+}
+
+#[test]
+fn in_position_wait_against_numeric_servo() {
+    const K: f64 = 30.0;
+    const W: f64 = 0.01;
+    let dt = 1e-4;
+    let square = vec![
+        feed(30.0, 0.0, 2400.0),
+        feed(30.0, 30.0, 2400.0),
+        feed(0.0, 30.0, 2400.0),
+        feed(0.0, 0.0, 2400.0),
+    ];
+    let rapid = Canon::Rapid {
+        m: Motion {
+            to: p(100.0, 30.0),
+            mto: p(100.0, 30.0),
+        },
+        linear: false,
+    };
+    let cases: Vec<(&str, Vec<Canon>)> = vec![
+        ("line", vec![feed(20.0, 0.0, 1200.0)]),
+        ("diagonal", vec![feed(30.0, 40.0, 3000.0)]),
+        ("short", vec![feed(0.3, 0.0, 3000.0)]),
+        ("square", square),
+        ("half circle", vec![arc((20.0, 0.0), (10.0, 0.0), 3000.0)]),
+        ("rapid", vec![rapid]),
+    ];
+    for (name, cmds) in cases {
+        let mut d = dynm();
+        d.path_tolerance = 0.2;
+        let (ideal, s) = run(&cmds, d.clone(), Some(dt));
+        d.position_gain = K;
+        for w in d.in_position.iter_mut() {
+            *w = W;
+        }
+        let (with_servo, _) = run(&cmds, d, None);
+        let want = servo_wait(&s, dt, K, W);
+        let got = with_servo - ideal;
+        // The wait is tens of ms: within 1 % of it (0.3 ms), the cycle
+        // time within 0.5 %.
+        assert!(
+            (got - want).abs() <= 0.01 * want,
+            "{name}: wait {got} s, numeric {want} s"
+        );
+        close(with_servo, ideal + want, 0.005);
+    }
+}
