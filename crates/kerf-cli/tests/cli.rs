@@ -468,3 +468,48 @@ fn profile_without_a_limit_names_the_parameter() {
     let err = String::from_utf8(out.stderr).unwrap();
     assert!(err.contains("motion.path_tolerance_mm is missing"), "{err}");
 }
+
+#[test]
+fn puma_css_facing_follows_the_g50_clamp() {
+    // Facing from X80 to X10 (diameter: radius 40 → 5) at 0.2 mm/rev under
+    // G96 S200 (m/min). rpm(x) = 200000/(2π·x) at radius x; G50 S1500
+    // clamps it below x_c = 200000/(2π·1500) = 21.2207 mm. Worked by hand:
+    //  x in [x_c, 40]: ∫ 60·2π·x/(0.2·200000) dx = 0.0094248·(40² − x_c²)/2
+    //                 = 0.0094248·574.84 = 5.4178 s;
+    //  x in [5, x_c]:  (21.2207 − 5)/(0.2·1500/60 = 5 mm/s) = 3.2441 s;
+    // 8.6619 s; the stop 2T = 0.05 s (T = 2·2500/200000); the in-position
+    // wait (docs/motion.md; braking 5 mm/s at 750 mm/s², K = 30/s):
+    // lag 0.151058 mm, times ((1 − e^-0.75)/0.75)² = 0.494928: 0.074763 mm,
+    // ln(7.4763)/30 = 0.067058 s. Cutting time 8.778946 s.
+    // Without the program's clamp the machine's 2000 rpm binds below
+    // 15.9155 mm: 6.3462 + 1.6373 + 0.05 + 0.075579 (the wait from
+    // 6.667 mm/s) = 8.109064 s.
+    for (clamp, want) in [("G50 S1500\n", 8.778946), ("", 8.109064)] {
+        let p = tmp(
+            "facing.nc",
+            &format!("{clamp}G96 S200 M03\nG00 X80. Z0\nG99 G01 X10. F0.2\nM30\n"),
+        );
+        let rep = p.with_extension("json");
+        let out = kerf()
+            .arg("run")
+            .arg(&p)
+            .args(["--machine", "puma-lathe", "--report"])
+            .arg(&rep)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let r: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
+        let got = r["time_s"]["cutting"].as_f64().unwrap();
+        // The 16 pieces of the move ramp between their feeds (a few ms):
+        // within 0.5 %.
+        assert!(
+            (got - want).abs() <= 0.005 * want,
+            "clamp {clamp:?}: cutting {got} s, by hand {want} s"
+        );
+    }
+}

@@ -5,7 +5,7 @@
 
 use std::collections::VecDeque;
 
-use kerf_canon::{Canon, Event, Feed, ModeChange, Motion, Plane, Pos, SpindleDir, NAXES};
+use kerf_canon::{Canon, Event, Feed, ModeChange, Motion, Plane, Pos, SpindleDir, SrcRef, NAXES};
 
 use crate::dynamics::Dynamics;
 use crate::geom::{line_len, Geom};
@@ -120,12 +120,6 @@ struct Seg {
     stop: bool,
     t_in: Pos,
     t_out: Pos,
-    /// Programmed feed after overrides and clamp (before the axis
-    /// limits), mm/s: what the G62 override scales.
-    feed: f64,
-    /// Cutter compensation at the end: tool centre minus programmed
-    /// point (X Y Z), zero without compensation.
-    off: [f64; 3],
 }
 
 /// Tool centre minus programmed end point of a compensated move.
@@ -146,7 +140,6 @@ fn split(s: &Seg, frac: f64) -> (Seg, Seg) {
     h.len = s.len * frac;
     h.last = false;
     h.stop = false;
-    h.off = [0.0; 3];
     t.geom = g1;
     t.len = s.len - h.len;
     if let Geom::Arc { .. } = s.geom {
@@ -177,6 +170,12 @@ pub struct Planner {
     css: Option<f64>,
     exact_mode: bool,
     corner_mode: bool,
+    /// Hurco M49: the feed override is ignored.
+    ignore_override: bool,
+    /// Source block of the last cutting motion pushed, while it is the
+    /// last event: a G09 emitted after its block's motion (Hurco, 002
+    /// Table 1) stops that motion.
+    last_cut: Option<SrcRef>,
     g09: bool,
     tapping: bool,
     high_speed: bool,
@@ -189,13 +188,25 @@ pub struct Planner {
     pub feed_length: f64,
     /// Rapid path length so far, mm.
     pub rapid_length: f64,
-    /// Spindle speed limit used with constant surface speed, rpm.
+    /// Spindle speed limit used with constant surface speed, rpm (the
+    /// machine's `spindle.max_rpm`).
     pub max_rpm: f64,
+    /// The program's clamp (G50 S / G92 S), rpm.
+    s_clamp: f64,
     /// Following error of each axis's position loop behind the
     /// unsmoothed command (see [`lag_phase`]), mm.
     lag: Pos,
     /// Position loop gain, 1/s (infinite: no servo lag).
     gain: f64,
+    /// Sum of the queued segments' `len / vmax` (each a lower bound of
+    /// its time): no stop can come sooner.
+    q_tmin: f64,
+    /// Of the last segment pushed (the queue's last while it is queued):
+    /// cutter compensation at its end, tool centre minus programmed point
+    /// (X Y Z, zero without compensation), and its programmed feed after
+    /// overrides and clamp, mm/s (what the G62 override scales).
+    last_off: [f64; 3],
+    last_feed: f64,
     /// Factor from the loop's error behind the unsmoothed command at the
     /// end of the interpolation to its error when the smoothed command
     /// arrives: `((1 − e^(−K·T))/(K·T))^k`.
@@ -257,6 +268,8 @@ impl Planner {
             css: None,
             exact_mode: false,
             corner_mode: false,
+            ignore_override: false,
+            last_cut: None,
             g09: false,
             tapping: false,
             high_speed: false,
@@ -267,9 +280,13 @@ impl Planner {
             feed_length: 0.0,
             rapid_length: 0.0,
             max_rpm: f64::INFINITY,
+            s_clamp: f64::INFINITY,
             stalled: 0,
             lag: [0.0; NAXES],
             gain,
+            q_tmin: 0.0,
+            last_off: [0.0; 3],
+            last_feed: 0.0,
             lag_c,
             d,
         }
@@ -328,12 +345,16 @@ impl Planner {
                 Feed::InverseTime(v) => len * v,
             }
         };
-        let ovr = if self.tapping {
+        (v * self.override_factor()).min(self.d.max_feed)
+    }
+
+    /// The feed override in force (100 % in G63 and after Hurco M49).
+    fn override_factor(&self) -> f64 {
+        if self.tapping || self.ignore_override {
             1.0
         } else {
             self.d.feed_override
-        };
-        (v * ovr).min(self.d.max_feed)
+        }
     }
 
     /// Stops the motion and plans everything still queued (end of program).
@@ -377,6 +398,7 @@ impl Planner {
     /// The same along a segment: lines at their direction; arcs in steps
     /// of at most 0.02 rad of the sweep (at most 256 per phase of the
     /// trapezoid), each at the tangent of its middle.
+    #[inline(never)]
     fn track_lag_seg(&mut self, g: &Geom, u_line: &Pos, trap: &Trap) {
         let sweep = match g {
             Geom::Line { .. } => return self.track_lag(u_line, trap),
@@ -439,6 +461,15 @@ impl Planner {
 
     /// Accounts for one event.
     pub fn push(&mut self, e: &Event) {
+        if let Some(m) = e.motion() {
+            // The start's work X in the move's own work system (a rapid,
+            // G50/G92 X or a new work offset since the last cutting move
+            // changes it): for constant surface speed.
+            let x = self.pos[0] + (m.to[0] - m.mto[0]);
+            if x.is_finite() {
+                self.work_x = x;
+            }
+        }
         match &e.cmd {
             Canon::Rapid { m, linear } => {
                 self.flush();
@@ -512,8 +543,21 @@ impl Planner {
                 self.time.other += t;
             }
             Canon::End { .. } => self.flush(),
+            Canon::Mode(ModeChange::ExactStopBlock)
+                if self.last_cut == Some(e.src) && !self.q.is_empty() =>
+            {
+                // G09 after its block's motion: stop at its end.
+                self.flush();
+            }
             Canon::Mode(mc) => self.mode(*mc),
             Canon::Message(_) => {}
+        }
+        match &e.cmd {
+            Canon::Feed { .. } | Canon::Arc { .. } | Canon::Thread { .. } => {
+                self.last_cut = Some(e.src)
+            }
+            Canon::Mode(_) | Canon::Message(_) => {}
+            _ => self.last_cut = None,
         }
     }
 
@@ -555,6 +599,10 @@ impl Planner {
                 }
             }
             ModeChange::Stitch(_) => {}
+            ModeChange::FeedOverride(on) => self.ignore_override = !on,
+            ModeChange::SpindleClamp(rpm) => {
+                self.s_clamp = if rpm.is_nan() { f64::INFINITY } else { rpm };
+            }
         }
     }
 
@@ -766,6 +814,7 @@ impl Planner {
     /// is from 2° up to PI 130. Inside: the tool centre's corner lies
     /// towards the turn from the programmed corner
     /// (`off · (u2 − u1) > 0`, `off` = tool centre − programmed point).
+    #[inline(never)]
     fn inside_corner(&self, n: &Seg) -> bool {
         if !(self.corner_mode || (self.d.corner.always && !self.tapping)) {
             return false;
@@ -773,7 +822,8 @@ impl Planner {
         let Some(p) = self.q.back() else {
             return false;
         };
-        let on = p.off[0].hypot(p.off[1]).hypot(p.off[2]);
+        let off = &self.last_off;
+        let on = off[0].hypot(off[1]).hypot(off[2]);
         if p.stop || on <= 0.0 {
             return false;
         }
@@ -787,7 +837,7 @@ impl Planner {
         if !(2.0..=self.d.corner.angle_deg).contains(&angle) {
             return false;
         }
-        let inward: f64 = (0..3).map(|i| p.off[i] * (u2[i] / n2 - u1[i] / n1)).sum();
+        let inward: f64 = (0..3).map(|i| off[i] * (u2[i] / n2 - u1[i] / n1)).sum();
         inward > 1e-9 * on
     }
 
@@ -801,11 +851,13 @@ impl Planner {
         let Some(mut p) = self.q.pop_back() else {
             return;
         };
-        let red = p.vmax.min(p.feed * f).max(1e-6);
+        self.q_tmin -= p.len / p.vmax;
+        let red = p.vmax.min(self.last_feed * f).max(1e-6);
         if ls >= p.len {
             p.vmax = red;
             p.jmax = p.jmax.min(red);
             p.vb = p.jmax.min((2.0 * p.acc * p.len).sqrt());
+            self.q_tmin += p.len / red;
             self.q.push_back(p);
         } else {
             let (mut h, mut t) = split(&p, (p.len - ls) / p.len);
@@ -814,10 +866,31 @@ impl Planner {
             t.vb = t.jmax.min((2.0 * t.acc * t.len).sqrt());
             // Recomputed by the backward pass below.
             h.vb = -1.0;
+            self.q_tmin += h.len / h.vmax + t.len / t.vmax;
             self.q.push_back(h);
             self.q.push_back(t);
         }
         self.backward();
+    }
+
+    /// Pushes the move after a G62 inside corner: the end of the one
+    /// before and its own start at the overridden feed.
+    #[cold]
+    #[inline(never)]
+    fn push_overridden(&mut self, seg: Seg, feed: f64) {
+        self.override_before();
+        let (f, le) = (self.d.corner.factor, self.d.corner.after);
+        let red = seg.vmax.min(feed * f).max(1e-6);
+        if le >= seg.len {
+            self.push_seg(Seg { vmax: red, ..seg });
+        } else if le > 0.0 {
+            let (mut h, t) = split(&seg, le / seg.len);
+            h.vmax = red;
+            self.push_seg(h);
+            self.push_seg(t);
+        } else {
+            self.push_seg(seg);
+        }
     }
 
     fn cut(
@@ -941,26 +1014,14 @@ impl Planner {
                 stop: stop && k + 1 == pieces,
                 t_in,
                 t_out,
-                feed: f / 60.0,
-                off: if k + 1 == pieces { off } else { [0.0; 3] },
             };
-            if k == 0 && self.inside_corner(&seg) {
-                self.override_before();
-                let (f, le) = (self.d.corner.factor, self.d.corner.after);
-                let red = seg.vmax.min(seg.feed * f).max(1e-6);
-                if le >= seg.len {
-                    self.push_seg(Seg { vmax: red, ..seg });
-                } else if le > 0.0 {
-                    let (mut h, t) = split(&seg, le / seg.len);
-                    h.vmax = red;
-                    self.push_seg(h);
-                    self.push_seg(t);
-                } else {
-                    self.push_seg(seg);
-                }
-                continue;
+            if k == 0 && (self.corner_mode || self.d.corner.always) && self.inside_corner(&seg) {
+                self.push_overridden(seg, f / 60.0);
+            } else {
+                self.push_seg(seg);
             }
-            self.push_seg(seg);
+            self.last_off = if k + 1 == pieces { off } else { [0.0; 3] };
+            self.last_feed = f / 60.0;
         }
     }
 
@@ -970,12 +1031,10 @@ impl Planner {
             return self.feed_mm_min(feed, 0.0);
         };
         let r = x.abs().max(1e-3);
-        let rpm = (vc * 1000.0 / (std::f64::consts::TAU * r)).min(self.max_rpm);
-        let ovr = if self.tapping {
-            1.0
-        } else {
-            self.d.feed_override
-        };
+        let rpm = (vc * 1000.0 / (std::f64::consts::TAU * r))
+            .min(self.max_rpm)
+            .min(self.s_clamp);
+        let ovr = self.override_factor();
         let v = if self.d.dry_run {
             self.d.dry_run_feed
         } else {
@@ -984,6 +1043,7 @@ impl Planner {
         (v * ovr).min(self.d.max_feed)
     }
 
+    #[inline(always)]
     fn push_seg(&mut self, mut s: Seg) {
         s.jmax = match self.q.back() {
             Some(p) if !p.stop => match self.junction(p, &s) {
@@ -998,6 +1058,7 @@ impl Planner {
         .min(s.vmax);
         s.vb = s.jmax.min((2.0 * s.acc * s.len).sqrt());
         let stop = s.stop;
+        self.q_tmin += s.len / s.vmax;
         self.q.push_back(s);
         self.backward();
         if stop {
@@ -1010,6 +1071,7 @@ impl Planner {
 
     /// Backward pass from the last queued segment: lower entry bounds to
     /// what can still brake to the next one's, until one does not change.
+    #[inline]
     fn backward(&mut self) {
         let n = self.q.len();
         for i in (0..n.saturating_sub(1)).rev() {
@@ -1037,6 +1099,11 @@ impl Planner {
 
     fn finalize_head(&mut self) {
         let Some(s) = self.q.pop_front() else { return };
+        self.q_tmin = if self.q.is_empty() {
+            0.0
+        } else {
+            self.q_tmin - s.len / s.vmax
+        };
         let v0 = self.head_v;
         let v1 = if s.stop {
             0.0
@@ -1049,7 +1116,13 @@ impl Planner {
         let trap = Trap::plan(s.len, v0, v1, s.vmax, s.acc);
         self.head_v = if s.stop { 0.0 } else { trap.v1 };
         if self.gain.is_finite() {
-            self.track_lag_seg(&s.geom, &s.t_in, &trap);
+            if self.q_tmin * self.gain >= 40.0 {
+                // No stop can come within 40/K s: this segment's (and all
+                // earlier) lag will have decayed by e^-40 before any stop.
+                self.lag = [0.0; NAXES];
+            } else {
+                self.track_lag_seg(&s.geom, &s.t_in, &trap);
+            }
         }
         let t0 = self.now;
         let dt = trap.time();
@@ -1232,6 +1305,58 @@ mod tests {
         d.dry_run_feed = 3000.0;
         let pl = Planner::new(d, [0.0; NAXES], 0.0);
         assert_eq!(pl.feed_mm_min(Feed::PerMin(1200.0), 1.0), 1500.0);
+    }
+
+    fn at_line(mut e: Event, line: u32) -> Event {
+        e.src.line = line;
+        e
+    }
+
+    #[test]
+    fn g09_before_or_after_its_motion_stops_that_motion() {
+        // Two 20 mm moves along X at 20 mm/s (path acceleration 1000):
+        // straight on, one trapezoid 40/20 + 20/1000 = 2.02 s plus one stop
+        // 2T (T = 2·2000/1e5 = 0.04): 2.1 s. With G09 on the first block
+        // (HX order: the mode before the motion; Hurco, 002 Table 1: after
+        // it) two trapezoids: 2·(1.0 + 0.02 + 0.08) = 2.2 s.
+        let g09 = || ev(Canon::Mode(ModeChange::ExactStopBlock));
+        let run = |evs: Vec<Event>| {
+            let mut pl = Planner::new(dynm(), [0.0; NAXES], 0.0);
+            for e in &evs {
+                pl.push(e);
+            }
+            pl.finish();
+            pl.now()
+        };
+        let plain = run(vec![
+            at_line(feed_to(20.0, 0.0), 1),
+            at_line(feed_to(40.0, 0.0), 2),
+        ]);
+        assert!((plain - 2.1).abs() < 1e-9, "{plain}");
+        let hx = run(vec![
+            at_line(g09(), 1),
+            at_line(feed_to(20.0, 0.0), 1),
+            at_line(feed_to(40.0, 0.0), 2),
+        ]);
+        let hurco = run(vec![
+            at_line(feed_to(20.0, 0.0), 1),
+            at_line(g09(), 1),
+            at_line(feed_to(40.0, 0.0), 2),
+        ]);
+        assert!((hx - 2.2).abs() < 1e-9, "{hx}");
+        assert!((hurco - 2.2).abs() < 1e-9, "{hurco}");
+    }
+
+    #[test]
+    fn hurco_m49_ignores_the_feed_override() {
+        let mut d = dynm();
+        d.feed_override = 0.5;
+        let mut pl = Planner::new(d, [0.0; NAXES], 0.0);
+        assert_eq!(pl.feed_mm_min(Feed::PerMin(1200.0), 1.0), 600.0);
+        pl.push(&ev(Canon::Mode(ModeChange::FeedOverride(false))));
+        assert_eq!(pl.feed_mm_min(Feed::PerMin(1200.0), 1.0), 1200.0);
+        pl.push(&ev(Canon::Mode(ModeChange::FeedOverride(true))));
+        assert_eq!(pl.feed_mm_min(Feed::PerMin(1200.0), 1.0), 600.0);
     }
 
     #[test]
