@@ -513,3 +513,60 @@ fn puma_css_facing_follows_the_g50_clamp() {
         );
     }
 }
+
+#[test]
+fn hx_g62_slows_inside_corners_of_the_compensated_path() {
+    // A 50 mm square, CCW, cutter radius 10 on the left (G41): the tool
+    // centre runs (0,10) → (40,10) → (40,40) → (10,40) → (10,0); the
+    // corners at (40,10), (40,40), (10,40) are inside, the one at (0,10)
+    // (after the start-up move) outside. hx-mc: F600 = 10 mm/s, path
+    // acceleration 1000 mm/s²; every 90° corner is an exact stop there
+    // (0.02 mm tolerance). G62 (hx-mc: 50 %, 1 mm before, 1 mm after):
+    // a move ending in a 1 mm tail at 5 mm/s takes, by hand,
+    // 0.01 + 0.005 (0 → 10 → 5) + (L − 1 − 0.0875)/10 + (1 − 0.0125)/5
+    // + 0.005 (5 → 0) = L/10 + 0.10875 s instead of L/10 + 0.01 s:
+    // 0.09875 s more; the same for a 1 mm head at 5 mm/s after a corner.
+    // Three inside corners: 6 · 0.09875 = 0.5925 s more cutting time. (The
+    // servo is made stiff, position_gain 1e9/s, so that the in-position
+    // waits, which depend on the braking speed, are 0 in both runs.)
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../machines/hx-mc.toml"
+    ))
+    .unwrap();
+    let stiff = text.replacen("position_gain = 30.0", "position_gain = 1e9", 1);
+    assert_ne!(stiff, text);
+    let prof = tmp("stiff.toml", &stiff);
+    let cutting = |mode: &str| {
+        let p = tmp(
+            &format!("g62_{mode}.nc"),
+            &format!(
+                "G10 L12 P1 R10.\nG54 G90 G00 X-20. Y-20. Z0\n{mode} G41 D1 G01 X0 Y0 F600.\n\
+                 X50.\nY50.\nX0.\nY0.\nG40 G00 X-20. Y-20.\nM30\n"
+            ),
+        );
+        let rep = p.with_extension("json");
+        let out = kerf()
+            .arg("run")
+            .arg(&p)
+            .arg("--machine")
+            .arg(&prof)
+            .arg("--report")
+            .arg(&rep)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let r: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
+        r["time_s"]["cutting"].as_f64().unwrap()
+    };
+    let (g64, g62) = (cutting("G64"), cutting("G62"));
+    assert!(
+        (g62 - g64 - 0.5925).abs() < 2e-6,
+        "G62 {g62} s, G64 {g64} s"
+    );
+}

@@ -814,8 +814,7 @@ impl Planner {
     /// is from 2° up to PI 130. Inside: the tool centre's corner lies
     /// towards the turn from the programmed corner
     /// (`off · (u2 − u1) > 0`, `off` = tool centre − programmed point).
-    #[inline(never)]
-    fn inside_corner(&self, n: &Seg) -> bool {
+    fn inside_corner(&self, u2: &Pos) -> bool {
         if !(self.corner_mode || (self.d.corner.always && !self.tapping)) {
             return false;
         }
@@ -827,7 +826,7 @@ impl Planner {
         if p.stop || on <= 0.0 {
             return false;
         }
-        let (u1, u2) = (&p.t_out, &n.t_in);
+        let u1 = &p.t_out;
         let (n1, n2) = (dot(u1, u1).sqrt(), dot(u2, u2).sqrt());
         if n1 <= 0.0 || n2 <= 0.0 {
             return false;
@@ -877,7 +876,8 @@ impl Planner {
     /// before and its own start at the overridden feed.
     #[cold]
     #[inline(never)]
-    fn push_overridden(&mut self, seg: Seg, feed: f64) {
+    fn push_overridden(&mut self, seg: &Seg, feed: f64) {
+        let seg = *seg;
         self.override_before();
         let (f, le) = (self.d.corner.factor, self.d.corner.after);
         let red = seg.vmax.min(feed * f).max(1e-6);
@@ -1002,6 +1002,8 @@ impl Planner {
                 self.d.max_feed
             });
             let (vmax, acc) = self.limits(&sub, &t_in, f);
+            let corner =
+                k == 0 && (self.corner_mode || self.d.corner.always) && self.inside_corner(&t_in);
             let seg = Seg {
                 id,
                 last: k + 1 == pieces,
@@ -1015,8 +1017,8 @@ impl Planner {
                 t_in,
                 t_out,
             };
-            if k == 0 && (self.corner_mode || self.d.corner.always) && self.inside_corner(&seg) {
-                self.push_overridden(seg, f / 60.0);
+            if corner {
+                self.push_overridden(&seg, f / 60.0);
             } else {
                 self.push_seg(seg);
             }
@@ -1071,7 +1073,6 @@ impl Planner {
 
     /// Backward pass from the last queued segment: lower entry bounds to
     /// what can still brake to the next one's, until one does not change.
-    #[inline]
     fn backward(&mut self) {
         let n = self.q.len();
         for i in (0..n.saturating_sub(1)).rev() {
