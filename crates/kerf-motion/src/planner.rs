@@ -395,16 +395,30 @@ impl Planner {
         }
     }
 
-    /// The same along a segment: lines at their direction; arcs in steps
-    /// of at most 0.02 rad of the sweep (at most 256 per phase of the
-    /// trapezoid), each at the tangent of its middle.
+    /// The same along a segment: lines at their direction; arcs in closed
+    /// form while the speed is constant (the plane's two axes follow
+    /// `R·e^(iθ(t))`: the increment is `iωR·(e^(iθ1) − E·e^(iθ0))/(K + iω)`,
+    /// the other axes as on a line), and in steps of at most 0.02 rad of
+    /// the sweep (at most 256 per phase), each at the tangent of its
+    /// middle, while it changes.
     #[inline(never)]
     fn track_lag_seg(&mut self, g: &Geom, u_line: &Pos, trap: &Trap) {
-        let sweep = match g {
-            Geom::Line { .. } => return self.track_lag(u_line, trap),
-            Geom::Arc { sweep, .. } => sweep.abs(),
+        let Geom::Arc {
+            p0,
+            p1,
+            plane,
+            th0,
+            sweep,
+            r0,
+            r1,
+            ..
+        } = *g
+        else {
+            return self.track_lag(u_line, trap);
         };
+        let k = self.gain;
         let len = trap.len.max(1e-300);
+        let (a1, a2, _) = plane.axes();
         let mut t0 = 0.0;
         for (v0, a, dt) in [
             (trap.v0, trap.a, trap.ta),
@@ -412,16 +426,36 @@ impl Planner {
             (trap.vp, -trap.a, trap.td),
         ] {
             if dt > 0.0 {
-                let ds = trap.s_at(t0 + dt) - trap.s_at(t0);
-                let n = (sweep * ds / len / 0.02).ceil().clamp(1.0, 256.0);
-                let h = dt / n;
-                let (e, _) = lag_phase(self.gain, 0.0, 0.0, h);
-                for k in 0..n as usize {
-                    let tk = k as f64 * h;
-                    let u = g.tangent(trap.s_at(t0 + tk + 0.5 * h) / len);
-                    let (_, inc) = lag_phase(self.gain, v0 + a * tk, a, h);
+                let s0 = trap.s_at(t0);
+                let ds = trap.s_at(t0 + dt) - s0;
+                if a == 0.0 {
+                    let (e, inc) = lag_phase(k, v0, 0.0, dt);
                     for i in 0..NAXES {
-                        self.lag[i] = self.lag[i] * e + u[i] * inc;
+                        if i != a1 && i != a2 {
+                            self.lag[i] = self.lag[i] * e + (p1[i] - p0[i]) / len * inc;
+                        }
+                    }
+                    let th_a = th0 + sweep * s0 / len;
+                    let omega = v0 * sweep / len;
+                    let r = r0 + (r1 - r0) * (s0 + 0.5 * ds) / len;
+                    let (sa, ca) = th_a.sin_cos();
+                    let (sb, cb) = (th_a + omega * dt).sin_cos();
+                    let (nx, ny) = (cb - e * ca, sb - e * sa);
+                    let (wx, wy) = (-omega * r * ny, omega * r * nx);
+                    let d = k * k + omega * omega;
+                    self.lag[a1] = self.lag[a1] * e + (wx * k + wy * omega) / d;
+                    self.lag[a2] = self.lag[a2] * e + (wy * k - wx * omega) / d;
+                } else {
+                    let n = (sweep.abs() * ds / len / 0.02).ceil().clamp(1.0, 256.0);
+                    let h = dt / n;
+                    let (e, _) = lag_phase(k, 0.0, 0.0, h);
+                    for j in 0..n as usize {
+                        let tj = j as f64 * h;
+                        let u = g.tangent(trap.s_at(t0 + tj + 0.5 * h) / len);
+                        let (_, inc) = lag_phase(k, v0 + a * tj, a, h);
+                        for i in 0..NAXES {
+                            self.lag[i] = self.lag[i] * e + u[i] * inc;
+                        }
                     }
                 }
             }
@@ -928,33 +962,12 @@ impl Planner {
         };
         for k in 0..pieces {
             let (u0, u1) = (k as f64 / pieces as f64, (k + 1) as f64 / pieces as f64);
-            let sub = if pieces == 1 {
-                g
+            let sub_owned;
+            let sub: &Geom = if pieces == 1 {
+                &g
             } else {
-                match g {
-                    Geom::Line { .. } => Geom::Line {
-                        p0: g.at(u0),
-                        p1: g.at(u1),
-                    },
-                    Geom::Arc {
-                        c,
-                        plane,
-                        th0,
-                        sweep,
-                        r0,
-                        r1,
-                        ..
-                    } => Geom::Arc {
-                        p0: g.at(u0),
-                        p1: g.at(u1),
-                        c,
-                        plane,
-                        th0: th0 + sweep * u0,
-                        sweep: sweep * (u1 - u0),
-                        r0: r0 + (r1 - r0) * u0,
-                        r1: r0 + (r1 - r0) * u1,
-                    },
-                }
+                sub_owned = g.sub(u0, u1);
+                &sub_owned
             };
             let f = if thread {
                 match feed {
@@ -983,7 +996,7 @@ impl Planner {
                 }
                 continue;
             }
-            let (t_in, t_out) = match sub {
+            let (t_in, t_out) = match *sub {
                 Geom::Line { p0, p1 } => {
                     let mut u = [0.0; NAXES];
                     if slen > 0.0 {
@@ -1001,13 +1014,13 @@ impl Planner {
             } else {
                 self.d.max_feed
             });
-            let (vmax, acc) = self.limits(&sub, &t_in, f);
+            let (vmax, acc) = self.limits(sub, &t_in, f);
             let corner =
                 k == 0 && (self.corner_mode || self.d.corner.always) && self.inside_corner(&t_in);
             let seg = Seg {
                 id,
                 last: k + 1 == pieces,
-                geom: sub,
+                geom: *sub,
                 len: slen,
                 vmax: vmax.max(1e-6),
                 acc: if acc.is_finite() { acc } else { 1.0 },

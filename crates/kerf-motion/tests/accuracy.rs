@@ -461,6 +461,20 @@ fn in_position_wait_by_hand() {
     assert!((t - (want - 0.094442)).abs() < 1e-12);
 }
 
+/// Half a turn of radius 10 about (10, 0) from the origin, rising 8 mm.
+fn helix_from_origin() -> Canon {
+    let to = [20.0, 0.0, 8.0, 0.0, 0.0, 0.0];
+    Canon::Arc {
+        m: Motion { to, mto: to },
+        center: p(10.0, 0.0),
+        mcenter: p(10.0, 0.0),
+        dir: ArcDir::Ccw,
+        plane: Plane::XY,
+        turns: 0,
+        feed: Feed::PerMin(3000.0),
+    }
+}
+
 #[test]
 fn in_position_wait_against_numeric_servo() {
     const K: f64 = 30.0;
@@ -485,6 +499,11 @@ fn in_position_wait_against_numeric_servo() {
         ("short", vec![feed(0.3, 0.0, 3000.0)]),
         ("square", square),
         ("half circle", vec![arc((20.0, 0.0), (10.0, 0.0), 3000.0)]),
+        (
+            "quarter circle r 40",
+            vec![arc((40.0, 40.0), (40.0, 0.0), 4800.0)],
+        ),
+        ("helix", vec![helix_from_origin()]),
         ("rapid", vec![rapid]),
     ];
     for (name, cmds) in cases {
