@@ -214,7 +214,7 @@ impl Dynamics {
                 ));
             }
         }
-        if !(self.position_gain > 0.0) {
+        if self.position_gain.is_nan() || self.position_gain <= 0.0 {
             return Err(format!(
                 "profile parameter motion.position_gain must be a number > 0 (is {})",
                 self.position_gain

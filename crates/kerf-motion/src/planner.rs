@@ -1305,6 +1305,32 @@ mod tests {
         d.rapid[0] = f64::NAN;
         assert!(d.validate().unwrap_err().contains("axes.x.rapid"));
         assert!(dynm().validate().is_ok());
+        let mut d = dynm();
+        d.corner.angle_deg = 1.0;
+        assert!(d
+            .validate()
+            .unwrap_err()
+            .contains("motion.corner_override_angle_deg"));
+        let mut d = dynm();
+        d.corner.factor = 0.0;
+        assert!(d
+            .validate()
+            .unwrap_err()
+            .contains("motion.corner_override_pct"));
+        let mut d = dynm();
+        d.internal_arc_min = Some(0.0);
+        assert!(d
+            .validate()
+            .unwrap_err()
+            .contains("motion.internal_arc_min_pct"));
+        let mut d = dynm();
+        d.position_gain = f64::NAN;
+        assert!(d.validate().unwrap_err().contains("motion.position_gain"));
+        d.position_gain = -1.0;
+        assert!(d.validate().unwrap_err().contains("motion.position_gain"));
+        // An ideal servo is allowed.
+        d.position_gain = f64::INFINITY;
+        assert!(d.validate().is_ok());
     }
 
     #[test]

@@ -213,13 +213,13 @@ fn internal_arc_feed_is_f_times_rc_over_rp() {
     let len = 15.0 * std::f64::consts::PI;
     // Feed 20·15/20 = 15 mm/s, path acceleration 1000: len/15 + 15/1000 + 2T.
     close(
-        time(d.clone(), start, &[ev.clone()]),
+        time(d.clone(), start, std::slice::from_ref(&ev)),
         len / 15.0 + 0.015 + 0.08,
     );
     // Lower limit PI 132 = 80 %: Rc/Rp = 0.75 is raised to 0.8: 16 mm/s.
     d.internal_arc_min = Some(0.8);
     close(
-        time(d.clone(), start, &[ev.clone()]),
+        time(d.clone(), start, std::slice::from_ref(&ev)),
         len / 16.0 + 0.016 + 0.08,
     );
     // Off (a lathe profile without the key): the tool centre runs at F.
