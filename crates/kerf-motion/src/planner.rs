@@ -780,6 +780,7 @@ impl Planner {
     /// Junction speed limit between the end of `p` and the start of `n`;
     /// `None` when the corner needs an exact stop (the smoothing would
     /// leave the path tolerance even at zero speed).
+    #[inline(always)]
     fn junction(&self, p: &Seg, n: &Seg) -> Option<f64> {
         let mut v = p.vmax.min(n.vmax);
         let (u1, u2) = (&p.t_out, &n.t_in);
