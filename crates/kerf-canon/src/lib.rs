@@ -224,6 +224,13 @@ pub enum ModeChange {
     /// HX G63.1 (true) / G63.2 (false) stitch function mode (000 §15.6;
     /// its stroke feeds and times are PM 7308-7357, for the planner).
     Stitch(bool),
+    /// Maximum spindle speed under constant surface speed, rpm: PUMA G50 S,
+    /// HX and Hurco G92 S (the planner's per-revolution feeds follow the
+    /// clamped speed).
+    SpindleClamp(f64),
+    /// Hurco M48 (true) / M49 (false): the feed override applies / is
+    /// ignored (the programmed feed is used).
+    FeedOverride(bool),
 }
 
 /// A canonical command with the source position of the block that made it.

@@ -1410,7 +1410,13 @@ impl Interp {
                     self.emit_end(m)?;
                     self.finished = true;
                 }
-                MAction::Aux => self.emit(Canon::Aux { m, name: mc.name }),
+                MAction::Aux => {
+                    self.emit(Canon::Aux { m, name: mc.name });
+                    // 002: M48 use / M49 ignore the feedrate override.
+                    if self.dialect.id == DialectId::Hurco && (m == 48 || m == 49) {
+                        self.emit(Canon::Mode(ModeChange::FeedOverride(m == 48)));
+                    }
+                }
                 MAction::SpindleCw
                 | MAction::SpindleCcw
                 | MAction::SubCall

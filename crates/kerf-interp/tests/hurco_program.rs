@@ -54,6 +54,8 @@ fn table_1_order_in_one_block() {
         vec![
             "M101",
             "M48",
+            // For the planner: M48 uses the feed override (M49 ignores it).
+            "FeedOverride(true)",
             "coolant false true",
             "T2/0",
             "spindle Cw 500",
@@ -337,6 +339,11 @@ fn g96_r_and_g92_s() {
         .collect();
     assert!((rpms[0] - 100_000.0 / (std::f64::consts::TAU * 10.0)).abs() < 1e-6);
     assert_eq!(rpms[1..], [1000.0]);
+    // The clamp is in the canonical stream for the planner's CSS feeds.
+    assert!(r
+        .events
+        .iter()
+        .any(|e| e.cmd == Canon::Mode(ModeChange::SpindleClamp(1000.0))));
     // G07: R is a radius: R10 is the same speed.
     let r = run_on("hurco-lathe", "G21 G07 G96 R10 S100 M03\nM30\n");
     let rpm = r

@@ -14,6 +14,37 @@ pub enum AccelType {
     Bell,
 }
 
+/// G62 automatic corner override (000 §5.3.5, PI 124-126, 130, 131).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CornerOverride {
+    /// Inside corners whose angle (between the two paths at the corner,
+    /// 180° = straight on) is from 2° up to this are overridden, degrees
+    /// (PI 130, 2-178; `motion.corner_override_angle_deg`).
+    pub angle_deg: f64,
+    /// The override, fraction (PI 125 %; `motion.corner_override_pct`).
+    pub factor: f64,
+    /// Distance before the corner over which the feed is reduced, mm
+    /// (PI 124; `motion.corner_override_before_mm`).
+    pub before: f64,
+    /// Distance after the corner, mm (PI 126; `motion.corner_override_after_mm`).
+    pub after: f64,
+    /// Override in every mode, not only G62 (PI 131 = 1;
+    /// `motion.corner_override_always`).
+    pub always: bool,
+}
+
+impl Default for CornerOverride {
+    fn default() -> Self {
+        CornerOverride {
+            angle_deg: 91.0,
+            factor: 0.5,
+            before: 1.0,
+            after: 1.0,
+            always: false,
+        }
+    }
+}
+
 /// The machine data the planner needs (built from the profile by the CLI;
 /// every field is named after its profile key in [`Dynamics::validate`]).
 #[derive(Clone, Debug)]
@@ -55,6 +86,16 @@ pub struct Dynamics {
     pub rapid_override: f64,
     /// Dry run switch.
     pub dry_run: bool,
+    /// G62 automatic corner override.
+    pub corner: CornerOverride,
+    /// Internal circular cutting feed change (000 §5.3.6): the lower
+    /// limit of `Rc/Rp`, fraction (PI 132 %; `motion.internal_arc_min_pct`);
+    /// `None`: no change (the feed is the tool centre's).
+    pub internal_arc_min: Option<f64>,
+    /// Position loop gain of the servos, 1/s (`motion.position_gain`): the
+    /// following error decays as `exp(−gain·t)`; infinite = an ideal servo
+    /// (no in-position wait).
+    pub position_gain: f64,
 }
 
 impl Dynamics {
@@ -95,6 +136,9 @@ impl Dynamics {
             feed_override: 1.0,
             rapid_override: 1.0,
             dry_run: false,
+            corner: CornerOverride::default(),
+            internal_arc_min: None,
+            position_gain: f64::INFINITY,
         }
     }
 
@@ -147,6 +191,35 @@ impl Dynamics {
         pos("motion.dry_run_feed".into(), self.dry_run_feed)?;
         pos("feed_override".into(), self.feed_override)?;
         pos("rapid_override".into(), self.rapid_override)?;
+        let c = &self.corner;
+        if !(2.0..=178.0).contains(&c.angle_deg) {
+            return Err(format!(
+                "profile parameter motion.corner_override_angle_deg must be 2-178 (is {})",
+                c.angle_deg
+            ));
+        }
+        if !(0.01..=1.0).contains(&c.factor) {
+            return Err(format!(
+                "profile parameter motion.corner_override_pct must be 1-100 (is {})",
+                c.factor * 100.0
+            ));
+        }
+        nonneg("motion.corner_override_before_mm", c.before)?;
+        nonneg("motion.corner_override_after_mm", c.after)?;
+        if let Some(m) = self.internal_arc_min {
+            if !(m > 0.0 && m <= 1.0) {
+                return Err(format!(
+                    "profile parameter motion.internal_arc_min_pct must be > 0 and <= 100 (is {})",
+                    m * 100.0
+                ));
+            }
+        }
+        if self.position_gain.is_nan() || self.position_gain <= 0.0 {
+            return Err(format!(
+                "profile parameter motion.position_gain must be a number > 0 (is {})",
+                self.position_gain
+            ));
+        }
         Ok(())
     }
 

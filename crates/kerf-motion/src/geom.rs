@@ -109,6 +109,35 @@ impl Geom {
         }
     }
 
+    /// The part of the path from fraction `u0` to `u1` (fractions of the
+    /// length: the parameter is proportional to it on lines and helices).
+    pub fn sub(&self, u0: f64, u1: f64) -> Geom {
+        match *self {
+            Geom::Line { .. } => Geom::Line {
+                p0: self.at(u0),
+                p1: self.at(u1),
+            },
+            Geom::Arc {
+                c,
+                plane,
+                th0,
+                sweep,
+                r0,
+                r1,
+                ..
+            } => Geom::Arc {
+                p0: self.at(u0),
+                p1: self.at(u1),
+                c,
+                plane,
+                th0: th0 + sweep * u0,
+                sweep: sweep * (u1 - u0),
+                r0: r0 + (r1 - r0) * u0,
+                r1: r0 + (r1 - r0) * u1,
+            },
+        }
+    }
+
     /// Radius of an arc (mean of start and end), `None` for a line.
     pub fn radius(&self) -> Option<f64> {
         match self {

@@ -20,7 +20,7 @@ pub mod planner;
 pub mod sampler;
 pub mod trap;
 
-pub use dynamics::{AccelType, Dynamics};
+pub use dynamics::{AccelType, CornerOverride, Dynamics};
 pub use planner::{Breakdown, Done, Piece, PieceKind, Planner};
 pub use sampler::Sampler;
 pub use trap::Trap;

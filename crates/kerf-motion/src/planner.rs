@@ -5,7 +5,7 @@
 
 use std::collections::VecDeque;
 
-use kerf_canon::{Canon, Event, Feed, ModeChange, Pos, SpindleDir, NAXES};
+use kerf_canon::{Canon, Event, Feed, ModeChange, Motion, Plane, Pos, SpindleDir, SrcRef, NAXES};
 
 use crate::dynamics::Dynamics;
 use crate::geom::{line_len, Geom};
@@ -122,6 +122,35 @@ struct Seg {
     t_out: Pos,
 }
 
+/// Tool centre minus programmed end point of a compensated move.
+fn comp_offset(m: &Motion, prog: Option<&Pos>) -> [f64; 3] {
+    match prog {
+        Some(p) => [m.to[0] - p[0], m.to[1] - p[1], m.to[2] - p[2]],
+        None => [0.0; 3],
+    }
+}
+
+/// Splits a segment at fraction `frac` of its length; the first part
+/// ends inside the move (no stop, no record, no compensation corner).
+fn split(s: &Seg, frac: f64) -> (Seg, Seg) {
+    let (g0, g1) = (s.geom.sub(0.0, frac), s.geom.sub(frac, 1.0));
+    let mut h = *s;
+    let mut t = *s;
+    h.geom = g0;
+    h.len = s.len * frac;
+    h.last = false;
+    h.stop = false;
+    t.geom = g1;
+    t.len = s.len - h.len;
+    if let Geom::Arc { .. } = s.geom {
+        h.t_out = g0.tangent(1.0);
+        t.t_in = g1.tangent(0.0);
+    }
+    // Inside one move the path is smooth: only the speed limits meet.
+    t.jmax = h.vmax.min(t.vmax);
+    (h, t)
+}
+
 /// The planner. Push events in execution order with [`Planner::push`];
 /// take finished records with [`Planner::next_done`] and, when asked for,
 /// timeline pieces with [`Planner::next_piece`]; call [`Planner::finish`]
@@ -140,6 +169,13 @@ pub struct Planner {
     rpm: f64,
     css: Option<f64>,
     exact_mode: bool,
+    corner_mode: bool,
+    /// Hurco M49: the feed override is ignored.
+    ignore_override: bool,
+    /// Source block of the last cutting motion pushed, while it is the
+    /// last event: a G09 emitted after its block's motion (Hurco, 002
+    /// Table 1) stops that motion.
+    last_cut: Option<SrcRef>,
     g09: bool,
     tapping: bool,
     high_speed: bool,
@@ -152,12 +188,52 @@ pub struct Planner {
     pub feed_length: f64,
     /// Rapid path length so far, mm.
     pub rapid_length: f64,
-    /// Spindle speed limit used with constant surface speed, rpm.
+    /// Spindle speed limit used with constant surface speed, rpm (the
+    /// machine's `spindle.max_rpm`).
     pub max_rpm: f64,
+    /// The program's clamp (G50 S / G92 S), rpm.
+    s_clamp: f64,
+    /// Following error of each axis's position loop behind the
+    /// unsmoothed command (see [`lag_phase`]), mm.
+    lag: Pos,
+    /// Position loop gain, 1/s (infinite: no servo lag).
+    gain: f64,
+    /// Sum of the queued segments' `len / vmax` (each a lower bound of
+    /// its time): no stop can come sooner.
+    q_tmin: f64,
+    /// Of the last segment pushed (the queue's last while it is queued):
+    /// cutter compensation at its end, tool centre minus programmed point
+    /// (X Y Z, zero without compensation), and its programmed feed after
+    /// overrides and clamp, mm/s (what the G62 override scales).
+    last_off: [f64; 3],
+    last_feed: f64,
+    /// Factor from the loop's error behind the unsmoothed command at the
+    /// end of the interpolation to its error when the smoothed command
+    /// arrives: `((1 − e^(−K·T))/(K·T))^k`.
+    lag_c: f64,
     /// Cutting moves with no feed (per-revolution feed or thread with the
     /// spindle stopped): the control would wait for ever; they are timed
     /// as 0 s and counted here.
     pub stalled: u64,
+}
+
+/// The following error `e` of a first-order position loop of gain `k`
+/// (`de/dt = v − k·e`) after `dt` seconds of a command whose speed is
+/// `v0 + a·t`: `e·E + v0·(1 − E)/k + a·(k·dt − (1 − E))/k²`, `E = e^(−k·dt)`.
+/// Returns (E, the increment for e = 0).
+fn lag_phase(k: f64, v0: f64, a: f64, dt: f64) -> (f64, f64) {
+    if dt <= 0.0 || k.is_nan() || !k.is_finite() {
+        return (1.0, 0.0);
+    }
+    let x = k * dt;
+    let one_minus_e = -(-x).exp_m1();
+    // x − (1 − e^−x), by its series where the difference cancels.
+    let g = if x < 1e-3 {
+        x * x * (0.5 - x / 6.0 + x * x / 24.0)
+    } else {
+        x - one_minus_e
+    };
+    (1.0 - one_minus_e, v0 * one_minus_e / k + a * g / (k * k))
 }
 
 fn dot(a: &Pos, b: &Pos) -> f64 {
@@ -172,6 +248,13 @@ impl Planner {
         let t_smooth = d.smoothing_time();
         let stages = d.stages();
         let window = d.lookahead.max(1);
+        let gain = d.position_gain;
+        let lag_c = if gain.is_finite() && gain > 0.0 && t_smooth > 0.0 {
+            let x = gain * t_smooth;
+            (-(-x).exp_m1() / x).powi(stages as i32)
+        } else {
+            1.0
+        };
         Planner {
             t_smooth,
             stages,
@@ -184,6 +267,9 @@ impl Planner {
             rpm: 0.0,
             css: None,
             exact_mode: false,
+            corner_mode: false,
+            ignore_override: false,
+            last_cut: None,
             g09: false,
             tapping: false,
             high_speed: false,
@@ -194,7 +280,14 @@ impl Planner {
             feed_length: 0.0,
             rapid_length: 0.0,
             max_rpm: f64::INFINITY,
+            s_clamp: f64::INFINITY,
             stalled: 0,
+            lag: [0.0; NAXES],
+            gain,
+            q_tmin: 0.0,
+            last_off: [0.0; 3],
+            last_feed: 0.0,
+            lag_c,
             d,
         }
     }
@@ -252,12 +345,16 @@ impl Planner {
                 Feed::InverseTime(v) => len * v,
             }
         };
-        let ovr = if self.tapping {
+        (v * self.override_factor()).min(self.d.max_feed)
+    }
+
+    /// The feed override in force (100 % in G63 and after Hurco M49).
+    fn override_factor(&self) -> f64 {
+        if self.tapping || self.ignore_override {
             1.0
         } else {
             self.d.feed_override
-        };
-        (v * ovr).min(self.d.max_feed)
+        }
     }
 
     /// Stops the motion and plans everything still queued (end of program).
@@ -281,6 +378,115 @@ impl Planner {
         self.stages as f64 * self.t_smooth
     }
 
+    /// Runs the position loops through one trapezoid along the fixed
+    /// direction `u` (per axis, per mm of path).
+    fn track_lag(&mut self, u: &Pos, trap: &Trap) {
+        for (v0, a, dt) in [
+            (trap.v0, trap.a, trap.ta),
+            (trap.vp, 0.0, trap.tc),
+            (trap.vp, -trap.a, trap.td),
+        ] {
+            if dt > 0.0 {
+                let (e, inc) = lag_phase(self.gain, v0, a, dt);
+                for i in 0..NAXES {
+                    self.lag[i] = self.lag[i] * e + u[i] * inc;
+                }
+            }
+        }
+    }
+
+    /// The same along a segment: lines at their direction; arcs in closed
+    /// form while the speed is constant (the plane's two axes follow
+    /// `R·e^(iθ(t))`: the increment is `iωR·(e^(iθ1) − E·e^(iθ0))/(K + iω)`,
+    /// the other axes as on a line), and in steps of at most 0.02 rad of
+    /// the sweep (at most 256 per phase), each at the tangent of its
+    /// middle, while it changes.
+    #[inline(never)]
+    fn track_lag_seg(&mut self, g: &Geom, u_line: &Pos, trap: &Trap) {
+        let Geom::Arc {
+            p0,
+            p1,
+            plane,
+            th0,
+            sweep,
+            r0,
+            r1,
+            ..
+        } = *g
+        else {
+            return self.track_lag(u_line, trap);
+        };
+        let k = self.gain;
+        let len = trap.len.max(1e-300);
+        let (a1, a2, _) = plane.axes();
+        let mut t0 = 0.0;
+        for (v0, a, dt) in [
+            (trap.v0, trap.a, trap.ta),
+            (trap.vp, 0.0, trap.tc),
+            (trap.vp, -trap.a, trap.td),
+        ] {
+            if dt > 0.0 {
+                let s0 = trap.s_at(t0);
+                let ds = trap.s_at(t0 + dt) - s0;
+                if a == 0.0 {
+                    let (e, inc) = lag_phase(k, v0, 0.0, dt);
+                    for i in 0..NAXES {
+                        if i != a1 && i != a2 {
+                            self.lag[i] = self.lag[i] * e + (p1[i] - p0[i]) / len * inc;
+                        }
+                    }
+                    let th_a = th0 + sweep * s0 / len;
+                    let omega = v0 * sweep / len;
+                    let r = r0 + (r1 - r0) * (s0 + 0.5 * ds) / len;
+                    let (sa, ca) = th_a.sin_cos();
+                    let (sb, cb) = (th_a + omega * dt).sin_cos();
+                    let (nx, ny) = (cb - e * ca, sb - e * sa);
+                    let (wx, wy) = (-omega * r * ny, omega * r * nx);
+                    let d = k * k + omega * omega;
+                    self.lag[a1] = self.lag[a1] * e + (wx * k + wy * omega) / d;
+                    self.lag[a2] = self.lag[a2] * e + (wy * k - wx * omega) / d;
+                } else {
+                    let n = (sweep.abs() * ds / len / 0.02).ceil().clamp(1.0, 256.0);
+                    let h = dt / n;
+                    let (e, _) = lag_phase(k, 0.0, 0.0, h);
+                    for j in 0..n as usize {
+                        let tj = j as f64 * h;
+                        let u = g.tangent(trap.s_at(t0 + tj + 0.5 * h) / len);
+                        let (_, inc) = lag_phase(k, v0 + a * tj, a, h);
+                        for i in 0..NAXES {
+                            self.lag[i] = self.lag[i] * e + u[i] * inc;
+                        }
+                    }
+                }
+            }
+            t0 += dt;
+        }
+    }
+
+    /// In-position wait at a stop, s: when the smoothed command arrives,
+    /// each loop's error is `lag_c·|lag_i|`; it then decays as
+    /// `e^(−K·t)` until inside the axis's in-position width. The loops
+    /// are taken as settled afterwards.
+    fn settle(&mut self) -> f64 {
+        if !self.gain.is_finite() {
+            return 0.0;
+        }
+        let mut w: f64 = 0.0;
+        for i in 0..NAXES {
+            let width = self.d.in_position[i];
+            let e = self.lag_c * self.lag[i].abs();
+            if self.d.present[i] && width > 0.0 && e > width {
+                w = w.max((e / width).ln() / self.gain);
+            }
+        }
+        self.lag = [0.0; NAXES];
+        if w.is_finite() {
+            w
+        } else {
+            0.0
+        }
+    }
+
     fn done(&mut self, t_end: f64) {
         let id = self.next_id;
         self.next_id += 1;
@@ -289,6 +495,15 @@ impl Planner {
 
     /// Accounts for one event.
     pub fn push(&mut self, e: &Event) {
+        if let Some(m) = e.motion() {
+            // The start's work X in the move's own work system (a rapid,
+            // G50/G92 X or a new work offset since the last cutting move
+            // changes it): for constant surface speed.
+            let x = self.pos[0] + (m.to[0] - m.mto[0]);
+            if x.is_finite() {
+                self.work_x = x;
+            }
+        }
         match &e.cmd {
             Canon::Rapid { m, linear } => {
                 self.flush();
@@ -299,19 +514,22 @@ impl Planner {
                     p0: self.pos,
                     p1: m.mto,
                 };
-                self.cut(g, *feed, m.to[0], false);
+                let off = comp_offset(m, e.prog.as_deref());
+                self.cut(g, *feed, m.to[0], false, off, 1.0);
             }
             Canon::Arc {
                 m,
+                center,
                 mcenter,
                 plane,
                 dir,
                 turns,
                 feed,
-                ..
             } => {
                 let g = Geom::arc(self.pos, m.mto, *mcenter, *plane, *dir, *turns);
-                self.cut(g, *feed, m.to[0], false);
+                let off = comp_offset(m, e.prog.as_deref());
+                let ratio = self.internal_arc_ratio(&m.to, center, *plane, e.prog.as_deref());
+                self.cut(g, *feed, m.to[0], false, off, ratio);
             }
             Canon::Thread { m, lead } => {
                 let g = Geom::Line {
@@ -320,7 +538,7 @@ impl Planner {
                 };
                 // Spindle-synchronised: lead × rpm, no override, stop at the end.
                 let v = lead * self.rpm;
-                self.cut(g, Feed::PerMin(v), m.to[0], true);
+                self.cut(g, Feed::PerMin(v), m.to[0], true, [0.0; 3], 1.0);
             }
             Canon::Dwell {
                 seconds,
@@ -359,8 +577,21 @@ impl Planner {
                 self.time.other += t;
             }
             Canon::End { .. } => self.flush(),
+            Canon::Mode(ModeChange::ExactStopBlock)
+                if self.last_cut == Some(e.src) && !self.q.is_empty() =>
+            {
+                // G09 after its block's motion: stop at its end.
+                self.flush();
+            }
             Canon::Mode(mc) => self.mode(*mc),
             Canon::Message(_) => {}
+        }
+        match &e.cmd {
+            Canon::Feed { .. } | Canon::Arc { .. } | Canon::Thread { .. } => {
+                self.last_cut = Some(e.src)
+            }
+            Canon::Mode(_) | Canon::Message(_) => {}
+            _ => self.last_cut = None,
         }
     }
 
@@ -371,15 +602,23 @@ impl Planner {
                 self.exact_mode = on;
                 if on {
                     self.tapping = false;
+                    self.corner_mode = false;
                 }
             }
-            ModeChange::CuttingMode | ModeChange::CornerOverride => {
+            ModeChange::CuttingMode => {
                 self.exact_mode = false;
                 self.tapping = false;
+                self.corner_mode = false;
+            }
+            ModeChange::CornerOverride => {
+                self.exact_mode = false;
+                self.tapping = false;
+                self.corner_mode = true;
             }
             ModeChange::TappingMode => {
                 self.exact_mode = false;
                 self.tapping = true;
+                self.corner_mode = false;
             }
             ModeChange::HighSpeed(on) => {
                 self.high_speed = on;
@@ -394,6 +633,10 @@ impl Planner {
                 }
             }
             ModeChange::Stitch(_) => {}
+            ModeChange::FeedOverride(on) => self.ignore_override = !on,
+            ModeChange::SpindleClamp(rpm) => {
+                self.s_clamp = if rpm.is_nan() { f64::INFINITY } else { rpm };
+            }
         }
     }
 
@@ -440,12 +683,42 @@ impl Planner {
         };
         let piece = Piece { t0: self.now, kind };
         let dur = piece.duration();
+        if self.gain.is_finite() && dur > 0.0 {
+            // Servo lag behind the positioning (each from a settled start).
+            match &piece.kind {
+                PieceKind::Move { geom, trap } => {
+                    let u = geom.tangent(0.0);
+                    self.lag = [0.0; NAXES];
+                    self.track_lag(&u, trap);
+                }
+                PieceKind::Axes { p0, p1, traps } => {
+                    for i in 0..NAXES {
+                        let sign = if p1[i] >= p0[i] { 1.0 } else { -1.0 };
+                        let mut u = [0.0; NAXES];
+                        u[i] = sign;
+                        let keep = self.lag;
+                        self.lag = [0.0; NAXES];
+                        self.track_lag(&u, &traps[i]);
+                        // At rest until the slowest axis arrives.
+                        let (e, _) = lag_phase(self.gain, 0.0, 0.0, dur - traps[i].time());
+                        let li = self.lag[i] * e;
+                        self.lag = keep;
+                        self.lag[i] = li;
+                    }
+                }
+                PieceKind::Hold { .. } => {}
+            }
+        }
         if let Some(p) = self.pieces.as_mut() {
             p.push_back(piece);
         }
         self.now += dur;
         self.pos = to;
-        let drain = if dur > 0.0 { self.drain_time() } else { 0.0 };
+        let drain = if dur > 0.0 {
+            self.drain_time() + self.settle()
+        } else {
+            0.0
+        };
         self.hold(drain);
         self.time.rapid += dur + drain;
         self.done(self.now);
@@ -507,6 +780,7 @@ impl Planner {
     /// Junction speed limit between the end of `p` and the start of `n`;
     /// `None` when the corner needs an exact stop (the smoothing would
     /// leave the path tolerance even at zero speed).
+    #[inline(always)]
     fn junction(&self, p: &Seg, n: &Seg) -> Option<f64> {
         let mut v = p.vmax.min(n.vmax);
         let (u1, u2) = (&p.t_out, &n.t_in);
@@ -552,7 +826,117 @@ impl Planner {
         Some(v.max(0.0))
     }
 
-    fn cut(&mut self, g: Geom, feed: Feed, to_work_x: f64, thread: bool) {
+    /// Internal circular cutting feed change (000 §5.3.6): on an arc
+    /// whose tool centre radius `Rc` is smaller than the programmed
+    /// radius `Rp` (the compensated tool inside the arc), the feed is
+    /// scaled by `Rc/Rp`, not below the lower limit (PI 132).
+    fn internal_arc_ratio(&self, to: &Pos, center: &Pos, plane: Plane, prog: Option<&Pos>) -> f64 {
+        let (Some(min), Some(pp)) = (self.d.internal_arc_min, prog) else {
+            return 1.0;
+        };
+        let (a1, a2, _) = plane.axes();
+        let rc = (to[a1] - center[a1]).hypot(to[a2] - center[a2]);
+        let rp = (pp[a1] - center[a1]).hypot(pp[a2] - center[a2]);
+        if rp > 0.0 && rc < rp {
+            (rc / rp).max(min)
+        } else {
+            1.0
+        }
+    }
+
+    /// G62 (or PI 131 always): the junction from the last queued segment
+    /// into `n` is an inside corner of the compensated path whose angle
+    /// is from 2° up to PI 130. Inside: the tool centre's corner lies
+    /// towards the turn from the programmed corner
+    /// (`off · (u2 − u1) > 0`, `off` = tool centre − programmed point).
+    fn inside_corner(&self, u2: &Pos) -> bool {
+        if !(self.corner_mode || (self.d.corner.always && !self.tapping)) {
+            return false;
+        }
+        let Some(p) = self.q.back() else {
+            return false;
+        };
+        let off = &self.last_off;
+        let on = off[0].hypot(off[1]).hypot(off[2]);
+        if p.stop || on <= 0.0 {
+            return false;
+        }
+        let u1 = &p.t_out;
+        let (n1, n2) = (dot(u1, u1).sqrt(), dot(u2, u2).sqrt());
+        if n1 <= 0.0 || n2 <= 0.0 {
+            return false;
+        }
+        let c = (dot(u1, u2) / (n1 * n2)).clamp(-1.0, 1.0);
+        let angle = 180.0 - c.acos().to_degrees();
+        if !(2.0..=self.d.corner.angle_deg).contains(&angle) {
+            return false;
+        }
+        let inward: f64 = (0..3).map(|i| off[i] * (u2[i] / n2 - u1[i] / n1)).sum();
+        inward > 1e-9 * on
+    }
+
+    /// G62 before the corner: the last `before` mm of the last queued
+    /// segment run at the overridden feed.
+    fn override_before(&mut self) {
+        let (f, ls) = (self.d.corner.factor, self.d.corner.before);
+        if ls <= 0.0 {
+            return;
+        }
+        let Some(mut p) = self.q.pop_back() else {
+            return;
+        };
+        self.q_tmin -= p.len / p.vmax;
+        let red = p.vmax.min(self.last_feed * f).max(1e-6);
+        if ls >= p.len {
+            p.vmax = red;
+            p.jmax = p.jmax.min(red);
+            p.vb = p.jmax.min((2.0 * p.acc * p.len).sqrt());
+            self.q_tmin += p.len / red;
+            self.q.push_back(p);
+        } else {
+            let (mut h, mut t) = split(&p, (p.len - ls) / p.len);
+            t.vmax = red;
+            t.jmax = t.jmax.min(red);
+            t.vb = t.jmax.min((2.0 * t.acc * t.len).sqrt());
+            // Recomputed by the backward pass below.
+            h.vb = -1.0;
+            self.q_tmin += h.len / h.vmax + t.len / t.vmax;
+            self.q.push_back(h);
+            self.q.push_back(t);
+        }
+        self.backward();
+    }
+
+    /// Pushes the move after a G62 inside corner: the end of the one
+    /// before and its own start at the overridden feed.
+    #[cold]
+    #[inline(never)]
+    fn push_overridden(&mut self, seg: &Seg, feed: f64) {
+        let seg = *seg;
+        self.override_before();
+        let (f, le) = (self.d.corner.factor, self.d.corner.after);
+        let red = seg.vmax.min(feed * f).max(1e-6);
+        if le >= seg.len {
+            self.push_seg(Seg { vmax: red, ..seg });
+        } else if le > 0.0 {
+            let (mut h, t) = split(&seg, le / seg.len);
+            h.vmax = red;
+            self.push_seg(h);
+            self.push_seg(t);
+        } else {
+            self.push_seg(seg);
+        }
+    }
+
+    fn cut(
+        &mut self,
+        g: Geom,
+        feed: Feed,
+        to_work_x: f64,
+        thread: bool,
+        off: [f64; 3],
+        ratio: f64,
+    ) {
         let len = g.len();
         let from_x = self.work_x;
         self.work_x = to_work_x;
@@ -579,33 +963,12 @@ impl Planner {
         };
         for k in 0..pieces {
             let (u0, u1) = (k as f64 / pieces as f64, (k + 1) as f64 / pieces as f64);
-            let sub = if pieces == 1 {
-                g
+            let sub_owned;
+            let sub: &Geom = if pieces == 1 {
+                &g
             } else {
-                match g {
-                    Geom::Line { .. } => Geom::Line {
-                        p0: g.at(u0),
-                        p1: g.at(u1),
-                    },
-                    Geom::Arc {
-                        c,
-                        plane,
-                        th0,
-                        sweep,
-                        r0,
-                        r1,
-                        ..
-                    } => Geom::Arc {
-                        p0: g.at(u0),
-                        p1: g.at(u1),
-                        c,
-                        plane,
-                        th0: th0 + sweep * u0,
-                        sweep: sweep * (u1 - u0),
-                        r0: r0 + (r1 - r0) * u0,
-                        r1: r0 + (r1 - r0) * u1,
-                    },
-                }
+                sub_owned = g.sub(u0, u1);
+                &sub_owned
             };
             let f = if thread {
                 match feed {
@@ -618,6 +981,7 @@ impl Planner {
             } else {
                 self.feed_mm_min(feed, len)
             };
+            let f = if thread { f } else { f * ratio };
             let slen = if pieces == 1 { len } else { sub.len() };
             if f.is_nan() || f <= 0.0 {
                 // Per-revolution feed or thread with the spindle stopped:
@@ -633,7 +997,7 @@ impl Planner {
                 }
                 continue;
             }
-            let (t_in, t_out) = match sub {
+            let (t_in, t_out) = match *sub {
                 Geom::Line { p0, p1 } => {
                     let mut u = [0.0; NAXES];
                     if slen > 0.0 {
@@ -646,19 +1010,18 @@ impl Planner {
                 }
                 Geom::Arc { .. } => (sub.tangent(0.0), sub.tangent(1.0)),
             };
-            let (vmax, acc) = self.limits(
-                &sub,
-                &t_in,
-                f.min(if thread {
-                    f64::INFINITY
-                } else {
-                    self.d.max_feed
-                }),
-            );
+            let f = f.min(if thread {
+                f64::INFINITY
+            } else {
+                self.d.max_feed
+            });
+            let (vmax, acc) = self.limits(sub, &t_in, f);
+            let corner =
+                k == 0 && (self.corner_mode || self.d.corner.always) && self.inside_corner(&t_in);
             let seg = Seg {
                 id,
                 last: k + 1 == pieces,
-                geom: sub,
+                geom: *sub,
                 len: slen,
                 vmax: vmax.max(1e-6),
                 acc: if acc.is_finite() { acc } else { 1.0 },
@@ -668,7 +1031,13 @@ impl Planner {
                 t_in,
                 t_out,
             };
-            self.push_seg(seg);
+            if corner {
+                self.push_overridden(&seg, f / 60.0);
+            } else {
+                self.push_seg(seg);
+            }
+            self.last_off = if k + 1 == pieces { off } else { [0.0; 3] };
+            self.last_feed = f / 60.0;
         }
     }
 
@@ -678,12 +1047,10 @@ impl Planner {
             return self.feed_mm_min(feed, 0.0);
         };
         let r = x.abs().max(1e-3);
-        let rpm = (vc * 1000.0 / (std::f64::consts::TAU * r)).min(self.max_rpm);
-        let ovr = if self.tapping {
-            1.0
-        } else {
-            self.d.feed_override
-        };
+        let rpm = (vc * 1000.0 / (std::f64::consts::TAU * r))
+            .min(self.max_rpm)
+            .min(self.s_clamp);
+        let ovr = self.override_factor();
         let v = if self.d.dry_run {
             self.d.dry_run_feed
         } else {
@@ -692,6 +1059,7 @@ impl Planner {
         (v * ovr).min(self.d.max_feed)
     }
 
+    #[inline(always)]
     fn push_seg(&mut self, mut s: Seg) {
         s.jmax = match self.q.back() {
             Some(p) if !p.stop => match self.junction(p, &s) {
@@ -706,8 +1074,20 @@ impl Planner {
         .min(s.vmax);
         s.vb = s.jmax.min((2.0 * s.acc * s.len).sqrt());
         let stop = s.stop;
+        self.q_tmin += s.len / s.vmax;
         self.q.push_back(s);
-        // Backward pass: raise entry bounds until one does not change.
+        self.backward();
+        if stop {
+            self.flush();
+        }
+        while self.q.len() > self.window {
+            self.finalize_head();
+        }
+    }
+
+    /// Backward pass from the last queued segment: lower entry bounds to
+    /// what can still brake to the next one's, until one does not change.
+    fn backward(&mut self) {
         let n = self.q.len();
         for i in (0..n.saturating_sub(1)).rev() {
             let next_vb = self.q[i + 1].vb;
@@ -719,12 +1099,6 @@ impl Planner {
                 break;
             }
             si.vb = nb;
-        }
-        if stop {
-            self.flush();
-        }
-        while self.q.len() > self.window {
-            self.finalize_head();
         }
     }
 
@@ -740,6 +1114,11 @@ impl Planner {
 
     fn finalize_head(&mut self) {
         let Some(s) = self.q.pop_front() else { return };
+        self.q_tmin = if self.q.is_empty() {
+            0.0
+        } else {
+            self.q_tmin - s.len / s.vmax
+        };
         let v0 = self.head_v;
         let v1 = if s.stop {
             0.0
@@ -751,6 +1130,15 @@ impl Planner {
         };
         let trap = Trap::plan(s.len, v0, v1, s.vmax, s.acc);
         self.head_v = if s.stop { 0.0 } else { trap.v1 };
+        if self.gain.is_finite() {
+            if self.q_tmin * self.gain >= 40.0 {
+                // No stop can come within 40/K s: this segment's (and all
+                // earlier) lag will have decayed by e^-40 before any stop.
+                self.lag = [0.0; NAXES];
+            } else {
+                self.track_lag_seg(&s.geom, &s.t_in, &trap);
+            }
+        }
         let t0 = self.now;
         let dt = trap.time();
         if let Some(p) = self.pieces.as_mut() {
@@ -764,7 +1152,7 @@ impl Planner {
         let t_end = if s.stop {
             let pos = self.pos;
             self.pos = s.geom.end();
-            let drain = self.drain_time();
+            let drain = self.drain_time() + self.settle();
             self.hold(drain);
             self.pos = pos;
             spent += drain;
@@ -918,6 +1306,32 @@ mod tests {
         d.rapid[0] = f64::NAN;
         assert!(d.validate().unwrap_err().contains("axes.x.rapid"));
         assert!(dynm().validate().is_ok());
+        let mut d = dynm();
+        d.corner.angle_deg = 1.0;
+        assert!(d
+            .validate()
+            .unwrap_err()
+            .contains("motion.corner_override_angle_deg"));
+        let mut d = dynm();
+        d.corner.factor = 0.0;
+        assert!(d
+            .validate()
+            .unwrap_err()
+            .contains("motion.corner_override_pct"));
+        let mut d = dynm();
+        d.internal_arc_min = Some(0.0);
+        assert!(d
+            .validate()
+            .unwrap_err()
+            .contains("motion.internal_arc_min_pct"));
+        let mut d = dynm();
+        d.position_gain = f64::NAN;
+        assert!(d.validate().unwrap_err().contains("motion.position_gain"));
+        d.position_gain = -1.0;
+        assert!(d.validate().unwrap_err().contains("motion.position_gain"));
+        // An ideal servo is allowed.
+        d.position_gain = f64::INFINITY;
+        assert!(d.validate().is_ok());
     }
 
     #[test]
@@ -932,6 +1346,58 @@ mod tests {
         d.dry_run_feed = 3000.0;
         let pl = Planner::new(d, [0.0; NAXES], 0.0);
         assert_eq!(pl.feed_mm_min(Feed::PerMin(1200.0), 1.0), 1500.0);
+    }
+
+    fn at_line(mut e: Event, line: u32) -> Event {
+        e.src.line = line;
+        e
+    }
+
+    #[test]
+    fn g09_before_or_after_its_motion_stops_that_motion() {
+        // Two 20 mm moves along X at 20 mm/s (path acceleration 1000):
+        // straight on, one trapezoid 40/20 + 20/1000 = 2.02 s plus one stop
+        // 2T (T = 2·2000/1e5 = 0.04): 2.1 s. With G09 on the first block
+        // (HX order: the mode before the motion; Hurco, 002 Table 1: after
+        // it) two trapezoids: 2·(1.0 + 0.02 + 0.08) = 2.2 s.
+        let g09 = || ev(Canon::Mode(ModeChange::ExactStopBlock));
+        let run = |evs: Vec<Event>| {
+            let mut pl = Planner::new(dynm(), [0.0; NAXES], 0.0);
+            for e in &evs {
+                pl.push(e);
+            }
+            pl.finish();
+            pl.now()
+        };
+        let plain = run(vec![
+            at_line(feed_to(20.0, 0.0), 1),
+            at_line(feed_to(40.0, 0.0), 2),
+        ]);
+        assert!((plain - 2.1).abs() < 1e-9, "{plain}");
+        let hx = run(vec![
+            at_line(g09(), 1),
+            at_line(feed_to(20.0, 0.0), 1),
+            at_line(feed_to(40.0, 0.0), 2),
+        ]);
+        let hurco = run(vec![
+            at_line(feed_to(20.0, 0.0), 1),
+            at_line(g09(), 1),
+            at_line(feed_to(40.0, 0.0), 2),
+        ]);
+        assert!((hx - 2.2).abs() < 1e-9, "{hx}");
+        assert!((hurco - 2.2).abs() < 1e-9, "{hurco}");
+    }
+
+    #[test]
+    fn hurco_m49_ignores_the_feed_override() {
+        let mut d = dynm();
+        d.feed_override = 0.5;
+        let mut pl = Planner::new(d, [0.0; NAXES], 0.0);
+        assert_eq!(pl.feed_mm_min(Feed::PerMin(1200.0), 1.0), 600.0);
+        pl.push(&ev(Canon::Mode(ModeChange::FeedOverride(false))));
+        assert_eq!(pl.feed_mm_min(Feed::PerMin(1200.0), 1.0), 1200.0);
+        pl.push(&ev(Canon::Mode(ModeChange::FeedOverride(true))));
+        assert_eq!(pl.feed_mm_min(Feed::PerMin(1200.0), 1.0), 600.0);
     }
 
     #[test]

@@ -185,7 +185,9 @@ fn corner_program(angle_deg: f64, f: f64) -> (Vec<Canon>, (f64, f64), (f64, f64)
 
 #[test]
 fn corners_10_to_170_degrees_against_euler() {
-    for deg in [10.0, 30.0, 45.0, 60.0, 90.0, 120.0, 150.0, 170.0] {
+    // Every 10° step, and 45°/135°.
+    let angles = (1..=17).map(|k| k as f64 * 10.0).chain([45.0, 135.0]);
+    for deg in angles {
         let f = 3000.0;
         let (cmds, u1, u2) = corner_program(deg, f);
         let (t, _) = run(&cmds, dynm(), None);
@@ -348,7 +350,8 @@ fn derivs(s: &[(f64, Pos)], dt: f64) -> [f64; 3] {
 #[test]
 fn sampled_corners_stay_on_path_and_within_limits() {
     let dt = 0.001;
-    for deg in [5.0, 10.0, 30.0, 45.0, 90.0, 135.0, 150.0, 170.0] {
+    let angles = (1..=17).map(|k| k as f64 * 10.0).chain([5.0, 45.0, 135.0]);
+    for deg in angles {
         let f = 6000.0;
         let (cmds, _, u2) = corner_program(deg, f);
         let (_, s) = run(&cmds, dynm(), Some(dt));
@@ -396,4 +399,280 @@ fn sampled_arcs_stay_on_path_and_within_limits() {
         assert!(acc <= A * 1.0001, "r {r}: axis acceleration {acc}");
         assert!(j <= J * 1.0001, "r {r}: axis jerk {j}");
     }
+}
+
+/// The in-position wait by numeric integration, independent of the
+/// planner's closed form: the position loop `dx/dt = K·(c − x)` of every
+/// axis driven by the sampled smoothed command `c` (integrated exactly
+/// for `c` linear between samples), continued at the end point until
+/// every axis's error is within `w`; returns that moment minus the last
+/// sample's time (the command's arrival).
+fn servo_wait(s: &[(f64, Pos)], dt: f64, k: f64, w: f64) -> f64 {
+    let e = (-k * dt).exp();
+    let mut x = s[0].1;
+    for win in s.windows(2) {
+        let (c0, c1) = (win[0].1, win[1].1);
+        for i in 0..6 {
+            let slope = (c1[i] - c0[i]) / dt;
+            // x(dt) = c1 − slope/K + (x0 − c0 + slope/K)·e^(−K·dt)
+            x[i] = c1[i] - slope / k + (x[i] - c0[i] + slope / k) * e;
+        }
+    }
+    let end = s.last().unwrap().1;
+    let err = |x: &Pos| (0..6).map(|i| (end[i] - x[i]).abs()).fold(0.0, f64::max);
+    let h = 1e-6;
+    let eh = (-k * h).exp();
+    let mut t = 0.0;
+    let mut prev = err(&x);
+    while prev > w {
+        for i in 0..6 {
+            x[i] = end[i] + (x[i] - end[i]) * eh;
+        }
+        let now = err(&x);
+        t += h;
+        if now <= w {
+            // Linear interpolation inside the last step.
+            t -= h * (w - now) / (prev - now);
+            break;
+        }
+        prev = now;
+        assert!(t < 10.0, "no settling");
+    }
+    t
+}
+
+#[test]
+fn in_position_wait_by_hand() {
+    // X 20 mm at F1200 (20 mm/s), path acceleration A/2 = 1000 mm/s²,
+    // T = 0.04 s (two stages), position gain K = 30/s, width 0.01 mm.
+    // In the cruise the loop lags v/K = 0.666667 mm; braking 0.02 s
+    // (x = K·0.02 = 0.6, E = e^-0.6 = 0.548812):
+    // 0.666667·E + 20·(1 − E)/30 − 1000·(0.6 − (1 − E))/900 = 0.501320 mm.
+    // When the smoothed command arrives the error is that times
+    // ((1 − e^-1.2)/1.2)² = 0.339118: 0.170007 mm; it decays as e^(−30 t)
+    // to 0.01 mm in ln(17.0007)/30 = 0.094442 s.
+    let mut d = dynm();
+    d.position_gain = 30.0;
+    let (t, _) = run(&[feed(20.0, 0.0, 1200.0)], d, None);
+    let want = trap_time(20.0, 20.0, 1000.0) + 2.0 * T + 0.094442;
+    assert!((t - want).abs() < 2e-6, "{t} vs {want}");
+    // An ideal servo (infinite gain) waits nothing.
+    let (t, _) = run(&[feed(20.0, 0.0, 1200.0)], dynm(), None);
+    assert!((t - (want - 0.094442)).abs() < 1e-12);
+}
+
+/// Half a turn of radius 10 about (10, 0) from the origin, rising 8 mm.
+fn helix_from_origin() -> Canon {
+    let to = [20.0, 0.0, 8.0, 0.0, 0.0, 0.0];
+    Canon::Arc {
+        m: Motion { to, mto: to },
+        center: p(10.0, 0.0),
+        mcenter: p(10.0, 0.0),
+        dir: ArcDir::Ccw,
+        plane: Plane::XY,
+        turns: 0,
+        feed: Feed::PerMin(3000.0),
+    }
+}
+
+#[test]
+fn in_position_wait_against_numeric_servo() {
+    const K: f64 = 30.0;
+    const W: f64 = 0.01;
+    let dt = 1e-4;
+    let square = vec![
+        feed(30.0, 0.0, 2400.0),
+        feed(30.0, 30.0, 2400.0),
+        feed(0.0, 30.0, 2400.0),
+        feed(0.0, 0.0, 2400.0),
+    ];
+    let rapid = Canon::Rapid {
+        m: Motion {
+            to: p(100.0, 30.0),
+            mto: p(100.0, 30.0),
+        },
+        linear: false,
+    };
+    let cases: Vec<(&str, Vec<Canon>)> = vec![
+        ("line", vec![feed(20.0, 0.0, 1200.0)]),
+        ("diagonal", vec![feed(30.0, 40.0, 3000.0)]),
+        ("short", vec![feed(0.3, 0.0, 3000.0)]),
+        ("square", square),
+        ("half circle", vec![arc((20.0, 0.0), (10.0, 0.0), 3000.0)]),
+        (
+            "quarter circle r 40",
+            vec![arc((40.0, 40.0), (40.0, 0.0), 4800.0)],
+        ),
+        ("helix", vec![helix_from_origin()]),
+        ("rapid", vec![rapid]),
+    ];
+    for (name, cmds) in cases {
+        let mut d = dynm();
+        d.path_tolerance = 0.2;
+        let (ideal, s) = run(&cmds, d.clone(), Some(dt));
+        d.position_gain = K;
+        for w in d.in_position.iter_mut() {
+            *w = W;
+        }
+        let (with_servo, _) = run(&cmds, d, None);
+        let want = servo_wait(&s, dt, K, W);
+        let got = with_servo - ideal;
+        // The wait is tens of ms: within 1 % of it (0.3 ms), the cycle
+        // time within 0.5 %.
+        assert!(
+            (got - want).abs() <= 0.01 * want,
+            "{name}: wait {got} s, numeric {want} s"
+        );
+        close(with_servo, ideal + want, 0.005);
+    }
+}
+
+#[test]
+fn css_facing_under_the_g50_clamp_by_hand() {
+    // PUMA-style facing under G96: radius 40 → 5 mm at 0.2 mm/rev,
+    // Vc = 200 m/min, machine limit 3000 rpm, program clamp G50 S2000.
+    // rpm(x) = 200000/(2π·x), clamped at 2000 below
+    // x_c = 200000/(2π·2000) = 15.9155 mm. Time = ∫ dx / (0.2·rpm/60):
+    //  x in [x_c, 40]: ∫ 60·2π·x/(0.2·200000) dx = 0.0094248·(40² − x_c²)/2
+    //                 = 0.0094248·673.35 = 6.3462 s;
+    //  x in [5, x_c]:  (15.9155 − 5)/(0.2·2000/60) = 1.6373 s;
+    // 7.9835 s, plus the stop 2T = 0.08 s. Without the clamp (3000 rpm,
+    // x_c' = 10.6103): 0.0094248·(1600 − 112.58)/2 + 5.6103/10 = 7.5703 s.
+    let x_c = 200_000.0 / (std::f64::consts::TAU * 2000.0);
+    let clamped = 0.0094248 * (1600.0 - x_c * x_c) / 2.0 + (x_c - 5.0) / (0.2 * 2000.0 / 60.0);
+    assert!((clamped - 7.9835).abs() < 1e-3, "{clamped}");
+    for (clamp, want) in [(Some(2000.0), 7.9835 + 2.0 * T), (None, 7.5703 + 2.0 * T)] {
+        let mut d = Dynamics::uniform(
+            [true, false, true, false, false, false],
+            20000.0,
+            A,
+            J,
+            10000.0,
+        );
+        d.path_tolerance = TOL;
+        d.spindle_accel = 1e9;
+        // Start at radius 60 and position to 40 at rapid first: the facing
+        // starts from the rapid's end (the rapid's time is not cutting).
+        let mut pl = Planner::new(d, [60.0, 0.0, 0.0, 0.0, 0.0, 0.0], 60.0);
+        pl.max_rpm = 3000.0;
+        let at40 = [40.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        pl.push(&ev(Canon::Rapid {
+            m: Motion {
+                to: at40,
+                mto: at40,
+            },
+            linear: false,
+        }));
+        if let Some(c) = clamp {
+            pl.push(&ev(Canon::Mode(ModeChange::SpindleClamp(c))));
+        }
+        pl.push(&ev(Canon::Spindle {
+            dir: SpindleDir::Cw,
+            rpm: 795.8,
+            css: Some(200.0),
+        }));
+        let to = [5.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        pl.push(&ev(Canon::Feed {
+            m: Motion { to, mto: to },
+            feed: Feed::PerRev(0.2),
+        }));
+        pl.finish();
+        // The ramps between the 16 pieces (≤ 6.7 mm/s at 1000 mm/s²) add
+        // a few ms: within 0.5 %.
+        close(pl.time.cutting, want, 0.005);
+    }
+}
+
+/// A CCW helix from (r, 0, 0) about the origin through `sweep_deg`,
+/// rising `dz`.
+fn helix(r: f64, sweep_deg: f64, dz: f64, f: f64) -> Canon {
+    let th = sweep_deg.to_radians();
+    let to = [r * th.cos(), r * th.sin(), dz, 0.0, 0.0, 0.0];
+    Canon::Arc {
+        m: Motion { to, mto: to },
+        center: p(0.0, 0.0),
+        mcenter: p(0.0, 0.0),
+        dir: ArcDir::Ccw,
+        plane: Plane::XY,
+        turns: 0,
+        feed: Feed::PerMin(f),
+    }
+}
+
+fn run_from(start: Pos, cmds: &[Canon], dt: f64) -> (f64, Vec<(f64, Pos)>) {
+    let mut pl = Planner::new(dynm(), start, start[0]);
+    pl.keep_pieces();
+    let mut sm = Sampler::new(dt, pl.stages(), pl.smoothing_time(), start);
+    for c in cmds {
+        pl.push(&ev(c.clone()));
+    }
+    pl.finish();
+    let mut end = 0.0;
+    while let Some(pc) = pl.next_piece() {
+        end = pc.t0 + pc.duration();
+        sm.add(pc);
+    }
+    let mut out = Vec::new();
+    sm.run(end, &mut |t, q| out.push((t, *q)));
+    (pl.now(), out)
+}
+
+#[test]
+fn helical_arcs_closed_form_and_on_the_helix() {
+    // Helices of radius 5, 20 and 40 through 270°, rising 10 mm, at
+    // F6000 (100 mm/s). Motion law (docs/motion.md): path acceleration
+    // A/2 = 1000; cruise limit min(F, √(A/2·R), ∛(J/2·R²),
+    // √(24·R·tol/(2T²))) with the plane radius R; length
+    // √((R·θ)² + dz²); one trapezoid from rest to rest plus 2T.
+    let dt = 0.001;
+    for r in [5.0, 20.0, 40.0] {
+        let c = helix(r, 270.0, 10.0, 6000.0);
+        let (t, s) = run_from([r, 0.0, 0.0, 0.0, 0.0, 0.0], &[c], dt);
+        let v = 100f64
+            .min((0.5 * A * r).sqrt())
+            .min((0.5 * J * r * r).cbrt())
+            .min((24.0 * r * TOL / (2.0 * T * T)).sqrt());
+        let th = 270f64.to_radians();
+        let len = ((r * th).powi(2) + 100.0).sqrt();
+        close(t, trap_time(len, v, 0.5 * A) + 2.0 * T, 0.005);
+        // Every sample on the helix within the tolerance: radial error in
+        // the plane, and Z against the height of the helix at the
+        // sample's angle (z = 10·φ/θ, φ in [0, θ]).
+        let mut dev: f64 = 0.0;
+        for (_, q) in &s {
+            let mut phi = q[1].atan2(q[0]);
+            if phi < -0.5 {
+                phi += std::f64::consts::TAU;
+            }
+            let phi = phi.clamp(0.0, th);
+            let dr = q[0].hypot(q[1]) - r;
+            let dz = q[2] - 10.0 * phi / th;
+            dev = dev.max(dr.hypot(dz));
+        }
+        assert!(dev <= TOL, "r {r}: helix deviation {dev} mm");
+        let [vx, ax, jx] = derivs(&s, dt);
+        assert!(vx <= 100.0 * 1.0001, "r {r}: axis speed {vx}");
+        assert!(ax <= A * 1.0001, "r {r}: axis acceleration {ax}");
+        assert!(jx <= J * 1.0001, "r {r}: axis jerk {jx}");
+    }
+}
+
+#[test]
+fn inverse_time_feed_g93() {
+    // G93: F is 1/min per block: F2 on a 30 mm move = 60 mm/min = 1 mm/s
+    // (30 s of cruise; the ramps 0 → 1 → 0 at 1000 mm/s² add 1/1000 s),
+    // plus 2T. F0.5 on a 3-4-5 move of 50 mm: 25 mm/min.
+    let inv = |x: f64, y: f64, f: f64| Canon::Feed {
+        m: Motion {
+            to: p(x, y),
+            mto: p(x, y),
+        },
+        feed: Feed::InverseTime(f),
+    };
+    let (t, _) = run(&[inv(30.0, 0.0, 2.0)], dynm(), None);
+    close(t, 30.0 + 0.001 + 2.0 * T, 0.005);
+    let (t, _) = run(&[inv(30.0, 40.0, 0.5)], dynm(), None);
+    let v = 25.0 / 60.0;
+    // Path acceleration (A/2)/max|u_i| = 1000/0.8.
+    close(t, trap_time(50.0, v, 1250.0) + 2.0 * T, 0.005);
 }

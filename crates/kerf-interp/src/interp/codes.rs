@@ -331,6 +331,7 @@ impl Interp {
         } else if let Some(s) = self.words.get(b'S') {
             self.st.s_clamp = Some(s.v);
             self.words.take(b'S');
+            self.emit(Canon::Mode(ModeChange::SpindleClamp(s.v)));
         }
         let cur = self.programmed_position();
         let mut any = false;

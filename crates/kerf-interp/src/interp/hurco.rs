@@ -230,6 +230,7 @@ impl Interp {
                 return Err(self.alarm(AlarmKind::OutOfRange, s.at, "negative spindle clamp"));
             }
             self.st.s_clamp = Some(s.v);
+            self.emit(Canon::Mode(ModeChange::SpindleClamp(s.v)));
         }
         Ok(())
     }
