@@ -1380,3 +1380,72 @@ fn lathe_tip_2_bore_with_g10_change() {
     let last = path(&r).last().unwrap().clone();
     assert!(close(last.to[2], 2.0) && close(last.to[0], 8.0), "{last:?}");
 }
+
+/// 000 §15.4.2 (3): a subprogram drawn eight times, rotated 45° each time
+/// by O2200's `G68 X0 Y0 G91 R45.0`. O2100 starts G42 at the middle of the
+/// octagon's bottom side (0, −10), runs to the corner (4.142, −10) and on
+/// to the middle of the next side (7.071, −7.071) (the manual's rounded
+/// numbers), then cancels with a G40 block without a move. The manual's
+/// `G01 F200 H01` is read as D01 (H selects a length offset on the HX and
+/// G42 needs a radius; the value is not printed): D01 = 1 here. A G53
+/// move first puts the G92 origin inside the travel.
+///
+/// By hand, in O2100's own frame (G42 travelling +X: the tool on −Y):
+/// start-up ends at (0, −11); the corner of the offset lines y = −11 and
+/// the 45° side moved out by 1 is at x = 4.142 + 1·tan 22.5° =
+/// 4.142 + (√2 − 1); the side ends at (7.071, −7.071) + (1, −1)/√2. Pass k
+/// (k = 0..7) is the same rotated by 45°·k about the origin: a closed
+/// octagon outside the programmed one, each vertex 11 / cos 22.5° from
+/// the centre.
+#[test]
+fn manual_15_4_2_rotated_subprogram_octagon() {
+    let prog = "G53 G00 X-400. Y-300.\n\
+        G92 X0 Y0 G69 G17\n\
+        G01 F200 D01\n\
+        M98 P2100\n\
+        M98 P2200 L7\n\
+        G00 G90 X0 Y0\n\
+        M30\n\
+        O2200\n\
+        G68 X0 Y0 G91 R45.0\n\
+        G90 M98 P2100\n\
+        M99\n\
+        O2100\n\
+        G90 G1 G42 X0 Y-10.0\n\
+        X4.142\n\
+        X7.071 Y-7.071\n\
+        G40\n\
+        M99\n";
+    let r = run_d("hx-mc", &[(1, 1.0)], &[], prog);
+    ok(&r);
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    let rot = |k: usize, (x, y): (f64, f64)| {
+        let a = (45.0 * k as f64).to_radians();
+        (x * a.cos() - y * a.sin(), x * a.sin() + y * a.cos())
+    };
+    let pass = [
+        (0.0, -11.0),
+        (4.142 + 2f64.sqrt() - 1.0, -11.0),
+        (7.071 + h, -7.071 - h),
+    ];
+    // The feed moves of lines 13-15 (O2100), in order; the rapid before
+    // and the final G00 are not part of the octagon.
+    let p: Vec<_> = path(&r)
+        .into_iter()
+        .filter(|m| (13..=15).contains(&m.line))
+        .collect();
+    assert_eq!(p.len(), 24, "{p:#?}");
+    for (i, m) in p.iter().enumerate() {
+        let (k, j) = (i / 3, i % 3);
+        let (x, y) = rot(k, pass[j]);
+        assert!(
+            m.kind == "feed" && close(m.to[0], x) && close(m.to[1], y),
+            "pass {k} move {j}: {m:?}, wanted ({x}, {y})"
+        );
+    }
+    // Every vertex of the compensated octagon is 11 / cos 22.5° out.
+    let rv = 11.0 / 22.5f64.to_radians().cos();
+    for m in p.iter().skip(1).step_by(3) {
+        assert!((m.to[0].hypot(m.to[1]) - rv).abs() < 1e-3, "{m:?}");
+    }
+}
