@@ -4,7 +4,7 @@
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
-for t in parse interp; do
+for t in parse interp pipeline; do
     mkdir -p "$here/corpus/$t"
     for dir in "$root/examples" "$root/../shared/corpus" "$here/seeds"; do
         [ -d "$dir" ] || continue
@@ -20,4 +20,4 @@ for t in parse interp; do
         done
     done
 done
-echo "seeded: $(ls "$here/corpus/parse" | wc -l) parse, $(ls "$here/corpus/interp" | wc -l) interp"
+echo "seeded: $(ls "$here/corpus/parse" | wc -l) parse, $(ls "$here/corpus/interp" | wc -l) interp, $(ls "$here/corpus/pipeline" | wc -l) pipeline"
