@@ -3,7 +3,8 @@
 //!
 //! `tests/rs274/NAME.nc` is a program in the subset the HX and LinuxCNC
 //! share (work offsets set by `G10 L2`, G92, G52, G53, G28, arcs in the
-//! three planes, helical arcs, G81-G89 cycles with G98/G99 and repeats).
+//! three planes, helical arcs, G81-G89 cycles with G98/G99 and repeats, in
+//! G17, G18 and G19).
 //! `NAME.rs274.nc` is the same program in LinuxCNC's spelling (only the
 //! cycle repeat word differs: Fanuc `K`, LinuxCNC `L`), and `NAME.canon`
 //! is what `rs274 -g NAME.rs274.nc` printed (recorded once: the test does
@@ -223,4 +224,9 @@ fn canned_cycles_match_rs274() {
 #[test]
 fn offsets_arcs_and_reference_return_match_rs274() {
     assert!(compare("coords") > 20);
+}
+
+#[test]
+fn cycles_in_g18_g19_and_helical_arcs_match_rs274() {
+    assert!(compare("planes") > 50);
 }
