@@ -54,7 +54,7 @@ pub(crate) struct Held {
 
 /// A `,C`/`,R` on a held compensated move (000 §4.3): the corner goes into
 /// the programmed contour, then is compensated like any other path.
-struct HeldCorner {
+pub(super) struct HeldCorner {
     chamfer: bool,
     size: f64,
     /// The block's path in program coordinates (the corner is cut there,
@@ -64,6 +64,28 @@ struct HeldCorner {
     xf: crate::xform::Xform,
     /// The `,C`/`,R` word.
     word: SrcRef,
+}
+
+/// A move in the plane handed to [`Interp::comp_path`].
+pub(super) struct CompPath {
+    /// Motion mode ×10 (0, 10, 20, 30).
+    pub(super) mode: u16,
+    /// The path in the plane, transformed, and in program coordinates.
+    pub(super) seg: Seg,
+    pub(super) seg_p: Seg,
+    /// Start and end (all axes): program, and transformed.
+    pub(super) cur: Pos,
+    pub(super) cur_t: Pos,
+    pub(super) tw: Pos,
+    pub(super) tw_t: Pos,
+    /// The move leaves the plane too.
+    pub(super) off_plane: bool,
+    pub(super) corner: Option<Box<HeldCorner>>,
+    pub(super) speed: Speed,
+    /// The motion word in the current block (emission alarms).
+    pub(super) at: u32,
+    /// Where geometry alarms of this path point.
+    pub(super) motion: SrcRef,
 }
 
 /// Compensation state; `Interp::comp` is None when compensation is
@@ -279,29 +301,12 @@ impl Interp {
             let (u, w) = (v(a1), v(a2));
             (u.is_some() || w.is_some()).then(|| (u.unwrap_or(0.0), w.unwrap_or(0.0)))
         };
-        let (value, tip) = self.comp_value();
-        match mode {
-            410 | 420 => {
-                let side = if mode == 410 { 1.0 } else { -1.0 };
-                let c = self.comp.as_deref_mut().expect("set");
-                c.side = side;
-                c.r = side * value;
-                c.tip = if value < 0.0 { (0.0, 0.0) } else { tip };
-                if !c.on {
-                    c.on = true;
-                    c.plane = plane;
-                    c.startup = c.held.is_none();
-                }
-            }
-            _ => {
-                let dir = ijk(self).map(|d| self.xf_dir(d));
-                let c = self.comp.as_deref_mut().expect("set");
-                if c.on {
-                    c.on = false;
-                    c.ij = dir;
-                }
-            }
-        }
+        let dir = if mode == 400 {
+            ijk(self).map(|d| self.xf_dir(d))
+        } else {
+            None
+        };
+        self.comp_set_mode(mode, dir);
         if let Some(at) = g39 {
             let c = self.comp.as_deref().expect("set");
             if !c.on || c.held.is_none() || c.held.as_ref().is_some_and(|h| h.startup) {
@@ -325,6 +330,39 @@ impl Interp {
             return Ok(true);
         }
         Ok(false)
+    }
+
+    /// G40 (`dir`: its I/J/K direction), G41 or G42 in force from now on
+    /// (the state exists, or is made for G41/G42).
+    pub(super) fn comp_set_mode(&mut self, mode: u16, dir: Option<P>) {
+        if self.comp.is_none() {
+            if mode == 400 {
+                return;
+            }
+            self.comp = Some(Box::new(self.comp_new()));
+        }
+        let plane = self.st.plane;
+        let (value, tip) = self.comp_value();
+        let c = self.comp.as_deref_mut().expect("set");
+        match mode {
+            410 | 420 => {
+                let side = if mode == 410 { 1.0 } else { -1.0 };
+                c.side = side;
+                c.r = side * value;
+                c.tip = if value < 0.0 { (0.0, 0.0) } else { tip };
+                if !c.on {
+                    c.on = true;
+                    c.plane = plane;
+                    c.startup = c.held.is_none();
+                }
+            }
+            _ => {
+                if c.on {
+                    c.on = false;
+                    c.ij = dir;
+                }
+            }
+        }
     }
 
     /// The block's move in compensation (offset mode, or a held move or
@@ -377,7 +415,7 @@ impl Interp {
                 .then_some((Seg::Line { a: s, b: e }, Seg::Line { a: sp, b: ep }))
         };
         let word = self.corner_word()?;
-        let Some((mut seg, seg_p)) = seg else {
+        let Some((seg, seg_p)) = seg else {
             if !any {
                 return Ok(());
             }
@@ -409,6 +447,46 @@ impl Interp {
         } else {
             Speed::Feed(self.feed(at)?)
         };
+        let motion = self.src_here(at);
+        self.comp_path(CompPath {
+            mode,
+            seg,
+            seg_p,
+            cur,
+            cur_t,
+            tw,
+            tw_t,
+            off_plane,
+            corner,
+            speed,
+            at,
+            motion,
+        })
+    }
+
+    /// A move in the plane in compensation: `p.seg` (transformed) is
+    /// joined to the held move (or starts up, or cancels) and held in
+    /// turn. Used by [`Self::comp_motion`] for a block's move and by the
+    /// G70-G73 finishing shape (interp/lathe_mrc.rs) for its segments.
+    pub(super) fn comp_path(&mut self, p: CompPath) -> R<()> {
+        let CompPath {
+            mode,
+            mut seg,
+            seg_p,
+            cur,
+            cur_t,
+            tw,
+            tw_t,
+            off_plane,
+            corner,
+            speed,
+            at,
+            motion,
+        } = p;
+        let plane = self.st.plane;
+        let (a1, a2, _) = plane.axes();
+        let arc = matches!(mode, 20 | 30);
+        let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
         // The offset value is read for every move: a D word, a lathe T
         // code or G10 changing the value in offset mode takes effect at
         // the end of the next compensated move (000 §13.2.2: that block
@@ -446,9 +524,9 @@ impl Interp {
         let held = held;
         if !on {
             if arc {
-                return Err(self.alarm(
-                    AlarmKind::CompArc,
-                    at,
+                return Err(AlarmKind::CompArc.at(
+                    self.dialect.id,
+                    motion,
                     "cutter compensation cancelled (G40) in a G02/G03 block: cancel in G00/G01",
                 ));
             }
@@ -473,6 +551,14 @@ impl Interp {
             } else {
                 padd(s, vec)
             };
+            if let Some(cap) = self.comp_capture.as_mut() {
+                if comp::dist(base, e) >= comp::EPS {
+                    cap.push((Seg::Line { a: base, b: e }, false));
+                }
+                self.st.pos = self.to_machine(&tw);
+                self.comp = None;
+                return Ok(());
+            }
             let prog = self.st.pos;
             self.st.pos = self.offset_to_machine(&self.plane_pt(cur_t, base));
             let r = self.line_to(tw, speed, at);
@@ -485,14 +571,14 @@ impl Interp {
         }
         // The offset at this block's start must exist (an inside arc
         // larger than the offset).
-        self.comp_geom(comp::perp_start(&seg, r), self.src_here(at))?;
+        self.comp_geom(comp::perp_start(&seg, r), motion)?;
         let cstart = if let Some(mut h) = held {
             self.comp_join(&mut h, &seg, r, g39, type_b)?
         } else {
             if startup && arc {
-                return Err(self.alarm(
-                    AlarmKind::CompArc,
-                    at,
+                return Err(AlarmKind::CompArc.at(
+                    self.dialect.id,
+                    motion,
                     "cutter compensation start-up (G41/G42) in a G02/G03 block: start in G00/G01",
                 ));
             }
@@ -500,7 +586,7 @@ impl Interp {
             // vector left by a broken look-ahead.
             psub(padd(s, vec), tip)
         };
-        let (src, motion) = (self.cur, self.src_here(at));
+        let src = self.cur;
         let c = self.comp.as_deref_mut().expect("comp");
         c.startup = false;
         c.vec = (0.0, 0.0);
@@ -817,6 +903,45 @@ impl Interp {
                 h.motion,
                 "interference: the compensated move would run against the programmed direction (gouge)",
             ));
+        }
+        if let Some(cap) = self.comp_capture.as_mut() {
+            // The G71-G73 tip path: the pieces are kept, nothing emitted.
+            let (a, b) = (padd(h.cstart, h.tip), padd(j.end1, h.tip));
+            match h.seg {
+                Seg::Line { .. } => {
+                    if comp::dist(a, b) >= comp::EPS {
+                        cap.push((Seg::Line { a, b }, h.startup));
+                    }
+                }
+                Seg::Arc { c, ccw, .. } => cap.push((
+                    Seg::Arc {
+                        a,
+                        b,
+                        c: padd(c, h.tip),
+                        ccw,
+                    },
+                    false,
+                )),
+            }
+            let mut prev = j.end1;
+            for p in j.pieces() {
+                let (a, b) = (padd(prev, h.tip), padd(p.end(), h.tip));
+                match *p {
+                    Piece::Line(_) => cap.push((Seg::Line { a, b }, false)),
+                    Piece::Arc(_, c, ccw) => cap.push((
+                        Seg::Arc {
+                            a,
+                            b,
+                            c: padd(c, h.tip),
+                            ccw,
+                        },
+                        false,
+                    )),
+                }
+                prev = p.end();
+            }
+            events.clear();
+            return Ok(());
         }
         let s = self.plane_pt(h.start, padd(h.cstart, h.tip));
         let e = self.plane_pt(h.end, padd(j.end1, h.tip));
