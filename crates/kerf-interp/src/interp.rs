@@ -240,9 +240,10 @@ pub struct Interp {
     /// emitted (`Event::prog`).
     comp_prog: Option<Pos>,
     /// G71-G73 with nose radius compensation: the compensated pieces of
-    /// the finishing shape (plane points, the start-up's own line marked)
+    /// the finishing shape (plane points, the block, and whether it is the block's own path
+    /// rather than a corner piece)
     /// are kept here instead of emitted (interp/lathe_mrc.rs).
-    comp_capture: Option<Vec<(crate::comp::Seg, bool)>>,
+    comp_capture: Option<Vec<(crate::comp::Seg, SrcRef, bool)>>,
     /// Parsed blocks of text executed again (loops, jumps back).
     cache: block_cache::BlockCache,
     /// PUMA lathe cycle data (interp/lathe.rs, interp/lathe_mrc.rs).

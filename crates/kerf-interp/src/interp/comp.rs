@@ -23,7 +23,7 @@ use super::*;
 use crate::comp::{self, CompError, CornerOpt, Join, Piece, Seg, P};
 
 /// The modal group of G40/G41/G42 in all three dialects.
-const COMP_GROUP: usize = 7;
+pub(super) const COMP_GROUP: usize = 7;
 
 /// A move held until the next one is known.
 pub(crate) struct Held {
@@ -365,6 +365,94 @@ impl Interp {
         }
     }
 
+    /// The G40/G41/G42 code (×10) in force: 400 when off.
+    pub(super) fn comp_mode_code(&self) -> u16 {
+        match self.comp.as_deref() {
+            Some(c) if c.on => {
+                if c.side > 0.0 {
+                    410
+                } else {
+                    420
+                }
+            }
+            _ => 400,
+        }
+    }
+
+    /// After a G70-G73 shape run through the compensation: the held move
+    /// ends on its perpendicular vector and the next move is a start-up
+    /// (the cycle's return to its start point is not compensated).
+    pub(super) fn comp_shape_end(&mut self) -> R<()> {
+        self.comp_break()?;
+        if let Some(c) = self.comp.as_deref_mut() {
+            c.vec = (0.0, 0.0);
+            c.startup = c.on;
+        }
+        Ok(())
+    }
+
+    /// A segment of a G70-G73 finishing shape (ZX points, X a radius) in
+    /// compensation, from the current programmed point; alarms of its
+    /// geometry point at `motion` (the shape block).
+    pub(super) fn comp_shape_seg(
+        &mut self,
+        seg: &crate::turning::Seg,
+        rapid: bool,
+        speed: Speed,
+        at: u32,
+        motion: SrcRef,
+    ) -> R<()> {
+        let cur = self.zx_full(seg.from);
+        let tw = self.zx_full(seg.to);
+        let (a1, a2, _) = self.st.plane.axes();
+        let (cur_t, tw_t) = (self.xf_point(&cur), self.xf_point(&tw));
+        let (sp, ep) = ((cur[a1], cur[a2]), (tw[a1], tw[a2]));
+        let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
+        let (mode, seg_t, seg_p) = match seg.arc {
+            None => (
+                if rapid { 0 } else { 10 },
+                Seg::Line { a: s, b: e },
+                Seg::Line { a: sp, b: ep },
+            ),
+            Some((c, ccw)) => {
+                let pc = (c.z, c.x);
+                let (_, _, ct, ccw_t) = self.transform_arc(cur, tw, pc, ccw, at)?;
+                (
+                    if ccw { 30 } else { 20 },
+                    Seg::Arc {
+                        a: s,
+                        b: e,
+                        c: ct,
+                        ccw: ccw_t,
+                    },
+                    Seg::Arc {
+                        a: sp,
+                        b: ep,
+                        c: pc,
+                        ccw,
+                    },
+                )
+            }
+        };
+        if seg.arc.is_none() && comp::dist(s, e) < comp::EPS {
+            return Ok(());
+        }
+        self.comp_path(CompPath {
+            mode,
+            seg: seg_t,
+            seg_p,
+            cur,
+            cur_t,
+            tw,
+            tw_t,
+            off_plane: false,
+            corner: None,
+            speed,
+            at,
+            motion,
+        })
+    }
+
     /// The block's move in compensation (offset mode, or a held move or
     /// vector left over).
     pub(super) fn comp_motion(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
@@ -553,7 +641,7 @@ impl Interp {
             };
             if let Some(cap) = self.comp_capture.as_mut() {
                 if comp::dist(base, e) >= comp::EPS {
-                    cap.push((Seg::Line { a: base, b: e }, false));
+                    cap.push((Seg::Line { a: base, b: e }, motion, true));
                 }
                 self.st.pos = self.to_machine(&tw);
                 self.comp = None;
@@ -910,7 +998,7 @@ impl Interp {
             match h.seg {
                 Seg::Line { .. } => {
                     if comp::dist(a, b) >= comp::EPS {
-                        cap.push((Seg::Line { a, b }, h.startup));
+                        cap.push((Seg::Line { a, b }, h.motion, true));
                     }
                 }
                 Seg::Arc { c, ccw, .. } => cap.push((
@@ -920,14 +1008,15 @@ impl Interp {
                         c: padd(c, h.tip),
                         ccw,
                     },
-                    false,
+                    h.motion,
+                    true,
                 )),
             }
             let mut prev = j.end1;
             for p in j.pieces() {
                 let (a, b) = (padd(prev, h.tip), padd(p.end(), h.tip));
                 match *p {
-                    Piece::Line(_) => cap.push((Seg::Line { a, b }, false)),
+                    Piece::Line(_) => cap.push((Seg::Line { a, b }, h.motion, false)),
                     Piece::Arc(_, c, ccw) => cap.push((
                         Seg::Arc {
                             a,
@@ -935,6 +1024,7 @@ impl Interp {
                             c: padd(c, h.tip),
                             ccw,
                         },
+                        h.motion,
                         false,
                     )),
                 }
