@@ -14,9 +14,9 @@
 //!   Z = z (the contour again);
 //! - a 45° chamfer along (−1, 1)/√2: right normal (1, 1)/√2, centre line
 //!   = contour + r(1, 1)/√2, tip line = contour + r(1/√2 − 1)(1, 1):
-//!   X + Z falls by 2r(1 − 1/√2) = r(2 − √2). Along one axis that is a
-//!   shift of b = r(2 − √2) = r(1 − tan 22.5°)·... — indeed
-//!   1 − tan 22.5° = 1 − (√2 − 1) = 2 − √2, the 001 p.27-28 correction.
+//!   X + Z falls by 2r(1 − 1/√2) = r(2 − √2): the chamfer's tip line is
+//!   the contour shifted along one axis by b = r(2 − √2) = r(1 − tan 22.5°)
+//!   (tan 22.5° = √2 − 1), 001 p.27-28's correction (0.468 for R0.8).
 
 use kerf_canon::{Canon, Feed};
 use kerf_interp::{Interp, Profile, Run, Settings, Step};
@@ -369,4 +369,76 @@ fn interference_in_the_shape_is_positioned() {
             r.alarm
         );
     }
+}
+
+/// A PUMA direct chamfer `X30. C2.` (001 p.10) in offset mode: the
+/// chamfer goes into the programmed contour, then every piece is
+/// compensated. The contour is that of 001 p.28's example (face at Z0 to
+/// Ø26, 45° chamfer to Ø30 Z−2, Z−30), r = 0.8, tip 3, G42:
+/// - start-up along −Z at X10 (radius), type A: ends perpendicular to the
+///   face (+X travel, right normal +Z): centre (0.8, 10), tip (0, 9.2) →
+///   Ø18.4 Z0;
+/// - face → chamfer: left turn, outer → intersection of the tip lines
+///   Z = 0 and X + Z = 13 − b (b = r(1 − tan 22.5°), see the header) →
+///   X = 13 − b → Ø(26 − 2b) Z0;
+/// - chamfer → Z−30: X = 15 and X + Z = 13 − b → Z = −2 − b, Ø30;
+/// - Z−30 before the G40 block (type A): its perpendicular: centre
+///   (−30, 15.8), tip (−30.8, 15) → Ø30 Z−30.8; then Ø40 Z−30.
+///
+/// (The same numbers as tests/cutter_comp.rs's 001 p.28 example written
+/// with the chamfer as a move.)
+#[test]
+fn direct_chamfer_in_offset_mode() {
+    let prog = "G00 X20. Z1. T0101\nG42 G01 Z0 F0.2\nX30. C2.\nZ-30.\nG40 G00 X40.\nM30\n";
+    let r = run(3, prog);
+    ok(&r);
+    let b = b();
+    same(
+        &trace(&r),
+        &[
+            mv("R", 10.0, 1.0, 0.0),
+            mv("F", 10.0 - R, 0.0, 0.2),
+            mv("F", 13.0 - b, 0.0, 0.2),
+            mv("F", 15.0, -2.0 - b, 0.2),
+            mv("F", 15.0, -30.0 - R, 0.2),
+            mv("R", 20.0, -30.0, 0.0),
+        ],
+    );
+}
+
+/// A direct corner R `X30. R-2.` in offset mode (the sign of R is the
+/// direction of the next move, −Z). Contour: face at Z0 from X10 to the
+/// corner, arc R2 (left turn, G03) from (Z0, X13) to (Z−2, X15) about
+/// (Z−2, X13), Z−30. G42, r = 0.8, tip 3:
+/// - the face's centre path Z = 0.8 is tangent to the arc's offset
+///   circle, radius 2 + 0.8 (outside of a left-turning arc); the face
+///   ends at centre (0.8, 13), tip (0, 12.2) → Ø24.4 Z0;
+/// - the arc ends at centre (−2, 15.8), tip (−2.8, 15) → Ø30 Z−2.8,
+///   about the centre shifted by the tip: (Z−2.8, X12.2);
+/// - Z−30 then as in the chamfer test.
+#[test]
+fn direct_corner_r_in_offset_mode() {
+    let prog = "G00 X20. Z1. T0101\nG42 G01 Z0 F0.2\nX30. R-2.\nZ-30.\nG40 G00 X40.\nM30\n";
+    let r = run(3, prog);
+    ok(&r);
+    same(
+        &trace(&r),
+        &[
+            mv("R", 10.0, 1.0, 0.0),
+            mv("F", 10.0 - R, 0.0, 0.2),
+            mv("F", 13.0 - R, 0.0, 0.2),
+            mv("A", 15.0, -2.0 - R, 0.2),
+            mv("F", 15.0, -30.0 - R, 0.2),
+            mv("R", 20.0, -30.0, 0.0),
+        ],
+    );
+    let c: Vec<_> = r
+        .events
+        .iter()
+        .filter_map(|e| match &e.cmd {
+            Canon::Arc { center, .. } => Some((round(center[0]), round(center[2]))),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(c, vec![(round(13.0 - R), round(-2.0 - R))]);
 }

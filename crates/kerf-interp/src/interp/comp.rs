@@ -1123,7 +1123,7 @@ impl Interp {
     }
 
     /// The source position of a byte of the current block.
-    fn src_here(&self, at: u32) -> SrcRef {
+    pub(super) fn src_here(&self, at: u32) -> SrcRef {
         let (line, col) = self.raw.line_col(at as usize);
         SrcRef {
             file: self.cur.file,
