@@ -239,6 +239,11 @@ pub struct Interp {
     /// The programmed end point (work) of the compensated moves being
     /// emitted (`Event::prog`).
     comp_prog: Option<Pos>,
+    /// G71-G73 with nose radius compensation: the compensated pieces of
+    /// the finishing shape (plane points, the block, and whether it is the block's own path
+    /// rather than a corner piece)
+    /// are kept here instead of emitted (interp/lathe_mrc.rs).
+    comp_capture: Option<Vec<(crate::comp::Seg, SrcRef, bool)>>,
     /// Parsed blocks of text executed again (loops, jumps back).
     cache: block_cache::BlockCache,
     /// PUMA lathe cycle data (interp/lathe.rs, interp/lathe_mrc.rs).
@@ -342,6 +347,7 @@ impl Interp {
             corner: None,
             comp: None,
             comp_prog: None,
+            comp_capture: None,
             cache: block_cache::BlockCache::default(),
             lathe: lathe::LatheData::default(),
             hurco,

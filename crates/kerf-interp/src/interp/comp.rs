@@ -23,7 +23,7 @@ use super::*;
 use crate::comp::{self, CompError, CornerOpt, Join, Piece, Seg, P};
 
 /// The modal group of G40/G41/G42 in all three dialects.
-const COMP_GROUP: usize = 7;
+pub(super) const COMP_GROUP: usize = 7;
 
 /// A move held until the next one is known.
 pub(crate) struct Held {
@@ -54,7 +54,7 @@ pub(crate) struct Held {
 
 /// A `,C`/`,R` on a held compensated move (000 §4.3): the corner goes into
 /// the programmed contour, then is compensated like any other path.
-struct HeldCorner {
+pub(super) struct HeldCorner {
     chamfer: bool,
     size: f64,
     /// The block's path in program coordinates (the corner is cut there,
@@ -64,6 +64,28 @@ struct HeldCorner {
     xf: crate::xform::Xform,
     /// The `,C`/`,R` word.
     word: SrcRef,
+}
+
+/// A move in the plane handed to [`Interp::comp_path`].
+pub(super) struct CompPath {
+    /// Motion mode ×10 (0, 10, 20, 30).
+    pub(super) mode: u16,
+    /// The path in the plane, transformed, and in program coordinates.
+    pub(super) seg: Seg,
+    pub(super) seg_p: Seg,
+    /// Start and end (all axes): program, and transformed.
+    pub(super) cur: Pos,
+    pub(super) cur_t: Pos,
+    pub(super) tw: Pos,
+    pub(super) tw_t: Pos,
+    /// The move leaves the plane too.
+    pub(super) off_plane: bool,
+    pub(super) corner: Option<Box<HeldCorner>>,
+    pub(super) speed: Speed,
+    /// The motion word in the current block (emission alarms).
+    pub(super) at: u32,
+    /// Where geometry alarms of this path point.
+    pub(super) motion: SrcRef,
 }
 
 /// Compensation state; `Interp::comp` is None when compensation is
@@ -279,29 +301,12 @@ impl Interp {
             let (u, w) = (v(a1), v(a2));
             (u.is_some() || w.is_some()).then(|| (u.unwrap_or(0.0), w.unwrap_or(0.0)))
         };
-        let (value, tip) = self.comp_value();
-        match mode {
-            410 | 420 => {
-                let side = if mode == 410 { 1.0 } else { -1.0 };
-                let c = self.comp.as_deref_mut().expect("set");
-                c.side = side;
-                c.r = side * value;
-                c.tip = if value < 0.0 { (0.0, 0.0) } else { tip };
-                if !c.on {
-                    c.on = true;
-                    c.plane = plane;
-                    c.startup = c.held.is_none();
-                }
-            }
-            _ => {
-                let dir = ijk(self).map(|d| self.xf_dir(d));
-                let c = self.comp.as_deref_mut().expect("set");
-                if c.on {
-                    c.on = false;
-                    c.ij = dir;
-                }
-            }
-        }
+        let dir = if mode == 400 {
+            ijk(self).map(|d| self.xf_dir(d))
+        } else {
+            None
+        };
+        self.comp_set_mode(mode, dir);
         if let Some(at) = g39 {
             let c = self.comp.as_deref().expect("set");
             if !c.on || c.held.is_none() || c.held.as_ref().is_some_and(|h| h.startup) {
@@ -325,6 +330,127 @@ impl Interp {
             return Ok(true);
         }
         Ok(false)
+    }
+
+    /// G40 (`dir`: its I/J/K direction), G41 or G42 in force from now on
+    /// (the state exists, or is made for G41/G42).
+    pub(super) fn comp_set_mode(&mut self, mode: u16, dir: Option<P>) {
+        if self.comp.is_none() {
+            if mode == 400 {
+                return;
+            }
+            self.comp = Some(Box::new(self.comp_new()));
+        }
+        let plane = self.st.plane;
+        let (value, tip) = self.comp_value();
+        let c = self.comp.as_deref_mut().expect("set");
+        match mode {
+            410 | 420 => {
+                let side = if mode == 410 { 1.0 } else { -1.0 };
+                c.side = side;
+                c.r = side * value;
+                c.tip = if value < 0.0 { (0.0, 0.0) } else { tip };
+                if !c.on {
+                    c.on = true;
+                    c.plane = plane;
+                    c.startup = c.held.is_none();
+                }
+            }
+            _ => {
+                if c.on {
+                    c.on = false;
+                    c.ij = dir;
+                }
+            }
+        }
+    }
+
+    /// The G40/G41/G42 code (×10) in force: 400 when off.
+    pub(super) fn comp_mode_code(&self) -> u16 {
+        match self.comp.as_deref() {
+            Some(c) if c.on => {
+                if c.side > 0.0 {
+                    410
+                } else {
+                    420
+                }
+            }
+            _ => 400,
+        }
+    }
+
+    /// After a G70-G73 shape run through the compensation: the held move
+    /// ends on its perpendicular vector and the next move is a start-up
+    /// (the cycle's return to its start point is not compensated).
+    pub(super) fn comp_shape_end(&mut self) -> R<()> {
+        self.comp_break()?;
+        if let Some(c) = self.comp.as_deref_mut() {
+            c.vec = (0.0, 0.0);
+            c.startup = c.on;
+        }
+        Ok(())
+    }
+
+    /// A segment of a G70-G73 finishing shape (ZX points, X a radius) in
+    /// compensation, from the current programmed point; alarms of its
+    /// geometry point at `motion` (the shape block).
+    pub(super) fn comp_shape_seg(
+        &mut self,
+        seg: &crate::turning::Seg,
+        rapid: bool,
+        speed: Speed,
+        at: u32,
+        motion: SrcRef,
+    ) -> R<()> {
+        let cur = self.zx_full(seg.from);
+        let tw = self.zx_full(seg.to);
+        let (a1, a2, _) = self.st.plane.axes();
+        let (cur_t, tw_t) = (self.xf_point(&cur), self.xf_point(&tw));
+        let (sp, ep) = ((cur[a1], cur[a2]), (tw[a1], tw[a2]));
+        let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
+        let (mode, seg_t, seg_p) = match seg.arc {
+            None => (
+                if rapid { 0 } else { 10 },
+                Seg::Line { a: s, b: e },
+                Seg::Line { a: sp, b: ep },
+            ),
+            Some((c, ccw)) => {
+                let pc = (c.z, c.x);
+                let (_, _, ct, ccw_t) = self.transform_arc(cur, tw, pc, ccw, at)?;
+                (
+                    if ccw { 30 } else { 20 },
+                    Seg::Arc {
+                        a: s,
+                        b: e,
+                        c: ct,
+                        ccw: ccw_t,
+                    },
+                    Seg::Arc {
+                        a: sp,
+                        b: ep,
+                        c: pc,
+                        ccw,
+                    },
+                )
+            }
+        };
+        if seg.arc.is_none() && comp::dist(s, e) < comp::EPS {
+            return Ok(());
+        }
+        self.comp_path(CompPath {
+            mode,
+            seg: seg_t,
+            seg_p,
+            cur,
+            cur_t,
+            tw,
+            tw_t,
+            off_plane: false,
+            corner: None,
+            speed,
+            at,
+            motion,
+        })
     }
 
     /// The block's move in compensation (offset mode, or a held move or
@@ -377,7 +503,7 @@ impl Interp {
                 .then_some((Seg::Line { a: s, b: e }, Seg::Line { a: sp, b: ep }))
         };
         let word = self.corner_word()?;
-        let Some((mut seg, seg_p)) = seg else {
+        let Some((seg, seg_p)) = seg else {
             if !any {
                 return Ok(());
             }
@@ -409,6 +535,46 @@ impl Interp {
         } else {
             Speed::Feed(self.feed(at)?)
         };
+        let motion = self.src_here(at);
+        self.comp_path(CompPath {
+            mode,
+            seg,
+            seg_p,
+            cur,
+            cur_t,
+            tw,
+            tw_t,
+            off_plane,
+            corner,
+            speed,
+            at,
+            motion,
+        })
+    }
+
+    /// A move in the plane in compensation: `p.seg` (transformed) is
+    /// joined to the held move (or starts up, or cancels) and held in
+    /// turn. Used by [`Self::comp_motion`] for a block's move and by the
+    /// G70-G73 finishing shape (interp/lathe_mrc.rs) for its segments.
+    pub(super) fn comp_path(&mut self, p: CompPath) -> R<()> {
+        let CompPath {
+            mode,
+            mut seg,
+            seg_p,
+            cur,
+            cur_t,
+            tw,
+            tw_t,
+            off_plane,
+            corner,
+            speed,
+            at,
+            motion,
+        } = p;
+        let plane = self.st.plane;
+        let (a1, a2, _) = plane.axes();
+        let arc = matches!(mode, 20 | 30);
+        let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
         // The offset value is read for every move: a D word, a lathe T
         // code or G10 changing the value in offset mode takes effect at
         // the end of the next compensated move (000 §13.2.2: that block
@@ -446,9 +612,9 @@ impl Interp {
         let held = held;
         if !on {
             if arc {
-                return Err(self.alarm(
-                    AlarmKind::CompArc,
-                    at,
+                return Err(AlarmKind::CompArc.at(
+                    self.dialect.id,
+                    motion,
                     "cutter compensation cancelled (G40) in a G02/G03 block: cancel in G00/G01",
                 ));
             }
@@ -473,6 +639,14 @@ impl Interp {
             } else {
                 padd(s, vec)
             };
+            if let Some(cap) = self.comp_capture.as_mut() {
+                if comp::dist(base, e) >= comp::EPS {
+                    cap.push((Seg::Line { a: base, b: e }, motion, true));
+                }
+                self.st.pos = self.to_machine(&tw);
+                self.comp = None;
+                return Ok(());
+            }
             let prog = self.st.pos;
             self.st.pos = self.offset_to_machine(&self.plane_pt(cur_t, base));
             let r = self.line_to(tw, speed, at);
@@ -485,14 +659,14 @@ impl Interp {
         }
         // The offset at this block's start must exist (an inside arc
         // larger than the offset).
-        self.comp_geom(comp::perp_start(&seg, r), self.src_here(at))?;
+        self.comp_geom(comp::perp_start(&seg, r), motion)?;
         let cstart = if let Some(mut h) = held {
             self.comp_join(&mut h, &seg, r, g39, type_b)?
         } else {
             if startup && arc {
-                return Err(self.alarm(
-                    AlarmKind::CompArc,
-                    at,
+                return Err(AlarmKind::CompArc.at(
+                    self.dialect.id,
+                    motion,
                     "cutter compensation start-up (G41/G42) in a G02/G03 block: start in G00/G01",
                 ));
             }
@@ -500,7 +674,7 @@ impl Interp {
             // vector left by a broken look-ahead.
             psub(padd(s, vec), tip)
         };
-        let (src, motion) = (self.cur, self.src_here(at));
+        let src = self.cur;
         let c = self.comp.as_deref_mut().expect("comp");
         c.startup = false;
         c.vec = (0.0, 0.0);
@@ -818,6 +992,47 @@ impl Interp {
                 "interference: the compensated move would run against the programmed direction (gouge)",
             ));
         }
+        if let Some(cap) = self.comp_capture.as_mut() {
+            // The G71-G73 tip path: the pieces are kept, nothing emitted.
+            let (a, b) = (padd(h.cstart, h.tip), padd(j.end1, h.tip));
+            match h.seg {
+                Seg::Line { .. } => {
+                    if comp::dist(a, b) >= comp::EPS {
+                        cap.push((Seg::Line { a, b }, h.motion, true));
+                    }
+                }
+                Seg::Arc { c, ccw, .. } => cap.push((
+                    Seg::Arc {
+                        a,
+                        b,
+                        c: padd(c, h.tip),
+                        ccw,
+                    },
+                    h.motion,
+                    true,
+                )),
+            }
+            let mut prev = j.end1;
+            for p in j.pieces() {
+                let (a, b) = (padd(prev, h.tip), padd(p.end(), h.tip));
+                match *p {
+                    Piece::Line(_) => cap.push((Seg::Line { a, b }, h.motion, false)),
+                    Piece::Arc(_, c, ccw) => cap.push((
+                        Seg::Arc {
+                            a,
+                            b,
+                            c: padd(c, h.tip),
+                            ccw,
+                        },
+                        h.motion,
+                        false,
+                    )),
+                }
+                prev = p.end();
+            }
+            events.clear();
+            return Ok(());
+        }
         let s = self.plane_pt(h.start, padd(h.cstart, h.tip));
         let e = self.plane_pt(h.end, padd(j.end1, h.tip));
         self.st.pos = self.to_machine(&s);
@@ -908,7 +1123,7 @@ impl Interp {
     }
 
     /// The source position of a byte of the current block.
-    fn src_here(&self, at: u32) -> SrcRef {
+    pub(super) fn src_here(&self, at: u32) -> SrcRef {
         let (line, col) = self.raw.line_col(at as usize);
         SrcRef {
             file: self.cur.file,

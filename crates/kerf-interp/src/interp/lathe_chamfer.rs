@@ -195,8 +195,7 @@ impl Interp {
         let mut post = tw;
         post[a2] += s * c;
         let feed = self.feed(at)?;
-        self.line_to(pre, motion::Speed::Feed(feed), at)?;
-        if l == b'R' {
+        let arc = (l == b'R').then(|| {
             // Centre: c from both the block's line and the next one.
             let mut cen = pre;
             cen[a2] += s * c;
@@ -204,7 +203,30 @@ impl Interp {
             // plane (u = Z, v = X): left turn = CCW = G03.
             let (u1, v1) = if along_z { (d1, 0.0) } else { (0.0, d1) };
             let (u2, v2) = if along_z { (0.0, s) } else { (s, 0.0) };
-            let ccw = u1 * v2 - v1 * u2 > 0.0;
+            (cen, u1 * v2 - v1 * u2 > 0.0)
+        });
+        // With nose radius compensation the corner is part of the
+        // programmed contour: the shortened move and the corner are
+        // compensated like any other paths (interp/comp.rs), the next
+        // block joins the corner.
+        let zx = |q: &Pos| crate::turning::p(q[xi], q[zi]);
+        let piece = |from: &Pos, to: &Pos, arc: Option<(Pos, bool)>| crate::turning::Seg {
+            from: zx(from),
+            to: zx(to),
+            arc: arc.map(|(c, ccw)| (zx(&c), ccw)),
+        };
+        if self.comp.is_some() {
+            let src = self.src_here(at);
+            let sp = motion::Speed::Feed(feed);
+            self.comp_shape_seg(&piece(&cur, &pre, None), false, sp, at, src)?;
+        } else {
+            self.line_to(pre, motion::Speed::Feed(feed), at)?;
+        }
+        if self.comp.is_some() {
+            let src = self.src_here(at);
+            let sp = motion::Speed::Feed(feed);
+            self.comp_shape_seg(&piece(&pre, &post, arc), false, sp, at, src)?;
+        } else if let Some((cen, ccw)) = arc {
             let start = self.prog_pos();
             self.arc_to(start, post, (cen[zi], cen[xi]), ccw, feed, at)?;
         } else {

@@ -127,7 +127,7 @@ impl Interp {
         let q_at = self.words.get(b'Q').map(|w| w.at).unwrap_or(at);
         let a = self.zx_pos();
         let resume = self.src.as_ref().expect("loaded").tell();
-        let shape = match self.read_shape(ns, nf) {
+        let mut shape = match self.read_shape(ns, nf) {
             Ok(s) => s,
             Err(ShapeErr::Here(a)) => return Err(a),
             Err(ShapeErr::AtCycle(k, l, msg)) => {
@@ -145,7 +145,16 @@ impl Interp {
         }
         // Type II (pockets) when block ns moves both axes.
         let type2 = shape.ns_x && shape.ns_z;
-        let mut out = Vec::with_capacity(64 + shape.segs.len());
+        // Nose radius compensation in force before the cycle or written in
+        // the shape: the levels and the semi-finish pass follow the
+        // imaginary tip's path (fanuc-semantics §1.9).
+        let tip_path = self.shape_tip_path(a, &shape, at)?;
+        let comp = tip_path.is_some();
+        let (start, segs) = match tip_path {
+            Some(t) => t,
+            None => (shape.start, std::mem::take(&mut shape.segs)),
+        };
+        let mut out = Vec::with_capacity(64 + segs.len());
         let res = match code {
             710 | 720 => {
                 let r = turning::Rough {
@@ -163,21 +172,9 @@ impl Interp {
                     allow_z: dw,
                 };
                 match (code, type2) {
-                    (710, false) => {
-                        turning::g71(a, shape.start, &shape.segs, r, shape.ns_rapid, &mut out)
-                    }
-                    (710, true) => {
-                        turning::g71_type2(a, shape.start, &shape.segs, r, shape.ns_rapid, &mut out)
-                    }
-                    _ => turning::g72(
-                        a,
-                        shape.start,
-                        &shape.segs,
-                        r,
-                        shape.ns_rapid,
-                        type2,
-                        &mut out,
-                    ),
+                    (710, false) => turning::g71(a, start, &segs, r, shape.ns_rapid, &mut out),
+                    (710, true) => turning::g71_type2(a, start, &segs, r, shape.ns_rapid, &mut out),
+                    _ => turning::g72(a, start, &segs, r, shape.ns_rapid, type2, &mut out),
                 }
             }
             _ => {
@@ -193,8 +190,8 @@ impl Interp {
                     .unwrap_or_else(|| self.mrc_param(5137, 1.0) as u32);
                 turning::g73(
                     a,
-                    shape.start,
-                    &shape.segs,
+                    start,
+                    &segs,
                     relief,
                     turning::p(du, dw),
                     d,
@@ -209,12 +206,21 @@ impl Interp {
                 return Err(self.alarm(
                     AlarmKind::MrcNotMonotonic,
                     p_at,
-                    format!(
-                        "G{} type {}: the shape N{ns}-N{nf} is not monotonic in {ax} (segment {} after N{ns})",
-                        code / 10,
-                        if type2 { "II" } else { "I" },
-                        i + 1
-                    ),
+                    if comp {
+                        format!(
+                            "G{} type {}: the shape N{ns}-N{nf} offset by the nose radius (the imaginary tip's path) is not monotonic in {ax} (piece {} after N{ns})",
+                            code / 10,
+                            if type2 { "II" } else { "I" },
+                            i + 1
+                        )
+                    } else {
+                        format!(
+                            "G{} type {}: the shape N{ns}-N{nf} is not monotonic in {ax} (segment {} after N{ns})",
+                            code / 10,
+                            if type2 { "II" } else { "I" },
+                            i + 1
+                        )
+                    },
                 ));
             }
             Err(e) => return Err(self.alarm(AlarmKind::MrcValue, at, super::lathe::cycle_msg(&e))),
@@ -234,16 +240,145 @@ impl Interp {
         Ok(w.v as u32)
     }
 
+    /// G71-G73 with nose radius compensation in force before the cycle or
+    /// written in the shape: the shape run through the compensation with
+    /// its pieces captured instead of emitted — the imaginary tip's path
+    /// A → A′ → B, as (A′, the segments after it). None without
+    /// compensation. The compensation state, position and modal codes are
+    /// left as before the cycle.
+    fn shape_tip_path(&mut self, a: P, s: &Shape, at: u32) -> R<Option<(P, Vec<turning::Seg>)>> {
+        let before = self.comp_mode_code();
+        if before == 400 && !s.comp_on {
+            return Ok(None);
+        }
+        let saved = self.comp.take();
+        let pos = self.st.pos;
+        if before != 400 {
+            self.comp_set_mode(before, None);
+        }
+        self.comp_capture = Some(Vec::with_capacity(2 * s.segs.len() + 4));
+        let r = self.shape_run(a, s, at, false);
+        let cap = self.comp_capture.take().unwrap_or_default();
+        self.comp = saved;
+        self.st.pos = pos;
+        r?;
+        let zx = |q: (f64, f64)| turning::p(q.1, q.0);
+        let k = cap
+            .iter()
+            .rposition(|(_, src, own)| *own && *src == s.ns_src);
+        let start = k.map(|k| zx(cap[k].0.end())).unwrap_or(a);
+        let first = k.map(|k| k + 1).unwrap_or(0);
+        let segs = cap[first..]
+            .iter()
+            .map(|(seg, _, _)| match *seg {
+                crate::comp::Seg::Line { a, b } => turning::Seg {
+                    from: zx(a),
+                    to: zx(b),
+                    arc: None,
+                },
+                crate::comp::Seg::Arc { a, b, c, ccw } => turning::Seg {
+                    from: zx(a),
+                    to: zx(b),
+                    arc: Some((zx(c), ccw)),
+                },
+            })
+            .collect();
+        Ok(Some((start, segs)))
+    }
+
+    /// The feed of a shape block's F (mm, per the feed mode).
+    fn shape_feed(&self, f: Option<f64>) -> Option<Feed> {
+        f.map(|f| match self.st.feed_mode {
+            FeedMode::PerMin => Feed::PerMin(f.min(self.profile.feed.max_cutting)),
+            FeedMode::PerRev => Feed::PerRev(f),
+            FeedMode::Inverse => Feed::InverseTime(f),
+        })
+    }
+
+    /// The shape's moves A → A′ → B with the nose radius compensation as
+    /// written in the shape (G40/G41/G42 take effect with their block's
+    /// move, the engine of interp/comp.rs joins the paths): emitted for
+    /// G70 (`g70`: with the F and S of the shape; the G40/G41/G42 mode at
+    /// the end of the shape stays in force), or captured into
+    /// `comp_capture` for G71-G73 (where a G40 in the shape is ignored: the
+    /// whole contour is offset). The last compensated move ends on its
+    /// perpendicular vector.
+    fn shape_run(&mut self, a: P, s: &Shape, at: u32, g70: bool) -> R<()> {
+        let s0 = self.st.s;
+        let ns = turning::Seg {
+            from: a,
+            to: s.start,
+            arc: None,
+        };
+        let first = (&ns, s.ns_rapid, s.ns_feed, s.ns_speed, s.ns_comp, s.ns_src);
+        let rest = s
+            .segs
+            .iter()
+            .zip(&s.modes)
+            .zip(&s.speeds)
+            .zip(&s.comps)
+            .zip(&s.srcs)
+            .map(|((((seg, &(rapid, f)), &sp), &c), &src)| (seg, rapid, f, sp, c, src));
+        for (seg, rapid, f, sp, c, src) in std::iter::once(first).chain(rest) {
+            match c {
+                Some(c) if g70 => {
+                    self.comp_set_mode(c, None);
+                    self.st.modal[super::comp::COMP_GROUP] = c;
+                }
+                // Roughing: the whole shape is offset, a G40 in it does not
+                // cancel (docs/dialects.md).
+                Some(c) if c != 400 => self.comp_set_mode(c, None),
+                _ => {}
+            }
+            if g70 {
+                self.g70_speed(sp.unwrap_or(s0));
+            }
+            let feed = self.shape_feed(f);
+            if self.comp.is_some() {
+                let speed = match (rapid, feed) {
+                    (true, _) => motion::Speed::Rapid,
+                    (false, Some(f)) => motion::Speed::Feed(f),
+                    (false, None) if g70 => motion::Speed::Feed(self.feed(at)?),
+                    _ => motion::Speed::Modal,
+                };
+                self.comp_shape_seg(seg, rapid, speed, at, src)?;
+            } else if g70 {
+                let m = if rapid { Mv::Rapid(seg.to) } else { seg.mv() };
+                self.emit_moves(&[m], feed, at)?;
+            } else {
+                let zx = |q: P| (q.z, q.x);
+                let cs = match seg.arc {
+                    None => crate::comp::Seg::Line {
+                        a: zx(seg.from),
+                        b: zx(seg.to),
+                    },
+                    Some((c, ccw)) => crate::comp::Seg::Arc {
+                        a: zx(seg.from),
+                        b: zx(seg.to),
+                        c: zx(c),
+                        ccw,
+                    },
+                };
+                if let Some(cap) = self.comp_capture.as_mut() {
+                    cap.push((cs, src, true));
+                }
+                self.st.pos = self.to_machine(&self.zx_full(seg.to));
+            }
+        }
+        self.comp_shape_end()
+    }
+
     /// G70: the shape once, each block in its own mode at the F of the
     /// shape (or the modal F), then a rapid back to the start point.
     fn g70(&mut self, a: P, s: &Shape, at: u32) -> R<()> {
-        let feed_of = |me: &Self, f: Option<f64>| -> Option<Feed> {
-            f.map(|f| match me.st.feed_mode {
-                FeedMode::PerMin => Feed::PerMin(f.min(me.profile.feed.max_cutting)),
-                FeedMode::PerRev => Feed::PerRev(f),
-                FeedMode::Inverse => Feed::InverseTime(f),
-            })
-        };
+        if s.comp_on || self.comp_mode_code() != 400 {
+            let s0 = self.st.s;
+            self.shape_run(a, s, at, true)?;
+            self.emit_moves(&[Mv::Rapid(a)], None, at)?;
+            self.g70_speed(s0);
+            return Ok(());
+        }
+        let feed_of = |me: &Self, f: Option<f64>| me.shape_feed(f);
         let first = if s.ns_rapid {
             Mv::Rapid(s.start)
         } else {

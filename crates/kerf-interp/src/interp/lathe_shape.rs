@@ -36,6 +36,17 @@ pub(super) struct Shape {
     pub(super) ns_speed: Option<f64>,
     /// F in block ns.
     pub(super) ns_feed: Option<f64>,
+    /// G40/G41/G42 (×10) written in block ns / taking effect with each
+    /// segment (a code in a block without a move goes with the next
+    /// segment).
+    pub(super) ns_comp: Option<u16>,
+    pub(super) comps: Vec<Option<u16>>,
+    /// A G41/G42 anywhere in the shape.
+    pub(super) comp_on: bool,
+    /// Where block ns / each segment's block is (alarms of the
+    /// compensation).
+    pub(super) ns_src: SrcRef,
+    pub(super) srcs: Vec<SrcRef>,
 }
 
 /// A chamfer / corner-R word on a shape block, applied once the shape is
@@ -94,7 +105,13 @@ impl Interp {
             speeds: Vec::new(),
             ns_feed: None,
             ns_speed: None,
+            ns_comp: None,
+            comps: Vec::new(),
+            comp_on: false,
+            ns_src: self.cur,
+            srcs: Vec::new(),
         };
+        let mut comp_pending: Option<u16> = None;
         let mut count = 0usize;
         let mut corners: Vec<ShapeCorner> = Vec::new();
         let mut seg_blocks: Vec<(usize, u32)> = Vec::new();
@@ -157,19 +174,21 @@ impl Interp {
             for &(g, gat) in self.words.gs() {
                 match g {
                     0 | 10 | 20 | 30 => blk_mode = Some(g),
-                    40 | 200 | 210 | 400 | 960 | 970 | 980 | 990 => {}
-                    410 | 420 => {
-                        return Err(ShapeErr::Here(self.alarm(
-                            AlarmKind::NotYetSupported,
-                            gat,
-                            "tool nose radius compensation in a finishing shape is not yet supported (issue 5)",
-                        )))
+                    40 | 200 | 210 | 960 | 970 | 980 | 990 => {}
+                    // Nose radius compensation: G70 runs the shape with
+                    // it, G71-G73 offset the shape (interp/lathe_mrc.rs).
+                    400 | 410 | 420 => {
+                        comp_pending = Some(g);
+                        shape.comp_on |= g != 400;
                     }
                     _ => {
                         return Err(ShapeErr::Here(self.alarm(
                             AlarmKind::MrcIllegal,
                             gat,
-                            format!("G{} is not allowed inside the finishing shape ns-nf", fmt_code(g)),
+                            format!(
+                                "G{} is not allowed inside the finishing shape ns-nf",
+                                fmt_code(g)
+                            ),
                         )))
                     }
                 }
@@ -285,7 +304,16 @@ impl Interp {
                     block: count,
                 });
             }
+            let blk_at = [b'X', b'U', b'Z', b'W']
+                .iter()
+                .find_map(|&l| self.words.get(l))
+                .map(|w| w.at)
+                .or(self.words.gs().first().map(|g| g.1))
+                .unwrap_or(0);
+            let blk_src = self.alarm(AlarmKind::CompArc, blk_at, "").src;
             if first {
+                shape.ns_comp = comp_pending.take();
+                shape.ns_src = blk_src;
                 shape.start = t;
                 shape.ns_x = hx;
                 shape.ns_z = hz;
@@ -311,6 +339,8 @@ impl Interp {
                     });
                     shape.modes.push((m == 0, feed));
                     shape.speeds.push(speed);
+                    shape.comps.push(comp_pending.take());
+                    shape.srcs.push(blk_src);
                     seg_blocks.push((count, self.raw.mark.line));
                 }
             }
@@ -452,6 +482,9 @@ impl Interp {
         shape.modes.insert(i + 1, mode);
         let speed = shape.speeds[i];
         shape.speeds.insert(i + 1, speed);
+        shape.comps.insert(i + 1, None);
+        let src = shape.srcs[i];
+        shape.srcs.insert(i + 1, src);
         Ok(())
     }
 

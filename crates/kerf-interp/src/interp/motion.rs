@@ -287,13 +287,6 @@ impl Interp {
         let at = self.motion_at();
         // PUMA direct chamfer / corner R (interp/lathe_chamfer.rs).
         if puma && mode == 10 && any && self.ddi_words() {
-            if self.comp.is_some() {
-                return Err(self.alarm(
-                    AlarmKind::NotYetSupported,
-                    at,
-                    "direct chamfer / corner R (C, R, I, K) with tool nose radius compensation in force is not yet supported: program the chamfer as moves",
-                ));
-            }
             return self.ddi_motion(tw, at);
         }
         if self.comp.is_some() {
