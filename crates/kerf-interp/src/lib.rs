@@ -58,7 +58,12 @@ pub struct Run {
 
 /// Runs program text to its end on a built-in or given profile.
 pub fn run_text(profile: Profile, settings: Settings, name: &str, text: &str) -> Run {
-    let mut it = Interp::new(profile, settings);
+    run_interp(Interp::new(profile, settings), name, text)
+}
+
+/// Runs program text to its end on an interpreter the caller has prepared
+/// (offset memory, variables, ...), collecting every event.
+pub fn run_interp(mut it: Interp, name: &str, text: &str) -> Run {
     it.load_main(
         name,
         Box::new(std::io::Cursor::new(text.as_bytes().to_vec())),

@@ -5,7 +5,7 @@
 //! independent distance computation.
 
 use kerf_canon::{ArcDir, Canon, Event};
-use kerf_interp::{Interp, Profile, Run, Settings, Step};
+use kerf_interp::{Interp, Profile, Run, Settings};
 
 mod common;
 use common::{alarm, ok, run_on};
@@ -36,30 +36,7 @@ fn run_p(p: Profile, d: &[(usize, f64)], lathe: &[(usize, f64, u8)], text: &str)
         o.r = r;
         o.tip = tip;
     }
-    it.load_main(
-        "t.nc",
-        Box::new(std::io::Cursor::new(text.as_bytes().to_vec())),
-    );
-    let mut events = Vec::new();
-    loop {
-        match it.step() {
-            Step::Event(e) => events.push(e),
-            Step::End => {
-                return Run {
-                    events,
-                    alarm: None,
-                    blocks: it.blocks(),
-                }
-            }
-            Step::Alarm(a) => {
-                return Run {
-                    events,
-                    alarm: Some(a),
-                    blocks: it.blocks(),
-                }
-            }
-        }
-    }
+    kerf_interp::run_interp(it, "t.nc", text)
 }
 
 /// A motion: kind, line, end (work X, Y, Z), arc centre (X, Y) and CW?

@@ -6,7 +6,7 @@
 mod common;
 use common::*;
 use kerf_canon::Canon;
-use kerf_interp::{Interp, Profile, Run, Settings, Step};
+use kerf_interp::{Interp, Profile, Run, Settings};
 
 /// Runs on hurco-lathe with lathe offset 1 = X 10 (radius) Z 5, offset 2 =
 /// X -3 Z 7, and fixture E2 = (0, -300 mm); `immediate` selects Table 16.
@@ -23,27 +23,7 @@ fn run_offsets(immediate: bool, text: &str) -> Run {
         o.z = 7.0;
     }
     assert!(it.set_fixture_offset(2, [0.0, 0.0, -300.0, 0.0, 0.0, 0.0]));
-    it.load_main(
-        "t.nc",
-        Box::new(std::io::Cursor::new(text.as_bytes().to_vec())),
-    );
-    let mut events = Vec::new();
-    let mut alarm = None;
-    loop {
-        match it.step() {
-            Step::Event(e) => events.push(e),
-            Step::End => break,
-            Step::Alarm(a) => {
-                alarm = Some(a);
-                break;
-            }
-        }
-    }
-    Run {
-        events,
-        alarm,
-        blocks: it.blocks(),
-    }
+    kerf_interp::run_interp(it, "t.nc", text)
 }
 
 /// Machine (x, z) of every motion, with its line.

@@ -19,7 +19,7 @@
 //!   (tan 22.5° = √2 − 1), 001 p.27-28's correction (0.468 for R0.8).
 
 use kerf_canon::{Canon, Feed};
-use kerf_interp::{Interp, Profile, Run, Settings, Step};
+use kerf_interp::{Interp, Profile, Run, Settings};
 
 mod common;
 use common::{alarm, ok, round};
@@ -48,30 +48,7 @@ fn run(tip: u8, text: &str) -> Run {
     let o = it.offsets_mut().lathe_mut(1).unwrap();
     o.r = R;
     o.tip = tip;
-    it.load_main(
-        "t.nc",
-        Box::new(std::io::Cursor::new(text.as_bytes().to_vec())),
-    );
-    let mut events = Vec::new();
-    loop {
-        match it.step() {
-            Step::Event(e) => events.push(e),
-            Step::End => {
-                return Run {
-                    events,
-                    alarm: None,
-                    blocks: it.blocks(),
-                }
-            }
-            Step::Alarm(a) => {
-                return Run {
-                    events,
-                    alarm: Some(a),
-                    blocks: it.blocks(),
-                }
-            }
-        }
-    }
+    kerf_interp::run_interp(it, "t.nc", text)
 }
 
 /// (kind, X diameter, Z, feed) of every move.
