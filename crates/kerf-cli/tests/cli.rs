@@ -8,6 +8,20 @@ fn kerf() -> Command {
     Command::new(env!("CARGO_BIN_EXE_kerf"))
 }
 
+/// Asserts the run exited 0, showing its stderr otherwise.
+fn assert_success(out: &std::process::Output) {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// Reads a JSON file the run wrote (the report).
+fn read_json(p: &std::path::Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap()
+}
+
 fn tmp(name: &str, text: &str) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli");
     std::fs::create_dir_all(&dir).unwrap();
@@ -97,13 +111,8 @@ fn report_and_plot() {
         .arg(&svg)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let r: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
+    assert_success(&out);
+    let r: serde_json::Value = read_json(&rep);
     assert_eq!(r["status"], "completed");
     assert_eq!(r["alarm"], serde_json::Value::Null);
     assert_eq!(r["blocks"], 7);
@@ -152,11 +161,7 @@ fn lathe_toolpath_x_is_a_radius() {
         .arg(&tp)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let text = std::fs::read_to_string(&tp).unwrap();
     let recs: Vec<serde_json::Value> = text
         .lines()
@@ -206,11 +211,7 @@ fn user_profile_and_offsets_file() {
         .arg(&tp)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let recs: Vec<serde_json::Value> = std::fs::read_to_string(&tp)
         .unwrap()
         .lines()
@@ -317,11 +318,7 @@ fn inverse_time_feed_is_reported_in_mm_per_min() {
         .arg(&tp)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let recs: Vec<serde_json::Value> = std::fs::read_to_string(&tp)
         .unwrap()
         .lines()
@@ -358,16 +355,11 @@ fn message_log_and_report_messages() {
         .arg(&rep)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     // -Z offset = 7.6 - 7.55 = .05; at X10 (diameter) Z7.55.
     let line = "08:30:05 Probe Datum: Probe #-1; -Z Offset 0.0500 at X10.0000, Z7.5500";
     assert_eq!(std::fs::read_to_string(&log).unwrap(), format!("{line}\n"));
-    let r: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
+    let r: serde_json::Value = read_json(&rep);
     assert_eq!(r["messages"][0]["line"], 3);
     assert_eq!(r["messages"][0]["text"], line);
 }
@@ -390,11 +382,7 @@ fn sample_output_and_t_end() {
         .arg(&rep)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     let text = std::fs::read_to_string(&csv).unwrap();
     let mut lines = text.lines();
     assert_eq!(lines.next().unwrap(), "t,x,y,z,c");
@@ -417,8 +405,7 @@ fn sample_output_and_t_end() {
     // when the smoothed command arrives, times ((1 − e^-0.9)/0.9)² =
     // 0.434765: 0.217957 mm; the wait ln(21.7957)/30 = 0.102724 s.
     // t_end 1.182724 s and 2.365447 s.
-    let r: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
+    let r: serde_json::Value = read_json(&rep);
     let ct = r["cycle_time_s"].as_f64().unwrap();
     assert!((ct - 2.365447).abs() < 2e-6, "{ct}");
     let last_t = rows.last().unwrap()[0];
@@ -497,13 +484,8 @@ fn puma_css_facing_follows_the_g50_clamp() {
             .arg(&rep)
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let r: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
+        assert_success(&out);
+        let r: serde_json::Value = read_json(&rep);
         let got = r["time_s"]["cutting"].as_f64().unwrap();
         // The 16 pieces of the move ramp between their feeds (a few ms):
         // within 0.5 %.
@@ -555,13 +537,8 @@ fn hx_g62_slows_inside_corners_of_the_compensated_path() {
             .arg(&rep)
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let r: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
+        assert_success(&out);
+        let r: serde_json::Value = read_json(&rep);
         r["time_s"]["cutting"].as_f64().unwrap()
     };
     let (g64, g62) = (cutting("G64"), cutting("G62"));

@@ -8,6 +8,15 @@ fn kerf() -> Command {
     Command::new(env!("CARGO_BIN_EXE_kerf"))
 }
 
+/// Asserts the run exited 0, showing its stderr otherwise.
+fn assert_success(out: &std::process::Output) {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
 fn dir(name: &str) -> PathBuf {
     let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
         .join("state")
@@ -29,11 +38,7 @@ fn xs(prog: &PathBuf, machine: &str, state: &PathBuf) -> Vec<f64> {
         .arg(&tp)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_success(&out);
     std::fs::read_to_string(&tp)
         .unwrap()
         .lines()
@@ -140,11 +145,7 @@ fn interface_inputs_from_set() {
             cmd.args(["--set", s]);
         }
         let out = cmd.output().unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        assert_success(&out);
         std::fs::read_to_string(&tp)
             .unwrap()
             .lines()
