@@ -1,0 +1,11 @@
+(Hurco: a few moves, metric, radius programming)
+G21 G90 G07 G94
+G00 X60 Z5
+S1000 M03
+G01 Z-40 F300
+X70
+G02 X80 Z-50 I0 K-10
+G01 Z-80 F600
+G00 X100
+Z5
+M30

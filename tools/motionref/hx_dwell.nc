@@ -1,0 +1,8 @@
+(dwell between two feeds)
+G90 G54 G00 X0. Y0. Z0.
+G91 G94 G17 G64
+G01 X-20. F1200
+G04 P1500
+G01 X-20.
+G04 X2.
+M30

@@ -1,0 +1,8 @@
+(helix: two turns radius 20, 10 mm down, F2000)
+G90 G54 G17 G64 G94
+G00 X20. Y0. Z10.
+G01 Z0. F1000
+G03 X20. Y0. Z-5. I-20. J0. F2000
+G03 X20. Y0. Z-10. I-20. J0.
+G00 Z50.
+M30

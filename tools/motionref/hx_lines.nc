@@ -1,0 +1,11 @@
+(motion reference: single lines at several feeds, hx-mc)
+G90 G54 G00 X0. Y0. Z0.
+G91 G94 G17 G64
+G01 X-100. F100
+G01 X-100. F500
+G01 Y-100. F3000
+G01 X-150. F10000
+G01 Y-100. F20000
+G01 X-0.5 F6000
+G01 X-30. Y-40. Z-20. F2000
+M30

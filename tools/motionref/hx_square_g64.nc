@@ -1,0 +1,8 @@
+(square 50 mm, G64 cutting mode)
+G90 G54 G00 X0. Y0. Z0.
+G91 G94 G17 G64
+G01 X-50. F3000
+Y-50.
+X50.
+Y50.
+M30

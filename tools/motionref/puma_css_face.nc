@@ -1,0 +1,9 @@
+(PUMA G96 facing, G50 S clamp, feed per rev)
+G50 S1500
+G00 X120. Z2.
+G96 S200 M03
+G99
+G00 X100. Z0.
+G01 X0. F0.2
+G00 Z5.
+M30
