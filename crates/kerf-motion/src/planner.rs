@@ -168,6 +168,8 @@ pub struct Planner {
     work_x: f64,
     rpm: f64,
     css: Option<f64>,
+    /// Direction of the last spindle event (Stop before the first).
+    spindle_dir: SpindleDir,
     exact_mode: bool,
     corner_mode: bool,
     /// Hurco M49: the feed override is ignored.
@@ -266,6 +268,7 @@ impl Planner {
             work_x,
             rpm: 0.0,
             css: None,
+            spindle_dir: SpindleDir::Stop,
             exact_mode: false,
             corner_mode: false,
             ignore_override: false,
@@ -553,8 +556,20 @@ impl Planner {
                 self.time.dwell += t;
                 self.done(self.now);
             }
+            Canon::Spindle { dir, rpm, css }
+                if css.is_some()
+                    && *css == self.css
+                    && *dir == self.spindle_dir
+                    && *dir != SpindleDir::Stop =>
+            {
+                // G96 following X (the interpreter's speed for the next
+                // move's end point): the spindle follows along the moves
+                // (docs/motion.md), no stop, no ramp, no handshake.
+                self.rpm = *rpm;
+            }
             Canon::Spindle { dir, rpm, css } => {
                 self.flush();
+                self.spindle_dir = *dir;
                 let new = if *dir == SpindleDir::Stop { 0.0 } else { *rpm };
                 let t = (new - self.rpm).abs() / self.d.spindle_accel + self.d.aux_time_s;
                 self.rpm = new;
