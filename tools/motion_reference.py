@@ -10,6 +10,9 @@ Usage:
     python3 tools/motion_reference.py PROG.nc tp.jsonl machines/NAME.toml \
         [--report rep.json] [--rapid-override P] [--window N] [-v]
 
+(--window overrides motion.lookahead, e.g. 100 for a G10.3 program.)
+tools/motionref/ holds the comparison programs and run_kerf.sh.
+
 Prints the reference cycle time (and kerf's, from the report, with the
 relative difference); -v prints every record's t_end beside kerf's.
 
@@ -294,12 +297,13 @@ class Reference:
         for i, (m, r) in enumerate(ms):
             if r.get("_exact"):
                 J[i] = 0.0
-        # look-ahead: releasing move i, the window i..i+N-1 must stop at its end
+        # look-ahead: move i is released when the N-th move after it
+        # arrives; it is planned to stop at the end of move i+N
         vend = []
         v0 = 0.0
         N = self.window
         for i in range(n):
-            last = min(n - 1, i + N - 1)
+            last = min(n - 1, i + N)
             vb = 0.0
             for jdx in range(last, i, -1):
                 m = ms[jdx][0]
@@ -496,7 +500,8 @@ def main():
                 continue
             kt = r.get("t_end", float("nan"))
             print(f"  line {r['line']:4} {r['kind']:6} kerf {kt:11.6f} ref {t:11.6f} diff {kt - t:+.6f}")
-    out = f"reference {ref.t:.6f} s"
+    dmax = max([abs(r["t_end"] - t) for r, t in ref.t_end if "t_end" in r] or [0.0])
+    out = f"reference {ref.t:.6f} s  max |t_end diff| {dmax:.6f} s"
     if o.report:
         rep = json.load(open(o.report))
         k = rep["cycle_time_s"]

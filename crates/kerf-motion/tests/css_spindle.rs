@@ -103,7 +103,10 @@ fn css_following_events_do_not_stop_the_motion() {
     close(pl.time.other, r50 / 2000.0 + 0.1);
     close(pl.time.cutting, 2.01 + 0.08);
     close(pl.time.dwell, 10.0 / r30 * 60.0);
-    close(pl.now(), 0.1591549430918953 + 0.1 + 2.09 + 1.1309733552923256);
+    close(
+        pl.now(),
+        0.1591549430918953 + 0.1 + 2.09 + 1.1309733552923256,
+    );
 }
 
 /// A new surface speed between the moves (G96 S120) is a speed change:
@@ -125,5 +128,8 @@ fn a_new_surface_speed_is_a_speed_change() {
         pl.time.other,
         rpm(100.0, 50.0) / 2000.0 + 0.1 + (rpm(120.0, 40.0) - rpm(100.0, 40.0)) / 2000.0 + 0.1,
     );
-    close(pl.time.other, 0.1591549430918953 + 0.1 + 0.0397887357729738 + 0.1);
+    close(
+        pl.time.other,
+        0.1591549430918953 + 0.1 + 0.0397887357729738 + 0.1,
+    );
 }
