@@ -235,20 +235,12 @@ def servo_move(sv, m, v0, vp, v1, ta, tc, td):
             sv.arc_const(m, tha, thb, dt)
         else:
             n = max(1, min(256, math.ceil(abs(thb - tha) / 0.02)))
+            h = dt / n       # equal time steps, tangent at the middle instant
             for st in range(n):
-                s0, s1 = d * st / n, d * (st + 1) / n
-                t0 = time_at(vs, acc, s0)
-                t1 = time_at(vs, acc, s1)
-                thm = m.th0 + k * (s + (s0 + s1) / 2)
-                sv.line(m.tangent(thm), vs + acc * t0, acc, t1 - t0)
+                t0, tm = st * h, (st + 0.5) * h
+                thm = m.th0 + k * (s + vs * tm + acc * tm * tm / 2)
+                sv.line(m.tangent(thm), vs + acc * t0, acc, h)
         s += d
-
-
-def time_at(v0, a, s):
-    if a == 0:
-        return s / v0
-    disc = max(0.0, v0 * v0 + 2 * a * s)
-    return (math.sqrt(disc) - v0) / a
 
 
 # ------------------------------------------------------------ program scan
