@@ -1,5 +1,6 @@
 #!/bin/sh
 # Run kerf on every program here: /tmp/mref/NAME.jsonl and NAME.json.
+cd "$(dirname "$0")" || exit 2
 K=${KERF:-../../target/release/kerf}
 mkdir -p /tmp/mref
 sed "s/accel_type = \"bell\"/accel_type = \"linear\"/; s/^name = \"hx-mc\"/name = \"hx-linear\"/" ../../machines/hx-mc.toml > /tmp/mref/hx-linear.toml
