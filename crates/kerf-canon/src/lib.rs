@@ -130,10 +130,13 @@ pub enum SpindleDir {
 /// A linear or circular motion of the tool control point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Motion {
-    /// End point in the active work coordinate system (what the ABSOLUTE
-    /// position page shows), after all compensation.
+    /// End point of the tool tip in the active work coordinate system (what
+    /// the ABSOLUTE position page shows): after cutter / nose radius
+    /// compensation, while a tool length or lathe tool offset leaves it at
+    /// the programmed point (000 §13.1.1).
     pub to: Pos,
-    /// End point in machine coordinates.
+    /// End point in machine coordinates (the spindle gauge line or turret
+    /// reference: tool length and tool offsets included).
     pub mto: Pos,
 }
 

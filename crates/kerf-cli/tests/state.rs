@@ -26,8 +26,13 @@ fn dir(name: &str) -> PathBuf {
     d
 }
 
-/// Runs `prog` and returns the x of every motion.
+/// Runs `prog` and returns the work x (`to`) of every motion.
 fn xs(prog: &PathBuf, machine: &str, state: &PathBuf) -> Vec<f64> {
+    xs_of("to", prog, machine, state)
+}
+
+/// Runs `prog` and returns the x of `field` (`to` or `mto`) of every motion.
+fn xs_of(field: &str, prog: &PathBuf, machine: &str, state: &PathBuf) -> Vec<f64> {
     let tp = prog.with_extension("jsonl");
     let out = kerf()
         .arg("run")
@@ -44,7 +49,7 @@ fn xs(prog: &PathBuf, machine: &str, state: &PathBuf) -> Vec<f64> {
         .lines()
         .map(|l| {
             let v: serde_json::Value = serde_json::from_str(l).unwrap();
-            v["to"]["x"].as_f64().unwrap()
+            v[field]["x"].as_f64().unwrap()
         })
         .collect()
 }
@@ -171,13 +176,17 @@ fn offset_memory_survives_between_runs() {
     let text = std::fs::read_to_string(d.join("hx-mc.offsets")).unwrap();
     assert!(text.contains("\nD 1 1.0 0.0\n"), "{text}");
     // Lathe: offset 3 written by G10 (X as a diameter: 2.0 -> 1.0 radius)
-    // is kept and used by T0303 in the next run: X40 (radius 20) + 1 = 21.
+    // is kept and used by T0303 in the next run: the turret stops 1 mm
+    // (radius) further out for X40 than with T0300, while the tool tip
+    // (`to`) is at the programmed radius 20 both times.
     let set = d.join("set.nc");
     std::fs::write(&set, "G10 P10003 X2. Z0.5 Q3\nM30\n").unwrap();
     assert_eq!(xs(&set, "puma-lathe", &d), Vec::<f64>::new());
     let t = d.join("use.nc");
-    std::fs::write(&t, "G00 X40. Z5. T0303\nM30\n").unwrap();
-    assert_eq!(xs(&t, "puma-lathe", &d), vec![21.0]);
+    std::fs::write(&t, "G00 X40. Z5. T0303\nG00 X40. Z5. T0300\nM30\n").unwrap();
+    assert_eq!(xs(&t, "puma-lathe", &d), vec![20.0, 20.0]);
+    let m = xs_of("mto", &t, "puma-lathe", &d);
+    assert!((m[0] - m[1] - 1.0).abs() < 1e-9, "{m:?}");
     // A damaged file is a usage error naming the line.
     std::fs::write(d.join("hx-mc.offsets"), "H 1 x\n").unwrap();
     let out = kerf()

@@ -540,12 +540,13 @@ impl Interp {
         self.st.pos
     }
 
-    /// Current position in the active work coordinate system.
+    /// Current position of the tool tip in the active work coordinate
+    /// system (tool length / tool offsets not included, as `Motion::to`).
     pub fn work_position(&self) -> Pos {
         let o = self.origin();
         let mut p = self.st.pos;
         for i in 0..NAXES {
-            p[i] -= o[i];
+            p[i] -= o[i] + self.st.tlo[i];
         }
         p
     }

@@ -415,8 +415,10 @@ fn tool_length_offset_shifts_the_control_point() {
             z.push((round(m.to[2]), round(m.mto[2])));
         }
     }
-    // G43 H1 (50 mm): the tip is at Z60 so the gauge line is 50 above it.
-    assert_eq!(z, vec![(110.0, -140.0), (60.0, -190.0)]);
+    // G43 H1 (50 mm): the tip is at Z60 (`to`, what the ABSOLUTE page
+    // shows, 000 §13.1.1) so the gauge line is 50 above it in machine
+    // coordinates; after G49 the gauge line itself goes to Z60.
+    assert_eq!(z, vec![(60.0, -140.0), (60.0, -190.0)]);
 }
 
 #[test]

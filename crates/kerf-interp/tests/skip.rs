@@ -97,8 +97,8 @@ fn g37_measures_the_tool_length() {
             ("rapid", 0.0, -250.0),
             ("feed", -10.4, -260.4),
             // The tool reads Z-10 after the measurement: G00 Z-10. does not move.
-            ("rapid", -10.4, -260.4),
-            ("rapid", -0.4, -250.4),
+            ("rapid", -10.0, -260.4),
+            ("rapid", 0.0, -250.4),
         ]
     );
 }

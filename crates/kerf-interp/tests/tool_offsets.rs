@@ -142,8 +142,9 @@ fn hx_g10_sets_h_and_d_geometry_and_wear() {
 fn puma_t_code_applies_geometry_plus_wear_and_t00_cancels() {
     // G10 P10002 X1.5 Z-0.93: geometry of offset 2 (X a diameter: 0.75 mm
     // of radius); G10 P2 U0.1: X wear +0.1 diameter (0.05 radius).
-    // T0202 with G00 X40. Z2.: radius 20 + 0.75 + 0.05 = 20.8, Z 2 - 0.93
-    // = 1.07. T0200 cancels: X40. Z2. is radius 20, Z 2 again.
+    // T0202 with G00 X40. Z2.: the tool tip at radius 20, Z2 (`to`), the
+    // turret 0.75 + 0.05 = 0.8 further out in X and 0.93 lower in Z than
+    // with T0200 (cancelled) at the same programmed point.
     let r = run_on(
         "puma-lathe",
         "G10 P10002 X1.5 Z-0.93 R0.4 Q3\n\
@@ -154,9 +155,16 @@ fn puma_t_code_applies_geometry_plus_wear_and_t00_cancels() {
     );
     ok(&r);
     let m = moves(&r);
+    assert_eq!((m[0].1, m[0].3), (20.0, 2.0), "{m:?}");
+    assert_eq!((m[1].1, m[1].3), (20.0, 2.0), "{m:?}");
+    let mto: Vec<_> = r
+        .events
+        .iter()
+        .filter_map(|e| e.motion().map(|m| m.mto))
+        .collect();
     assert!(
-        (m[0].1 - 20.8).abs() < 1e-9 && (m[0].3 - 1.07).abs() < 1e-9,
-        "{m:?}"
+        (mto[0][0] - mto[1][0] - 0.8).abs() < 1e-9 && (mto[0][2] - mto[1][2] + 0.93).abs() < 1e-9,
+        "{mto:?}"
     );
     assert_eq!((m[1].1, m[1].3), (20.0, 2.0));
     // Offset 17 on the PUMA's 16-offset page: alarm at the T word.
@@ -191,4 +199,30 @@ fn tool_length_offset_on_the_axis_normal_to_the_plane() {
         .collect();
     assert_eq!(m[1], [-400.0, -225.0, -250.0]);
     assert_eq!(m[2], [-425.0, -250.0, -250.0]);
+}
+
+/// 000 §13.1.1's example: G54 Z offset −150 (the manual's "=150.000 mm"
+/// below the reference), H1 = 10 mm. By hand, machine Z = G54 offset +
+/// work Z (+ H in G43): `G54 G90 Z100.` → −150 + 100 = −50;
+/// `G43 G90 G00 Z50. H01` → −150 + 50 + 10 = −90 (the tool 10 mm longer
+/// stops 10 mm higher); `G90 G49 G00 Z150.` → −150 + 150 = 0.
+#[test]
+fn manual_13_1_1_tool_length_example() {
+    let r = run_on(
+        "hx-mc",
+        "G10 L2 P1 Z-150.\n\
+         G10 L10 P1 R10.\n\
+         G54 G90 G00 Z100.\n\
+         G43 G90 G00 Z50. H01\n\
+         G90 G49 G00 Z150.\n\
+         M30\n",
+    );
+    ok(&r);
+    let z: Vec<(f64, f64)> = r
+        .events
+        .iter()
+        .filter_map(|e| e.motion().map(|m| (m.to[2], m.mto[2])))
+        .collect();
+    // (work Z, machine Z) of the three positionings.
+    assert_eq!(z, vec![(100.0, -50.0), (50.0, -90.0), (150.0, 0.0)]);
 }

@@ -400,7 +400,7 @@ impl Interp {
         let o = self.origin();
         let mut p = *mpos;
         for i in 0..NAXES {
-            p[i] -= o[i];
+            p[i] -= o[i] + self.st.tlo[i];
         }
         p
     }
