@@ -4,26 +4,16 @@
 //! malformed or hostile, may panic, hang, or exhaust memory").
 #![no_main]
 
-use std::sync::OnceLock;
-
-use kerf_interp::{Interp, Profile, Settings, Step};
+use kerf_interp::{Interp, Settings, Step};
 use libfuzzer_sys::fuzz_target;
 
-const MACHINES: [&str; 3] = ["hx-mc", "puma-lathe", "hurco-lathe"];
+mod machines;
+use machines::profiles;
+
 /// Most canonical commands taken from one run before we stop it.
 const MAX_STEPS: usize = 5_000;
 /// The interpreter's own loop guard (blocks executed).
 const MAX_BLOCKS: u64 = 5_000;
-
-fn profiles() -> &'static Vec<Profile> {
-    static P: OnceLock<Vec<Profile>> = OnceLock::new();
-    P.get_or_init(|| {
-        MACHINES
-            .iter()
-            .map(|m| Profile::builtin(m).expect("built-in profile"))
-            .collect()
-    })
-}
 
 fuzz_target!(|data: &[u8]| {
     for profile in profiles() {

@@ -6,27 +6,17 @@
 //! loop or divide by zero").
 #![no_main]
 
-use std::sync::OnceLock;
-
-use kerf_interp::{Interp, Profile, Settings, Step};
+use kerf_interp::{Interp, Settings, Step};
 use kerf_motion::{Dynamics, Planner};
 use libfuzzer_sys::fuzz_target;
 
-const MACHINES: [&str; 3] = ["hx-mc", "puma-lathe", "hurco-lathe"];
+mod machines;
+use machines::profiles;
+
 /// Most canonical commands taken from one run before we stop it.
 const MAX_STEPS: usize = 3_000;
 /// The interpreter's own loop guard (blocks executed).
 const MAX_BLOCKS: u64 = 3_000;
-
-fn profiles() -> &'static Vec<Profile> {
-    static P: OnceLock<Vec<Profile>> = OnceLock::new();
-    P.get_or_init(|| {
-        MACHINES
-            .iter()
-            .map(|m| Profile::builtin(m).expect("built-in profile"))
-            .collect()
-    })
-}
 
 fn check(t: f64, what: &str) {
     assert!(t.is_finite() && t >= 0.0, "{what}: {t}");

@@ -430,29 +430,24 @@ fn profile_without_a_limit_names_the_parameter() {
     .unwrap();
     let bad = text.replacen("jerk = 200000.0", "jerk = 0.0", 1);
     assert_ne!(bad, text);
-    let prof = tmp("nojerk.toml", &bad);
     let p = tmp("ok.nc", "G00 X0\nM30\n");
-    let out = kerf()
-        .arg("run")
-        .arg(&p)
-        .arg("--machine")
-        .arg(&prof)
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(2));
-    let err = String::from_utf8(out.stderr).unwrap();
+    // A usage error (exit 2); its message.
+    let rejected = |name: &str, profile: &str| {
+        let out = kerf()
+            .arg("run")
+            .arg(&p)
+            .arg("--machine")
+            .arg(tmp(name, profile))
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        String::from_utf8(out.stderr).unwrap()
+    };
+    let err = rejected("nojerk.toml", &bad);
     assert!(err.contains("motion.axes.x.jerk"), "{err}");
     let missing = text.replacen("path_tolerance_mm = 0.02", "", 1);
-    let prof = tmp("notol.toml", &missing);
-    let out = kerf()
-        .arg("run")
-        .arg(&p)
-        .arg("--machine")
-        .arg(&prof)
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(2));
-    let err = String::from_utf8(out.stderr).unwrap();
+    assert_ne!(missing, text);
+    let err = rejected("notol.toml", &missing);
     assert!(err.contains("motion.path_tolerance_mm is missing"), "{err}");
 }
 

@@ -6,51 +6,14 @@
 //! example stops before the shape blocks N12-N16 — those tests complete
 //! the programs with the shapes written here (docs/dialects.md).
 
-use kerf_canon::{Canon, Feed};
+use kerf_canon::Canon;
 use kerf_interp::Run;
 
 mod common;
+use common::lathe::{g71_level, mv, trace};
 use common::{alarm, ok, round, run_on};
 
 const PUMA: &str = "puma-lathe";
-
-/// (kind, X diameter, Z, feed or lead) of every move.
-fn trace(r: &Run) -> Vec<(&'static str, f64, f64, f64)> {
-    r.events
-        .iter()
-        .filter_map(|e| {
-            let f = |f: &Feed| match *f {
-                Feed::PerRev(v) | Feed::PerMin(v) | Feed::InverseTime(v) => v,
-            };
-            let (k, v) = match &e.cmd {
-                Canon::Rapid { .. } => ("R", 0.0),
-                Canon::Feed { feed, .. } => ("F", f(feed)),
-                Canon::Arc { feed, .. } => ("A", f(feed)),
-                Canon::Thread { lead, .. } => ("T", *lead),
-                _ => return None,
-            };
-            let m = e.motion().unwrap();
-            Some((k, round(2.0 * m.to[0]), round(m.to[2]), round(v)))
-        })
-        .collect()
-}
-
-/// A move from a radius point.
-fn mv(k: &'static str, x: f64, z: f64, f: f64) -> (&'static str, f64, f64, f64) {
-    (k, round(2.0 * x), round(z), f)
-}
-
-/// One G71 type I roughing level from the start point's Z2 with e = 0.5
-/// (radius values): rapid to the level, feed to `z`, escape 45° by e,
-/// rapid back to Z2 (001's G71 figure).
-fn g71_level(l: f64, z: f64, f: f64) -> [(&'static str, f64, f64, f64); 4] {
-    [
-        mv("R", l, 2.0, 0.0),
-        mv("F", l, z, f),
-        mv("R", l + 0.5, z + 0.5, 0.0),
-        mv("R", l + 0.5, 2.0, 0.0),
-    ]
-}
 
 /// The arc centres (X radius, Z) of the run's arcs.
 fn centres(r: &Run) -> Vec<(f64, f64)> {

@@ -18,10 +18,11 @@
 //!   the contour shifted along one axis by b = r(2 − √2) = r(1 − tan 22.5°)
 //!   (tan 22.5° = √2 − 1), 001 p.27-28's correction (0.468 for R0.8).
 
-use kerf_canon::{Canon, Feed};
+use kerf_canon::Canon;
 use kerf_interp::{Interp, Profile, Run, Settings};
 
 mod common;
+use common::lathe::{g71_level, mv, trace};
 use common::{alarm, ok, round};
 
 const R: f64 = 0.8;
@@ -49,31 +50,6 @@ fn run(tip: u8, text: &str) -> Run {
     o.r = R;
     o.tip = tip;
     kerf_interp::run_interp(it, "t.nc", text)
-}
-
-/// (kind, X diameter, Z, feed) of every move.
-fn trace(r: &Run) -> Vec<(&'static str, f64, f64, f64)> {
-    r.events
-        .iter()
-        .filter_map(|e| {
-            let f = |f: &Feed| match *f {
-                Feed::PerRev(v) | Feed::PerMin(v) | Feed::InverseTime(v) => v,
-            };
-            let (k, v) = match &e.cmd {
-                Canon::Rapid { .. } => ("R", 0.0),
-                Canon::Feed { feed, .. } => ("F", f(feed)),
-                Canon::Arc { feed, .. } => ("A", f(feed)),
-                _ => return None,
-            };
-            let m = e.motion().unwrap();
-            Some((k, round(2.0 * m.to[0]), round(m.to[2]), round(v)))
-        })
-        .collect()
-}
-
-/// A move to a radius point.
-fn mv(k: &'static str, x: f64, z: f64, f: f64) -> (&'static str, f64, f64, f64) {
-    (k, round(2.0 * x), round(z), f)
 }
 
 fn same(got: &[(&str, f64, f64, f64)], want: &[(&str, f64, f64, f64)]) {
@@ -225,14 +201,7 @@ fn g71_with_g42_before_the_cycle_roughs_to_the_tip_path() {
         mv("R", 25.0, 10.0, 0.0),
         mv("R", 21.0 + 2.0 * R / s5 - R, 2.0 - R / s5 - R, 0.0),
     ];
-    let level = |want: &mut Vec<_>, l: f64, z: f64| {
-        want.extend([
-            mv("R", l, 2.0, 0.0),
-            mv("F", l, z, f),
-            mv("R", l + 0.5, z + 0.5, 0.0),
-            mv("R", l + 0.5, 2.0, 0.0),
-        ])
-    };
+    let level = |want: &mut Vec<_>, l: f64, z: f64| want.extend(g71_level(l, z, f));
     for l in [19.0, 17.0, 15.0, 13.0, 11.0] {
         level(&mut want, l, -20.0);
     }

@@ -3,6 +3,8 @@
 
 use kerf_interp::{run_text, Profile, Run, Settings};
 
+pub mod lathe;
+
 /// Runs program text on a built-in machine with default switches.
 pub fn run_on(machine: &str, text: &str) -> Run {
     run_with(machine, Settings::default(), text)
