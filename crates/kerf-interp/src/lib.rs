@@ -12,10 +12,8 @@
 //!   its `calls` part holds the program store and the call stack (M98/M99,
 //!   G65, `--lib` folders);
 //! - [`words`]: a block's evaluated words in fixed tables;
-//! - [`arc`]: circular interpolation geometry;
-//! - [`rotary`]: geometry of polar (G112) and cylindrical (G107)
-//!   interpolation: virtual plane to machine axes, chords;
-//! - [`corner`]: chamfer and corner-rounding geometry (`,C` / `,R`);
+//! - `arc`, `comp`, `corner`, `rotary`, `stroke`, `turning`, `xform`:
+//!   the pure geometry, re-exported from the kerf-geom crate;
 //! - [`macros`]: variables and expression evaluation;
 //! - [`state`]: retained variables kept across runs (`--state DIR`);
 //! - [`alarms`]: every alarm and its code per control.
@@ -24,20 +22,17 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod alarms;
-pub mod arc;
-pub mod comp;
-pub mod corner;
 pub mod dialect;
 pub mod interp;
 pub mod machine;
 pub mod macros;
 pub mod offsets;
-pub mod rotary;
 pub mod state;
-pub mod stroke;
-pub mod turning;
 pub mod words;
-pub mod xform;
+
+// The pure geometry lives in kerf-geom; these paths keep `crate::arc` …
+// resolving for the interpreter modules.
+pub use kerf_geom::{arc, comp, corner, rotary, stroke, turning, xform};
 
 pub use dialect::{Dialect, DialectId};
 pub use interp::{Interp, MacroSwitches, Settings, Step};
