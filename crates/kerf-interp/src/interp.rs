@@ -35,6 +35,7 @@ mod lathe_chamfer;
 mod lathe_mrc;
 mod lathe_shape;
 mod motion;
+mod mover;
 mod offset_data;
 mod polar_interp;
 mod probe;
@@ -106,8 +107,9 @@ enum FeedMode {
 struct State {
     /// Active code (×10) per modal group.
     modal: [u16; 32],
-    /// Current position, machine coordinates.
-    pos: Pos,
+    /// Current position, machine coordinates: set only by the move seam
+    /// (interp/mover.rs).
+    mover: mover::Mover,
     /// Work offsets G54…G59 (machine coordinates of each work zero).
     wcs: [Pos; 6],
     /// Active work system index.
@@ -375,7 +377,7 @@ impl Interp {
         }
         let mut st = State {
             modal,
-            pos: profile.start_position(),
+            mover: mover::Mover::new(profile.start_position()),
             wcs,
             wcs_idx: 0,
             shift: [0.0; NAXES],
@@ -537,14 +539,14 @@ impl Interp {
 
     /// Current position in machine coordinates.
     pub fn machine_position(&self) -> Pos {
-        self.st.pos
+        self.st.mover.pos()
     }
 
     /// Current position of the tool tip in the active work coordinate
     /// system (tool length / tool offsets not included, as `Motion::to`).
     pub fn work_position(&self) -> Pos {
         let o = self.origin();
-        let mut p = self.st.pos;
+        let mut p = self.st.mover.pos();
         for i in 0..NAXES {
             p[i] -= o[i] + self.st.tlo[i];
         }
@@ -578,7 +580,7 @@ impl Interp {
     /// Current position in programmed coordinates (tool tip).
     fn programmed_position(&self) -> Pos {
         let o = self.prog_origin();
-        let mut p = self.st.pos;
+        let mut p = self.st.mover.pos();
         for i in 0..NAXES {
             p[i] -= o[i];
         }

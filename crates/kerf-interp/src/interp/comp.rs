@@ -643,15 +643,15 @@ impl Interp {
                 if comp::dist(base, e) >= comp::EPS {
                     cap.push((Seg::Line { a: base, b: e }, motion, true));
                 }
-                self.st.pos = self.to_machine(&tw);
+                self.place_at(&tw);
                 self.comp = None;
                 return Ok(());
             }
-            let prog = self.st.pos;
-            self.st.pos = self.offset_to_machine(&self.plane_pt(cur_t, base));
+            let start = self.offset_to_machine(&self.plane_pt(cur_t, base));
+            let prog = self.place_machine(start);
             let r = self.line_to(tw, speed, at);
             if r.is_err() {
-                self.st.pos = prog;
+                self.place_machine(prog);
             }
             r?;
             self.comp = None;
@@ -693,7 +693,7 @@ impl Interp {
             events,
             corner,
         });
-        self.st.pos = self.to_machine(&tw);
+        self.place_at(&tw);
         Ok(())
     }
 
@@ -855,8 +855,8 @@ impl Interp {
         let tw_t = self.xf_point(&tw);
         let (a1, a2, _) = self.st.plane.axes();
         let p = padd((cur_t[a1], cur_t[a2]), vec);
-        let prog = self.st.pos;
-        self.st.pos = self.offset_to_machine(&self.plane_pt(cur_t, p));
+        let start = self.offset_to_machine(&self.plane_pt(cur_t, p));
+        let prog = self.place_machine(start);
         self.comp_prog = Some(self.work_of(&self.to_machine(&tw)));
         // The vector is in the transformed plane: the target back in
         // program coordinates for the move.
@@ -868,11 +868,11 @@ impl Interp {
         };
         let r = self.plain_motion(mode, target, any, at);
         self.comp_prog = None;
-        self.st.pos = if r.is_ok() {
-            self.to_machine(&tw)
+        if r.is_ok() {
+            self.place_at(&tw);
         } else {
-            prog
-        };
+            self.place_machine(prog);
+        }
         r
     }
 
@@ -953,7 +953,7 @@ impl Interp {
     /// the corner's plane point), then the corner's pieces. Alarms point
     /// at the held block's motion word.
     fn comp_flush(&mut self, h: &mut Held, j: &Join) -> R<()> {
-        let prog = self.st.pos;
+        let prog = self.st.mover.pos();
         // The held points are already transformed (scaling, mirror,
         // rotation of their own block): emitted through the offset stack
         // only.
@@ -965,7 +965,7 @@ impl Interp {
         self.st.xf = xf;
         self.comp_prog = None;
         self.cur = here;
-        self.st.pos = prog;
+        self.place_machine(prog);
         events.clear();
         if let Some(c) = self.comp.as_deref_mut() {
             if c.spare.capacity() < events.capacity() {
@@ -1035,7 +1035,7 @@ impl Interp {
         }
         let s = self.plane_pt(h.start, padd(h.cstart, h.tip));
         let e = self.plane_pt(h.end, padd(j.end1, h.tip));
-        self.st.pos = self.to_machine(&s);
+        self.place_at(&s);
         self.comp_prog = Some(self.work_of(&self.to_machine(&h.end)));
         let feed = |me: &Self| match h.speed {
             Speed::Feed(f) => Ok(f),
@@ -1054,20 +1054,8 @@ impl Interp {
         }
         // The events of the blocks between, at the corner.
         if !events.is_empty() {
-            let (a1, a2, _) = self.st.plane.axes();
-            let me = self.to_machine(&e);
-            for ev in events.iter_mut() {
-                if let Canon::Rapid { m, .. } | Canon::Feed { m, .. } = &mut ev.cmd {
-                    ev.prog = Some(Box::new(m.to));
-                    m.mto[a1] = me[a1];
-                    m.mto[a2] = me[a2];
-                    m.to = self.work_of(&m.mto);
-                }
-            }
-            if let Some(last) = events.iter().rev().find_map(|e| e.motion()) {
-                self.st.pos = last.mto;
-            }
-            self.queue.extend(events.drain(..));
+            let corner = self.to_machine(&e);
+            self.release_held(events, &corner)?;
         }
         let mut prev = j.end1;
         let corner = self.plane_pt(base, h.seg.end());

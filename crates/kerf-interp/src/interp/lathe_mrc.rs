@@ -252,7 +252,7 @@ impl Interp {
             return Ok(None);
         }
         let saved = self.comp.take();
-        let pos = self.st.pos;
+        let pos = self.st.mover.pos();
         if before != 400 {
             self.comp_set_mode(before, None);
         }
@@ -260,7 +260,7 @@ impl Interp {
         let r = self.shape_run(a, s, at, false);
         let cap = self.comp_capture.take().unwrap_or_default();
         self.comp = saved;
-        self.st.pos = pos;
+        self.place_machine(pos);
         r?;
         let zx = |q: (f64, f64)| turning::p(q.1, q.0);
         let k = cap
@@ -362,7 +362,7 @@ impl Interp {
                 if let Some(cap) = self.comp_capture.as_mut() {
                     cap.push((cs, src, true));
                 }
-                self.st.pos = self.to_machine(&self.zx_full(seg.to));
+                self.place_at(&self.zx_full(seg.to));
             }
         }
         self.comp_shape_end()
