@@ -126,7 +126,12 @@ impl<'ast> Visit<'ast> for Findings {
     }
 
     fn visit_expr_struct(&mut self, e: &'ast syn::ExprStruct) {
-        let segs: Vec<String> = e.path.segments.iter().map(|s| s.ident.to_string()).collect();
+        let segs: Vec<String> = e
+            .path
+            .segments
+            .iter()
+            .map(|s| s.ident.to_string())
+            .collect();
         if let [.., ty, variant] = segs.as_slice() {
             if ty == "Canon" && MOTION.contains(&variant.as_str()) {
                 self.motion_builds.push(e.path.span().start().line);

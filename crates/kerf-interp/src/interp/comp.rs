@@ -204,16 +204,10 @@ impl Interp {
         }
     }
 
-    /// The block's compensation codes (G39/G40/G41/G42, D), run before its
-    /// one-shot codes. `special`: the block moves otherwise than by
-    /// G00-G03 (G28-G30, G53, cycles, G45-G48, G31); `setting`: G92/G50.
-    /// True when the block is a G39 (no move of its own).
-    pub(super) fn comp_codes(
-        &mut self,
-        one_shot: &[(u16, u32)],
-        special: bool,
-        setting: bool,
-    ) -> R<bool> {
+    /// The block's D (mills: an offset number), and G41/G42 with a
+    /// reference return or G53, which cannot start the offset (000
+    /// §13.2.1: "[G00/G01] X_ Y_ G41"; G40 with them is a cancel: allowed).
+    fn comp_check_words(&self, one_shot: &[(u16, u32)]) -> R<()> {
         if self.profile.kind == MachineKind::Mill {
             if let Some(dw) = self.words.get(b'D') {
                 if dw.v < 0.0 || dw.v.fract() != 0.0 || !self.offsets.valid(dw.v as usize) {
@@ -229,11 +223,6 @@ impl Interp {
                 }
             }
         }
-        let mode = self.st.modal[COMP_GROUP];
-        let g39 = one_shot.iter().find(|g| g.0 == 390).map(|g| g.1);
-        // G41/G42 go with G00/G01 (000 §13.2.1: "[G00/G01] X_ Y_ G41");
-        // a reference return or machine-coordinate move cannot start the
-        // offset (G40 with them is a cancel: allowed).
         if let Some(&(g, _)) = one_shot
             .iter()
             .find(|g| matches!(g.0, 270 | 280 | 290 | 300 | 530))
@@ -250,6 +239,22 @@ impl Interp {
                 ));
             }
         }
+        Ok(())
+    }
+
+    /// The block's compensation codes (G39/G40/G41/G42, D), run before its
+    /// one-shot codes. `special`: the block moves otherwise than by
+    /// G00-G03 (G28-G30, G53, cycles, G45-G48, G31); `setting`: G92/G50.
+    /// True when the block is a G39 (no move of its own).
+    pub(super) fn comp_codes(
+        &mut self,
+        one_shot: &[(u16, u32)],
+        special: bool,
+        setting: bool,
+    ) -> R<bool> {
+        self.comp_check_words(one_shot)?;
+        let mode = self.st.modal[COMP_GROUP];
+        let g39 = one_shot.iter().find(|g| g.0 == 390).map(|g| g.1);
         if self.comp.is_none() {
             if mode == 400 {
                 if let Some(at) = g39 {
