@@ -42,6 +42,7 @@ mod probe;
 mod reset;
 mod skip;
 mod sysvars;
+mod thread_plan;
 mod tool_offset;
 mod transforms;
 
