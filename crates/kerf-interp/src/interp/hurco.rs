@@ -388,7 +388,7 @@ impl Interp {
     /// A G78 or G38 block after its modal G codes: the block's
     /// before-motion M codes, the cycle, the after-motion M codes.
     pub(super) fn hurco_macro_block(&mut self, c: u16, at: u32, face: Option<WVal>) -> R<bool> {
-        self.run_m(|m| m.1 == MWhen::Before && !matches!(m.0, 100..=199))?;
+        self.run_m(|m| m.1 == MWhen::Before)?;
         if c == 780 {
             self.g78(at, face)?;
             self.hurco_moved();
