@@ -46,6 +46,7 @@ mod sysvars;
 mod thread_plan;
 mod tool_offset;
 mod transforms;
+mod work_offsets;
 
 pub use sysvars::MacroSwitches;
 
@@ -112,10 +113,9 @@ struct State {
     /// Current position, machine coordinates: set only by the move seam
     /// (interp/mover.rs).
     mover: mover::Mover,
-    /// Work offsets G54…G59 (machine coordinates of each work zero).
-    wcs: [Pos; 6],
-    /// Active work system index.
-    wcs_idx: usize,
+    /// The work offset table (G54-G59, Hurco E1-E9999) and the active
+    /// system (interp/work_offsets.rs).
+    work: work_offsets::WorkOffsets,
     /// G92 / G50 shift (the HX "work shift" of 000 §7.2.4, also set by
     /// `G10 L2 P0`).
     shift: Pos,
@@ -275,7 +275,7 @@ impl Interp {
         let hx = dialect.id == DialectId::Hx;
         let offsets = OffsetTable::new(profile.tools.offsets as usize);
         let st = Self::power_on_state(&profile, dialect);
-        let hurco = Self::hurco_state(&st);
+        let hurco = Self::hurco_state();
         let arc_tol = profile.param("arc_tolerance_mm", 0.02);
         let repeat_budget = profile.param("max_repeat_blocks", 100_000_000.0) as u64;
         let max_jumps = profile.param("max_jumps", 10_000_000.0) as u64;
@@ -380,8 +380,7 @@ impl Interp {
         let mut st = State {
             modal,
             mover: mover::Mover::new(profile.start_position()),
-            wcs,
-            wcs_idx: 0,
+            work: work_offsets::WorkOffsets::new(wcs),
             shift: [0.0; NAXES],
             local: [0.0; NAXES],
             xf: Default::default(),
@@ -459,12 +458,10 @@ impl Interp {
     /// Sets the work offset of G54+`idx` (machine coordinates of its zero),
     /// as loaded with `--offsets`.
     pub fn set_work_offset(&mut self, idx: usize, origin: Pos) {
-        if idx < 6 {
-            self.st.wcs[idx] = origin;
-        }
+        self.st.work.set(work_offsets::WorkId::G5x(idx), origin);
         if idx == 0 && self.dialect.id == DialectId::Hurco {
             // The Hurco's part zero is fixture offset E1.
-            self.hurco.fixtures.insert(1, origin);
+            self.st.work.set(work_offsets::WorkId::Fixture(1), origin);
         }
     }
 
@@ -561,7 +558,7 @@ impl Interp {
     }
 
     fn origin(&self) -> Pos {
-        let w = &self.st.wcs[self.st.wcs_idx];
+        let w = self.st.work.origin();
         let mut o = [0.0; NAXES];
         for i in 0..NAXES {
             o[i] = w[i] + self.st.shift[i];
@@ -1188,7 +1185,11 @@ impl Interp {
             190 => st.plane = Plane::YZ,
             200 => st.metric = false,
             210 => st.metric = true,
-            540..=590 if d != DialectId::Hurco => st.wcs_idx = ((c - 540) / 10) as usize,
+            540 | 550 | 560 | 570 | 580 | 590 if d != DialectId::Hurco => {
+                if let Some(id) = work_offsets::WorkId::of_code(c) {
+                    st.work.select(id);
+                }
+            }
             900 if d != DialectId::Puma => st.absolute = true,
             910 if d != DialectId::Puma => st.absolute = false,
             930 => st.feed_mode = FeedMode::Inverse,

@@ -69,12 +69,16 @@ impl Interp {
             }
             if let Some(w) = self.words.get(ax_letter(ax)) {
                 let v = self.axis_value(ax, w);
+                let absolute = self.st.absolute;
                 let slot = if p == 0 {
                     &mut self.st.shift[i]
                 } else {
-                    &mut self.st.wcs[p - 1][i]
+                    match self.st.work.g5x_mut(p - 1) {
+                        Some(w) => &mut w[i],
+                        None => continue,
+                    }
                 };
-                *slot = if self.st.absolute { v } else { *slot + v };
+                *slot = if absolute { v } else { *slot + v };
             }
         }
         Ok(())
