@@ -38,6 +38,7 @@ mod motion;
 mod offset_data;
 mod polar_interp;
 mod probe;
+mod puma_words;
 mod reset;
 mod skip;
 mod sysvars;
@@ -931,7 +932,7 @@ impl Interp {
                     self.words.nm += 1;
                 }
                 Addr::L(l) => {
-                    if !self.letter_ok[(l - b'A') as usize] {
+                    if !self.letter_ok[(l - b'A') as usize] && !self.macro_args() {
                         return Err(self.alarm(
                             AlarmKind::IllegalAddress,
                             w.at,
@@ -1082,6 +1083,9 @@ impl Interp {
                 one_shot[n_one] = (c, at);
                 n_one += 1;
             }
+        }
+        if d.id == DialectId::Puma && !self.macro_args() {
+            self.puma_words()?;
         }
         // Classify M codes.
         let mut transfer: Option<(MAction, u32)> = None;

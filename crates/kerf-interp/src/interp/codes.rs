@@ -358,7 +358,15 @@ impl Interp {
         Ok(())
     }
 
+    /// G53: a rapid to machine coordinates for this block. Machine
+    /// coordinates are absolute only: in G91 (and with the lathe's U/W)
+    /// the block is ignored, as Fanuc does (fanuc-semantics §6.2; 000
+    /// §7.1.1 prints the format `G90 G53 X_Y_Z_`).
     pub(super) fn g53(&mut self) -> R<()> {
+        let incremental = !self.st.absolute || Axis::ALL.iter().any(|&ax| self.uvw(ax).is_some());
+        if incremental {
+            return Ok(());
+        }
         let mut to = self.st.pos;
         let mut any = false;
         for ax in Axis::ALL {
