@@ -212,10 +212,11 @@ impl Interp {
                         )
                     } else {
                         format!(
-                            "G{} type {}: the shape N{ns}-N{nf} is not monotonic in {ax} (segment {} after N{ns})",
+                            "G{} type {}: the shape N{ns}-N{nf} is not monotonic in {ax} (segment {} after N{ns}, line {})",
                             code / 10,
                             if type2 { "II" } else { "I" },
-                            i + 1
+                            i + 1,
+                            shape.srcs.get(i).map_or(0, |s| s.line)
                         )
                     },
                 ));
