@@ -64,6 +64,10 @@ pub struct Settings {
     /// Most blocks executed before the loop guard stops the run
     /// (0 = no limit).
     pub max_blocks: u64,
+    /// Passes of a main program that ends in M99 without L (a bar-feed
+    /// loop the control repeats until reset): 0 or 1 = one pass, then
+    /// the program ends with a note (`--set main_passes=N`).
+    pub main_passes: u32,
     /// Interface input signals as four 32-bit words: HX UI000-UI031 …
     /// UI300-UI331 (#7000-#7035); Fanuc #1000-#1015 are word 0's low bits.
     pub inputs: [u32; 4],
@@ -748,7 +752,18 @@ impl Interp {
             self.program_start = self.src.as_ref().expect("loaded").tell();
             return Ok(true);
         }
-        self.tape_started = true;
+        // Text before the first % is tape leader: comment and blank lines
+        // there do not start the program, so the % after them opens it
+        // instead of ending it.
+        let b = &self.block;
+        if !b.words.is_empty()
+            || b.stmt.is_some()
+            || b.program.is_some()
+            || b.n.is_some()
+            || b.loop_cmd.is_some()
+        {
+            self.tape_started = true;
+        }
         if self.block.program.is_some() && self.program_header()? {
             self.emit_end(0)?;
             return Ok(false);
@@ -1092,10 +1107,17 @@ impl Interp {
         for i in 0..self.words.nm {
             let (m, at) = self.words.m[i];
             if self.mcode(m).is_none() {
+                // Fanuc programs ask for rigid tapping with M29 before G84;
+                // the HX has G84.2/G84.3 instead (000 §12.3.5-12.3.6).
+                let hint = if m == 29 && d.id == DialectId::Hx {
+                    ": rigid tapping on this control is G84.2 (G84.3 left-hand), without M29"
+                } else {
+                    ""
+                };
                 return Err(self.alarm(
                     AlarmKind::UnknownM,
                     at,
-                    format!("M{m:02} is not an M code of this control"),
+                    format!("M{m:02} is not an M code of this control{hint}"),
                 ));
             }
             if let Some(mc) = self.mcode(m) {
