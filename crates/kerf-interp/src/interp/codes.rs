@@ -316,6 +316,16 @@ impl Interp {
         if secs < 0.0 || revs < 0.0 {
             return Err(self.alarm(AlarmKind::OutOfRange, 0, "negative dwell"));
         }
+        // HX PI 120 = 1: in G95 the dwell counts spindle revolutions, in
+        // the same units (000 §5.4, "(G95) PI 120 (#3120) 1").
+        let (secs, revs) = if self.dialect.id == DialectId::Hx
+            && self.st.feed_mode == FeedMode::PerRev
+            && self.profile.param("PI 120", 0.0) == 1.0
+        {
+            (0.0, secs)
+        } else {
+            (secs, revs)
+        };
         self.emit(Canon::Dwell {
             seconds: secs,
             revolutions: revs,
