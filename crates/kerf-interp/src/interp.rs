@@ -253,6 +253,9 @@ pub struct Interp {
     cache: block_cache::BlockCache,
     /// PUMA lathe cycle data (interp/lathe.rs, interp/lathe_mrc.rs).
     lathe: lathe::LatheData,
+    /// A tool length offset change in G91: (the block, the change of the
+    /// offset vector), which that block's incremental move adds.
+    tlo_inc: Option<(u64, Pos)>,
     /// Hurco state: fixture offsets, offset activation, drill cycles,
     /// probe datums (interp/hurco.rs).
     hurco: Box<hurco::HurcoState>,
@@ -355,6 +358,7 @@ impl Interp {
             comp_capture: None,
             cache: block_cache::BlockCache::default(),
             lathe: lathe::LatheData::default(),
+            tlo_inc: None,
             hurco,
         }
     }
