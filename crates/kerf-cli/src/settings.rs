@@ -28,11 +28,12 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
                     if lv == "off" {
                         continue;
                     }
+                    // 0-9, and 10 (000 §2.3.3: "/0 ~ /10" on the HX).
                     let n: u16 = lv
                         .parse()
-                        .map_err(|_| format!("--set block_skip={v}: levels are 0-9"))?;
-                    if n > 9 {
-                        return Err(format!("--set block_skip={v}: levels are 0-9"));
+                        .map_err(|_| format!("--set block_skip={v}: levels are 0-10"))?;
+                    if n > 10 {
+                        return Err(format!("--set block_skip={v}: levels are 0-10"));
                     }
                     s.block_skip |= 1 << n;
                 }
@@ -232,6 +233,8 @@ mod tests {
         assert!(parse(&["in.7000=2".into()], &mut p).is_err());
         assert!(parse(&["in.7036=1".into()], &mut p).is_err());
         assert!(parse(&["block_skip=12".into()], &mut p).is_err());
+        let s = parse(&["block_skip=10".into()], &mut p).unwrap();
+        assert_eq!(s.block_skip, 1 << 10);
     }
 
     #[test]

@@ -192,7 +192,13 @@ impl<'a> P<'a> {
                     let level = match self.peek() {
                         Some(d @ b'0'..=b'9') => {
                             self.i += 1;
-                            (d - b'0') as u16
+                            // 000 §2.3.3: levels "/0 ~ /10" on the HX.
+                            if d == b'1' && self.peek() == Some(b'0') {
+                                self.i += 1;
+                                10
+                            } else {
+                                (d - b'0') as u16
+                            }
                         }
                         _ => 1,
                     };

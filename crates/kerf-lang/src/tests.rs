@@ -110,6 +110,13 @@ fn block_delete_levels() {
     assert_eq!(b.deletes, vec![(0, 1)]);
     let b = parse("G00 X1 /2 Y2");
     assert_eq!(b.deletes, vec![(2, 1 << 2)]);
+    // 000 §2.3.3: "/0 ~ /10", a level 10.
+    let b = parse("/10 N5 X1");
+    assert_eq!(b.deletes, vec![(0, 1 << 10)]);
+    assert_eq!(b.n, Some(5));
+    let b = parse("/1N10 X1");
+    assert_eq!(b.deletes, vec![(0, 1 << 1)]);
+    assert_eq!(b.n, Some(10));
 }
 
 #[test]
