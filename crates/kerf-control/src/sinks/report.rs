@@ -2,11 +2,55 @@
 //! cutting moves, final positions, tools, cycle time. Format: docs/formats.md.
 
 use std::collections::BTreeMap;
+use std::io::{self, Write};
 
 use kerf_canon::{Alarm, Axis, Canon, Event, Motion, Pos};
 use kerf_interp::Interp;
 use kerf_motion::Planner;
 use serde::Serialize;
+
+use crate::sink::{Context, Sink};
+
+/// The report sink: gathers a [`Summary`] from the event stream and
+/// writes the [`Document`] as pretty JSON at the end.
+pub struct Report<W: Write> {
+    out: W,
+    summary: Summary,
+}
+
+impl<W: Write> Report<W> {
+    /// A report written onto `out` at the end of the run.
+    pub fn new(out: W) -> Report<W> {
+        Report {
+            out,
+            summary: Summary::new(&[]),
+        }
+    }
+}
+
+impl<W: Write> Sink for Report<W> {
+    fn name(&self) -> &str {
+        "report"
+    }
+
+    fn start(&mut self, cx: &Context) -> io::Result<()> {
+        self.summary = Summary::new(&super::axes_of(cx.interp.profile()));
+        Ok(())
+    }
+
+    fn event(&mut self, e: &Event, from: &Pos, _cx: &Context) -> io::Result<()> {
+        self.summary.event(e, from);
+        Ok(())
+    }
+
+    fn finish(&mut self, cx: &Context, alarm: Option<&Alarm>) -> io::Result<()> {
+        let doc = self.summary.finish(cx.interp, cx.planner, alarm);
+        let text = serde_json::to_string_pretty(&doc).map_err(io::Error::other)?;
+        self.out.write_all(text.as_bytes())?;
+        self.out.write_all(b"\n")?;
+        self.out.flush()
+    }
+}
 
 /// Accumulates what the report needs while the run streams past.
 pub struct Summary {
@@ -58,8 +102,9 @@ pub struct TimeOut {
     other: f64,
 }
 
+/// The report document (docs/formats.md "Report").
 #[derive(Serialize)]
-pub struct Report {
+pub struct Document {
     status: &'static str,
     alarm: Option<AlarmOut>,
     blocks: u64,
@@ -85,6 +130,7 @@ fn r6(v: f64) -> f64 {
 }
 
 impl Summary {
+    /// An empty summary for a machine with these axes.
     pub fn new(axes: &[Axis]) -> Summary {
         Summary {
             axes: axes.to_vec(),
@@ -92,6 +138,19 @@ impl Summary {
             bbox: None,
             tools: Vec::new(),
             messages: Vec::new(),
+        }
+    }
+
+    /// Takes one event starting at work position `from`: motions, tools,
+    /// operator messages.
+    pub fn event(&mut self, e: &Event, from: &Pos) {
+        if let Some(m) = e.motion() {
+            self.motion(e, from, m);
+        }
+        match &e.cmd {
+            Canon::Tool { tool, .. } => self.tool(*tool),
+            Canon::Message(text) => self.message(e.src.line, text),
+            _ => {}
         }
     }
 
@@ -156,8 +215,8 @@ impl Summary {
     }
 
     /// The report.
-    pub fn finish(&self, it: &Interp, est: &Planner, alarm: Option<&Alarm>) -> Report {
-        Report {
+    pub fn finish(&self, it: &Interp, est: &Planner, alarm: Option<&Alarm>) -> Document {
+        Document {
             status: if alarm.is_some() {
                 "alarm"
             } else {
