@@ -5,8 +5,6 @@
 //! a [`Runner`] ready to step.
 
 use std::fmt;
-use std::fs::File;
-use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
 use kerf_interp::machine::BUILTIN;
@@ -57,6 +55,7 @@ pub struct Job {
     sets: Vec<String>,
     offsets: Option<PathBuf>,
     state: Option<PathBuf>,
+    read_only: bool,
 }
 
 /// The default machine profile.
@@ -84,6 +83,7 @@ impl Job {
             sets: Vec::new(),
             offsets: None,
             state: None,
+            read_only: false,
         }
     }
 
@@ -119,6 +119,13 @@ impl Job {
         self
     }
 
+    /// Reads the retained state but never writes it (nor creates the
+    /// folder): what `kerf check` does.
+    pub fn read_only(mut self) -> Job {
+        self.read_only = true;
+        self
+    }
+
     /// The program's name as alarms and records show it.
     pub fn program_name(&self) -> String {
         match &self.source {
@@ -132,15 +139,14 @@ impl Job {
     pub fn load(&self) -> Result<Runner, LoadError> {
         let mut profile = load_profile(&self.machine)?;
         let (feed_ovr, rapid_ovr, sets) = split_overrides(&self.sets)?;
-        let settings = crate::settings::parse(&sets, &mut profile)?;
+        let settings =
+            crate::settings::parse(&sets, &mut profile).map_err(|e| suggest_key(e, &profile))?;
         let dynamics =
             crate::dynamics::dynamics_of(&profile, feed_ovr, rapid_ovr, settings.dry_run)
                 .map_err(|e| format!("machine {}: {e}", self.machine))?;
-        let reader: Box<dyn kerf_lang::ProgramRead> = match &self.source {
-            Source::File(p) => {
-                Box::new(File::open(p).map_err(|e| format!("{}: {e}", p.display()))?)
-            }
-            Source::Text { text, .. } => Box::new(Cursor::new(text.clone().into_bytes())),
+        let opened = match &self.source {
+            Source::File(p) => crate::source::open_file(p)?,
+            Source::Text { name, text } => crate::source::open_text(name, text.as_bytes())?,
         };
         let mut it = Interp::new(profile, settings);
         for dir in &self.libs {
@@ -150,14 +156,17 @@ impl Job {
             it.add_lib_dir(dir.clone());
         }
         if let Some(dir) = &self.state {
-            load_state(dir, &mut it)?;
+            if !self.read_only || dir.exists() {
+                load_state(dir, &mut it, !self.read_only)?;
+            }
         }
         if let Some(path) = &self.offsets {
             crate::offsets::load(path, &mut it)?;
         }
-        it.load_main(&self.program_name(), reader);
+        it.load_main(&self.program_name(), opened.reader);
         let mut runner = Runner::new(it, dynamics);
-        if let Some(dir) = &self.state {
+        runner.track_source(opened.len, opened.read);
+        if let Some(dir) = self.state.as_ref().filter(|_| !self.read_only) {
             runner.save_state_to(dir.clone());
         }
         Ok(runner)
@@ -174,7 +183,50 @@ pub fn load_profile(name: &str) -> Result<Profile, LoadError> {
         return Ok(Profile::from_toml(&text).map_err(|e| format!("{name}: {e}"))?);
     }
     let names: Vec<&str> = BUILTIN.iter().map(|(n, _)| *n).collect();
-    Err(format!("unknown machine '{name}' (built-in: {})", names.join(", ")).into())
+    let hint = match crate::suggest::closest(name, names.iter().copied()) {
+        Some(n) => format!(": did you mean '{n}'?"),
+        None => String::new(),
+    };
+    Err(format!(
+        "unknown machine '{name}'{hint} (built-in: {})",
+        names.join(", ")
+    )
+    .into())
+}
+
+/// The `--set` keys (not the profile parameters), for suggestions.
+const SET_KEYS: &[&str] = &[
+    "block_skip",
+    "immediate_offsets",
+    "optional_stop",
+    "single_block",
+    "dry_run",
+    "max_blocks",
+    "probe.time",
+    "probe.x",
+    "probe.z",
+    "arc_tolerance_mm",
+    "max_jumps",
+    "max_repeat_blocks",
+    "peck_clearance_mm",
+    "optional_format",
+    "feed_override",
+    "rapid_override",
+];
+
+/// Adds "did you mean" to an unknown `--set` key error.
+fn suggest_key(err: String, profile: &Profile) -> String {
+    let Some(key) = err
+        .strip_prefix("--set ")
+        .and_then(|r| r.strip_suffix(": unknown key (see docs/formats.md)"))
+    else {
+        return err;
+    };
+    let params = profile.params.keys().map(String::as_str);
+    match crate::suggest::closest(key, SET_KEYS.iter().copied().chain(params)) {
+        Some(k) => format!("--set {key}: unknown key; did you mean '{k}'? (see docs/formats.md)"),
+        None => err,
+    }
 }
 
 /// Takes the planner's overrides (`feed_override`, `rapid_override`,
@@ -201,9 +253,11 @@ fn split_overrides(sets: &[String]) -> Result<(f64, f64, Vec<String>), LoadError
 }
 
 /// Reads the retained variables and offsets kept in `dir` (created when
-/// missing).
-fn load_state(dir: &Path, it: &mut Interp) -> Result<(), LoadError> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("--state {}: {e}", dir.display()))?;
+/// missing and `create`).
+fn load_state(dir: &Path, it: &mut Interp, create: bool) -> Result<(), LoadError> {
+    if create {
+        std::fs::create_dir_all(dir).map_err(|e| format!("--state {}: {e}", dir.display()))?;
+    }
     kerf_interp::state::load_retained(dir, it)?;
     kerf_interp::state::load_offsets(dir, it)?;
     Ok(())
@@ -231,6 +285,41 @@ mod tests {
     fn an_unknown_machine_lists_the_built_in_ones() {
         let e = load_profile("no-such-machine").unwrap_err();
         assert!(e.0.contains("hx-mc") && e.0.contains("puma-lathe"), "{e}");
+        assert!(!e.0.contains("did you mean"), "{e}");
+        let e = load_profile("puma-lahte").unwrap_err();
+        assert!(e.0.contains("did you mean 'puma-lathe'?"), "{e}");
+    }
+
+    #[test]
+    fn an_unknown_set_key_gets_the_closest_one() {
+        let e = Job::text("t.nc", "M30\n")
+            .set("dryrun=on")
+            .load()
+            .err()
+            .unwrap();
+        assert_eq!(
+            e.0,
+            "--set dryrun: unknown key; did you mean 'dry_run'? (see docs/formats.md)"
+        );
+        let e = Job::text("t.nc", "M30\n")
+            .set("zzzzzz=1")
+            .load()
+            .err()
+            .unwrap();
+        assert_eq!(e.0, "--set zzzzzz: unknown key (see docs/formats.md)");
+    }
+
+    #[test]
+    fn check_reads_the_state_but_leaves_no_folder() {
+        let dir = std::env::temp_dir().join(format!("kerf-ro-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let r = Job::text("t.nc", "#500=1\nM30\n")
+            .state(&dir)
+            .read_only()
+            .load();
+        let out = r.unwrap().run(&mut []).unwrap();
+        assert!(out.alarm.is_none());
+        assert!(!dir.exists());
     }
 
     #[test]

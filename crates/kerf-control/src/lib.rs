@@ -36,7 +36,11 @@ pub mod runner;
 pub mod settings;
 pub mod sink;
 pub mod sinks;
+pub mod source;
+pub mod suggest;
+pub mod warnings;
 
 pub use job::{load_profile, Job, LoadError, Source};
 pub use runner::{Outcome, Progress, RunError, Runner};
 pub use sink::{Context, Sink, Timed};
+pub use warnings::Warning;

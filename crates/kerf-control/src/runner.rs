@@ -17,12 +17,15 @@ use std::collections::VecDeque;
 use std::fmt;
 use std::io;
 use std::path::PathBuf;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Arc;
 
 use kerf_canon::{Alarm, Canon, Event, Pos};
 use kerf_interp::{Interp, Step};
 use kerf_motion::{Dynamics, Piece, Planner};
 
 use crate::sink::{Context, Sink, Timed};
+use crate::warnings::{Detector, Warning, Warnings};
 
 /// A motion or dwell waiting for its end time.
 struct Pending {
@@ -56,6 +59,10 @@ pub struct Outcome {
     /// Cutting moves timed as 0 s because they had no feed (per-revolution
     /// feed or thread with the spindle stopped).
     pub stalled: u64,
+    /// The warnings found, in order (at most `warnings::MAX_WARNINGS`).
+    pub warnings: Vec<Warning>,
+    /// Warnings found beyond those kept.
+    pub warnings_dropped: u64,
 }
 
 /// A run that could not go on: a sink's output failed, or the retained
@@ -98,6 +105,10 @@ pub struct Runner {
     work: Pos,
     batch: Vec<Piece>,
     state: Option<PathBuf>,
+    detector: Detector,
+    warnings: Warnings,
+    /// Size of the main program and the count of bytes read from it.
+    source: Option<(u64, Arc<AtomicU64>)>,
 }
 
 impl Runner {
@@ -121,7 +132,24 @@ impl Runner {
             work,
             batch: Vec::new(),
             state: None,
+            detector: Detector::default(),
+            warnings: Warnings::default(),
+            source: None,
         }
+    }
+
+    /// Reports the main program's progress from `read`, the bytes read of
+    /// `len` (see [`crate::source`]).
+    pub fn track_source(&mut self, len: u64, read: Arc<AtomicU64>) {
+        self.source = Some((len, read));
+    }
+
+    /// How far the main program has been read: (bytes read, size), when
+    /// known.
+    pub fn source_progress(&self) -> Option<(u64, u64)> {
+        self.source
+            .as_ref()
+            .map(|(len, r)| (r.load(Ordering::Relaxed).min(*len), *len))
     }
 
     /// Saves the retained variables and offsets into `dir` at the end of
@@ -147,10 +175,29 @@ impl Runner {
         &self.planner
     }
 
+    /// The warnings found so far.
+    pub fn warnings(&self) -> &[Warning] {
+        &self.warnings.list
+    }
+
+    /// Adds a warning found outside the runner (e.g. by [`crate::lint`]);
+    /// sinks see it in [`Context::warnings`] from then on.
+    pub fn warn(&mut self, w: Warning) {
+        self.warnings.push(w);
+    }
+
     /// The planned time so far, s: every motion ending before it has been
     /// handed to [`Sink::timed`] or is in the look-ahead window.
     pub fn planned_time(&self) -> f64 {
         self.planner.now()
+    }
+
+    fn context(&self) -> Context<'_> {
+        Context {
+            interp: &self.it,
+            planner: &self.planner,
+            warnings: &self.warnings.list,
+        }
     }
 
     /// Runs the program to its end and finishes.
@@ -165,10 +212,7 @@ impl Runner {
         if self.pieces {
             self.planner.keep_pieces();
         }
-        let cx = Context {
-            interp: &self.it,
-            planner: &self.planner,
-        };
+        let cx = self.context();
         for s in sinks.iter_mut() {
             s.start(&cx).map_err(sink_err(*s))?;
         }
@@ -206,14 +250,12 @@ impl Runner {
         if let Some(m) = e.motion() {
             self.work = m.to;
         }
-        let cx = Context {
-            interp: &self.it,
-            planner: &self.planner,
-        };
+        let cx = self.context();
         for s in sinks.iter_mut() {
             s.event(&e, &from, &cx).map_err(sink_err(*s))?;
         }
         if !self.plan {
+            self.detector.event(&e, false, &self.it, &mut self.warnings);
             return Ok(());
         }
         let feed_mm_min = match &e.cmd {
@@ -224,7 +266,11 @@ impl Runner {
             Canon::Arc { feed, .. } => Some(self.planner.feed_mm_min(*feed, 0.0)),
             _ => None,
         };
+        let stalled = self.planner.stalled;
         self.planner.push(&e);
+        let stalled = self.planner.stalled > stalled;
+        self.detector
+            .event(&e, stalled, &self.it, &mut self.warnings);
         if e.motion().is_some() || matches!(e.cmd, Canon::Dwell { .. }) {
             self.pending.push_back(Pending {
                 event: e,
@@ -248,12 +294,10 @@ impl Runner {
                 from: p.from,
                 to: p.to,
                 t_end: d.t_end,
+                time: d.time,
                 feed_mm_min: p.feed_mm_min,
             };
-            let cx = Context {
-                interp: &self.it,
-                planner: &self.planner,
-            };
+            let cx = self.context();
             for s in sinks.iter_mut() {
                 s.timed(&t, &cx).map_err(sink_err(*s))?;
             }
@@ -265,10 +309,7 @@ impl Runner {
         while let Some(p) = self.planner.next_piece() {
             self.batch.push(p);
         }
-        let cx = Context {
-            interp: &self.it,
-            planner: &self.planner,
-        };
+        let cx = self.context();
         for s in sinks.iter_mut().filter(|s| s.wants_pieces()) {
             s.pieces(&self.batch, &cx).map_err(sink_err(*s))?;
         }
@@ -285,15 +326,14 @@ impl Runner {
             self.planner.finish();
             self.drain(sinks)?;
         }
+        self.detector
+            .end(&self.it, self.alarm.is_some(), &mut self.warnings);
         if let Some(dir) = &self.state {
             kerf_interp::state::save_retained(dir, &self.it)
                 .and_then(|_| kerf_interp::state::save_offsets(dir, &self.it))
                 .map_err(|e| RunError::State(dir.clone(), e))?;
         }
-        let cx = Context {
-            interp: &self.it,
-            planner: &self.planner,
-        };
+        let cx = self.context();
         for s in sinks.iter_mut() {
             s.finish(&cx, self.alarm.as_ref()).map_err(sink_err(*s))?;
         }
@@ -307,6 +347,8 @@ impl Runner {
             blocks: self.it.blocks(),
             cycle_time: self.plan.then(|| self.planner.now()),
             stalled: self.planner.stalled,
+            warnings: self.warnings.list,
+            warnings_dropped: self.warnings.dropped,
         })
     }
 }

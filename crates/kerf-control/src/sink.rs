@@ -30,6 +30,8 @@ use kerf_canon::{Alarm, Event, Pos};
 use kerf_interp::Interp;
 use kerf_motion::{Piece, Planner};
 
+use crate::warnings::Warning;
+
 /// Read access to the run for a sink: the interpreter (file names, block
 /// count, positions, profile) and the planner (time so far, totals).
 #[derive(Clone, Copy)]
@@ -39,6 +41,8 @@ pub struct Context<'a> {
     /// The planner (its totals are final in [`Sink::finish`]; zero without
     /// planning).
     pub planner: &'a Planner,
+    /// The warnings found so far (all of them in [`Sink::finish`]).
+    pub warnings: &'a [Warning],
 }
 
 impl Context<'_> {
@@ -59,6 +63,10 @@ pub struct Timed<'a> {
     pub to: Pos,
     /// Seconds from program start when it ends (kerf-motion's `Done`).
     pub t_end: f64,
+    /// Seconds it adds to the planner's time breakdown (cutting, rapid or
+    /// dwell, with its settling when it stops); the records' times sum to
+    /// those totals.
+    pub time: f64,
     /// Effective feed of a `Feed` or `Arc`, mm/min (overrides, dry run
     /// and the cutting clamp applied); `None` otherwise.
     pub feed_mm_min: Option<f64>,

@@ -9,22 +9,32 @@ use kerf_interp::Interp;
 use kerf_motion::Planner;
 use serde::Serialize;
 
-use crate::sink::{Context, Sink};
+use crate::sink::{Context, Sink, Timed};
+use crate::warnings::Warning;
 
 /// The report sink: gathers a [`Summary`] from the event stream and
-/// writes the [`Document`] as pretty JSON at the end.
+/// writes the [`Document`] as pretty JSON at the end; the document stays
+/// readable afterwards ([`Report::document`]) for a caller's own summary.
 pub struct Report<W: Write> {
     out: W,
     summary: Summary,
+    doc: Option<Document>,
 }
 
 impl<W: Write> Report<W> {
-    /// A report written onto `out` at the end of the run.
+    /// A report written onto `out` at the end of the run (`io::sink()`
+    /// to keep it only in memory).
     pub fn new(out: W) -> Report<W> {
         Report {
             out,
             summary: Summary::new(&[]),
+            doc: None,
         }
+    }
+
+    /// The report, once the run has finished.
+    pub fn document(&self) -> Option<&Document> {
+        self.doc.as_ref()
     }
 }
 
@@ -43,9 +53,16 @@ impl<W: Write> Sink for Report<W> {
         Ok(())
     }
 
+    fn timed(&mut self, t: &Timed, _cx: &Context) -> io::Result<()> {
+        self.summary.timed(t);
+        Ok(())
+    }
+
     fn finish(&mut self, cx: &Context, alarm: Option<&Alarm>) -> io::Result<()> {
-        let doc = self.summary.finish(cx.interp, cx.planner, alarm);
+        let mut doc = self.summary.finish(cx.interp, cx.planner, alarm);
+        doc.warnings = cx.warnings.iter().map(WarningOut::from).collect();
         let text = serde_json::to_string_pretty(&doc).map_err(io::Error::other)?;
+        self.doc = Some(doc);
         self.out.write_all(text.as_bytes())?;
         self.out.write_all(b"\n")?;
         self.out.flush()
@@ -58,6 +75,8 @@ pub struct Summary {
     motions: u64,
     bbox: Option<(Pos, Pos)>,
     tools: Vec<u32>,
+    /// Cutting seconds per tool, in the order tools first cut.
+    cutting: Vec<(u32, f64)>,
     messages: Vec<MessageOut>,
 }
 
@@ -66,58 +85,130 @@ const MAX_MESSAGES: usize = 10_000;
 
 /// One operator message (`Canon::Message`: #3006, Hurco probe records,
 /// thread start angles) with its source line.
-#[derive(Clone, Serialize)]
+#[derive(Clone, Debug, Serialize)]
 pub struct MessageOut {
-    line: u32,
-    text: String,
+    /// Source line of the block.
+    pub line: u32,
+    /// The text.
+    pub text: String,
 }
 
-#[derive(Serialize)]
+/// The alarm that stopped the run.
+#[derive(Clone, Debug, Serialize)]
 pub struct AlarmOut {
-    code: String,
-    message: String,
-    file: String,
-    line: u32,
-    col: u32,
+    /// Alarm code (`F_82007` …).
+    pub code: String,
+    /// Message.
+    pub message: String,
+    /// File, line and column of the block.
+    pub file: String,
+    /// 1-based line.
+    pub line: u32,
+    /// 1-based column.
+    pub col: u32,
 }
 
-#[derive(Serialize)]
+/// One warning (`KERF-W001` …, docs/alarms.md "Warnings").
+#[derive(Clone, Debug, Serialize)]
+pub struct WarningOut {
+    /// Warning code.
+    pub code: String,
+    /// Message.
+    pub message: String,
+    /// File of the block.
+    pub file: String,
+    /// 1-based line.
+    pub line: u32,
+    /// 1-based column (0: the whole file).
+    pub col: u32,
+}
+
+impl From<&Warning> for WarningOut {
+    fn from(w: &Warning) -> WarningOut {
+        WarningOut {
+            code: w.code.to_string(),
+            message: w.message.clone(),
+            file: w.file.clone(),
+            line: w.line,
+            col: w.col,
+        }
+    }
+}
+
+/// Bounding box of the cutting moves, work coordinates.
+#[derive(Clone, Debug, Serialize)]
 pub struct BBox {
-    min: BTreeMap<&'static str, f64>,
-    max: BTreeMap<&'static str, f64>,
+    /// Smallest coordinate per axis.
+    pub min: BTreeMap<&'static str, f64>,
+    /// Largest coordinate per axis.
+    pub max: BTreeMap<&'static str, f64>,
 }
 
-#[derive(Serialize)]
+/// Positions at the end of the run.
+#[derive(Clone, Debug, Serialize)]
 pub struct Final {
-    work: BTreeMap<&'static str, f64>,
-    machine: BTreeMap<&'static str, f64>,
+    /// Work coordinates.
+    pub work: BTreeMap<&'static str, f64>,
+    /// Machine coordinates.
+    pub machine: BTreeMap<&'static str, f64>,
 }
 
-#[derive(Serialize)]
+/// The planned time by category, s.
+#[derive(Clone, Debug, Serialize)]
 pub struct TimeOut {
-    rapid: f64,
-    cutting: f64,
-    dwell: f64,
-    tool_change: f64,
-    other: f64,
+    /// Rapids with their settling.
+    pub rapid: f64,
+    /// Feeds, arcs and threads with their settling.
+    pub cutting: f64,
+    /// Dwells.
+    pub dwell: f64,
+    /// Tool changes and turret indexing.
+    pub tool_change: f64,
+    /// Spindle ramps and M/S/T handshakes.
+    pub other: f64,
+}
+
+/// Cutting time of one tool.
+#[derive(Clone, Debug, Serialize)]
+pub struct ToolTime {
+    /// Tool number (0: no tool selected).
+    pub tool: u32,
+    /// Seconds of feeds, arcs and threads with this tool.
+    pub cutting_s: f64,
 }
 
 /// The report document (docs/formats.md "Report").
-#[derive(Serialize)]
+#[derive(Clone, Debug, Serialize)]
 pub struct Document {
-    status: &'static str,
-    alarm: Option<AlarmOut>,
-    blocks: u64,
-    motions: u64,
-    feed_length_mm: f64,
-    rapid_length_mm: f64,
-    bbox: Option<BBox>,
+    /// `completed` or `alarm`.
+    pub status: &'static str,
+    /// The alarm, if any.
+    pub alarm: Option<AlarmOut>,
+    /// Blocks executed.
+    pub blocks: u64,
+    /// Motion events.
+    pub motions: u64,
+    /// Cutting path length, mm.
+    pub feed_length_mm: f64,
+    /// Rapid path length, mm.
+    pub rapid_length_mm: f64,
+    /// Bounding box of the cutting moves.
+    pub bbox: Option<BBox>,
+    /// Final positions.
     #[serde(rename = "final")]
-    final_: Final,
-    tools: Vec<u32>,
-    messages: Vec<MessageOut>,
-    cycle_time_s: f64,
-    time_s: TimeOut,
+    pub final_: Final,
+    /// Tools used, in order.
+    pub tools: Vec<u32>,
+    /// Cutting time per tool, in the order the tools first cut.
+    pub tool_times: Vec<ToolTime>,
+    /// Operator messages (the first 10,000).
+    pub messages: Vec<MessageOut>,
+    /// Warnings, in the order found.
+    pub warnings: Vec<WarningOut>,
+    /// Planned cycle time, s.
+    pub cycle_time_s: f64,
+    /// The cycle time by category.
+    pub time_s: TimeOut,
 }
 
 fn r6(v: f64) -> f64 {
@@ -137,6 +228,7 @@ impl Summary {
             motions: 0,
             bbox: None,
             tools: Vec::new(),
+            cutting: Vec::new(),
             messages: Vec::new(),
         }
     }
@@ -187,6 +279,21 @@ impl Summary {
                 b.0[i] = b.0[i].min(*v);
                 b.1[i] = b.1[i].max(*v);
             }
+        }
+    }
+
+    /// Adds a cutting record's time to its tool.
+    pub fn timed(&mut self, t: &Timed) {
+        if !matches!(
+            t.event.cmd,
+            Canon::Feed { .. } | Canon::Arc { .. } | Canon::Thread { .. }
+        ) {
+            return;
+        }
+        let tool = t.event.tool;
+        match self.cutting.iter_mut().find(|(n, _)| *n == tool) {
+            Some((_, s)) => *s += t.time,
+            None => self.cutting.push((tool, t.time)),
         }
     }
 
@@ -242,7 +349,16 @@ impl Summary {
                 machine: self.map(&it.machine_position()),
             },
             tools: self.tools.clone(),
+            tool_times: self
+                .cutting
+                .iter()
+                .map(|&(tool, t)| ToolTime {
+                    tool,
+                    cutting_s: r6(t),
+                })
+                .collect(),
             messages: self.messages.clone(),
+            warnings: Vec::new(),
             cycle_time_s: r6(est.now()),
             time_s: TimeOut {
                 rapid: r6(est.time.rapid),
