@@ -63,6 +63,39 @@ impl Interp {
         }
     }
 
+    /// The first block of G71/G72 (U or W: Δd, R: escape) or G73 (U, W:
+    /// relief, R: divisions): modal data only.
+    fn mrc_first_block(&mut self, code: u16) -> R<()> {
+        if let Some(w) = self.words.get(b'D') {
+            return Err(self.unused_word(b'D', w.at, "the one-block cycle with P and Q"));
+        }
+        match code {
+            710 | 720 => {
+                let l = if code == 710 { b'U' } else { b'W' };
+                if let Some(d) = self.positive(l, "depth of cut Δd")? {
+                    self.lathe.mrc.depth = Some(d);
+                }
+                if let Some(w) = self.words.get(b'R') {
+                    self.lathe.mrc.escape = Some(self.linear(w).abs());
+                }
+            }
+            _ => {
+                let (mut i, mut k) = self.lathe.mrc.relief.unwrap_or((None, None));
+                if let Some(w) = self.words.get(b'U') {
+                    i = Some(self.linear(w));
+                }
+                if let Some(w) = self.words.get(b'W') {
+                    k = Some(self.linear(w));
+                }
+                self.lathe.mrc.relief = Some((i, k));
+                if let Some(w) = self.words.get(b'R') {
+                    self.lathe.mrc.divisions = Some(self.mrc_divisions(w, "G73 R")?);
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// G70, G71, G72, G73.
     fn mrc_shape_cycle(&mut self, code: u16, at: u32) -> R<()> {
         let has_pq = self.words.has(b'P') || self.words.has(b'Q');
@@ -70,35 +103,7 @@ impl Interp {
             if code == 700 {
                 return Err(self.alarm(AlarmKind::MrcNoPq, at, "G70 without P (ns) and Q (nf)"));
             }
-            // First block: modal data only.
-            if let Some(w) = self.words.get(b'D') {
-                return Err(self.unused_word(b'D', w.at, "the one-block cycle with P and Q"));
-            }
-            match code {
-                710 | 720 => {
-                    let l = if code == 710 { b'U' } else { b'W' };
-                    if let Some(d) = self.positive(l, "depth of cut Δd")? {
-                        self.lathe.mrc.depth = Some(d);
-                    }
-                    if let Some(w) = self.words.get(b'R') {
-                        self.lathe.mrc.escape = Some(self.linear(w).abs());
-                    }
-                }
-                _ => {
-                    let (mut i, mut k) = self.lathe.mrc.relief.unwrap_or((None, None));
-                    if let Some(w) = self.words.get(b'U') {
-                        i = Some(self.linear(w));
-                    }
-                    if let Some(w) = self.words.get(b'W') {
-                        k = Some(self.linear(w));
-                    }
-                    self.lathe.mrc.relief = Some((i, k));
-                    if let Some(w) = self.words.get(b'R') {
-                        self.lathe.mrc.divisions = Some(self.mrc_divisions(w, "G73 R")?);
-                    }
-                }
-            }
-            return Ok(());
+            return self.mrc_first_block(code);
         }
         let (ns, nf) = match (self.words.get(b'P'), self.words.get(b'Q')) {
             (Some(p), Some(q)) => (self.seq_word(p)?, self.seq_word(q)?),
@@ -200,26 +205,10 @@ impl Interp {
         match res {
             Ok(()) => {}
             Err(turning::CycleError::NotMonotonic(i, ax)) => {
-                return Err(self.alarm(
-                    AlarmKind::MrcNotMonotonic,
-                    p_at,
-                    if comp {
-                        format!(
-                            "G{} type {}: the shape N{ns}-N{nf} offset by the nose radius (the imaginary tip's path) is not monotonic in {ax} (piece {} after N{ns})",
-                            code / 10,
-                            if type2 { "II" } else { "I" },
-                            i + 1
-                        )
-                    } else {
-                        format!(
-                            "G{} type {}: the shape N{ns}-N{nf} is not monotonic in {ax} (segment {} after N{ns}, line {})",
-                            code / 10,
-                            if type2 { "II" } else { "I" },
-                            i + 1,
-                            shape.srcs.get(i).map_or(0, |s| s.line)
-                        )
-                    },
-                ));
+                let line = shape.srcs.get(i).map_or(0, |s| s.line);
+                let what = format!("G{} type {}", code / 10, if type2 { "II" } else { "I" });
+                let msg = not_monotonic_msg(&what, (ns, nf), comp, ax, i, line);
+                return Err(self.alarm(AlarmKind::MrcNotMonotonic, p_at, msg));
             }
             Err(e) => return Err(self.alarm(AlarmKind::MrcValue, at, super::lathe::cycle_msg(&e))),
         }
@@ -299,7 +288,7 @@ impl Interp {
             return Ok(None);
         }
         let saved = self.comp.take();
-        let pos = self.st.pos;
+        let pos = self.st.mover.pos();
         if before != 400 {
             self.comp_set_mode(before, None);
         }
@@ -307,7 +296,7 @@ impl Interp {
         let r = self.shape_run(a, s, at, false);
         let cap = self.comp_capture.take().unwrap_or_default();
         self.comp = saved;
-        self.st.pos = pos;
+        self.place_machine(pos);
         r?;
         let zx = |q: (f64, f64)| turning::p(q.1, q.0);
         let k = cap
@@ -409,7 +398,7 @@ impl Interp {
                 if let Some(cap) = self.comp_capture.as_mut() {
                     cap.push((cs, src, true));
                 }
-                self.st.pos = self.to_machine(&self.zx_full(seg.to));
+                self.place_at(&self.zx_full(seg.to));
             }
         }
         self.comp_shape_end()
@@ -785,5 +774,29 @@ impl Interp {
             return Err(self.alarm(AlarmKind::MrcValue, at, super::lathe::cycle_msg(&e)));
         }
         self.emit_moves(&out, None, at)
+    }
+}
+
+/// PS064's message: the cycle (`G71 type I` …), the shape N(ns)-N(nf),
+/// the axis, and the offending segment `i` (0-based) with its line — or,
+/// on the nose-radius-compensated path, the piece.
+fn not_monotonic_msg(
+    what: &str,
+    (ns, nf): (u32, u32),
+    comp: bool,
+    ax: char,
+    i: usize,
+    line: u32,
+) -> String {
+    if comp {
+        format!(
+            "{what}: the shape N{ns}-N{nf} offset by the nose radius (the imaginary tip's path) is not monotonic in {ax} (piece {} after N{ns})",
+            i + 1
+        )
+    } else {
+        format!(
+            "{what}: the shape N{ns}-N{nf} is not monotonic in {ax} (segment {} after N{ns}, line {line})",
+            i + 1
+        )
     }
 }
