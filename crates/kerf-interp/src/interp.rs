@@ -42,6 +42,7 @@ mod probe;
 mod puma_words;
 mod reset;
 mod skip;
+mod system_b;
 mod sysvars;
 mod tool_offset;
 mod transforms;
@@ -327,6 +328,8 @@ impl Interp {
             None
         };
         let settings_sb = settings.single_block;
+        let system_b_on =
+            dialect.id == DialectId::Puma && profile.param("gcode_system_b", 0.0) != 0.0;
         let mut cyc = cycles::CycleData::default();
         cyc.params = cycles::CycleParams::from_profile(&profile);
         Interp {
@@ -373,7 +376,10 @@ impl Interp {
             comp_prog: None,
             comp_capture: None,
             cache: block_cache::BlockCache::default(),
-            lathe: lathe::LatheData::default(),
+            lathe: lathe::LatheData {
+                system_b: system_b_on,
+                ..Default::default()
+            },
             tlo_inc: None,
             hurco,
         }
@@ -952,7 +958,7 @@ impl Interp {
                             format!("G{} is not a G code of this control", fmt_num(v)),
                         ));
                     }
-                    self.words.g[self.words.ng] = (c10 as u16, w.at);
+                    self.words.g[self.words.ng] = (self.g_of_system(c10 as u16, w.at)?, w.at);
                     self.words.ng += 1;
                 }
                 Addr::L(b'M') => {
@@ -992,6 +998,9 @@ impl Interp {
                     self.words.nlong += 1;
                 }
             }
+        }
+        if self.lathe.system_b {
+            self.system_b_words()?;
         }
         Ok(())
     }
@@ -1550,6 +1559,8 @@ impl Interp {
             210 => st.metric = true,
             540..=590 if d != DialectId::Hurco => st.wcs_idx = ((c - 540) / 10) as usize,
             900 if d != DialectId::Puma => st.absolute = true,
+            system_b::ABS if d == DialectId::Puma => st.absolute = true,
+            system_b::INC if d == DialectId::Puma => st.absolute = false,
             910 if d != DialectId::Puma => st.absolute = false,
             930 => st.feed_mode = FeedMode::Inverse,
             940 => st.feed_mode = FeedMode::PerMin,

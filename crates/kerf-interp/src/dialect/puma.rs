@@ -65,6 +65,10 @@ pub static GCODES: &[GCode] = &[
     g(920, 1, false, "fixed cycle (thread process cycle)", Yes),
     g(940, 1, false, "fixed cycle (facing process cycle)", Yes),
     g(960, 2, false, "constant surface speed control", Yes),
+    // G-code system B's G90/G91 (interp/system_b.rs translates them to these
+    // internal numbers; in system A a program cannot write them).
+    g(9000, 3, true, "absolute programming (G-code system B G90)", Yes),
+    g(9010, 3, false, "incremental programming (G-code system B G91)", Yes),
     g(970, 2, true, "constant surface speed control cancel (rpm)", Yes), // # in 001
     g(980, 5, false, "feed per minute (mm/min)", Yes),
     g(990, 5, true, "feed per revolution (mm/rev)", Yes), // # in 001

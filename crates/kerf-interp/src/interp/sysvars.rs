@@ -328,7 +328,15 @@ impl Interp {
                     .unwrap_or_else(|| self.programmed_position());
                 return Ok(self.axis_value_of(k, &p));
             }
-            Modal(g) => self.st.modal.get(g).copied().unwrap_or(0) as f64 / 10.0,
+            Modal(g) => {
+                let c = self.st.modal.get(g).copied().unwrap_or(0);
+                let c = if self.system_b() {
+                    super::system_b::to_b(c)
+                } else {
+                    c
+                };
+                c as f64 / 10.0
+            }
             InBit(w, b) => bit(&self.sys.inputs, w, b),
             InWord(w, mask) => (self.sys.inputs[w] & mask) as f64,
             OutBit(w, b) => bit(&self.sys.outputs, w, b),
