@@ -122,6 +122,9 @@ pub struct Runtime {
     restart: Option<RestartPlan>,
     /// Axes referenced by REF.
     referenced: [bool; NAXES],
+    /// Line of the last command the axes finished (the block display when
+    /// nothing is under way; 0 at the program start).
+    last_line: u32,
     /// A jog, handle or reference move under way.
     manual: Option<manual::ManualMove>,
     /// Blocks the interpreter may execute in one call of the clock
@@ -165,6 +168,7 @@ impl Runtime {
             restart: None,
             referenced: [false; NAXES],
             manual: None,
+            last_line: 0,
             block_budget: 20_000,
         })
     }

@@ -162,23 +162,27 @@ impl Runtime {
     /// and coolant change.
     fn apply_passed(&mut self, t: f64) {
         let phys = &mut self.phys;
-        self.clock.drop_finished(t, |s: &Sched| match &s.ev.cmd {
-            Canon::Spindle { dir, rpm, .. } => {
-                phys.spindle = *dir;
-                phys.rpm = if *dir == kerf_canon::SpindleDir::Stop {
-                    0.0
-                } else {
-                    *rpm
-                };
+        let last = &mut self.last_line;
+        self.clock.drop_finished(t, |s: &Sched| {
+            *last = s.ev.src.line;
+            match &s.ev.cmd {
+                Canon::Spindle { dir, rpm, .. } => {
+                    phys.spindle = *dir;
+                    phys.rpm = if *dir == kerf_canon::SpindleDir::Stop {
+                        0.0
+                    } else {
+                        *rpm
+                    };
+                }
+                Canon::Tool {
+                    tool, change: true, ..
+                } => phys.tool = *tool,
+                Canon::Coolant { mist, flood } => {
+                    phys.mist = *mist;
+                    phys.flood = *flood;
+                }
+                _ => {}
             }
-            Canon::Tool {
-                tool, change: true, ..
-            } => phys.tool = *tool,
-            Canon::Coolant { mist, flood } => {
-                phys.mist = *mist;
-                phys.flood = *flood;
-            }
-            _ => {}
         });
         // The tool in a turret is the station the events name.
         if let Some(s) = self.clock.current() {
@@ -294,7 +298,7 @@ impl Runtime {
                 self.interp.file_name(s.ev.src.file).to_string(),
             ),
             None => (
-                self.interp.block_at().0.line,
+                self.last_line,
                 self.program
                     .as_ref()
                     .map(|p| p.name.clone())
