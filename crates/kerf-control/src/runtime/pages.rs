@@ -94,6 +94,12 @@ impl Runtime {
             OffsetWrite::Work { .. } => Part::Work,
             _ => Part::Tools,
         };
+        self.apply_offset(w);
+        self.save_state_now(part).map_err(|e| self.refuse(op, e))
+    }
+
+    /// Applies a validated write.
+    pub(super) fn apply_offset(&mut self, w: OffsetWrite) {
         let it = &mut self.interp;
         match w {
             OffsetWrite::H { n, geom, wear } | OffsetWrite::D { n, geom, wear } => {
@@ -144,10 +150,9 @@ impl Runtime {
                 it.set_work_offset(index, p);
             }
         }
-        self.save_state_now(part).map_err(|e| self.refuse(op, e))
     }
 
-    fn validate_offset(&self, w: &OffsetWrite) -> Result<(), String> {
+    pub(super) fn validate_offset(&self, w: &OffsetWrite) -> Result<(), String> {
         let count = self.interp.offsets().count();
         let num = |n: usize| {
             if (1..=count).contains(&n) {
