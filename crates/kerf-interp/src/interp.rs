@@ -41,12 +41,14 @@ mod polar_interp;
 mod probe;
 mod puma_words;
 mod reset;
+mod runtime_hooks;
 mod skip;
 mod system_b;
 mod sysvars;
 mod tool_offset;
 mod transforms;
 
+pub use runtime_hooks::{BlockStep, InterpSnapshot};
 pub use sysvars::MacroSwitches;
 
 /// Operator-panel switches and run options.
