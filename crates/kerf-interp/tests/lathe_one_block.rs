@@ -315,3 +315,14 @@ fn parameter_off_alarms() {
     );
     assert_eq!(alarm(&r), ("PS009", 2, 15));
 }
+
+/// R in the block with P and Q is read by no form of G71-G73 (it belongs
+/// to the 0-T first block): PS009 at the R, not ignored.
+#[test]
+fn r_in_the_p_q_block_alarms() {
+    let r = run_on(
+        PUMA,
+        "G00 X70. Z2.\nG71 P1 Q2 D2. R1. F0.3\nN1 G01 X60.\nN2 Z-10.\n",
+    );
+    assert_eq!(alarm(&r), ("PS009", 2, 15));
+}

@@ -223,6 +223,13 @@ impl Interp {
     /// checked with the block's addresses, interp/puma_words.rs).
     fn mrc_one_block_shape(&mut self, code: u16) -> R<()> {
         let one_block = self.tape_format_10_11();
+        if let Some(w) = self.words.get(b'R') {
+            return Err(self.unused_word(
+                b'R',
+                w.at,
+                "the first block of G71-G73 (without P and Q)",
+            ));
+        }
         for l in [b'I', b'K'] {
             if let Some(w) = self.words.get(l) {
                 if !(one_block && code == 730) {
