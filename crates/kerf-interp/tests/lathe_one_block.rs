@@ -326,3 +326,13 @@ fn r_in_the_p_q_block_alarms() {
     );
     assert_eq!(alarm(&r), ("PS009", 2, 15));
 }
+
+/// The first block `G74 R(e)` reads only R: a peck amount written there
+/// (without the end point, so no cycle runs) is PS009, not ignored.
+#[test]
+fn g74_first_block_reads_only_r() {
+    let r = run_on(PUMA, "G00 X60. Z1.\nG74 R0.5 Q2000\n");
+    assert_eq!(alarm(&r), ("PS009", 2, 10));
+    let r = run_on(PUMA, "G00 X60. Z1.\nG75 R0.5 K2.\n");
+    assert_eq!(alarm(&r), ("PS009", 2, 10));
+}

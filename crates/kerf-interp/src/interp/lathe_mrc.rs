@@ -475,6 +475,14 @@ impl Interp {
         };
         let has_end = [b'X', b'U', b'Z', b'W'].iter().any(|&l| self.words.has(l));
         if !has_end {
+            // The first block `G74 R(e)` reads only R.
+            if let Some(l) = [b'P', b'Q', b'I', b'K', b'D']
+                .into_iter()
+                .find(|&l| self.words.has(l))
+            {
+                let w = self.words.get(l).expect("present");
+                return Err(self.unused_word(l, w.at, "the block with the end point X/Z"));
+            }
             if let Some(w) = self.words.get(b'R') {
                 self.lathe.mrc.peck_escape = Some(self.linear(w).abs());
             }
