@@ -31,6 +31,7 @@
 
 pub mod dynamics;
 pub mod job;
+pub mod lint;
 pub mod offsets;
 pub mod runner;
 pub mod settings;
