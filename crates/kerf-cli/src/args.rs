@@ -111,4 +111,11 @@ pub enum Cmd {
     },
     /// List the built-in machine profiles.
     Machines,
+    /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
+    Completions {
+        /// The shell.
+        shell: clap_complete::Shell,
+    },
+    /// Print the manual page (roff; `kerf man | man -l -`).
+    Man,
 }

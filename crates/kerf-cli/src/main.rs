@@ -7,6 +7,7 @@
 
 mod args;
 mod diagnostic;
+mod manual;
 mod outputs;
 mod progress;
 mod summary;
@@ -31,6 +32,8 @@ fn main() -> ExitCode {
             }
             ExitCode::SUCCESS
         }
+        Cmd::Completions { shell } => manual::completions(shell),
+        Cmd::Man => manual::man(),
         Cmd::Run { common, outputs } => run(&common, &outputs, false),
         Cmd::Check { common } => run(&common, &Outputs::default(), true),
     }

@@ -245,3 +245,19 @@ fn an_unwritable_output_fails_before_the_run() {
     // Nothing ran: no state was saved.
     assert!(!state.join("hx-mc.vars").exists());
 }
+
+#[test]
+fn completions_and_man_page_list_the_commands() {
+    let out = kerf().args(["completions", "bash"]).output().unwrap();
+    assert!(out.status.success());
+    let s = text(&out.stdout);
+    assert!(
+        s.contains("_kerf()") && s.contains("--toolpath") && s.contains("check"),
+        "{s}"
+    );
+    let out = kerf().arg("man").output().unwrap();
+    assert!(out.status.success());
+    let s = text(&out.stdout);
+    assert!(s.starts_with(".ie") && s.contains(".TH kerf 1"), "{s}");
+    assert!(s.contains("machines"), "{s}");
+}
