@@ -43,6 +43,7 @@ mod hold;
 mod manual;
 mod mdi;
 mod mode;
+mod moves;
 mod offsets_doc;
 mod ops;
 mod pages;

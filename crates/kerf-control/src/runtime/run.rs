@@ -19,7 +19,10 @@ const AHEAD: f64 = 0.5;
 impl Runtime {
     /// Whether the interpreter may read more blocks now.
     fn feeding(&self) -> bool {
-        self.exec == Execution::Active && self.pause.is_none() && self.held.is_none()
+        self.exec == Execution::Active
+            && self.pause.is_none()
+            && self.held.is_none()
+            && self.manual.is_none()
     }
 
     /// Reads one block into the planner (or pauses). Returns false when
@@ -258,7 +261,7 @@ impl Runtime {
         let cur = self
             .clock
             .current()
-            .filter(|s| s.t_end.map_or(true, |te| te >= t));
+            .filter(|s| s.t_end.is_none_or(|te| te >= t));
         // Work = machine − (the current motion's machine − work offset).
         let (shift, end) = match cur.and_then(|s| s.ev.motion().map(|m| (s, m))) {
             Some((_, m)) => {
