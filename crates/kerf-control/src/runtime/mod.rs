@@ -270,10 +270,14 @@ impl Runtime {
     }
 
     /// Advances machine time until the execution state is not ACTIVE (or
-    /// `max_dt` machine seconds have passed); returns the time taken.
+    /// `max_dt` machine seconds have passed, or `max_dt / 0.05 + 1000`
+    /// steps were taken: a macro loop without motion takes no machine
+    /// time); returns the machine time taken.
     pub fn run_until_stopped(&mut self, max_dt: f64) -> f64 {
         let t0 = self.clock.t;
-        while self.exec == Execution::Active && self.clock.t - t0 < max_dt {
+        let mut steps = (max_dt / 0.05).min(1e9) as u64 + 1000;
+        while self.exec == Execution::Active && self.clock.t - t0 < max_dt && steps > 0 {
+            steps -= 1;
             self.step(0.05f64.min(max_dt - (self.clock.t - t0)).max(1e-6));
         }
         self.clock.t - t0
