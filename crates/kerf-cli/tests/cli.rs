@@ -601,3 +601,28 @@ fn main_m99_passes_and_issue_15_keys() {
     let r = read_json(&rep);
     assert_eq!(r["final"]["work"]["z"], -2.0, "{r}");
 }
+
+/// The PUMA's G55 takes its zero from the `--offsets` table (machine Z
+/// −500): `G55 G00 X50. Z10.` ends at machine (radius 25, −490), reading
+/// (25, 10).
+#[test]
+fn puma_work_offsets_from_the_offset_table() {
+    let p = tmp("g55.nc", "G55 G00 X50. Z10.\nM30\n");
+    let off = tmp("g55.toml", "[g55]\nx = 0.0\nz = -500.0\n");
+    let tp = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli/g55.jsonl");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .args(["--machine", "puma-lathe", "--offsets"])
+        .arg(&off)
+        .arg("--toolpath")
+        .arg(&tp)
+        .output()
+        .unwrap();
+    assert_success(&out);
+    let line = std::fs::read_to_string(&tp).unwrap();
+    let v: serde_json::Value = serde_json::from_str(line.lines().next().unwrap()).unwrap();
+    assert_eq!(v["to"]["x"], 25.0);
+    assert_eq!(v["to"]["z"], 10.0);
+    assert_eq!(v["mto"]["z"], -490.0);
+}
