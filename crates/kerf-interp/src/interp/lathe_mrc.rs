@@ -701,6 +701,14 @@ impl Interp {
     fn mrc_thread(&mut self, at: u32) -> R<()> {
         let has_end = [b'X', b'U', b'Z', b'W'].iter().any(|&l| self.words.has(l));
         if !has_end {
+            // The first block `G76 P(m r a) Q(Δdmin) R(d)` reads only those.
+            if let Some(l) = [b'I', b'K', b'D', b'A']
+                .into_iter()
+                .find(|&l| self.words.has(l))
+            {
+                let w = self.words.get(l).expect("present");
+                return Err(self.unused_word(l, w.at, "the block with the end point X/Z"));
+            }
             if let Some(w) = self.words.get(b'P') {
                 if w.v < 0.0 || w.v.fract() != 0.0 || w.v > 999_999.0 || w.point {
                     return Err(self.alarm(
