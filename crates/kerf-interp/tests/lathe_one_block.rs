@@ -335,6 +335,11 @@ fn g74_first_block_reads_only_r() {
     assert_eq!(alarm(&r), ("PS009", 2, 10));
     let r = run_on(PUMA, "G00 X60. Z1.\nG75 R0.5 K2.\n");
     assert_eq!(alarm(&r), ("PS009", 2, 10));
+    // G71's first block reads U and R only, G72's W and R.
+    let r = run_on(PUMA, "G00 X60. Z1.\nG71 U2. R0.5 W1.\n");
+    assert_eq!(alarm(&r), ("PS009", 2, 14));
+    let r = run_on(PUMA, "G00 X60. Z1.\nG72 W2. R0.5 U1.\n");
+    assert_eq!(alarm(&r), ("PS009", 2, 14));
     // The same for G76's first block (P Q R only).
     let r = run_on(PUMA, "G00 X60. Z1.\nG76 P021060 Q100 D.5\n");
     assert_eq!(alarm(&r), ("PS009", 2, 18));

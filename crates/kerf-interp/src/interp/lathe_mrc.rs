@@ -66,8 +66,15 @@ impl Interp {
     /// The first block of G71/G72 (U or W: Δd, R: escape) or G73 (U, W:
     /// relief, R: divisions): modal data only.
     fn mrc_first_block(&mut self, code: u16) -> R<()> {
-        if let Some(w) = self.words.get(b'D') {
-            return Err(self.unused_word(b'D', w.at, "the one-block cycle with P and Q"));
+        // G71 reads U R, G72 W R, G73 U W R; nothing else is read here.
+        let unread: &[u8] = match code {
+            710 => b"WDIK",
+            720 => b"UDIK",
+            _ => b"DIK",
+        };
+        if let Some(&l) = unread.iter().find(|&&l| self.words.has(l)) {
+            let w = self.words.get(l).expect("present");
+            return Err(self.unused_word(l, w.at, "the cycle block with P and Q"));
         }
         match code {
             710 | 720 => {
