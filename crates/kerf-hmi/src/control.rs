@@ -1,0 +1,46 @@
+//! The surface the server drives: one controller runtime behind a lock.
+//! The real one is kerf-control's runtime (`runtime_control.rs`); unit
+//! tests use a double.
+
+use crate::command::Command;
+use crate::state::{AlarmInfo, State};
+
+/// Why a request was not carried out.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Refusal {
+    /// Not allowed in the present mode or state (HTTP 409).
+    State(String),
+    /// The content is wrong: an offset number out of range, an MDI block
+    /// that does not parse (HTTP 400).
+    Invalid(String),
+}
+
+impl From<Refusal> for crate::error::ApiError {
+    fn from(r: Refusal) -> Self {
+        match r {
+            Refusal::State(m) => crate::error::ApiError::refused(m),
+            Refusal::Invalid(m) => crate::error::ApiError::bad_request(m),
+        }
+    }
+}
+
+/// A controller the server can operate.
+pub trait Control: Send + 'static {
+    /// Loads a program as the main program (refused while one runs).
+    fn load(&mut self, name: &str, text: &str) -> Result<(), Refusal>;
+    /// Carries out an operator command, or refuses it leaving the state as
+    /// it was.
+    fn command(&mut self, cmd: &Command) -> Result<(), Refusal>;
+    /// Advances machine time by `seconds`.
+    fn advance(&mut self, seconds: f64);
+    /// The state now.
+    fn state(&self) -> State;
+    /// The offset memory and work offsets, in the `--offsets` format as JSON.
+    fn offsets(&self) -> serde_json::Value;
+    /// Writes offsets given in that format (only the entries given).
+    fn put_offsets(&mut self, offsets: &serde_json::Value) -> Result<(), Refusal>;
+    /// Macro variables that hold a value: `{"#100": 1.5, …}`.
+    fn variables(&self) -> serde_json::Value;
+    /// The alarm and message history, oldest first.
+    fn alarms(&self) -> Vec<AlarmInfo>;
+}

@@ -1,0 +1,201 @@
+//! The server's shared state and the clock: the runtime behind one lock,
+//! the loaded program's text, the backplot, and the ticker that advances
+//! machine time and publishes the state once per tick for every client.
+
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex, MutexGuard};
+use std::time::{Duration, Instant};
+
+use kerf_interp::Profile;
+use tokio::sync::watch;
+
+use crate::control::{Control, Refusal};
+use crate::path::{PathStore, Trace};
+use crate::state::State;
+
+/// Period of the ticker: 50 Hz.
+pub const TICK: Duration = Duration::from_millis(20);
+
+/// The loaded program's text with its line starts (for the PROG page).
+pub struct Program {
+    /// Name it was loaded under.
+    pub name: String,
+    /// The text.
+    pub text: Arc<str>,
+    /// Byte offset of each line's start.
+    pub lines: Vec<usize>,
+}
+
+impl Program {
+    /// Indexes `text`.
+    pub fn new(name: &str, text: Arc<str>) -> Program {
+        let mut lines = vec![0];
+        lines.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        if lines.last() == Some(&text.len()) && text.len() > 0 {
+            lines.pop();
+        }
+        Program {
+            name: name.to_string(),
+            text,
+            lines,
+        }
+    }
+
+    /// Line `n` (1-based) without its line end.
+    pub fn line(&self, n: usize) -> Option<&str> {
+        let start = *self.lines.get(n.checked_sub(1)?)?;
+        let end = self.lines.get(n).copied().unwrap_or(self.text.len());
+        Some(self.text[start..end].trim_end_matches(['\n', '\r']))
+    }
+
+    /// Number of lines.
+    pub fn count(&self) -> usize {
+        if self.text.is_empty() {
+            0
+        } else {
+            self.lines.len()
+        }
+    }
+}
+
+/// One published state: the value and its JSON, made once per tick.
+pub struct Frame {
+    /// The state.
+    pub state: State,
+    /// `state` as JSON text with `"type":"state"`.
+    pub json: String,
+}
+
+/// What every handler shares.
+pub struct Shared {
+    control: Mutex<Box<dyn Control>>,
+    /// The machine profile (for the backplot and `/api/machine`).
+    pub profile: Profile,
+    /// Library folders.
+    pub libs: Vec<PathBuf>,
+    /// The loaded program.
+    pub program: Mutex<Option<Arc<Program>>>,
+    /// The backplot.
+    pub path: Arc<Mutex<PathStore>>,
+    trace: Mutex<Option<Trace>>,
+    /// The newest state.
+    pub frames: watch::Sender<Arc<Frame>>,
+    /// Token needed for state-changing requests (None on loopback).
+    pub token: Option<String>,
+    /// Machine time per wall-clock second.
+    pub rate: f64,
+}
+
+fn lock<T: ?Sized>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|p| p.into_inner())
+}
+
+impl Shared {
+    /// Wraps a runtime.
+    pub fn new(
+        control: Box<dyn Control>,
+        profile: Profile,
+        libs: Vec<PathBuf>,
+        token: Option<String>,
+        rate: f64,
+    ) -> Arc<Shared> {
+        let state = control.state();
+        let frame = make_frame(state, &PathStore::default());
+        let (tx, _) = watch::channel(Arc::new(frame));
+        Arc::new(Shared {
+            control: Mutex::new(control),
+            profile,
+            libs,
+            program: Mutex::new(None),
+            path: Arc::new(Mutex::new(PathStore::default())),
+            trace: Mutex::new(None),
+            frames: tx,
+            token,
+            rate,
+        })
+    }
+
+    /// Runs `f` on the runtime under the lock.
+    pub fn with<R>(&self, f: impl FnOnce(&mut dyn Control) -> R) -> R {
+        let mut c = lock(&self.control);
+        f(c.as_mut())
+    }
+
+    /// Loads a program: into the runtime, then the PROG text and the
+    /// backplot.
+    pub fn load(&self, name: &str, text: String) -> Result<Arc<Program>, Refusal> {
+        let text: Arc<str> = text.into();
+        self.with(|c| c.load(name, &text))?;
+        let prog = Arc::new(Program::new(name, text.clone()));
+        *lock(&self.program) = Some(prog.clone());
+        let t = crate::path::start(
+            self.profile.clone(),
+            self.libs.clone(),
+            name,
+            text,
+            self.path.clone(),
+        );
+        *lock(&self.trace) = Some(t);
+        self.publish();
+        Ok(prog)
+    }
+
+    /// The loaded program.
+    pub fn program(&self) -> Option<Arc<Program>> {
+        lock(&self.program).clone()
+    }
+
+    /// Publishes the state now (after a command, so clients see it at once).
+    pub fn publish(&self) {
+        let state = self.with(|c| c.state());
+        let path = lock(&self.path);
+        let frame = make_frame(state, &path);
+        drop(path);
+        self.frames.send_if_modified(|old| {
+            if old.json == frame.json {
+                return false;
+            }
+            *old = Arc::new(frame);
+            true
+        });
+    }
+
+    /// One tick: advance machine time by `wall` seconds × rate, publish.
+    pub fn tick(&self, wall: f64) {
+        let dt = wall * self.rate;
+        self.with(|c| c.advance(dt));
+        self.publish();
+    }
+}
+
+fn make_frame(mut state: State, path: &PathStore) -> Frame {
+    state.path = crate::state::PathInfo {
+        id: path.id,
+        points: path.points() as u32,
+        done: path.done,
+    };
+    let mut v = serde_json::to_value(&state).unwrap_or_default();
+    if let Some(o) = v.as_object_mut() {
+        o.insert("type".into(), "state".into());
+    }
+    Frame {
+        json: v.to_string(),
+        state,
+    }
+}
+
+/// The ticker: every [`TICK`], advance by the wall time that passed.
+pub async fn run_clock(shared: Arc<Shared>) {
+    let mut iv = tokio::time::interval(TICK);
+    iv.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+    let mut last = Instant::now();
+    loop {
+        iv.tick().await;
+        let now = Instant::now();
+        // A stalled process (suspended, swapped) does not jump the machine.
+        let wall = now.duration_since(last).as_secs_f64().min(0.25);
+        last = now;
+        let s = shared.clone();
+        let _ = tokio::task::spawn_blocking(move || s.tick(wall)).await;
+    }
+}
