@@ -33,6 +33,7 @@ pub fn router(shared: Arc<Shared>) -> Router {
     Router::new()
         .route("/", get(index))
         .route("/assets/{*path}", get(asset))
+        .route("/favicon.ico", get(|| async { StatusCode::NO_CONTENT }))
         .route("/api/machine", get(machine))
         .route("/api/state", get(state))
         .route("/api/program", get(program_lines).post(load_program))

@@ -173,6 +173,7 @@ fn make_frame(mut state: State, path: &PathStore) -> Frame {
         id: path.id,
         points: path.points() as u32,
         done: path.done,
+        note: path.note.clone(),
     };
     let mut v = serde_json::to_value(&state).unwrap_or_default();
     if let Some(o) = v.as_object_mut() {

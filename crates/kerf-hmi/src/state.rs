@@ -233,7 +233,7 @@ pub struct State {
 }
 
 /// Where the backplot of the loaded program stands.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct PathInfo {
     /// Changes whenever the path is rebuilt (a new program, a re-decimation).
     pub id: u32,
@@ -241,4 +241,6 @@ pub struct PathInfo {
     pub points: u32,
     /// True once the whole program has been traced.
     pub done: bool,
+    /// Why the trace ended before the program's end (an alarm, a limit).
+    pub note: Option<String>,
 }

@@ -32,7 +32,8 @@ export class Graph {
     this.cap = 0;
     this.kinds = null; // kind per vertex (for recolouring)
     this.tools = null;
-    this.box = new THREE.Box3();
+    this.box = new THREE.Box3(); // every point but the start
+    this.cutBox = new THREE.Box3(); // feeds, arcs, threads
     this.frames = 0;
     this.frameTimes = [];
     this.firstFrameAt = null;
@@ -114,6 +115,7 @@ export class Graph {
     this.n = 0;
     this.points = 0;
     this.box.makeEmpty();
+    this.cutBox.makeEmpty();
     this.fitted = false;
     this.line.geometry.setDrawRange(0, 0);
   }
@@ -141,7 +143,11 @@ export class Graph {
         this.put(pos, col, pos[p], pos[p + 1], pos[p + 2], kind, tool);
       }
       this.put(pos, col, x, y, z, kind, tool);
-      this.box.expandByPoint(new THREE.Vector3(x, y, z));
+      if (kind !== 255) {
+        const v = new THREE.Vector3(x, y, z);
+        this.box.expandByPoint(v);
+        if (kind !== 0) this.cutBox.expandByPoint(v);
+      }
       lastKind = kind;
       lastTool = tool;
     }
@@ -152,7 +158,10 @@ export class Graph {
     g.attributes.position.needsUpdate = true;
     g.attributes.color.needsUpdate = true;
     g.setDrawRange(0, this.n);
-    if (!this.fitted && this.n > 1) this.view(this.lastView || (this.lathe ? 'front' : 'iso'));
+    // Frame the first points at once and the whole path when it is complete.
+    const done = dv.getUint32(12, true) === 1;
+    if ((!this.fitted || done) && this.n > 1) this.view(this.lastView || (this.lathe ? 'front' : 'iso'));
+    this.done = done;
     this.render();
   }
 
@@ -182,7 +191,7 @@ export class Graph {
     const w = s.position.work;
     this.tool.position.set(w.X || 0, w.Y || 0, w.Z || 0);
     if (this.info) {
-      this.info.textContent = `${this.points} PTS${s.path.done ? '' : ' …'}  X${(w.X || 0).toFixed(3)} ${this.lathe ? '' : `Y${(w.Y || 0).toFixed(3)} `}Z${(w.Z || 0).toFixed(3)}`;
+      this.info.textContent = `${this.points} PTS${s.path.done ? '' : ' …'}${s.path.note ? ` (${s.path.note})` : ''}  X${(w.X || 0).toFixed(3)} ${this.lathe ? '' : `Y${(w.Y || 0).toFixed(3)} `}Z${(w.Z || 0).toFixed(3)}`;
     }
     if (shown) this.render();
   }
@@ -211,7 +220,11 @@ export class Graph {
   /** top | front | side | iso | fit */
   view(name) {
     if (name !== 'fit') this.lastView = name;
-    const box = this.box.isEmpty() ? new THREE.Box3(new THREE.Vector3(-50, -50, -50), new THREE.Vector3(50, 50, 50)) : this.box;
+    // Frame the cutting moves (rapids to and from the reference point
+    // would shrink the part to a dot); all moves when nothing cuts.
+    const box = !this.cutBox.isEmpty() ? this.cutBox
+      : !this.box.isEmpty() ? this.box
+        : new THREE.Box3(new THREE.Vector3(-50, -50, -50), new THREE.Vector3(50, 50, 50));
     const centre = box.getCenter(new THREE.Vector3());
     const size = box.getSize(new THREE.Vector3());
     const radius = Math.max(size.length() / 2, 1);
