@@ -39,11 +39,13 @@ mod offset_data;
 mod polar_interp;
 mod probe;
 mod reset;
+mod runtime_hooks;
 mod skip;
 mod sysvars;
 mod tool_offset;
 mod transforms;
 
+pub use runtime_hooks::{BlockStep, InterpSnapshot};
 pub use sysvars::MacroSwitches;
 
 /// Operator-panel switches and run options.
