@@ -6,6 +6,7 @@ mod dynamics;
 mod offsets;
 mod plot;
 mod report;
+mod serve;
 mod settings;
 mod toolpath;
 
@@ -85,6 +86,8 @@ enum Cmd {
     },
     /// List the built-in machine profiles.
     Machines,
+    /// Serve the operator screen and its API (docs/hmi.md).
+    Serve(serve::Args),
 }
 
 fn main() -> ExitCode {
@@ -120,6 +123,7 @@ fn main() -> ExitCode {
             run(&common, toolpath, report, plot, sample, log, false)
         }
         Cmd::Check { common } => run(&common, None, None, None, None, None, true),
+        Cmd::Serve(a) => serve::run(a),
     }
 }
 

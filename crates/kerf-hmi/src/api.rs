@@ -39,7 +39,8 @@ pub fn router(shared: Arc<Shared>) -> Router {
         .route("/api/program", get(program_lines).post(load_program))
         .route("/api/command", axum::routing::post(command))
         .route("/api/offsets", get(offsets).put(put_offsets))
-        .route("/api/variables", get(variables))
+        .route("/api/variables", get(variables).put(put_variables))
+        .route("/api/parameters", get(parameters).put(put_parameters))
         .route("/api/alarms", get(alarms))
         .route("/api/toolpath", get(toolpath))
         .route("/api/stream", get(crate::stream::upgrade))
@@ -183,38 +184,72 @@ async fn command(AxState(s): S, Query(q): Query<TokenQuery>, headers: HeaderMap,
     let cmd = crate::command::parse(&bytes)?;
     let s2 = s.clone();
     tokio::task::spawn_blocking(move || {
-        let r = s2.with(|c| c.command(&cmd));
+        let r = s2.with(move |c| c.command(&cmd));
         s2.publish();
         r
     })
     .await
-    .map_err(|e| ApiError::internal(e.to_string()))??;
+    .map_err(|e| ApiError::internal(e.to_string()))???;
     let f = s.frames.borrow().clone();
     Ok(Json(json!({"ok": true, "state": f.state})).into_response())
 }
 
-async fn offsets(AxState(s): S) -> Json<serde_json::Value> {
-    Json(s.with(|c| c.offsets()))
+async fn offsets(AxState(s): S) -> Answer {
+    read(s, |c| c.offsets()).await
+}
+
+/// A GET answered by the controller.
+async fn read(s: Arc<Shared>, f: fn(&dyn crate::Control) -> serde_json::Value) -> Answer {
+    let v = tokio::task::spawn_blocking(move || s.with(move |c| f(c)))
+        .await
+        .map_err(|e| ApiError::internal(e.to_string()))??;
+    Ok(Json(v).into_response())
 }
 
 async fn put_offsets(AxState(s): S, Query(q): Query<TokenQuery>, headers: HeaderMap, body: Body) -> Answer {
+    put_object(s, q, headers, body, |c, v| c.put_offsets(v), |c| c.offsets()).await
+}
+
+async fn variables(AxState(s): S) -> Answer {
+    read(s, |c| c.variables()).await
+}
+
+async fn parameters(AxState(s): S) -> Answer {
+    read(s, |c| c.parameters()).await
+}
+
+/// A PUT of a JSON object: checked, written by `write`, answered by `read`.
+async fn put_object(
+    s: Arc<Shared>,
+    q: TokenQuery,
+    headers: HeaderMap,
+    body: Body,
+    write: fn(&mut dyn crate::Control, &serde_json::Value) -> Result<(), crate::Refusal>,
+    read: fn(&dyn crate::Control) -> serde_json::Value,
+) -> Answer {
     authorise(&s, &headers, q.token.as_deref())?;
     let bytes = read_body(body, MAX_JSON).await?;
     let v: serde_json::Value = crate::error::parse_json(&bytes)?;
     if !v.is_object() {
-        return Err(ApiError::bad_json("offsets: the body must be a JSON object of tables"));
+        return Err(ApiError::bad_json("the body must be a JSON object"));
     }
     let s2 = s.clone();
     let now = tokio::task::spawn_blocking(move || {
-        s2.with(|c| c.put_offsets(&v).map(|_| c.offsets()))
+        let r = s2.with(move |c| write(c, &v).map(|_| read(c)));
+        s2.publish();
+        r
     })
     .await
-    .map_err(|e| ApiError::internal(e.to_string()))??;
+    .map_err(|e| ApiError::internal(e.to_string()))???;
     Ok(Json(now).into_response())
 }
 
-async fn variables(AxState(s): S) -> Json<serde_json::Value> {
-    Json(s.with(|c| c.variables()))
+async fn put_variables(AxState(s): S, Query(q): Query<TokenQuery>, headers: HeaderMap, body: Body) -> Answer {
+    put_object(s, q, headers, body, |c, v| c.put_variables(v), |c| c.variables()).await
+}
+
+async fn put_parameters(AxState(s): S, Query(q): Query<TokenQuery>, headers: HeaderMap, body: Body) -> Answer {
+    put_object(s, q, headers, body, |c, v| c.put_parameters(v), |c| c.parameters()).await
 }
 
 #[derive(Deserialize)]
@@ -225,7 +260,14 @@ struct AlarmsQuery {
 async fn alarms(AxState(s): S, q: Result<Query<AlarmsQuery>, axum::extract::rejection::QueryRejection>) -> Answer {
     let Query(q) = q.map_err(|e| ApiError::bad_request(e.body_text()))?;
     let since = q.since.unwrap_or(0);
-    let all: Vec<_> = s.with(|c| c.alarms()).into_iter().filter(|a| a.seq > since).collect();
+    let s2 = s.clone();
+    let all = tokio::task::spawn_blocking(move || s2.with(|c| c.alarms()))
+        .await
+        .map_err(|e| ApiError::internal(e.to_string()))??;
+    let mut all: Vec<_> = all.into_iter().filter(|a| a.seq > since).collect();
+    for a in &mut all {
+        s.fill_block(a);
+    }
     Ok(Json(json!({"alarms": all})).into_response())
 }
 

@@ -24,10 +24,31 @@ pub enum Command {
     Mode(Mode),
     /// Run one MDI entry (one or more blocks separated by newlines).
     Mdi(String),
-    /// Program restart from a 1-based line of the main program.
-    Restart(u32),
+    /// Program restart at a 1-based line of the main program, or at the
+    /// block with a sequence number (N).
+    Restart(RestartAt),
     /// Switches: each field that is `Some` is set.
     Switch(SwitchChange),
+    /// Jog an axis by a distance, mm (JOG mode).
+    Jog {
+        /// Axis letter.
+        axis: String,
+        /// Signed distance, mm.
+        distance: f64,
+    },
+    /// Manual pulse generator: `pulses` × `increment` mm (JOG mode).
+    Handle {
+        /// Axis letter.
+        axis: String,
+        /// Signed pulse count.
+        pulses: i64,
+        /// 0.001, 0.01 or 0.1 mm per pulse.
+        increment: f64,
+    },
+    /// Reference return of one axis or all (REF mode).
+    RefReturn(Option<String>),
+    /// ORIGIN: the relative position counters set to zero here.
+    Origin,
     /// Overrides: each field that is `Some` is set, percent.
     Override {
         /// Feed override, 0-200 %.
@@ -35,6 +56,15 @@ pub enum Command {
         /// Rapid override, 0-100 %.
         rapid: Option<f64>,
     },
+}
+
+/// Where a restart starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RestartAt {
+    /// A 1-based line of the main program.
+    Line(u32),
+    /// The block with this sequence number.
+    Sequence(u32),
 }
 
 /// The switches one `switch` command changes.
@@ -64,8 +94,22 @@ enum Raw {
         block: String,
     },
     Restart {
-        line: u32,
+        line: Option<u32>,
+        sequence: Option<u32>,
     },
+    Jog {
+        axis: String,
+        distance: f64,
+    },
+    Handle {
+        axis: String,
+        pulses: i64,
+        increment: f64,
+    },
+    RefReturn {
+        axis: Option<String>,
+    },
+    Origin {},
     Switch {
         single_block: Option<bool>,
         optional_stop: Option<bool>,
@@ -96,12 +140,34 @@ pub fn parse(body: &[u8]) -> Result<Command, ApiError> {
             }
             Command::Mdi(block)
         }
-        Raw::Restart { line } => {
-            if line == 0 {
-                return bad("restart: line is 1-based".into());
+        Raw::Restart { line, sequence } => match (line, sequence) {
+            (Some(0), _) => return bad("restart: line is 1-based".into()),
+            (Some(l), None) => Command::Restart(RestartAt::Line(l)),
+            (None, Some(n)) => Command::Restart(RestartAt::Sequence(n)),
+            _ => return bad("restart: give line or sequence (one of them)".into()),
+        },
+        Raw::Jog { axis, distance } => {
+            if !distance.is_finite() || distance.abs() > 10_000.0 {
+                return bad(format!("jog: distance {distance} mm is not within ±10000"));
             }
-            Command::Restart(line)
+            Command::Jog {
+                axis: axis_name(&axis)?,
+                distance,
+            }
         }
+        Raw::Handle {
+            axis,
+            pulses,
+            increment,
+        } => Command::Handle {
+            axis: axis_name(&axis)?,
+            pulses,
+            increment,
+        },
+        Raw::RefReturn { axis } => {
+            Command::RefReturn(axis.as_deref().map(axis_name).transpose()?)
+        }
+        Raw::Origin {} => Command::Origin,
         Raw::Switch {
             single_block,
             optional_stop,
@@ -139,6 +205,16 @@ pub fn parse(body: &[u8]) -> Result<Command, ApiError> {
     })
 }
 
+/// An axis letter, upper case.
+fn axis_name(a: &str) -> Result<String, ApiError> {
+    let u = a.trim().to_ascii_uppercase();
+    if matches!(u.as_str(), "X" | "Y" | "Z" | "A" | "B" | "C") {
+        Ok(u)
+    } else {
+        Err(ApiError::bad_request(format!("axis '{a}': one of X Y Z A B C")))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -161,7 +237,23 @@ mod tests {
             ok(r#"{"cmd":"mdi","block":"G00 X10."}"#),
             Command::Mdi("G00 X10.".into())
         );
-        assert_eq!(ok(r#"{"cmd":"restart","line":12}"#), Command::Restart(12));
+        assert_eq!(
+            ok(r#"{"cmd":"restart","line":12}"#),
+            Command::Restart(RestartAt::Line(12))
+        );
+        assert_eq!(
+            ok(r#"{"cmd":"restart","sequence":40}"#),
+            Command::Restart(RestartAt::Sequence(40))
+        );
+        assert_eq!(
+            ok(r#"{"cmd":"jog","axis":"x","distance":-1.5}"#),
+            Command::Jog {
+                axis: "X".into(),
+                distance: -1.5
+            }
+        );
+        assert_eq!(ok(r#"{"cmd":"ref_return"}"#), Command::RefReturn(None));
+        assert_eq!(ok(r#"{"cmd":"origin"}"#), Command::Origin);
         assert_eq!(
             ok(r#"{"cmd":"switch","block_skip":[1,2]}"#),
             Command::Switch(SwitchChange {
@@ -187,6 +279,8 @@ mod tests {
         assert!(err(r#"{"cmd":"restart","line":0}"#).contains("1-based"));
         assert!(err(r#"{"cmd":"restart","line":-3}"#).contains("expected u32"));
         assert!(err(r#"{"cmd":"switch"}"#).contains("at least one"));
+        assert!(err(r#"{"cmd":"restart"}"#).contains("one of them"));
+        assert!(err(r#"{"cmd":"jog","axis":"Q","distance":1}"#).contains("axis 'Q'"));
         assert!(err(r#"{"cmd":"switch","block_skip":[0]}"#).contains("level 0"));
         assert!(err(r#"{"cmd":"override","feed":250}"#).contains("0-200"));
         assert!(err(r#"{"cmd":"override","rapid":101}"#).contains("0-100"));

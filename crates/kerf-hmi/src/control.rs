@@ -24,8 +24,10 @@ impl From<Refusal> for crate::error::ApiError {
     }
 }
 
-/// A controller the server can operate.
-pub trait Control: Send + 'static {
+/// A controller the server can operate. It lives on one thread of its
+/// own (the runtime's interpreter holds readers that are not `Send`); the
+/// server sends it work (`Shared::with`).
+pub trait Control: 'static {
     /// Loads a program as the main program (refused while one runs).
     fn load(&mut self, name: &str, text: &str) -> Result<(), Refusal>;
     /// Carries out an operator command, or refuses it leaving the state as
@@ -41,6 +43,12 @@ pub trait Control: Send + 'static {
     fn put_offsets(&mut self, offsets: &serde_json::Value) -> Result<(), Refusal>;
     /// Macro variables that hold a value: `{"#100": 1.5, …}`.
     fn variables(&self) -> serde_json::Value;
+    /// Writes macro variables given as `{"#100": 1.5, "#101": null}`.
+    fn put_variables(&mut self, vars: &serde_json::Value) -> Result<(), Refusal>;
+    /// The control parameters: `{"PI 144": 0.0, …}`.
+    fn parameters(&self) -> serde_json::Value;
+    /// Writes parameters given as `{"NAME": value}`.
+    fn put_parameters(&mut self, params: &serde_json::Value) -> Result<(), Refusal>;
     /// The alarm and message history, oldest first.
     fn alarms(&self) -> Vec<AlarmInfo>;
 }

@@ -11,7 +11,9 @@ pub mod assets;
 pub mod command;
 pub mod control;
 pub mod error;
+pub mod offsets_json;
 pub mod path;
+pub mod runtime_control;
 pub mod server;
 pub mod state;
 pub mod stream;
@@ -23,6 +25,7 @@ use kerf_interp::dialect::DialectId;
 use kerf_interp::Profile;
 
 pub use control::{Control, Refusal};
+pub use runtime_control::RuntimeControl;
 pub use server::Shared;
 
 /// Default address: loopback only.

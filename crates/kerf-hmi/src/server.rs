@@ -9,7 +9,7 @@ use std::time::{Duration, Instant};
 use kerf_interp::Profile;
 use tokio::sync::watch;
 
-use crate::control::{Control, Refusal};
+use crate::control::Control;
 use crate::path::{PathStore, Trace};
 use crate::state::State;
 
@@ -66,9 +66,14 @@ pub struct Frame {
     pub json: String,
 }
 
+type Job = Box<dyn FnOnce(&mut dyn Control) + Send>;
+
+/// Makes the controller on its own thread.
+pub type MakeControl = Box<dyn FnOnce() -> Result<Box<dyn Control>, String> + Send>;
+
 /// What every handler shares.
 pub struct Shared {
-    control: Mutex<Box<dyn Control>>,
+    jobs: Mutex<std::sync::mpsc::Sender<Job>>,
     /// The machine profile (for the backplot and `/api/machine`).
     pub profile: Profile,
     /// Library folders.
@@ -91,19 +96,42 @@ fn lock<T: ?Sized>(m: &Mutex<T>) -> MutexGuard<'_, T> {
 }
 
 impl Shared {
-    /// Wraps a runtime.
+    /// Starts the controller made by `make` on a thread of its own.
     pub fn new(
-        control: Box<dyn Control>,
+        make: MakeControl,
         profile: Profile,
         libs: Vec<PathBuf>,
         token: Option<String>,
         rate: f64,
-    ) -> Arc<Shared> {
-        let state = control.state();
+    ) -> Result<Arc<Shared>, String> {
+        let (jobs, rx) = std::sync::mpsc::channel::<Job>();
+        let (ready_tx, ready_rx) = std::sync::mpsc::channel();
+        std::thread::Builder::new()
+            .name("kerf-control".into())
+            .spawn(move || {
+                let mut c = match make() {
+                    Ok(c) => c,
+                    Err(e) => {
+                        let _ = ready_tx.send(Err(e));
+                        return;
+                    }
+                };
+                let _ = ready_tx.send(Ok(c.state()));
+                // A job that panics loses its answer (the caller gets an
+                // error); the controller goes on with the next one.
+                while let Ok(job) = rx.recv() {
+                    let c = &mut *c;
+                    let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(c)));
+                }
+            })
+            .map_err(|e| format!("controller thread: {e}"))?;
+        let state = ready_rx
+            .recv()
+            .map_err(|_| "the controller did not start".to_string())??;
         let frame = make_frame(state, &PathStore::default());
         let (tx, _) = watch::channel(Arc::new(frame));
-        Arc::new(Shared {
-            control: Mutex::new(control),
+        Ok(Arc::new(Shared {
+            jobs: Mutex::new(jobs),
             profile,
             libs,
             program: Mutex::new(None),
@@ -112,20 +140,31 @@ impl Shared {
             frames: tx,
             token,
             rate,
-        })
+        }))
     }
 
-    /// Runs `f` on the runtime under the lock.
-    pub fn with<R>(&self, f: impl FnOnce(&mut dyn Control) -> R) -> R {
-        let mut c = lock(&self.control);
-        f(c.as_mut())
+    /// Runs `f` on the controller's thread and waits for its answer.
+    pub fn with<R: Send + 'static>(
+        &self,
+        f: impl FnOnce(&mut dyn Control) -> R + Send + 'static,
+    ) -> Result<R, crate::error::ApiError> {
+        let (tx, rx) = std::sync::mpsc::sync_channel(1);
+        let job: Job = Box::new(move |c| {
+            let _ = tx.send(f(c));
+        });
+        lock(&self.jobs)
+            .send(job)
+            .map_err(|_| crate::error::ApiError::internal("the controller has stopped"))?;
+        rx.recv()
+            .map_err(|_| crate::error::ApiError::internal("the controller failed on this request"))
     }
 
     /// Loads a program: into the runtime, then the PROG text and the
     /// backplot.
-    pub fn load(&self, name: &str, text: String) -> Result<Arc<Program>, Refusal> {
+    pub fn load(&self, name: &str, text: String) -> Result<Arc<Program>, crate::error::ApiError> {
         let text: Arc<str> = text.into();
-        self.with(|c| c.load(name, &text))?;
+        let (n, t) = (name.to_string(), text.clone());
+        self.with(move |c| c.load(&n, &t))??;
         let prog = Arc::new(Program::new(name, text.clone()));
         *lock(&self.program) = Some(prog.clone());
         let t = crate::path::start(
@@ -145,9 +184,29 @@ impl Shared {
         lock(&self.program).clone()
     }
 
+    /// Fills an alarm's block text from the loaded program when it came
+    /// from the main program and the runtime left it empty.
+    pub fn fill_block(&self, a: &mut crate::state::AlarmInfo) {
+        if !a.block.is_empty() || a.line == 0 {
+            return;
+        }
+        if let Some(p) = self.program() {
+            if a.file == p.name || a.file.is_empty() {
+                if let Some(l) = p.line(a.line as usize) {
+                    a.block = l.chars().take(512).collect();
+                }
+            }
+        }
+    }
+
     /// Publishes the state now (after a command, so clients see it at once).
     pub fn publish(&self) {
-        let state = self.with(|c| c.state());
+        let Ok(mut state) = self.with(|c| c.state()) else {
+            return;
+        };
+        if let Some(a) = state.alarm.as_mut() {
+            self.fill_block(a);
+        }
         let path = lock(&self.path);
         let frame = make_frame(state, &path);
         drop(path);
@@ -163,7 +222,7 @@ impl Shared {
     /// One tick: advance machine time by `wall` seconds × rate, publish.
     pub fn tick(&self, wall: f64) {
         let dt = wall * self.rate;
-        self.with(|c| c.advance(dt));
+        let _ = self.with(move |c| c.advance(dt));
         self.publish();
     }
 }

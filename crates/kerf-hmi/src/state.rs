@@ -216,8 +216,6 @@ pub struct State {
     pub spindle: SpindleState,
     /// Tool in the spindle / turret station.
     pub tool: u32,
-    /// Active tool offset number (H on the mill, the T code's offset on a lathe).
-    pub offset: u32,
     /// Panel switches.
     pub switches: Switches,
     /// Overrides.
@@ -228,8 +226,11 @@ pub struct State {
     pub t: f64,
     /// Sequence number of the newest alarm-history entry (0: none).
     pub alarm_seq: u64,
-    /// The backplot of the loaded program: `{id, points, done}`.
+    /// The backplot of the loaded program: `{id, points, done, note}`.
     pub path: PathInfo,
+    /// The program restart prepared by a `restart` command (line, tool,
+    /// spindle, modal codes, feed, re-entry path), until cycle start runs it.
+    pub restart: Option<serde_json::Value>,
 }
 
 /// Where the backplot of the loaded program stands.

@@ -69,7 +69,6 @@ export class Screens {
     $('spindle-prog').textContent = fmt(s.spindle.programmed, 0);
     $('spindle-dir').textContent = s.spindle.direction.toUpperCase();
     $('tool').textContent = String(s.tool).padStart(2, '0');
-    $('tool-offset').textContent = String(s.offset).padStart(2, '0');
     $('run-time').textContent = this.clock(s.t);
     $('pos-block').textContent = s.program.block;
   }

@@ -74,7 +74,11 @@ impl Control for Double {
                     self.state.alarm = Some(a);
                 }
             }
-            Command::Restart(_) => {}
+            Command::Restart(_)
+            | Command::Jog { .. }
+            | Command::Handle { .. }
+            | Command::RefReturn(_)
+            | Command::Origin => {}
             Command::Switch(c) => {
                 if let Some(v) = c.single_block {
                     self.state.switches.single_block = v;
@@ -125,6 +129,15 @@ impl Control for Double {
     }
     fn variables(&self) -> serde_json::Value {
         serde_json::json!({})
+    }
+    fn put_variables(&mut self, _: &serde_json::Value) -> Result<(), Refusal> {
+        Err(Refusal::Invalid("no variables here".into()))
+    }
+    fn parameters(&self) -> serde_json::Value {
+        serde_json::json!({})
+    }
+    fn put_parameters(&mut self, _: &serde_json::Value) -> Result<(), Refusal> {
+        Err(Refusal::Invalid("no parameters here".into()))
     }
     fn alarms(&self) -> Vec<AlarmInfo> {
         self.history.clone()

@@ -28,9 +28,10 @@ impl Reply {
 }
 
 /// Starts a server with `control` on 127.0.0.1:0; returns its address.
-pub async fn start(control: Box<dyn kerf_hmi::Control>, token: Option<String>) -> SocketAddr {
+pub async fn start(control: Box<dyn kerf_hmi::Control + Send>, token: Option<String>) -> SocketAddr {
     let profile = kerf_interp::Profile::builtin("hx-mc").unwrap();
-    let shared = kerf_hmi::Shared::new(control, profile, vec![], token, 1.0);
+    let make: kerf_hmi::server::MakeControl = Box::new(move || Ok(control as Box<dyn kerf_hmi::Control>));
+    let shared = kerf_hmi::Shared::new(make, profile, vec![], token, 1.0).unwrap();
     let l = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
     let at = l.local_addr().unwrap();
     tokio::spawn(kerf_hmi::run(l, shared));
