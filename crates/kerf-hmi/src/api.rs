@@ -182,16 +182,17 @@ async fn command(AxState(s): S, Query(q): Query<TokenQuery>, headers: HeaderMap,
     authorise(&s, &headers, q.token.as_deref())?;
     let bytes = read_body(body, MAX_JSON).await?;
     let cmd = crate::command::parse(&bytes)?;
+    // One trip to the controller: the command, then the state after it.
     let s2 = s.clone();
     tokio::task::spawn_blocking(move || {
-        let r = s2.with(move |c| c.command(&cmd));
-        s2.publish();
-        r
+        let (r, state) = s2.with(move |c| (c.command(&cmd), c.state()))?;
+        s2.publish_state(state);
+        r.map_err(ApiError::from)
     })
     .await
-    .map_err(|e| ApiError::internal(e.to_string()))???;
-    let f = s.frames.borrow().clone();
-    Ok(Json(json!({"ok": true, "state": f.state})).into_response())
+    .map_err(|e| ApiError::internal(e.to_string()))??;
+    let state = s.frames.borrow().state.clone();
+    Ok(Json(json!({"ok": true, "state": state})).into_response())
 }
 
 async fn offsets(AxState(s): S) -> Answer {

@@ -201,9 +201,14 @@ impl Shared {
 
     /// Publishes the state now (after a command, so clients see it at once).
     pub fn publish(&self) {
-        let Ok(mut state) = self.with(|c| c.state()) else {
+        let Ok(state) = self.with(|c| c.state()) else {
             return;
         };
+        self.publish_state(state);
+    }
+
+    /// Publishes a state just read from the controller.
+    pub fn publish_state(&self, mut state: State) {
         if let Some(a) = state.alarm.as_mut() {
             self.fill_block(a);
         }

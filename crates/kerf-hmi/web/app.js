@@ -153,6 +153,18 @@ function wirePanel() {
     };
     keys.append(b);
   }
+  const axis = $('jog-axis');
+  for (const a of app.machine.axes) axis.append(new Option(a, a));
+  const jog = (sign) => {
+    const step = +$('jog-step').value;
+    // Handle increments are 0.001, 0.01, 0.1 mm a pulse; longer steps jog.
+    if (step <= 0.1) command({ cmd: 'handle', axis: axis.value, pulses: sign, increment: step });
+    else command({ cmd: 'jog', axis: axis.value, distance: sign * step });
+  };
+  $('jog-minus').onclick = () => jog(-1);
+  $('jog-plus').onclick = () => jog(1);
+  $('ref-all').onclick = () => command({ cmd: 'ref_return' });
+  $('origin').onclick = () => command({ cmd: 'origin' });
   $('feed-ovr').onchange = (e) => command({ cmd: 'override', feed: +e.target.value });
   for (const b of document.querySelectorAll('[data-rapid]')) b.onclick = () => command({ cmd: 'override', rapid: +b.dataset.rapid });
   // Function keys as on a keyboard: F1-F6 the pages.

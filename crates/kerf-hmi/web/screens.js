@@ -118,6 +118,10 @@ export class Screens {
     $('prog-edit').hidden = !edit;
     $('prog-list').hidden = edit;
     $('prog-modal').textContent = s.modal.join(' ');
+    const r = s.restart;
+    $('restart-plan').textContent = r
+      ? `RESTART AT LINE ${r.line}: T${r.tool} S${r.spindle_rpm} ${r.spindle_direction.toUpperCase()} F${r.feed ?? '-'}  RE-ENTRY: ${r.path.map((l) => `${l.kind.toUpperCase()} ${Object.entries(l.to).map(([k, v]) => `${k.toUpperCase()}${v.toFixed(3)}`).join(' ')}`).join(' → ')}`
+      : '';
     const key = `${s.program.name}|${s.path.id}`;
     if (key !== this.progKey) {
       this.progKey = key;
@@ -210,7 +214,8 @@ export class Screens {
 
   cell(table, key, field, value) {
     const id = `ofs-${table}-${key}${field ? `-${field}` : ''}`;
-    return `<td><input id="${id}" data-table="${table}" data-key="${key}" data-field="${field || ''}" value="${fmt(value ?? 0)}"></td>`;
+    const digits = field === 'tip' ? 0 : 3;
+    return `<td><input id="${id}" data-table="${table}" data-key="${key}" data-field="${field || ''}" value="${fmt(value ?? 0, digits)}"></td>`;
   }
 
   drawTools() {
@@ -266,7 +271,7 @@ export class Screens {
         if (r.ok) {
           this.offsets = r.body;
           $('ofs-status').textContent = `${table.toUpperCase()} ${key}${field ? ` ${field}` : ''} = ${fmt(v)}: written`;
-          inp.value = fmt(v);
+          inp.value = fmt(v, field === 'tip' ? 0 : 3);
         } else {
           $('ofs-status').textContent = r.body.error ? r.body.error.message : `error ${r.status}`;
         }
