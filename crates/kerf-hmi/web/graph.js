@@ -44,10 +44,7 @@ export class Graph {
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(machine.style === 'hurco' ? 0xf4f6f9 : 0x05070a);
     this.camera = new THREE.OrthographicCamera(-100, 100, 100, -100, -1e6, 1e6);
-    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
-    this.controls.enableDamping = false;
-    this.controls.screenSpacePanning = true;
-    this.controls.addEventListener('change', () => this.render());
+    this.controls = null;
 
     this.material = new THREE.LineBasicMaterial({ vertexColors: true });
     this.line = null;
@@ -146,7 +143,14 @@ export class Graph {
       if (kind !== 255) {
         const v = new THREE.Vector3(x, y, z);
         this.box.expandByPoint(v);
-        if (kind !== 0) this.cutBox.expandByPoint(v);
+        if (kind !== 0) {
+          // A cut runs from the point before it.
+          this.cutBox.expandByPoint(v);
+          if (this.n > 1) {
+            const p = (this.n - 2) * 3;
+            this.cutBox.expandByPoint(new THREE.Vector3(pos[p], pos[p + 1], pos[p + 2]));
+          }
+        }
       }
       lastKind = kind;
       lastTool = tool;
@@ -231,17 +235,24 @@ export class Graph {
     const v = this.lastView || 'iso';
     // Direction from the target to the camera and the screen's up.
     const dirs = this.lathe
-      ? { front: [[0, 1, 0], [1, 0, 0]], top: [[1, 0, 0], [0, 0, -1]], side: [[0, 0, 1], [1, 0, 0]], iso: [[0.6, 0.6, 0.5], [1, 0, 0]] }
+      ? { front: [[0, 1, 0], [1, 0, 0]], top: [[1, 0, 0], [0, -1, 0]], side: [[0, 0, 1], [1, 0, 0]], iso: [[0.6, 0.6, 0.5], [1, 0, 0]] }
       : { top: [[0, 0, 1], [0, 1, 0]], front: [[0, -1, 0], [0, 0, 1]], side: [[1, 0, 0], [0, 0, 1]], iso: [[1, -1, 1], [0, 0, 1]] };
     const [d, up] = dirs[v] || dirs.iso;
     const dir = new THREE.Vector3(...d).normalize();
     this.camera.up.set(...up);
     this.camera.position.copy(centre).addScaledVector(dir, radius * 4);
-    this.controls.target.copy(centre);
     this.half = radius * 1.1;
     this.camera.zoom = 1;
     this.frameCamera();
     this.camera.lookAt(centre);
+    // OrbitControls takes the camera's up when it is made: a new one per
+    // view, so orbiting turns about that view's up axis.
+    if (this.controls) this.controls.dispose();
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.enableDamping = false;
+    this.controls.screenSpacePanning = true;
+    this.controls.target.copy(centre);
+    this.controls.addEventListener('change', () => this.render());
     this.controls.update();
     this.axes.scale.setScalar(Math.max(radius / 5, 1) / 20);
     this.tool.scale.setScalar(Math.max(radius / 40, 0.5));

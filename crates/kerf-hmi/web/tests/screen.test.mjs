@@ -261,12 +261,20 @@ test('click to repaint is under 50 ms at the 99th percentile', async () => {
 });
 
 test('every page of the other skins (PUMA, Hurco)', async () => {
+  const repo = join(here, '..', '..', '..', '..');
+  const programs = {
+    'puma-lathe': join(repo, 'examples/puma/g92_thread_m50.nc'),
+    'hurco-lathe': join(repo, 'examples/hurco/g78_straight_od.nc'),
+  };
   for (const m of ['puma-lathe', 'hurco-lathe']) {
-    const s = await serve(['--machine', m]);
+    const s = await serve([programs[m], '--machine', m, '--rate', '5']);
     const p2 = await ctx.newPage();
     await p2.goto(s.url);
     await p2.waitForFunction(() => window.kerf && window.kerf.state);
     assert.equal(await p2.evaluate(() => document.body.className), m === 'hurco-lathe' ? 'hurco' : 'fanuc');
+    // Run it a little so the pages show a program under way.
+    await p2.click('#cycle-start');
+    await p2.waitForTimeout(1500);
     for (const pg of ['pos', 'prog', 'mdi', 'offset', 'alarm', 'graph']) {
       await p2.click(`[data-show=${pg}]`);
       await p2.waitForTimeout(150);
