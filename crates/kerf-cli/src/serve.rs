@@ -61,8 +61,8 @@ fn serve(a: Args) -> Result<(), String> {
         (true, Some(_)) => return Err("--token: at least 8 characters".into()),
         (true, None) => Some(kerf_hmi::new_token()?),
     };
-    let profile = crate::load_profile(&a.machine)?;
-    let dynamics = crate::dynamics::dynamics_of(&profile, 100.0, 100.0, false)
+    let profile = kerf_control::load_profile(&a.machine).map_err(|e| e.to_string())?;
+    let dynamics = kerf_control::dynamics::dynamics_of(&profile, 100.0, 100.0, false)
         .map_err(|e| format!("machine {}: {e}", a.machine))?;
     for d in &a.lib {
         if !d.is_dir() {

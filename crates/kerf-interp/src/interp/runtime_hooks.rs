@@ -138,7 +138,7 @@ impl Interp {
     /// Sets the machine position after the axes were moved by hand (jog,
     /// handle, reference return): the next block starts from there.
     pub fn set_machine_position(&mut self, pos: Pos) {
-        self.st.pos = pos;
+        self.place_machine(pos);
     }
 
     /// The work offset of G54+`idx` (machine coordinates of its zero).
