@@ -76,7 +76,10 @@ fn serve(a: Args) -> Result<(), String> {
                 return Err(format!("{}: not NC text", p.display()));
             }
             let name = p.file_name().map(|n| n.to_string_lossy().into_owned());
-            Some((name.unwrap_or_else(|| "program.nc".into()), String::from_utf8_lossy(&text).into_owned()))
+            Some((
+                name.unwrap_or_else(|| "program.nc".into()),
+                String::from_utf8_lossy(&text).into_owned(),
+            ))
         }
         None => None,
     };
@@ -94,10 +97,14 @@ fn serve(a: Args) -> Result<(), String> {
     });
     let shared = kerf_hmi::Shared::new(make, profile.clone(), a.lib, token.clone(), a.rate)?;
     if let Some((name, text)) = program {
-        shared.load(&name, text).map_err(|e| format!("{name}: {}", e.message))?;
+        shared
+            .load(&name, text)
+            .map_err(|e| format!("{name}: {}", e.message))?;
         shared
             .with(|c| {
-                let _ = c.command(&kerf_hmi::command::Command::Mode(kerf_hmi::state::Mode::MEM));
+                let _ = c.command(&kerf_hmi::command::Command::Mode(
+                    kerf_hmi::state::Mode::MEM,
+                ));
             })
             .map_err(|e| e.message)?;
     }

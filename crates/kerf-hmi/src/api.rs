@@ -75,7 +75,11 @@ fn asset_response(path: &str) -> Response {
 }
 
 /// Checks the token when the server has one (bound off loopback).
-pub fn authorise(shared: &Shared, headers: &HeaderMap, query_token: Option<&str>) -> Result<(), ApiError> {
+pub fn authorise(
+    shared: &Shared,
+    headers: &HeaderMap,
+    query_token: Option<&str>,
+) -> Result<(), ApiError> {
     let Some(want) = &shared.token else {
         return Ok(());
     };
@@ -140,25 +144,37 @@ struct LoadQuery {
     token: Option<String>,
 }
 
-async fn load_program(AxState(s): S, Query(q): Query<LoadQuery>, headers: HeaderMap, body: Body) -> Answer {
+async fn load_program(
+    AxState(s): S,
+    Query(q): Query<LoadQuery>,
+    headers: HeaderMap,
+    body: Body,
+) -> Answer {
     authorise(&s, &headers, q.token.as_deref())?;
     let bytes = read_body(body, MAX_PROGRAM).await?;
     if bytes.is_empty() {
         return Err(ApiError::bad_request("program: the body is empty"));
     }
     if bytes.contains(&0) {
-        return Err(ApiError::bad_request("program: the body is not NC text (it holds NUL bytes)"));
+        return Err(ApiError::bad_request(
+            "program: the body is not NC text (it holds NUL bytes)",
+        ));
     }
     let text = String::from_utf8_lossy(&bytes).into_owned();
     let name = q.name.unwrap_or_else(|| "program.nc".into());
     if name.len() > 255 || name.contains(['/', '\\', '\0']) {
-        return Err(ApiError::bad_request("program: name must be a file name of at most 255 bytes"));
+        return Err(ApiError::bad_request(
+            "program: name must be a file name of at most 255 bytes",
+        ));
     }
     let s2 = s.clone();
     let prog = tokio::task::spawn_blocking(move || s2.load(&name, text))
         .await
         .map_err(|e| ApiError::internal(e.to_string()))??;
-    Ok(Json(json!({"name": prog.name, "lines": prog.count(), "bytes": prog.text.len()})).into_response())
+    Ok(
+        Json(json!({"name": prog.name, "lines": prog.count(), "bytes": prog.text.len()}))
+            .into_response(),
+    )
 }
 
 #[derive(Deserialize)]
@@ -167,18 +183,31 @@ struct LinesQuery {
     count: Option<usize>,
 }
 
-async fn program_lines(AxState(s): S, q: Result<Query<LinesQuery>, axum::extract::rejection::QueryRejection>) -> Answer {
+async fn program_lines(
+    AxState(s): S,
+    q: Result<Query<LinesQuery>, axum::extract::rejection::QueryRejection>,
+) -> Answer {
     let Query(q) = q.map_err(|e| ApiError::bad_request(e.body_text()))?;
     let Some(p) = s.program() else {
         return Err(ApiError::not_found("no program is loaded"));
     };
     let from = q.from.unwrap_or(1).max(1);
     let count = q.count.unwrap_or(200).min(MAX_LINES);
-    let lines: Vec<&str> = (from..from.saturating_add(count)).map_while(|n| p.line(n)).collect();
-    Ok(Json(json!({"name": p.name, "total": p.count(), "from": from, "lines": lines})).into_response())
+    let lines: Vec<&str> = (from..from.saturating_add(count))
+        .map_while(|n| p.line(n))
+        .collect();
+    Ok(
+        Json(json!({"name": p.name, "total": p.count(), "from": from, "lines": lines}))
+            .into_response(),
+    )
 }
 
-async fn command(AxState(s): S, Query(q): Query<TokenQuery>, headers: HeaderMap, body: Body) -> Answer {
+async fn command(
+    AxState(s): S,
+    Query(q): Query<TokenQuery>,
+    headers: HeaderMap,
+    body: Body,
+) -> Answer {
     authorise(&s, &headers, q.token.as_deref())?;
     let bytes = read_body(body, MAX_JSON).await?;
     let cmd = crate::command::parse(&bytes)?;
@@ -207,8 +236,21 @@ async fn read(s: Arc<Shared>, f: fn(&dyn crate::Control) -> serde_json::Value) -
     Ok(Json(v).into_response())
 }
 
-async fn put_offsets(AxState(s): S, Query(q): Query<TokenQuery>, headers: HeaderMap, body: Body) -> Answer {
-    put_object(s, q, headers, body, |c, v| c.put_offsets(v), |c| c.offsets()).await
+async fn put_offsets(
+    AxState(s): S,
+    Query(q): Query<TokenQuery>,
+    headers: HeaderMap,
+    body: Body,
+) -> Answer {
+    put_object(
+        s,
+        q,
+        headers,
+        body,
+        |c, v| c.put_offsets(v),
+        |c| c.offsets(),
+    )
+    .await
 }
 
 async fn variables(AxState(s): S) -> Answer {
@@ -245,12 +287,38 @@ async fn put_object(
     Ok(Json(now).into_response())
 }
 
-async fn put_variables(AxState(s): S, Query(q): Query<TokenQuery>, headers: HeaderMap, body: Body) -> Answer {
-    put_object(s, q, headers, body, |c, v| c.put_variables(v), |c| c.variables()).await
+async fn put_variables(
+    AxState(s): S,
+    Query(q): Query<TokenQuery>,
+    headers: HeaderMap,
+    body: Body,
+) -> Answer {
+    put_object(
+        s,
+        q,
+        headers,
+        body,
+        |c, v| c.put_variables(v),
+        |c| c.variables(),
+    )
+    .await
 }
 
-async fn put_parameters(AxState(s): S, Query(q): Query<TokenQuery>, headers: HeaderMap, body: Body) -> Answer {
-    put_object(s, q, headers, body, |c, v| c.put_parameters(v), |c| c.parameters()).await
+async fn put_parameters(
+    AxState(s): S,
+    Query(q): Query<TokenQuery>,
+    headers: HeaderMap,
+    body: Body,
+) -> Answer {
+    put_object(
+        s,
+        q,
+        headers,
+        body,
+        |c, v| c.put_parameters(v),
+        |c| c.parameters(),
+    )
+    .await
 }
 
 #[derive(Deserialize)]
@@ -258,7 +326,10 @@ struct AlarmsQuery {
     since: Option<u64>,
 }
 
-async fn alarms(AxState(s): S, q: Result<Query<AlarmsQuery>, axum::extract::rejection::QueryRejection>) -> Answer {
+async fn alarms(
+    AxState(s): S,
+    q: Result<Query<AlarmsQuery>, axum::extract::rejection::QueryRejection>,
+) -> Answer {
     let Query(q) = q.map_err(|e| ApiError::bad_request(e.body_text()))?;
     let since = q.since.unwrap_or(0);
     let s2 = s.clone();
@@ -279,12 +350,22 @@ struct PathQuery {
 
 /// The backplot records from point `from`: a 16-byte header (id, first,
 /// count, done as u32 LE) then `count` records of 20 bytes.
-async fn toolpath(AxState(s): S, q: Result<Query<PathQuery>, axum::extract::rejection::QueryRejection>) -> Answer {
+async fn toolpath(
+    AxState(s): S,
+    q: Result<Query<PathQuery>, axum::extract::rejection::QueryRejection>,
+) -> Answer {
     let Query(q) = q.map_err(|e| ApiError::bad_request(e.body_text()))?;
     let from = q.from.unwrap_or(0);
-    let body = crate::stream::path_chunk(&s, from, MAX_TOOLPATH_POINTS).map(|(b, _)| b).unwrap_or_else(|| {
-        let p = s.path.lock().unwrap_or_else(|p| p.into_inner());
-        crate::stream::header(p.id, from as u32, 0, p.done)
-    });
-    Ok((StatusCode::OK, [(header::CONTENT_TYPE, "application/octet-stream")], body).into_response())
+    let body = crate::stream::path_chunk(&s, from, MAX_TOOLPATH_POINTS)
+        .map(|(b, _)| b)
+        .unwrap_or_else(|| {
+            let p = s.path.lock().unwrap_or_else(|p| p.into_inner());
+            crate::stream::header(p.id, from as u32, 0, p.done)
+        });
+    Ok((
+        StatusCode::OK,
+        [(header::CONTENT_TYPE, "application/octet-stream")],
+        body,
+    )
+        .into_response())
 }

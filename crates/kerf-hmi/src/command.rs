@@ -164,9 +164,7 @@ pub fn parse(body: &[u8]) -> Result<Command, ApiError> {
             pulses,
             increment,
         },
-        Raw::RefReturn { axis } => {
-            Command::RefReturn(axis.as_deref().map(axis_name).transpose()?)
-        }
+        Raw::RefReturn { axis } => Command::RefReturn(axis.as_deref().map(axis_name).transpose()?),
         Raw::Origin {} => Command::Origin,
         Raw::Switch {
             single_block,
@@ -186,7 +184,10 @@ pub fn parse(body: &[u8]) -> Result<Command, ApiError> {
                 block_skip,
             };
             if c == SwitchChange::default() {
-                return bad("switch: give at least one of single_block, optional_stop, dry_run, block_skip".into());
+                return bad(
+                    "switch: give at least one of single_block, optional_stop, dry_run, block_skip"
+                        .into(),
+                );
             }
             Command::Switch(c)
         }
@@ -211,7 +212,9 @@ fn axis_name(a: &str) -> Result<String, ApiError> {
     if matches!(u.as_str(), "X" | "Y" | "Z" | "A" | "B" | "C") {
         Ok(u)
     } else {
-        Err(ApiError::bad_request(format!("axis '{a}': one of X Y Z A B C")))
+        Err(ApiError::bad_request(format!(
+            "axis '{a}': one of X Y Z A B C"
+        )))
     }
 }
 
@@ -232,7 +235,10 @@ mod tests {
         assert_eq!(ok(r#"{"cmd":"cycle_start"}"#), Command::CycleStart);
         assert_eq!(ok(r#"{"cmd":"feed_hold"}"#), Command::FeedHold);
         assert_eq!(ok(r#"{"cmd":"reset"}"#), Command::Reset);
-        assert_eq!(ok(r#"{"cmd":"mode","mode":"MDI"}"#), Command::Mode(Mode::MDI));
+        assert_eq!(
+            ok(r#"{"cmd":"mode","mode":"MDI"}"#),
+            Command::Mode(Mode::MDI)
+        );
         assert_eq!(
             ok(r#"{"cmd":"mdi","block":"G00 X10."}"#),
             Command::Mdi("G00 X10.".into())

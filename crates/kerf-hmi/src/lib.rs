@@ -63,10 +63,9 @@ pub fn new_token() -> Result<String, String> {
     Ok(b.iter().map(|x| format!("{x:02x}")).collect())
 }
 
-/// Serves `shared` on `listener` until the process ends: the clock and
-/// the routes.
+/// Serves `shared` on `listener` until the process ends (the clock runs
+/// on the controller's thread from [`Shared::new`]).
 pub async fn run(listener: tokio::net::TcpListener, shared: Arc<Shared>) -> Result<(), String> {
-    tokio::spawn(server::run_clock(shared.clone()));
     axum::serve(listener, api::router(shared))
         .await
         .map_err(|e| format!("server: {e}"))
@@ -74,7 +73,11 @@ pub async fn run(listener: tokio::net::TcpListener, shared: Arc<Shared>) -> Resu
 
 /// Binds `addr` and serves `shared` on a new tokio runtime; `ready` is
 /// called with the bound address before the first request is taken.
-pub fn serve(addr: SocketAddr, shared: Arc<Shared>, ready: impl FnOnce(SocketAddr)) -> Result<(), String> {
+pub fn serve(
+    addr: SocketAddr,
+    shared: Arc<Shared>,
+    ready: impl FnOnce(SocketAddr),
+) -> Result<(), String> {
     let rt = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)
         .enable_all()

@@ -38,7 +38,15 @@ pub fn read(rt: &Runtime, lathe: bool) -> Value {
         let mut tools = Map::new();
         for n in 1..=o.count() {
             let e = o.lathe(n);
-            let vals = [e.x * xs, e.z, e.r, e.tip as f64, e.wear_x * xs, e.wear_z, e.wear_r];
+            let vals = [
+                e.x * xs,
+                e.z,
+                e.r,
+                e.tip as f64,
+                e.wear_x * xs,
+                e.wear_z,
+                e.wear_r,
+            ];
             if vals.iter().any(|v| *v != 0.0) {
                 let m: Map<String, Value> = LATHE_FIELDS
                     .iter()
@@ -105,10 +113,16 @@ pub fn writes(
             for (a, x) in t {
                 let a = a.to_ascii_lowercase();
                 if !axes.iter().any(|(key, _)| *key == a) {
-                    return Err(format!("offsets: {k} names axis '{a}' the machine does not have"));
+                    return Err(format!(
+                        "offsets: {k} names axis '{a}' the machine does not have"
+                    ));
                 }
                 let value = number(x, &format!("{k}.{a}"))?;
-                out.push(OffsetWrite::Work { index, axis: a, value });
+                out.push(OffsetWrite::Work {
+                    index,
+                    axis: a,
+                    value,
+                });
             }
             continue;
         }
@@ -147,7 +161,9 @@ fn lathe_write(n: usize, t: &Map<String, Value>, diameter: bool) -> Result<Offse
     let mut f: [Option<f64>; 7] = [None; 7];
     for (k, v) in t {
         let Some(i) = LATHE_FIELDS.iter().position(|x| *x == k.as_str()) else {
-            return Err(format!("offsets: tool.{n}.{k}: unknown field (x, z, r, tip, wear_x, wear_z, wear_r)"));
+            return Err(format!(
+                "offsets: tool.{n}.{k}: unknown field (x, z, r, tip, wear_x, wear_z, wear_r)"
+            ));
         };
         f[i] = Some(number(v, &format!("tool.{n}.{k}"))?);
     }

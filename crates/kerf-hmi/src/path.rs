@@ -141,7 +141,10 @@ fn run(it: &mut Interp, store: &Mutex<PathStore>, stop: &AtomicBool) {
             Step::Event(e) => b.event(&e),
             Step::End => break,
             Step::Alarm(a) => {
-                note = Some(format!("alarm {} at line {}: {}", a.code, a.src.line, a.message));
+                note = Some(format!(
+                    "alarm {} at line {}: {}",
+                    a.code, a.src.line, a.message
+                ));
                 break;
             }
         }
@@ -309,8 +312,8 @@ fn arc_points(
     let e = (to[a], to[b]);
     let cc = (c[a], c[b]);
     let r = (s.0 - cc.0).hypot(s.1 - cc.1);
-    let sweep = kerf_canon::geom::sweep(s, e, cc, ccw)
-        + std::f64::consts::TAU * turns.min(1000) as f64;
+    let sweep =
+        kerf_canon::geom::sweep(s, e, cc, ccw) + std::f64::consts::TAU * turns.min(1000) as f64;
     if !(r > 1e-9) || !sweep.is_finite() {
         return Vec::new();
     }
@@ -404,7 +407,13 @@ mod tests {
     fn decimation_keeps_kind_changes_and_run_ends() {
         let mut b = Builder::new([0.0; 6]);
         for i in 1..=100 {
-            b.push(&[i as f64 * 0.01, 0.0, 0.0, 0.0, 0.0, 0.0], 1, kind::FEED, 1, false);
+            b.push(
+                &[i as f64 * 0.01, 0.0, 0.0, 0.0, 0.0, 0.0],
+                1,
+                kind::FEED,
+                1,
+                false,
+            );
         }
         b.push(&[1.0, 5.0, 0.0, 0.0, 0.0, 0.0], 2, kind::RAPID, 1, false);
         let all = b.fresh.clone();

@@ -90,7 +90,13 @@ impl RuntimeControl {
     fn refusal(&self, op: Op, before: (rt::Mode, rt::Execution), r: rt::Refusal) -> Refusal {
         let data_op = matches!(
             op,
-            Op::WriteOffset | Op::WriteVariable | Op::WriteParameter | Op::Jog | Op::Handle | Op::Restart | Op::Mdi
+            Op::WriteOffset
+                | Op::WriteVariable
+                | Op::WriteParameter
+                | Op::Jog
+                | Op::Handle
+                | Op::Restart
+                | Op::Mdi
         );
         match decide(before.0, before.1, op) {
             Verdict::Allow(_) if data_op => Refusal::Invalid(r.to_string()),
@@ -326,18 +332,23 @@ impl Control for RuntimeControl {
 
     fn put_variables(&mut self, v: &Value) -> Result<(), Refusal> {
         let Some(o) = v.as_object() else {
-            return Err(Refusal::Invalid("variables: a JSON object {\"#100\": 1.5}".into()));
+            return Err(Refusal::Invalid(
+                "variables: a JSON object {\"#100\": 1.5}".into(),
+            ));
         };
         let mut writes = Vec::new();
         for (k, x) in o {
-            let n: usize = k
-                .trim_start_matches('#')
-                .parse()
-                .map_err(|_| Refusal::Invalid(format!("variables: '{k}' is not a variable number")))?;
+            let n: usize = k.trim_start_matches('#').parse().map_err(|_| {
+                Refusal::Invalid(format!("variables: '{k}' is not a variable number"))
+            })?;
             let value = match x {
                 Value::Null => None,
                 Value::Number(f) => f.as_f64(),
-                _ => return Err(Refusal::Invalid(format!("variables: {k} must be a number or null"))),
+                _ => {
+                    return Err(Refusal::Invalid(format!(
+                        "variables: {k} must be a number or null"
+                    )))
+                }
             };
             writes.push(VarWrite { n, value });
         }
@@ -357,12 +368,16 @@ impl Control for RuntimeControl {
 
     fn put_parameters(&mut self, v: &Value) -> Result<(), Refusal> {
         let Some(o) = v.as_object() else {
-            return Err(Refusal::Invalid("parameters: a JSON object {\"NAME\": value}".into()));
+            return Err(Refusal::Invalid(
+                "parameters: a JSON object {\"NAME\": value}".into(),
+            ));
         };
         let mut writes = Vec::new();
         for (k, x) in o {
             let Some(f) = x.as_f64() else {
-                return Err(Refusal::Invalid(format!("parameters: {k} must be a number")));
+                return Err(Refusal::Invalid(format!(
+                    "parameters: {k} must be a number"
+                )));
             };
             writes.push((k.clone(), f));
         }

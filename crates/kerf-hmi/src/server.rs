@@ -3,7 +3,7 @@
 //! machine time and publishes the state once per tick for every client.
 
 use std::path::PathBuf;
-use std::sync::{Arc, Mutex, MutexGuard};
+use std::sync::{Arc, Mutex, MutexGuard, Weak};
 use std::time::{Duration, Instant};
 
 use kerf_interp::Profile;
@@ -62,8 +62,9 @@ impl Program {
 pub struct Frame {
     /// The state.
     pub state: State,
-    /// `state` as JSON text with `"type":"state"`.
-    pub json: String,
+    /// `state` as JSON text with `"type":"state"`, shared by every client
+    /// (cloning it copies no bytes).
+    pub json: axum::extract::ws::Utf8Bytes,
 }
 
 type Job = Box<dyn FnOnce(&mut dyn Control) + Send>;
@@ -106,10 +107,11 @@ impl Shared {
     ) -> Result<Arc<Shared>, String> {
         let (jobs, rx) = std::sync::mpsc::channel::<Job>();
         let (ready_tx, ready_rx) = std::sync::mpsc::channel();
+        let (weak_tx, weak_rx) = std::sync::mpsc::channel::<Weak<Shared>>();
         std::thread::Builder::new()
             .name("kerf-control".into())
             .spawn(move || {
-                let mut c = match make() {
+                let c = match make() {
                     Ok(c) => c,
                     Err(e) => {
                         let _ = ready_tx.send(Err(e));
@@ -117,11 +119,8 @@ impl Shared {
                     }
                 };
                 let _ = ready_tx.send(Ok(c.state()));
-                // A job that panics loses its answer (the caller gets an
-                // error); the controller goes on with the next one.
-                while let Ok(job) = rx.recv() {
-                    let c = &mut *c;
-                    let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(c)));
+                if let Ok(weak) = weak_rx.recv() {
+                    control_loop(c, rx, weak, rate);
                 }
             })
             .map_err(|e| format!("controller thread: {e}"))?;
@@ -130,7 +129,7 @@ impl Shared {
             .map_err(|_| "the controller did not start".to_string())??;
         let frame = make_frame(state, &PathStore::default());
         let (tx, _) = watch::channel(Arc::new(frame));
-        Ok(Arc::new(Shared {
+        let shared = Arc::new(Shared {
             jobs: Mutex::new(jobs),
             profile,
             libs,
@@ -140,7 +139,9 @@ impl Shared {
             frames: tx,
             token,
             rate,
-        }))
+        });
+        let _ = weak_tx.send(Arc::downgrade(&shared));
+        Ok(shared)
     }
 
     /// Runs `f` on the controller's thread and waits for its answer.
@@ -223,13 +224,6 @@ impl Shared {
             true
         });
     }
-
-    /// One tick: advance machine time by `wall` seconds × rate, publish.
-    pub fn tick(&self, wall: f64) {
-        let dt = wall * self.rate;
-        let _ = self.with(move |c| c.advance(dt));
-        self.publish();
-    }
 }
 
 fn make_frame(mut state: State, path: &PathStore) -> Frame {
@@ -244,23 +238,51 @@ fn make_frame(mut state: State, path: &PathStore) -> Frame {
         o.insert("type".into(), "state".into());
     }
     Frame {
-        json: v.to_string(),
+        json: v.to_string().into(),
         state,
     }
 }
 
-/// The ticker: every [`TICK`], advance by the wall time that passed.
-pub async fn run_clock(shared: Arc<Shared>) {
-    let mut iv = tokio::time::interval(TICK);
-    iv.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+/// The controller's thread: jobs as they come and, every [`TICK`], the
+/// clock advanced by the wall time that passed × `rate` and the state
+/// published (one wake-up per tick, nothing else in between). Ends when
+/// the server is dropped.
+fn control_loop(
+    mut c: Box<dyn Control>,
+    rx: std::sync::mpsc::Receiver<Job>,
+    weak: Weak<Shared>,
+    rate: f64,
+) {
+    use std::sync::mpsc::RecvTimeoutError;
     let mut last = Instant::now();
+    let mut next = last + TICK;
     loop {
-        iv.tick().await;
-        let now = Instant::now();
-        // A stalled process (suspended, swapped) does not jump the machine.
-        let wall = now.duration_since(last).as_secs_f64().min(0.25);
-        last = now;
-        let s = shared.clone();
-        let _ = tokio::task::spawn_blocking(move || s.tick(wall)).await;
+        match rx.recv_timeout(next.saturating_duration_since(Instant::now())) {
+            // A job that panics loses its answer (the caller gets an
+            // error); the controller goes on.
+            Ok(job) => {
+                let c = &mut *c;
+                let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(c)));
+            }
+            Err(RecvTimeoutError::Timeout) => {
+                let now = Instant::now();
+                // A stalled process (suspended, starved) does not jump the machine.
+                let wall = now.duration_since(last).as_secs_f64().min(0.25);
+                last = now;
+                next += TICK;
+                if next < now {
+                    next = now + TICK;
+                }
+                let state = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                    c.advance(wall * rate);
+                    c.state()
+                }));
+                let Some(shared) = weak.upgrade() else { break };
+                if let Ok(state) = state {
+                    shared.publish_state(state);
+                }
+            }
+            Err(RecvTimeoutError::Disconnected) => break,
+        }
     }
 }

@@ -88,7 +88,7 @@ async fn client(mut sock: WebSocket, s: Arc<Shared>) {
             r = rx.changed() => {
                 if r.is_err() { break; }
                 let json = rx.borrow_and_update().json.clone();
-                if sock.send(Message::Text(json.into())).await.is_err() { break; }
+                if sock.send(Message::Text(json)).await.is_err() { break; }
             }
             m = sock.recv() => match m {
                 Some(Ok(Message::Close(_))) | Some(Err(_)) | None => break,
@@ -96,7 +96,7 @@ async fn client(mut sock: WebSocket, s: Arc<Shared>) {
             },
             _ = beat.tick() => {
                 let json = s.frames.borrow().json.clone();
-                if sock.send(Message::Text(json.into())).await.is_err() { break; }
+                if sock.send(Message::Text(json)).await.is_err() { break; }
             }
             _ = std::future::ready(()), if pending => {
                 if let Some((bytes, id)) = path_chunk(&s, have.1, CHUNK_POINTS) {

@@ -18,13 +18,29 @@ async fn the_page_and_its_scripts_are_served_from_the_binary() {
     for attr in ["src=\"", "href=\""] {
         for (i, _) in html.match_indices(attr) {
             let v = &html[i + attr.len()..];
-            assert!(v.starts_with('/'), "external reference: {}", &v[..v.find('"').unwrap()]);
+            assert!(
+                v.starts_with('/'),
+                "external reference: {}",
+                &v[..v.find('"').unwrap()]
+            );
         }
     }
-    for p in ["/assets/app.js", "/assets/screens.js", "/assets/graph.js", "/assets/vendor/three.module.js", "/assets/vendor/three.core.js", "/assets/vendor/OrbitControls.js"] {
+    for p in [
+        "/assets/app.js",
+        "/assets/screens.js",
+        "/assets/graph.js",
+        "/assets/vendor/three.module.js",
+        "/assets/vendor/three.core.js",
+        "/assets/vendor/OrbitControls.js",
+    ] {
         let r = get(at, p).await;
         assert_eq!(r.status, 200, "{p}");
-        assert!(r.header("content-type").unwrap().starts_with("text/javascript"), "{p}");
+        assert!(
+            r.header("content-type")
+                .unwrap()
+                .starts_with("text/javascript"),
+            "{p}"
+        );
         assert!(r.body.len() > 1000, "{p}");
     }
     let r = get(at, "/assets/nothing.js").await;
@@ -35,7 +51,14 @@ async fn the_page_and_its_scripts_are_served_from_the_binary() {
 #[tokio::test]
 async fn a_loaded_program_is_read_back_by_lines() {
     let at = start(Box::new(Double::new()), None).await;
-    let r = request(at, "POST", "/api/program?name=a.nc", &[], b"O1\r\nG00 X1.\nG01 X2. F100.\nM30\n").await;
+    let r = request(
+        at,
+        "POST",
+        "/api/program?name=a.nc",
+        &[],
+        b"O1\r\nG00 X1.\nG01 X2. F100.\nM30\n",
+    )
+    .await;
     assert_eq!(r.status, 200);
     assert_eq!(r.json()["lines"], 4);
     let r = get(at, "/api/program?from=2&count=2").await;
@@ -44,7 +67,10 @@ async fn a_loaded_program_is_read_back_by_lines() {
     assert_eq!(j["total"], 4);
     assert_eq!(j["lines"], serde_json::json!(["G00 X1.", "G01 X2. F100."]));
     // Past the end: no lines, no error.
-    assert_eq!(get(at, "/api/program?from=9").await.json()["lines"], serde_json::json!([]));
+    assert_eq!(
+        get(at, "/api/program?from=9").await.json()["lines"],
+        serde_json::json!([])
+    );
     let r = get(at, "/api/program?from=x").await;
     assert_eq!(r.status, 400);
     let r = request(at, "POST", "/api/program?name=../etc", &[], b"M30\n").await;
@@ -63,14 +89,22 @@ async fn commands_answer_with_the_new_state_or_a_reason() {
     assert_eq!(r.status, 409);
     assert_eq!(r.json()["error"]["code"], "refused");
     assert_eq!(r.json()["error"]["message"], "no program");
-    let r = post_json(at, "/api/command", r#"{"cmd":"override","feed":150,"rapid":25}"#).await;
+    let r = post_json(
+        at,
+        "/api/command",
+        r#"{"cmd":"override","feed":150,"rapid":25}"#,
+    )
+    .await;
     assert_eq!(r.status, 200);
     let j = r.json();
     assert_eq!(j["ok"], true);
     assert_eq!(j["state"]["overrides"]["feed"], 150.0);
     assert_eq!(j["state"]["overrides"]["rapid"], 25.0);
     // The same state is what GET /api/state returns now.
-    assert_eq!(get(at, "/api/state").await.json()["overrides"]["feed"], 150.0);
+    assert_eq!(
+        get(at, "/api/state").await.json()["overrides"]["feed"],
+        150.0
+    );
     let r = post_json(at, "/api/command", r#"{"cmd":"override","feed":"fast"}"#).await;
     assert_eq!(r.status, 400);
     assert_eq!(r.json()["error"]["code"], "bad_json");
@@ -79,7 +113,10 @@ async fn commands_answer_with_the_new_state_or_a_reason() {
 #[tokio::test]
 async fn bodies_over_the_limit_are_413_and_the_server_goes_on() {
     let at = start(Box::new(Double::new()), None).await;
-    let big = format!(r#"{{"cmd":"mdi","block":"{}"}}"#, "X".repeat(kerf_hmi::api::MAX_JSON));
+    let big = format!(
+        r#"{{"cmd":"mdi","block":"{}"}}"#,
+        "X".repeat(kerf_hmi::api::MAX_JSON)
+    );
     let r = post_json(at, "/api/command", &big).await;
     assert_eq!(r.status, 413);
     assert_eq!(r.json()["error"]["code"], "too_large");
@@ -121,12 +158,37 @@ async fn off_loopback_every_change_needs_the_token() {
     assert_eq!(r.status, 401);
     assert_eq!(r.json()["error"]["code"], "unauthorized");
     let wrong = [("Authorization", "Bearer s3cres")];
-    assert_eq!(request(at, "POST", "/api/command", &wrong, br#"{"cmd":"reset"}"#).await.status, 401);
+    assert_eq!(
+        request(at, "POST", "/api/command", &wrong, br#"{"cmd":"reset"}"#)
+            .await
+            .status,
+        401
+    );
     let right = [("Authorization", "Bearer s3cret")];
-    assert_eq!(request(at, "POST", "/api/command", &right, br#"{"cmd":"reset"}"#).await.status, 200);
-    assert_eq!(post_json(at, "/api/command?token=s3cret", r#"{"cmd":"reset"}"#).await.status, 200);
-    assert_eq!(request(at, "PUT", "/api/offsets", &[], br#"{"h":{}}"#).await.status, 401);
-    assert_eq!(request(at, "POST", "/api/program", &[], b"M30\n").await.status, 401);
+    assert_eq!(
+        request(at, "POST", "/api/command", &right, br#"{"cmd":"reset"}"#)
+            .await
+            .status,
+        200
+    );
+    assert_eq!(
+        post_json(at, "/api/command?token=s3cret", r#"{"cmd":"reset"}"#)
+            .await
+            .status,
+        200
+    );
+    assert_eq!(
+        request(at, "PUT", "/api/offsets", &[], br#"{"h":{}}"#)
+            .await
+            .status,
+        401
+    );
+    assert_eq!(
+        request(at, "POST", "/api/program", &[], b"M30\n")
+            .await
+            .status,
+        401
+    );
 }
 
 #[test]
@@ -134,7 +196,9 @@ fn binding_off_loopback_needs_the_flag() {
     let lo: std::net::SocketAddr = "127.0.0.1:7878".parse().unwrap();
     let any: std::net::SocketAddr = "0.0.0.0:7878".parse().unwrap();
     assert_eq!(kerf_hmi::check_bind(&lo, false), Ok(false));
-    assert!(kerf_hmi::check_bind(&any, false).unwrap_err().contains("--allow-remote"));
+    assert!(kerf_hmi::check_bind(&any, false)
+        .unwrap_err()
+        .contains("--allow-remote"));
     assert_eq!(kerf_hmi::check_bind(&any, true), Ok(true));
     let t = kerf_hmi::new_token().unwrap();
     assert_eq!(t.len(), 32);

@@ -10,23 +10,43 @@ use common::http::{post_json, request, start};
 use futures_util::{SinkExt, StreamExt};
 use tokio_tungstenite::tungstenite::Message;
 
-async fn connect(at: std::net::SocketAddr) -> tokio_tungstenite::WebSocketStream<tokio_tungstenite::MaybeTlsStream<tokio::net::TcpStream>> {
-    let (ws, _) = tokio_tungstenite::connect_async(format!("ws://{at}/api/stream")).await.unwrap();
+async fn connect(
+    at: std::net::SocketAddr,
+) -> tokio_tungstenite::WebSocketStream<tokio_tungstenite::MaybeTlsStream<tokio::net::TcpStream>> {
+    let (ws, _) = tokio_tungstenite::connect_async(format!("ws://{at}/api/stream"))
+        .await
+        .unwrap();
     ws
 }
 
 #[tokio::test]
 async fn while_running_states_come_at_20_hz_or_more() {
     let at = start(Box::new(Double::new()), None).await;
-    request(at, "POST", "/api/program?name=p.nc", &[], b"G00 X100.\nM30\n").await;
+    request(
+        at,
+        "POST",
+        "/api/program?name=p.nc",
+        &[],
+        b"G00 X100.\nM30\n",
+    )
+    .await;
     let mut ws = connect(at).await;
-    assert_eq!(post_json(at, "/api/command", r#"{"cmd":"cycle_start"}"#).await.status, 200);
+    assert_eq!(
+        post_json(at, "/api/command", r#"{"cmd":"cycle_start"}"#)
+            .await
+            .status,
+        200
+    );
     // The double runs for 1 s of machine time; count states over 0.5 s.
     let began = Instant::now();
     let mut states = 0;
     let mut xs = Vec::new();
     while began.elapsed() < Duration::from_millis(500) {
-        let m = tokio::time::timeout(Duration::from_secs(2), ws.next()).await.unwrap().unwrap().unwrap();
+        let m = tokio::time::timeout(Duration::from_secs(2), ws.next())
+            .await
+            .unwrap()
+            .unwrap()
+            .unwrap();
         if let Message::Text(t) = m {
             let v: serde_json::Value = serde_json::from_str(&t).unwrap();
             assert_eq!(v["type"], "state");
@@ -46,11 +66,22 @@ async fn while_running_states_come_at_20_hz_or_more() {
 async fn the_backplot_arrives_as_binary_records() {
     let at = start(Box::new(Double::new()), None).await;
     let mut ws = connect(at).await;
-    request(at, "POST", "/api/program?name=p.nc", &[], b"G90 G00 X10. Y20. Z5.\nG01 X30. F600.\nM30\n").await;
+    request(
+        at,
+        "POST",
+        "/api/program?name=p.nc",
+        &[],
+        b"G90 G00 X10. Y20. Z5.\nG01 X30. F600.\nM30\n",
+    )
+    .await;
     let deadline = Instant::now() + Duration::from_secs(10);
     let mut pts = Vec::new();
     while Instant::now() < deadline {
-        let m = tokio::time::timeout(Duration::from_secs(5), ws.next()).await.unwrap().unwrap().unwrap();
+        let m = tokio::time::timeout(Duration::from_secs(5), ws.next())
+            .await
+            .unwrap()
+            .unwrap()
+            .unwrap();
         if let Message::Binary(b) = m {
             let u = |o: usize| u32::from_le_bytes([b[o], b[o + 1], b[o + 2], b[o + 3]]);
             let (first, count, done) = (u(4), u(8), u(12));
@@ -79,7 +110,11 @@ async fn an_oversized_client_message_closes_only_that_client() {
     let at = start(Box::new(Double::new()), None).await;
     let mut bad = connect(at).await;
     let mut good = connect(at).await;
-    let _ = bad.send(Message::Text("x".repeat(kerf_hmi::stream::MAX_CLIENT_MESSAGE * 4).into())).await;
+    let _ = bad
+        .send(Message::Text(
+            "x".repeat(kerf_hmi::stream::MAX_CLIENT_MESSAGE * 4).into(),
+        ))
+        .await;
     let closed = tokio::time::timeout(Duration::from_secs(5), async {
         loop {
             match bad.next().await {
@@ -92,7 +127,11 @@ async fn an_oversized_client_message_closes_only_that_client() {
     .unwrap();
     assert!(closed);
     // The other client still gets states (the heartbeat, at least once a second).
-    let m = tokio::time::timeout(Duration::from_secs(3), good.next()).await.unwrap().unwrap().unwrap();
+    let m = tokio::time::timeout(Duration::from_secs(3), good.next())
+        .await
+        .unwrap()
+        .unwrap()
+        .unwrap();
     assert!(matches!(m, Message::Text(_)));
     assert_eq!(common::http::get(at, "/api/state").await.status, 200);
 }
