@@ -2,10 +2,6 @@
 //! any set of output sinks, behind one API that the `kerf` CLI, the browser
 //! screen and bindings share.
 //!
-//! - [`runtime`]: the controller runtime (modes, execution states, machine
-//!   time, feed hold, single block, reset, restart, MDI, offsets,
-//!   alarm history, persistence); see docs/runtime.md.
-//!
 //! - [`Job`] says what to load (program, machine, libraries, settings,
 //!   offsets, retained state) and [`Job::load`] returns a [`Runner`];
 //! - [`Runner`] steps the program through the planner and hands every
@@ -13,7 +9,10 @@
 //! - [`sinks`] holds the outputs the CLI writes: toolpath, report, plot,
 //!   sample, log, one file each;
 //! - [`settings`], [`offsets`] and [`dynamics`] read the `--set` list, an
-//!   offsets file and a profile's `[motion]` table.
+//!   offsets file and a profile's `[motion]` table;
+//! - [`runtime`]: the controller runtime (modes, execution states, machine
+//!   time, feed hold, single block, reset, restart, MDI, offsets,
+//!   alarm history, persistence); see docs/runtime.md.
 //!
 //! ```
 //! use kerf_control::{sinks::Toolpath, Job, Sink};

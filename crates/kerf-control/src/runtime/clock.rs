@@ -30,8 +30,6 @@ pub(crate) struct Sched {
     pub kind: Kind,
     /// Machine time at its end (None until the planner has placed it).
     pub t_end: Option<f64>,
-    /// Machine position at its start.
-    pub start: Pos,
     /// The planner's modes before it was pushed.
     pub modes: Modes,
     /// A hold during it waits for its end (thread, tapping, M/S/T).
@@ -111,7 +109,6 @@ impl Clock {
             _ => kind == Kind::Flush,
         };
         let modes = self.planner.modes();
-        let start = self.end_pos;
         if let Some(m) = ev.motion() {
             self.end_pos = m.mto;
         }
@@ -128,7 +125,6 @@ impl Clock {
             ev,
             kind,
             t_end,
-            start,
             modes,
             no_hold,
         });
@@ -304,7 +300,7 @@ impl Clock {
         let left: Vec<Sched> = self
             .sched
             .drain(..)
-            .filter(|s| s.t_end.map_or(true, |te| te > t_stop))
+            .filter(|s| s.t_end.is_none_or(|te| te > t_stop))
             .collect();
         let modes = left
             .first()
@@ -367,11 +363,6 @@ impl Clock {
         self.rest = pos;
         self.tapping = false;
         self.t = t.max(now);
-    }
-
-    /// Where the axes are at the end of what is planned.
-    pub fn end_position(&self) -> Pos {
-        self.end_pos
     }
 }
 

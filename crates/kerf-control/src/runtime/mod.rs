@@ -43,6 +43,8 @@ mod hold;
 mod manual;
 mod mdi;
 mod mode;
+mod moves;
+mod offsets_doc;
 mod ops;
 mod pages;
 mod persist;
@@ -122,6 +124,9 @@ pub struct Runtime {
     restart: Option<RestartPlan>,
     /// Axes referenced by REF.
     referenced: [bool; NAXES],
+    /// Line of the last command the axes finished (the block display when
+    /// nothing is under way; 0 at the program start).
+    last_line: u32,
     /// A jog, handle or reference move under way.
     manual: Option<manual::ManualMove>,
     /// Blocks the interpreter may execute in one call of the clock
@@ -165,8 +170,34 @@ impl Runtime {
             restart: None,
             referenced: [false; NAXES],
             manual: None,
+            last_line: 0,
             block_budget: 20_000,
         })
+    }
+
+    /// A machine by built-in name or profile file, with the planner's
+    /// dynamics from its `[motion]` table (the same loading as `kerf run`:
+    /// `load_profile`, `dynamics::dynamics_of`).
+    pub fn for_machine(name: &str) -> Result<Runtime, String> {
+        let profile = crate::load_profile(name).map_err(|e| e.0)?;
+        let d = crate::dynamics::dynamics_of(&profile, 100.0, 100.0, false)
+            .map_err(|e| format!("machine {name}: {e}"))?;
+        Runtime::new(profile, d)
+    }
+
+    /// Reads an `--offsets` file (docs/formats.md: work offsets, H/D
+    /// pages, lathe tools) into the offset pages, all of it or nothing;
+    /// saved to `--state`.
+    pub fn load_offsets_file(&mut self, path: &std::path::Path) -> Result<(), Refusal> {
+        let op = Op::WriteOffset;
+        self.check(op)?;
+        let p = path.display();
+        let text =
+            std::fs::read_to_string(path).map_err(|e| self.refuse(op, format!("{p}: {e}")))?;
+        let doc: toml::Value =
+            toml::from_str(&text).map_err(|e| self.refuse(op, format!("{p}: {e}")))?;
+        let json = serde_json::to_value(doc).map_err(|e| self.refuse(op, format!("{p}: {e}")))?;
+        self.put_offsets_document(&json)
     }
 
     /// The machine profile.

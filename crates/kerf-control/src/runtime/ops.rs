@@ -115,6 +115,7 @@ impl Runtime {
         }
         self.program = Some(Program::new(name, text));
         self.restart = None;
+        self.last_line = 0;
         self.load_main();
         if let Some(x) = next {
             self.exec = x;
@@ -216,6 +217,7 @@ impl Runtime {
         self.phys.mist = false;
         self.phys.flood = false;
         self.alarm = None;
+        self.last_line = 0;
         let r = self.record(RecordKind::Reset, "", "RESET", None);
         self.log.push(r);
         if self.in_mdi {

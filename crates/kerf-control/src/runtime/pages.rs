@@ -7,6 +7,7 @@ use kerf_interp::machine::axis_by_name;
 use serde::{Deserialize, Serialize};
 
 use super::command::{Op, Refusal};
+use super::persist::Part;
 use super::Runtime;
 
 /// Largest offset value accepted, mm (geometry); wear is limited to
@@ -89,6 +90,16 @@ impl Runtime {
         let op = Op::WriteOffset;
         self.check(op)?;
         self.validate_offset(&w).map_err(|r| self.refuse(op, r))?;
+        let part = match w {
+            OffsetWrite::Work { .. } => Part::Work,
+            _ => Part::Tools,
+        };
+        self.apply_offset(w);
+        self.save_state_now(part).map_err(|e| self.refuse(op, e))
+    }
+
+    /// Applies a validated write.
+    pub(super) fn apply_offset(&mut self, w: OffsetWrite) {
         let it = &mut self.interp;
         match w {
             OffsetWrite::H { n, geom, wear } | OffsetWrite::D { n, geom, wear } => {
@@ -139,10 +150,9 @@ impl Runtime {
                 it.set_work_offset(index, p);
             }
         }
-        self.save_state_now().map_err(|e| self.refuse(op, e))
     }
 
-    fn validate_offset(&self, w: &OffsetWrite) -> Result<(), String> {
+    pub(super) fn validate_offset(&self, w: &OffsetWrite) -> Result<(), String> {
         let count = self.interp.offsets().count();
         let num = |n: usize| {
             if (1..=count).contains(&n) {
@@ -211,7 +221,8 @@ impl Runtime {
                 ),
             ));
         }
-        self.save_state_now().map_err(|e| self.refuse(op, e))
+        self.save_state_now(Part::Vars)
+            .map_err(|e| self.refuse(op, e))
     }
 
     /// Writes a parameter (EDIT or MDI mode, control idle). Parameters the

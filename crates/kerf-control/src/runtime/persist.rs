@@ -55,11 +55,31 @@ pub(super) fn load(dir: &Path, it: &mut Interp) -> Result<(), String> {
     Ok(())
 }
 
-/// Saves everything `dir` keeps.
-pub(super) fn save(dir: &Path, it: &Interp) -> Result<(), String> {
+/// Which files a save writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Part {
+    /// Tool offsets.
+    Tools,
+    /// Work offsets.
+    Work,
+    /// Retained variables.
+    Vars,
+    /// All three.
+    All,
+}
+
+/// Saves what `dir` keeps (the files of `part`).
+pub(super) fn save(dir: &Path, it: &Interp, part: Part) -> Result<(), String> {
     let err = |e: io::Error| format!("--state {}: {e}", dir.display());
-    kerf_interp::state::save_offsets(dir, it).map_err(err)?;
-    kerf_interp::state::save_retained(dir, it).map_err(err)?;
+    if matches!(part, Part::Tools | Part::All) {
+        kerf_interp::state::save_offsets(dir, it).map_err(err)?;
+    }
+    if matches!(part, Part::Vars | Part::All) {
+        kerf_interp::state::save_retained(dir, it).map_err(err)?;
+    }
+    if !matches!(part, Part::Work | Part::All) {
+        return Ok(());
+    }
     let mut text =
         String::from("# kerf work offsets: G54+index, machine coordinates x y z a b c\n");
     for i in 0..6 {
@@ -89,10 +109,10 @@ fn write_atomic(dir: &Path, path: &Path, text: &str) -> io::Result<()> {
 }
 
 impl Runtime {
-    /// Saves to `--state` now; the error names the folder.
-    pub(super) fn save_state_now(&self) -> Result<(), String> {
+    /// Saves `part` to `--state` now; the error names the folder.
+    pub(super) fn save_state_now(&self, part: Part) -> Result<(), String> {
         match &self.state_dir {
-            Some(d) => save(d, &self.interp),
+            Some(d) => save(d, &self.interp, part),
             None => Ok(()),
         }
     }
@@ -100,7 +120,7 @@ impl Runtime {
     /// Saves at the end of a run or a reset (the program may have written
     /// offsets and retained variables); a failure goes to the history.
     pub(super) fn save_state(&mut self) {
-        if let Err(e) = self.save_state_now() {
+        if let Err(e) = self.save_state_now(Part::All) {
             let r = self.record(super::RecordKind::Message, "STATE", &e, None);
             self.log.push(r);
         }

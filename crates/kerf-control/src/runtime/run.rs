@@ -19,7 +19,10 @@ const AHEAD: f64 = 0.5;
 impl Runtime {
     /// Whether the interpreter may read more blocks now.
     fn feeding(&self) -> bool {
-        self.exec == Execution::Active && self.pause.is_none() && self.held.is_none()
+        self.exec == Execution::Active
+            && self.pause.is_none()
+            && self.held.is_none()
+            && self.manual.is_none()
     }
 
     /// Reads one block into the planner (or pauses). Returns false when
@@ -162,23 +165,27 @@ impl Runtime {
     /// and coolant change.
     fn apply_passed(&mut self, t: f64) {
         let phys = &mut self.phys;
-        self.clock.drop_finished(t, |s: &Sched| match &s.ev.cmd {
-            Canon::Spindle { dir, rpm, .. } => {
-                phys.spindle = *dir;
-                phys.rpm = if *dir == kerf_canon::SpindleDir::Stop {
-                    0.0
-                } else {
-                    *rpm
-                };
+        let last = &mut self.last_line;
+        self.clock.drop_finished(t, |s: &Sched| {
+            *last = s.ev.src.line;
+            match &s.ev.cmd {
+                Canon::Spindle { dir, rpm, .. } => {
+                    phys.spindle = *dir;
+                    phys.rpm = if *dir == kerf_canon::SpindleDir::Stop {
+                        0.0
+                    } else {
+                        *rpm
+                    };
+                }
+                Canon::Tool {
+                    tool, change: true, ..
+                } => phys.tool = *tool,
+                Canon::Coolant { mist, flood } => {
+                    phys.mist = *mist;
+                    phys.flood = *flood;
+                }
+                _ => {}
             }
-            Canon::Tool {
-                tool, change: true, ..
-            } => phys.tool = *tool,
-            Canon::Coolant { mist, flood } => {
-                phys.mist = *mist;
-                phys.flood = *flood;
-            }
-            _ => {}
         });
         // The tool in a turret is the station the events name.
         if let Some(s) = self.clock.current() {
@@ -254,7 +261,7 @@ impl Runtime {
         let cur = self
             .clock
             .current()
-            .filter(|s| s.t_end.map_or(true, |te| te >= t));
+            .filter(|s| s.t_end.is_none_or(|te| te >= t));
         // Work = machine − (the current motion's machine − work offset).
         let (shift, end) = match cur.and_then(|s| s.ev.motion().map(|m| (s, m))) {
             Some((_, m)) => {
@@ -294,7 +301,7 @@ impl Runtime {
                 self.interp.file_name(s.ev.src.file).to_string(),
             ),
             None => (
-                self.interp.block_at().0.line,
+                self.last_line,
                 self.program
                     .as_ref()
                     .map(|p| p.name.clone())
