@@ -11,6 +11,7 @@ mod manual;
 mod outputs;
 mod progress;
 mod summary;
+mod serve;
 
 use std::io::Write;
 use std::process::ExitCode;
@@ -36,6 +37,7 @@ fn main() -> ExitCode {
         Cmd::Man => manual::man(),
         Cmd::Run { common, outputs } => run(&common, &outputs, false),
         Cmd::Check { common } => run(&common, &Outputs::default(), true),
+        Cmd::Serve(a) => serve::run(a),
     }
 }
 
