@@ -10,8 +10,8 @@ mod diagnostic;
 mod manual;
 mod outputs;
 mod progress;
-mod summary;
 mod serve;
+mod summary;
 
 use std::io::Write;
 use std::process::ExitCode;
