@@ -142,12 +142,15 @@ impl Interp {
         }))
     }
 
-    /// One phase of the block (see [`Phase`]).
+    /// One phase of the block (see [`Phase`]). Inlined into the walk:
+    /// a call per phase of a function this size costs more than the
+    /// phase itself on a plain block.
+    #[inline(always)]
     fn run_phase(&mut self, p: Phase, b: &mut BlockRun) -> R<Flow> {
         match p {
             Phase::HurcoChecks => b.hurco_macro = self.hurco_block_checks(b.one_shot())?,
             Phase::JobSyncM => self.run_m(|m| m.1 == MWhen::JobSync)?,
-            Phase::ModalG => self.modal_codes(b),
+            Phase::ModalG => self.apply_modal_codes(b),
             Phase::HxCycleMode => {
                 let plane_changed = self.st.plane != b.plane_before;
                 b.cycle = self.cycle_mode(b.was_cycle, plane_changed, b.motion)?;
@@ -231,7 +234,7 @@ impl Interp {
     }
 
     /// The modal G codes (every group but 0 and 1) and the motion mode.
-    fn modal_codes(&mut self, b: &mut BlockRun) {
+    fn apply_modal_codes(&mut self, b: &mut BlockRun) {
         let d = self.dialect;
         b.was_cycle = self.st.modal[cycles::CYCLE_GROUP] != 800;
         b.plane_before = self.st.plane;
@@ -315,10 +318,17 @@ impl Interp {
         for i in 0..self.words.nm {
             let (m, at) = self.words.m[i];
             if self.mcode(m).is_none() {
+                // Fanuc programs ask for rigid tapping with M29 before G84;
+                // the HX has G84.2/G84.3 instead (000 §12.3.5-12.3.6).
+                let hint = if m == 29 && self.dialect.id == DialectId::Hx {
+                    ": rigid tapping on this control is G84.2 (G84.3 left-hand), without M29"
+                } else {
+                    ""
+                };
                 return Err(self.alarm(
                     AlarmKind::UnknownM,
                     at,
-                    format!("M{m:02} is not an M code of this control"),
+                    format!("M{m:02} is not an M code of this control{hint}"),
                 ));
             }
             if let Some(mc) = self.mcode(m) {
