@@ -245,7 +245,7 @@ impl Drawing {
                     // The view flips v, so CCW in the plane is clockwise on
                     // screen (sweep flag 0).
                     sweep: !ccw,
-                    mid: full.then(|| (2.0 * c.0 - a.0, 2.0 * c.1 - a.1)),
+                    mid: full.then_some((2.0 * c.0 - a.0, 2.0 * c.1 - a.1)),
                 };
             }
         }
