@@ -10,6 +10,7 @@ mod diagnostic;
 mod manual;
 mod outputs;
 mod progress;
+mod serve;
 mod summary;
 
 use std::io::Write;
@@ -36,6 +37,7 @@ fn main() -> ExitCode {
         Cmd::Man => manual::man(),
         Cmd::Run { common, outputs } => run(&common, &outputs, false),
         Cmd::Check { common } => run(&common, &Outputs::default(), true),
+        Cmd::Serve(a) => serve::run(a),
     }
 }
 
