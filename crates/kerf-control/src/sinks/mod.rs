@@ -9,6 +9,7 @@
 //! Each takes any `io::Write`; formats are in docs/formats.md.
 
 pub mod log;
+pub mod number;
 pub mod plot;
 pub mod report;
 pub mod sample;
