@@ -400,3 +400,19 @@ fn hold_in_a_rapid_stops_on_its_trapezoid() {
         x0 - stop
     );
 }
+
+#[test]
+fn the_toolpath_as_it_is_made_has_each_motion_once() {
+    let mut rt = mem("G91 G00 X-5.\nG01 X-100. F600\nM30\n");
+    let x0 = start(&mut rt);
+    rt.step(2.0);
+    rt.command(Command::FeedHold).unwrap();
+    rt.step(1.0);
+    rt.command(Command::CycleStart).unwrap();
+    until(&mut rt, Execution::ProgramCompleted, 30.0);
+    let m = rt.motions_since(0);
+    let got: Vec<(u64, u32, &str)> = m.iter().map(|r| (r.seq, r.line, r.kind.as_str())).collect();
+    assert_eq!(got, [(1, 1, "rapid"), (2, 2, "feed")]);
+    assert!((m[1].mto["x"] - (x0 - 105.0)).abs() < 1e-9);
+    assert_eq!(rt.motions_since(1).len(), 1);
+}

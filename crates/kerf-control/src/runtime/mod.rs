@@ -54,6 +54,7 @@ mod run;
 mod snapshot;
 mod switches;
 mod table;
+mod trail;
 
 use std::path::PathBuf;
 
@@ -69,6 +70,7 @@ pub use restart::{RestartAt, RestartPlan};
 pub use snapshot::{AlarmInfo, AxisValues, Positions, ProgramAt, Spindle, State};
 pub use switches::{Overrides, Switches};
 pub use table::{decide, markdown as mode_table_markdown, reachable, Verdict};
+pub use trail::{MotionRecord, TRAIL_CAP};
 
 use clock::Clock;
 use program::Program;
@@ -137,6 +139,8 @@ pub struct Runtime {
     /// back until cycle start.
     sb_block: Option<(u32, u32)>,
     stash: Option<kerf_canon::Event>,
+    /// The toolpath as it is made.
+    trail: trail::Trail,
     /// A jog, handle or reference move under way.
     manual: Option<manual::ManualMove>,
     /// Commands the interpreter keeps read ahead of the axes (the
@@ -184,6 +188,7 @@ impl Runtime {
             restart: None,
             referenced: [false; NAXES],
             manual: None,
+            trail: Default::default(),
             sb_block: None,
             stash: None,
             last_line: 0,

@@ -107,6 +107,7 @@ impl Runtime {
                 }
                 _ => {}
             }
+            self.note_motion(&e);
             self.clock.push(e);
         }
         false
