@@ -325,3 +325,22 @@ fn state_dir_keeps_offsets_across_machines() {
     assert!(err.contains("hx-mc.work:1"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn feed_hold_stops_a_jog_on_its_trapezoid() {
+    let mut rt = machine("hx-mc");
+    rt.command(Command::Mode { mode: Mode::Jog }).unwrap();
+    rt.command(Command::Jog {
+        axis: "x".into(),
+        distance: -20.0,
+    })
+    .unwrap();
+    // 33.33 mm/s after 0.0333 s (0.5556 mm): 9.4444 mm at 0.3 s, and
+    // v²/2a = 0.5556 mm to stop: 10.000 mm.
+    rt.step(0.3);
+    rt.command(Command::FeedHold).unwrap();
+    assert_eq!(rt.execution(), Execution::Ready);
+    rt.step(1.0);
+    assert!((mx(&rt) + 10.0).abs() < 1e-9, "{}", mx(&rt));
+    assert!((rt.interp().machine_position()[0] + 10.0).abs() < 1e-9);
+}

@@ -185,14 +185,18 @@ impl Runtime {
     fn feed_hold(&mut self) {
         if matches!(self.mode, Mode::Jog | Mode::Ref) {
             let t = self.clock.t;
-            self.clock.abort(t);
+            let stop = self.clock.abort(t);
             self.manual_done();
+            self.interp.set_machine_position(stop.at);
             return;
         }
         let t = self.clock.t;
         let at = self.clock.hold_point(t);
         self.exec = Execution::FeedHold;
         if at > t {
+            // The thread or tap goes on: its pieces all planned now (the
+            // interpreter reads no further until cycle start).
+            self.clock.finish();
             self.hold_at = Some(at);
         } else {
             self.hold_now(t);
