@@ -344,3 +344,52 @@ fn feed_hold_stops_a_jog_on_its_trapezoid() {
     assert!((mx(&rt) + 10.0).abs() < 1e-9, "{}", mx(&rt));
     assert!((rt.interp().machine_position()[0] + 10.0).abs() < 1e-9);
 }
+
+#[test]
+fn reset_plane_and_distance_modes_follow_pi_145_146() {
+    for (p145, p146, plane, dist) in [
+        (0.0, 0.0, "G17", "G90"),
+        (1.0, 1.0, "G18", "G91"),
+        (2.0, 0.0, "G19", "G90"),
+    ] {
+        let mut rt = machine("hx-mc");
+        rt.write_parameter("PI 145", p145).unwrap();
+        rt.write_parameter("PI 146", p146).unwrap();
+        rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+        rt.load_program("r.nc", "G17 G90 G00 X-1.\nM30\n").unwrap();
+        rt.command(Command::CycleStart).unwrap();
+        until(&mut rt, Execution::ProgramCompleted, 10.0);
+        rt.command(Command::Reset).unwrap();
+        let m = rt.state().modal;
+        assert!(
+            m.contains(&plane.to_string()) && m.contains(&dist.to_string()),
+            "PI 145 {p145} PI 146 {p146}: {m:?}"
+        );
+    }
+}
+
+#[test]
+fn single_block_stops_at_macro_statements_only_as_the_parameter_says() {
+    for (param, first_stop_line, moved) in [(0.0, 2, true), (1.0, 1, false)] {
+        let mut rt = machine("hx-mc");
+        rt.write_parameter("single_block_macro", param).unwrap();
+        rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+        rt.load_program("s.nc", "#100 = 1\nG91 G01 X-1. F600\nM30\n")
+            .unwrap();
+        rt.command(Command::Switch {
+            single_block: Some(true),
+            optional_stop: None,
+            dry_run: None,
+            block_skip: None,
+        })
+        .unwrap();
+        rt.command(Command::CycleStart).unwrap();
+        until(&mut rt, Execution::Interrupted, 10.0);
+        assert_eq!(
+            rt.interp().block_at().0.line,
+            first_stop_line,
+            "param {param}"
+        );
+        assert_eq!(mx(&rt) != 0.0, moved, "param {param}");
+    }
+}
