@@ -30,10 +30,20 @@ pub struct MotionRecord {
     pub mto: AxisValues,
 }
 
+/// One kept motion, raw (converted when read).
+struct Kept {
+    seq: u64,
+    file: u32,
+    line: u32,
+    kind: &'static str,
+    to: kerf_canon::Pos,
+    mto: kerf_canon::Pos,
+}
+
 /// The kept motions.
 #[derive(Default)]
 pub(super) struct Trail {
-    kept: VecDeque<MotionRecord>,
+    kept: VecDeque<Kept>,
     next: u64,
 }
 
@@ -47,36 +57,42 @@ impl Runtime {
             Canon::Arc { .. } => "arc",
             _ => "thread",
         };
+        let t = &mut self.trail;
+        t.next += 1;
+        if t.kept.len() == TRAIL_CAP {
+            t.kept.pop_front();
+        }
+        t.kept.push_back(Kept {
+            seq: t.next,
+            file: e.src.file,
+            line: e.src.line,
+            kind,
+            to: m.to,
+            mto: m.mto,
+        });
+    }
+
+    /// The motions with a sequence number greater than `after`, oldest
+    /// first (0: all kept).
+    pub fn motions_since(&self, after: u64) -> Vec<MotionRecord> {
         let values = |p: &kerf_canon::Pos| -> AxisValues {
             self.axes()
                 .into_iter()
                 .map(|a| (a.name().to_string(), p[a as usize]))
                 .collect()
         };
-        let r = MotionRecord {
-            seq: 0,
-            file: self.interp.file_name(e.src.file).to_string(),
-            line: e.src.line,
-            kind: kind.into(),
-            to: values(&m.to),
-            mto: values(&m.mto),
-        };
-        let t = &mut self.trail;
-        t.next += 1;
-        if t.kept.len() == TRAIL_CAP {
-            t.kept.pop_front();
-        }
-        t.kept.push_back(MotionRecord { seq: t.next, ..r });
-    }
-
-    /// The motions with a sequence number greater than `after`, oldest
-    /// first (0: all kept).
-    pub fn motions_since(&self, after: u64) -> Vec<MotionRecord> {
         self.trail
             .kept
             .iter()
             .filter(|r| r.seq > after)
-            .cloned()
+            .map(|r| MotionRecord {
+                seq: r.seq,
+                file: self.interp.file_name(r.file).to_string(),
+                line: r.line,
+                kind: r.kind.into(),
+                to: values(&r.to),
+                mto: values(&r.mto),
+            })
             .collect()
     }
 }
