@@ -393,3 +393,16 @@ fn single_block_stops_at_macro_statements_only_as_the_parameter_says() {
         assert_eq!(mx(&rt) != 0.0, moved, "param {param}");
     }
 }
+
+#[test]
+fn the_m00_comment_goes_to_the_history() {
+    let mut rt = mem("G91 G01 X-1. F600\nM00 (TURN THE PART OVER)\nM30\n");
+    rt.command(Command::CycleStart).unwrap();
+    until(&mut rt, Execution::ProgramStopped, 10.0);
+    let log = rt.alarms(0);
+    let last = log.last().expect("a record");
+    assert_eq!(
+        (last.kind, last.message.as_str(), last.line),
+        (RecordKind::Message, "TURN THE PART OVER", 2)
+    );
+}

@@ -85,6 +85,7 @@ enum Pause {
     SingleBlock,
     Stop {
         optional: bool,
+        src: kerf_canon::SrcRef,
     },
     End,
     Alarm(kerf_canon::Alarm),

@@ -97,6 +97,7 @@ impl Runtime {
                 Canon::Stop { optional } => {
                     self.pause = Some(Pause::Stop {
                         optional: *optional,
+                        src: e.src,
                     })
                 }
                 Canon::End { .. } => self.pause = Some(Pause::End),
@@ -243,8 +244,9 @@ impl Runtime {
                 self.sb_block = None;
                 self.exec = Execution::Interrupted;
             }
-            Pause::Stop { optional } => {
+            Pause::Stop { optional, src } => {
                 self.pause = None;
+                self.stop_message(src);
                 self.exec = if optional {
                     Execution::OptionalStop
                 } else {
@@ -277,6 +279,22 @@ impl Runtime {
                 self.phys.rpm = 0.0;
                 self.save_state();
             }
+        }
+    }
+
+    /// The comment of the block that stopped (M00 / M01 `(CHECK PART)`)
+    /// goes to the history as a message, for the operator.
+    fn stop_message(&mut self, src: kerf_canon::SrcRef) {
+        let text = self
+            .program
+            .as_ref()
+            .filter(|_| !self.in_mdi)
+            .and_then(|p| p.line(src.line))
+            .map(comments)
+            .unwrap_or_default();
+        if !text.is_empty() {
+            let r = self.record(RecordKind::Message, "", &text, Some(src));
+            self.log.push(r);
         }
     }
 
@@ -412,4 +430,20 @@ impl Runtime {
             t,
         }
     }
+}
+
+/// The text of a block's comments `(…)`, joined by spaces.
+fn comments(line: &str) -> String {
+    let mut out = Vec::new();
+    let mut rest = line;
+    while let Some(a) = rest.find('(') {
+        let after = &rest[a + 1..];
+        let Some(b) = after.find(')') else { break };
+        let c = after[..b].trim();
+        if !c.is_empty() {
+            out.push(c.to_string());
+        }
+        rest = &after[b + 1..];
+    }
+    out.join(" ")
 }
