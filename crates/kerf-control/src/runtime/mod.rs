@@ -297,6 +297,23 @@ impl Runtime {
 
     /// The program restart prepared by [`Command::Restart`], with its
     /// re-entry path, until cycle start runs it.
+    ///
+    /// ```
+    /// use kerf_control::runtime::{Command, Execution, Mode, Runtime};
+    ///
+    /// let mut rt = Runtime::for_machine("hx-mc").unwrap();
+    /// rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+    /// rt.load_program("p.nc", "G90 G54 G00 X-50. Y-50. Z20.\nM03 S800\nG01 Z-2. F200\nX-80.\nM30\n").unwrap();
+    /// rt.command(Command::Restart { line: Some(4), sequence: None }).unwrap();
+    /// let plan = rt.pending_restart().unwrap();
+    /// assert_eq!((plan.spindle_direction.as_str(), plan.spindle_rpm), ("cw", 800.0));
+    /// assert_eq!(plan.feed, Some(200.0));
+    /// assert_eq!(plan.path.last().unwrap().kind, "feed");
+    /// rt.command(Command::CycleStart).unwrap();
+    /// rt.run_until_stopped(120.0);
+    /// assert_eq!(rt.execution(), Execution::ProgramCompleted);
+    /// assert_eq!(rt.state().position.work["x"], -80.0);
+    /// ```
     pub fn pending_restart(&self) -> Option<&RestartPlan> {
         self.restart.as_ref()
     }
