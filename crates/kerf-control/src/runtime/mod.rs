@@ -39,6 +39,7 @@
 mod alarms;
 mod clock;
 mod command;
+mod display;
 mod hold;
 mod manual;
 mod mdi;
