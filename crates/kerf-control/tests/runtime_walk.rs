@@ -52,9 +52,9 @@ fn command(r: &mut Lcg, axes: &[&str]) -> Command {
             sequence: None,
         },
         7 => Command::Switch {
-            single_block: Some(r.next() % 2 == 0),
-            optional_stop: Some(r.next() % 2 == 0),
-            dry_run: Some(r.next() % 4 == 0),
+            single_block: Some(r.next().is_multiple_of(2)),
+            optional_stop: Some(r.next().is_multiple_of(2)),
+            dry_run: Some(r.next().is_multiple_of(4)),
             block_skip: Some(vec![(r.next() % 11) as u8]),
         },
         8 => Command::Override {
@@ -71,7 +71,7 @@ fn command(r: &mut Lcg, axes: &[&str]) -> Command {
             increment: r.pick(&[0.001, 0.01, 0.1, 0.5]),
         },
         _ => Command::RefReturn {
-            axis: if r.next() % 2 == 0 { None } else { Some(axis) },
+            axis: if r.next().is_multiple_of(2) { None } else { Some(axis) },
         },
     }
 }
