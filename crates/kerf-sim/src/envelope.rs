@@ -20,6 +20,10 @@ pub struct Sweep {
     /// Horizontal displacement and its squared length.
     d: [f64; 2],
     l2: f64,
+    inv_l2: f64,
+    /// |d| and |P1 - P0|.
+    l: f64,
+    l3: f64,
     dz: f64,
 }
 
@@ -27,12 +31,17 @@ impl Sweep {
     /// The move from `p0` to `p1` (tool tip, mm).
     pub fn new(p0: [f64; 3], p1: [f64; 3]) -> Sweep {
         let d = [p1[0] - p0[0], p1[1] - p0[1]];
+        let l2 = d[0] * d[0] + d[1] * d[1];
+        let dz = p1[2] - p0[2];
         Sweep {
             p0,
             p1,
             d,
-            l2: d[0] * d[0] + d[1] * d[1],
-            dz: p1[2] - p0[2],
+            l2,
+            inv_l2: if l2 > 0.0 { 1.0 / l2 } else { 0.0 },
+            l: l2.sqrt(),
+            l3: (l2 + dz * dz).sqrt(),
+            dz,
         }
     }
 
@@ -56,9 +65,9 @@ impl Sweep {
         if self.vertical() {
             return (ww <= r * r).then_some((0.0, 1.0, 0.0, ww));
         }
-        let b = (w[0] * self.d[0] + w[1] * self.d[1]) / self.l2;
+        let b = (w[0] * self.d[0] + w[1] * self.d[1]) * self.inv_l2;
         let e2 = (ww - b * b * self.l2).max(0.0);
-        let disc = (r * r - e2) / self.l2;
+        let disc = (r * r - e2) * self.inv_l2;
         if disc < 0.0 {
             return None;
         }
@@ -80,8 +89,28 @@ impl Sweep {
     /// Lowest height of the tool's cutting surface over (x, y).
     #[inline]
     pub fn tool(&self, tool: &MillTool, x: f64, y: f64) -> Option<f64> {
+        self.tool_above(tool, x, y, f64::INFINITY)
+    }
+
+    /// As [`Self::tool`], but None as soon as the envelope is known to be
+    /// at or above `old` (nothing to cut there).
+    #[inline]
+    pub fn tool_above(&self, tool: &MillTool, x: f64, y: f64, old: f64) -> Option<f64> {
         let r = tool.radius;
         let (t0, t1, b, e2) = self.cover(x, y, r)?;
+        if !matches!(tool.kind, MillKind::Flat) {
+            // g(t) >= lowest tip height + f(distance to the XY segment).
+            let d2 = if self.vertical() || (0.0..=1.0).contains(&b) {
+                e2
+            } else {
+                let t = b.clamp(0.0, 1.0);
+                (t - b) * (t - b) * self.l2 + e2
+            };
+            let low = self.p0[2].min(self.p1[2]) + tool.profile(d2.sqrt().min(r));
+            if low >= old {
+                return None;
+            }
+        }
         let z = |t: f64| self.p0[2] + t * self.dz;
         if matches!(tool.kind, MillKind::Flat) {
             return Some(z(t0).min(z(t1)));
@@ -98,13 +127,12 @@ impl Sweep {
             MillKind::Ball => {
                 // s = t - b minimises s dz - sqrt(A - L² s²), A = R² - e².
                 let a = (r * r - e2).max(0.0);
-                let l = self.l2.sqrt();
-                b - self.dz * a.sqrt() / (l * (self.l2 + self.dz * self.dz).sqrt())
+                b - self.dz * a.sqrt() / (self.l * self.l3)
             }
             MillKind::Drill { point_angle } => {
                 // g = s dz + k sqrt(e² + L² s²), k = 1/tan(half angle).
                 let k = 1.0 / (point_angle.to_radians() / 2.0).tan();
-                let l = self.l2.sqrt();
+                let l = self.l;
                 let q = k * k * self.l2 - self.dz * self.dz;
                 if q <= 0.0 {
                     if self.dz < 0.0 {
@@ -122,7 +150,8 @@ impl Sweep {
                 self.dz + tool.slope(p.min(r)) * dr
             }),
         };
-        Some(g(t.clamp(t0, t1)).min(g(t0)).min(g(t1)))
+        // g is convex: its minimiser clamped to the interval is the minimum.
+        Some(g(t.clamp(t0, t1)))
     }
 }
 

@@ -135,30 +135,45 @@ impl ZMap {
         let fast_flat = s.level() && matches!(tool.kind, crate::tool::MillKind::Flat) && ng == 0;
         let grid = self.grid();
         let h = &mut self.h;
-        grid.for_cells(s, reach, |idx, x, y| {
-            let old = h[idx] as f64;
-            if old <= zmin + EPS {
+        // Nothing at or below the move's lowest tip height can change (the
+        // tool's profile and the holder are above the tip).
+        let zlow = s.p0[2].min(s.p1[2]).max(zmin);
+        let floor = zlow as f32;
+        grid.for_rows(s, reach, |j, y, a, b| {
+            let base = j * grid.nx;
+            let row = &mut h[base + a..=base + b];
+            if !row.iter().any(|&v| v > floor) {
                 return;
             }
-            for &(r, b, l) in &guards[..ng] {
-                if let Some(z) = s.flat(x, y, r, b) {
-                    if old > z + EPS {
-                        cut.holder += old.min(z + l) - z;
+            for (k, v) in row.iter_mut().enumerate() {
+                if *v <= floor {
+                    continue;
+                }
+                let old = *v as f64;
+                if old <= zmin + EPS {
+                    continue;
+                }
+                let x = grid.x0 + ((a + k) as f64 + 0.5) * grid.dx;
+                for &(r, b, l) in &guards[..ng] {
+                    if let Some(z) = s.flat(x, y, r, b) {
+                        if old > z + EPS {
+                            cut.holder += old.min(z + l) - z;
+                        }
                     }
                 }
-            }
-            let env = if fast_flat {
-                s.cover(x, y, tool.radius).map(|_| s.p0[2])
-            } else {
-                s.tool(tool, x, y)
-            };
-            if let Some(z) = env {
-                let z = z.max(zmin);
-                if z < old - EPS {
-                    cut.removed += old - z;
-                    if write {
-                        undo.push((idx as u32, h[idx]));
-                        h[idx] = z as f32;
+                let env = if fast_flat {
+                    s.cover(x, y, tool.radius).map(|_| s.p0[2])
+                } else {
+                    s.tool_above(tool, x, y, old - EPS)
+                };
+                if let Some(z) = env {
+                    let z = z.max(zmin);
+                    if z < old - EPS {
+                        cut.removed += old - z;
+                        if write {
+                            undo.push(((base + a + k) as u32, *v));
+                            *v = z as f32;
+                        }
                     }
                 }
             }
@@ -222,8 +237,8 @@ fn range(lo: f64, hi: f64, o: f64, d: f64, n: usize) -> Option<(usize, usize)> {
 impl Grid {
 
     /// Cells within `r` of the move's XY path, row by row: calls
-    /// `f(index, x, y)`.
-    pub fn for_cells(&self, s: &Sweep, r: f64, mut f: impl FnMut(usize, f64, f64)) {
+    /// `f(row, y, first, last)` with the row's span of cell columns.
+    pub fn for_rows(&self, s: &Sweep, r: f64, mut f: impl FnMut(usize, f64, usize, usize)) {
         let (xa, xb) = (s.p0[0].min(s.p1[0]) - r, s.p0[0].max(s.p1[0]) + r);
         let (ya, yb) = (s.p0[1].min(s.p1[1]) - r, s.p0[1].max(s.p1[1]) + r);
         let Some((i0, i1)) = range(xa, xb, self.x0, self.dx, self.nx) else {
@@ -240,8 +255,8 @@ impl Grid {
                 continue;
             };
             let (a, b) = (a.max(i0), b.min(i1));
-            for i in a..=b {
-                f(j * self.nx + i, self.x0 + (i as f64 + 0.5) * self.dx, y);
+            if a <= b {
+                f(j, y, a, b);
             }
         }
     }
