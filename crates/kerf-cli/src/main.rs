@@ -1,6 +1,7 @@
 //! The `kerf` command: run or check a part program against a machine
 //! profile, and list the built-in machines. Exit status: 0 the program ran
-//! to its end, 1 it stopped on an alarm, 2 usage or I/O error.
+//! to its end, 1 it stopped on an alarm, 2 usage or I/O error, 3 it ran to
+//! its end but the simulation (`--stock`) found a collision.
 //!
 //! Running is kerf-control's: this crate parses the arguments, opens the
 //! output files, prints and picks the exit status.
@@ -49,7 +50,7 @@ fn run(c: &Common, outputs: &Outputs, check: bool) -> ExitCode {
         Ok(r) => r,
         Err(e) => return usage_error(e),
     };
-    let mut sinks = match outputs.open() {
+    let (mut sinks, sim) = match outputs.open(runner.interp().profile()) {
         Ok(s) => s,
         Err(e) => return usage_error(e),
     };
@@ -58,10 +59,21 @@ fn run(c: &Common, outputs: &Outputs, check: bool) -> ExitCode {
         runner.interpret_only();
     }
     let mut refs: Vec<&mut dyn Sink> = sinks.iter_mut().map(|s| s.as_mut() as _).collect();
-    match runner.run(&mut refs) {
-        Ok(outcome) => print_outcome(&job.program_name(), &outcome, check),
-        Err(e) => usage_error(e),
+    let outcome = match runner.run(&mut refs) {
+        Ok(outcome) => outcome,
+        Err(e) => return usage_error(e),
+    };
+    drop(refs);
+    drop(sinks);
+    let code = print_outcome(&job.program_name(), &outcome, check);
+    let collided = sim.and_then(|h| h.borrow().clone()).is_some_and(|s| {
+        diagnostic::print_sim(&s);
+        s.collisions > 0
+    });
+    if outcome.alarm.is_none() && collided {
+        return ExitCode::from(3);
     }
+    code
 }
 
 fn print_outcome(name: &str, o: &Outcome, check: bool) -> ExitCode {

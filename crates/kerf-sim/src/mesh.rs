@@ -33,7 +33,7 @@ pub const REVOLVE_TOL: f64 = 1e-3;
 /// The block size (cells) the mill mesh uses.
 pub fn mill_block(z: &ZMap) -> usize {
     let mut k = 1;
-    while k < BLOCK && (z.nx / k) * (z.ny / k) > MAX_TOP_VERTICES {
+    while k < BLOCK && (z.nx / k) * (z.ny / k) > MAX_TOP_VERTICES && z.nx % (2 * k) == 0 && z.ny % (2 * k) == 0 {
         k *= 2;
     }
     k

@@ -109,6 +109,12 @@ impl Sim {
         })
     }
 
+    /// Replaces the offsets the tools without geometry are simulated from.
+    pub fn set_offsets(&mut self, o: crate::tool::OffsetData) {
+        self.tools.offsets = o;
+        self.current = None;
+    }
+
     /// The stock model (for the STL and the picture).
     pub fn model(&self) -> &Model {
         &self.model

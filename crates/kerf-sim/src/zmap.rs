@@ -9,8 +9,9 @@ use crate::tool::MillTool;
 pub const MAX_CELLS: usize = 64 << 20;
 /// Cells of the default resolution (64 MB of f32).
 pub const DEFAULT_CELLS: usize = 16 << 20;
-/// The grid is a whole number of 16-cell blocks in X and Y, so that the
-/// STL can be decimated by 1, 2, 4, 8 or 16.
+/// A grid of more than [`crate::mesh::MAX_TOP_VERTICES`] cells is a whole
+/// number of 16-cell blocks in X and Y, so that the STL can be decimated
+/// by 2, 4, 8 or 16.
 pub const BLOCK: usize = 16;
 /// Height changes below this are not material (mm).
 pub const EPS: f64 = 1e-6;
@@ -54,7 +55,12 @@ impl ZMap {
                 fx * fy
             ));
         }
-        let (nx, ny) = (cells(lx), cells(ly));
+        // Whole blocks only where the STL will be decimated.
+        let (nx, ny) = if fx * fy <= crate::mesh::MAX_TOP_VERTICES as f64 {
+            ((fx as usize).max(1), (fy as usize).max(1))
+        } else {
+            (cells(lx), cells(ly))
+        };
         if nx * ny > MAX_CELLS {
             return Err(format!("--sim-res {res}: {} cells, more than {MAX_CELLS}", nx * ny));
         }
