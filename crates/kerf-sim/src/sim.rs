@@ -21,6 +21,8 @@ pub const MAX_EVENTS: usize = 1000;
 pub const FALLBACK_RADIUS: f64 = 5.0;
 /// Default column width of the lathe model, mm.
 pub const LATHE_RES: f64 = 0.005;
+/// Chord tolerance of arcs on the lathe, mm.
+pub const ARC_TOL_LATHE: f64 = 0.5e-3;
 /// Travel between holder checks on the lathe, mm.
 const HOLDER_STEP: f64 = 0.5;
 /// Bisection steps locating a first contact (2^-30 of the move).
@@ -138,7 +140,12 @@ impl Sim {
             return;
         }
         let rapid = matches!(e.cmd, Canon::Rapid { .. });
-        let tol = (self.res / 4.0).min(1e-3);
+        // Chord tolerance: 0.5 µm on the lathe (its profile is exact),
+        // a quarter cell (at most 1 µm) on the height field.
+        let tol = match self.model {
+            Model::Lathe(_) => ARC_TOL_LATHE,
+            Model::Mill(_) => (self.res / 4.0).min(1e-3),
+        };
         let mut pts = std::mem::take(&mut self.chords);
         chords(&e.cmd, start, tol, &mut pts);
         let mut p = [start[0], start[1], start[2]];

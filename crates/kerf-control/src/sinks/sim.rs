@@ -154,6 +154,11 @@ impl SimSink {
         })
     }
 
+    /// The simulation (its stock model after the run).
+    pub fn sim(&self) -> &Sim {
+        &self.sim
+    }
+
     /// The handle the `sim` section will be in after the run.
     pub fn handle(&self) -> SimHandle {
         self.out.clone()
