@@ -61,6 +61,7 @@ pub struct Sim {
     hull: Hull,
     scratch: Vec<Pt>,
     res: f64,
+    rapid_rates: Option<[f64; 3]>,
 }
 
 impl Sim {
@@ -108,7 +109,14 @@ impl Sim {
             hull: Hull::default(),
             scratch: Vec::new(),
             res,
+            rapid_rates: None,
         })
+    }
+
+    /// The X Y Z rapid rates (mm/min): a non-linear rapid is then
+    /// simulated along its dog-leg, each axis at its own rate.
+    pub fn set_rapid_rates(&mut self, rates: [f64; 3]) {
+        self.rapid_rates = Some(rates);
     }
 
     /// Replaces the offsets the tools without geometry are simulated from.
@@ -147,7 +155,14 @@ impl Sim {
             Model::Mill(_) => (self.res / 4.0).min(1e-3),
         };
         let mut pts = std::mem::take(&mut self.chords);
-        chords(&e.cmd, start, tol, &mut pts);
+        match (&e.cmd, self.rapid_rates) {
+            (Canon::Rapid { m, linear: false }, Some(rates)) => {
+                pts.clear();
+                let corners = kerf_geom::stroke::dogleg(start, &m.to, rates);
+                pts.extend(corners.iter().skip(1).map(|p| [p[0], p[1], p[2]]));
+            }
+            _ => chords(&e.cmd, start, tol, &mut pts),
+        }
         let mut p = [start[0], start[1], start[2]];
         let total: f64 = {
             let mut q = p;

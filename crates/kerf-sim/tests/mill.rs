@@ -189,3 +189,33 @@ fn a_tool_without_geometry_is_its_d_offset_and_a_warning() {
     let bound = flat_bound(2.0 * PI * 4.0, 0.05, 1.0);
     assert!((rep.removed_mm3 - PI * 16.0).abs() <= bound);
 }
+
+#[test]
+fn a_dog_leg_rapid_is_simulated_along_its_corners() {
+    // X and Z at the same rate from (-30, 50, -5) to (10, 50, 2): Z arrives
+    // after 7 mm of X, at (-23, 50, 2), then X goes on alone at Z2, clear
+    // of the block. The straight line has its tool edge at the block's
+    // side (centre x = -5) at Z -5 + 7 × 25/40 = -0.625: into the block.
+    let mk = || Run::new("box:0,0,-20,100,100,0", tools(FLAT10), Some(0.2)).at(-30.0, 50.0, -5.0);
+    let rapid = |r: &mut Run, linear: bool| {
+        let to = [10.0, 50.0, 2.0, 0.0, 0.0, 0.0];
+        let e = kerf_canon::Event {
+            src: kerf_canon::SrcRef { file: 0, line: 4, col: 1 },
+            tool: 1,
+            cmd: kerf_canon::Canon::Rapid { m: kerf_canon::Motion { to, mto: to }, linear },
+            prog: None,
+        };
+        let from = r.pos;
+        r.sim.event(&e, &from, 1.0);
+    };
+    let mut r = mk();
+    r.sim.set_rapid_rates([10000.0, 10000.0, 10000.0]);
+    r.spindle(true);
+    rapid(&mut r, false);
+    assert!(r.sim.report().events.is_empty(), "{:?}", r.sim.report().events);
+    let mut r = mk();
+    r.sim.set_rapid_rates([10000.0, 10000.0, 10000.0]);
+    r.spindle(true);
+    rapid(&mut r, true);
+    assert_eq!(r.sim.report().events[0].kind, EventKind::RapidIntoStock);
+}

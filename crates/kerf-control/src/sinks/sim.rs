@@ -216,6 +216,9 @@ impl Sink for SimSink {
 
     fn start(&mut self, cx: &Context) -> io::Result<()> {
         self.sim.set_offsets(offset_data(cx.interp));
+        let axes = &cx.interp.profile().axes;
+        let rate = |n: &str| axes.get(n).map_or(0.0, |a| a.rapid);
+        self.sim.set_rapid_rates([rate("x"), rate("y"), rate("z")]);
         Ok(())
     }
 
