@@ -101,8 +101,9 @@ pub struct Outputs {
     pub sim_res: Option<String>,
 }
 
-/// The subcommands.
+/// The subcommands (parsed once; the size of `Run` does not matter).
 #[derive(Subcommand)]
+#[allow(clippy::large_enum_variant)]
 pub enum Cmd {
     /// Run a program and write what it does.
     Run {

@@ -56,7 +56,11 @@ fn source_line(file: &str, line: u32) -> Option<String> {
 pub fn print_sim(s: &kerf_control::sinks::sim::SimOut) {
     let mut err = std::io::stderr().lock();
     for e in &s.events {
-        let what = if e.kind == "tool_unknown" { "warning" } else { "collision" };
+        let what = if e.kind == "tool_unknown" {
+            "warning"
+        } else {
+            "collision"
+        };
         let _ = writeln!(
             err,
             "{}:{}: {what} {}: tool {} at X{:.3} Y{:.3} Z{:.3}, t {:.3} s, {:.3} mm3",
@@ -64,7 +68,11 @@ pub fn print_sim(s: &kerf_control::sinks::sim::SimOut) {
         );
     }
     if s.events_dropped > 0 {
-        let _ = writeln!(err, "kerf: sim: {} more events not listed", s.events_dropped);
+        let _ = writeln!(
+            err,
+            "kerf: sim: {} more events not listed",
+            s.events_dropped
+        );
     }
     let _ = writeln!(
         err,

@@ -15,6 +15,9 @@ use crate::args::Outputs;
 
 type Out = BufWriter<File>;
 
+/// The sinks to run and the handle of the simulation's result.
+pub type Opened = (Vec<Box<dyn Sink>>, Option<SimHandle>);
+
 fn create(path: &Path) -> Result<Out, String> {
     File::create(path)
         .map(|f| BufWriter::with_capacity(1 << 16, f))
@@ -74,7 +77,8 @@ impl Outputs {
         check_stock(&stock, profile)?;
         let tools = match &self.tools {
             Some(p) => {
-                let text = std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))?;
+                let text =
+                    std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))?;
                 kerf_sim::parse_tools(&text, profile.kind == MachineKind::Lathe)
                     .map_err(|e| format!("{}: {e}", p.display()))?
             }
@@ -93,7 +97,7 @@ impl Outputs {
     /// Creates the files and their sinks, in the order the options list
     /// (the simulation before the report, which carries its section), and
     /// the handle of the simulation's result.
-    pub fn open(&self, profile: &Profile) -> Result<(Vec<Box<dyn Sink>>, Option<SimHandle>), String> {
+    pub fn open(&self, profile: &Profile) -> Result<Opened, String> {
         let mut sinks: Vec<Box<dyn Sink>> = Vec::new();
         let sim = self.sim(profile)?;
         let handle = sim.as_ref().map(SimSink::handle);

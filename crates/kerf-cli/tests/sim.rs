@@ -40,12 +40,25 @@ fn a_clean_run_exits_0_and_a_rapid_into_the_stock_exits_3() {
     let stl = dir().join("slot.stl");
     let png = dir().join("slot.png");
     let o = run(
-        &["--stock", STOCK, "--tools", tools.to_str().unwrap(), "--sim-res", "0.2",
-          "--report", rep.to_str().unwrap(), "--stl", stl.to_str().unwrap(), "--png", png.to_str().unwrap()],
+        &[
+            "--stock",
+            STOCK,
+            "--tools",
+            tools.to_str().unwrap(),
+            "--sim-res",
+            "0.2",
+            "--report",
+            rep.to_str().unwrap(),
+            "--stl",
+            stl.to_str().unwrap(),
+            "--png",
+            png.to_str().unwrap(),
+        ],
         &clean,
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let r: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
+    let r: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&rep).unwrap()).unwrap();
     let s = &r["sim"];
     assert_eq!(s["stock_mm3"], 200000.0);
     assert_eq!(s["resolution_mm"], 0.2);
@@ -59,10 +72,27 @@ fn a_clean_run_exits_0_and_a_rapid_into_the_stock_exits_3() {
     assert!((c.volume - s["remaining_mm3"].as_f64().unwrap()).abs() < 1.0);
     assert_eq!(&std::fs::read(&png).unwrap()[1..4], b"PNG");
 
-    let crash = tmp("crash.nc", &SLOT.replace("M30\n", "G00 X50. Y20.\nG00 Z-1.\nM30\n"));
-    let o = run(&["--stock", STOCK, "--tools", tools.to_str().unwrap(), "--sim-res", "0.2"], &crash);
+    let crash = tmp(
+        "crash.nc",
+        &SLOT.replace("M30\n", "G00 X50. Y20.\nG00 Z-1.\nM30\n"),
+    );
+    let o = run(
+        &[
+            "--stock",
+            STOCK,
+            "--tools",
+            tools.to_str().unwrap(),
+            "--sim-res",
+            "0.2",
+        ],
+        &crash,
+    );
     assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
-    assert!(stderr(&o).contains("crash.nc:11: collision rapid_into_stock"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("crash.nc:11: collision rapid_into_stock"),
+        "{}",
+        stderr(&o)
+    );
 }
 
 #[test]
@@ -70,7 +100,11 @@ fn without_tools_each_tool_is_a_warning_not_a_collision() {
     let p = tmp("slot2.nc", SLOT);
     let o = run(&["--stock", STOCK, "--sim-res", "0.2"], &p);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    assert!(stderr(&o).contains("slot2.nc:3: warning tool_unknown: tool 1"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("slot2.nc:3: warning tool_unknown: tool 1"),
+        "{}",
+        stderr(&o)
+    );
 }
 
 #[test]
@@ -80,10 +114,16 @@ fn bad_simulation_input_is_refused_before_the_run() {
     for (args, part) in [
         (vec!["--stock", "box:0,0,0,10,10"], "box needs 6 values"),
         (vec!["--stock", "bar:50,100"], "lathe stock"),
-        (vec!["--stock", "box:0,0,-10,900,100,0"], "outside the X travel"),
+        (
+            vec!["--stock", "box:0,0,-10,900,100,0"],
+            "outside the X travel",
+        ),
         (vec!["--stock", STOCK, "--sim-res", "0"], "--sim-res 0"),
         (vec!["--stock", STOCK, "--sim-res", "0.001"], "more than"),
-        (vec!["--stock", STOCK, "--tools", bad_tool.to_str().unwrap()], "[tool.1]: diameter = -6"),
+        (
+            vec!["--stock", STOCK, "--tools", bad_tool.to_str().unwrap()],
+            "[tool.1]: diameter = -6",
+        ),
         (vec!["--stl", "x.stl"], "--stl needs --stock"),
     ] {
         let o = run(&args, &p);

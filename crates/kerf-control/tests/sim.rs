@@ -44,13 +44,25 @@ fn shape(z: f64) -> f64 {
 }
 
 fn run_sim(machine: &str, program: &str, stock: &str, tools: &str) -> (SimSink, serde_json::Value) {
-    let runner = Job::text("part.nc", program).machine(machine).load().unwrap();
+    let runner = Job::text("part.nc", program)
+        .machine(machine)
+        .load()
+        .unwrap();
     let lathe = machine != "hx-mc";
-    let mut sim = SimSink::new(Stock::parse(stock).unwrap(), parse_tools(tools, lathe).unwrap(), None, None, None).unwrap();
+    let mut sim = SimSink::new(
+        Stock::parse(stock).unwrap(),
+        parse_tools(tools, lathe).unwrap(),
+        None,
+        None,
+        None,
+    )
+    .unwrap();
     let mut out = Vec::new();
     {
         let mut rep = Report::new(&mut out).with_sim(sim.handle());
-        let outcome = runner.run(&mut [&mut sim as &mut dyn Sink, &mut rep]).unwrap();
+        let outcome = runner
+            .run(&mut [&mut sim as &mut dyn Sink, &mut rep])
+            .unwrap();
         assert!(outcome.alarm.is_none());
     }
     (sim, serde_json::from_slice(&out).unwrap())
@@ -58,8 +70,15 @@ fn run_sim(machine: &str, program: &str, stock: &str, tools: &str) -> (SimSink, 
 
 #[test]
 fn the_g71_cycle_from_a_bar_leaves_the_shape_plus_the_allowance() {
-    let (sim, rep) = run_sim("puma-lathe", G71, "bar:80,100", "[tool.1]\nnose_radius=0\ntip=3\n");
-    let Model::Lathe(s) = sim.sim().model() else { panic!() };
+    let (sim, rep) = run_sim(
+        "puma-lathe",
+        G71,
+        "bar:80,100",
+        "[tool.1]\nnose_radius=0\ntip=3\n",
+    );
+    let Model::Lathe(s) = sim.sim().model() else {
+        panic!()
+    };
     // The profile at every 50th column centre: exact in radius on the
     // lines; on the arc (split in chords of 0.5 µm) within 0.5 µm of the
     // circle along its normal.
@@ -68,9 +87,16 @@ fn the_g71_cycle_from_a_bar_leaves_the_shape_plus_the_allowance() {
         let got = s.cols[k].last().map_or(0.0, |iv| iv.1);
         if (-39.9..-29.9).contains(&z) {
             let d = (z + 29.9).hypot(got - 30.2);
-            assert!(d <= 10.0 + 1e-9 && d >= 10.0 - 0.5e-3 - 1e-9, "z {z}: {got}, {d} from the centre");
+            assert!(
+                (10.0 - 0.5e-3 - 1e-9..=10.0 + 1e-9).contains(&d),
+                "z {z}: {got}, {d} from the centre"
+            );
         } else {
-            assert!((got - shape(z)).abs() < 1e-6, "z {z}: {got} vs {}", shape(z));
+            assert!(
+                (got - shape(z)).abs() < 1e-6,
+                "z {z}: {got} vs {}",
+                shape(z)
+            );
         }
     }
     // Remaining volume: pi ∫ r(z)² dz from -100 to 0 (Simpson, 200,000 steps).
@@ -79,7 +105,13 @@ fn the_g71_cycle_from_a_bar_leaves_the_shape_plus_the_allowance() {
     let mut acc = 0.0;
     for i in 0..=n {
         let z = -100.0 + i as f64 * h;
-        let w = if i == 0 || i == n { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+        let w = if i == 0 || i == n {
+            1.0
+        } else if i % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
         acc += w * shape(z).powi(2);
     }
     // Where the last pass stops at Z-59.9 under the bar's r 40, the
@@ -87,7 +119,11 @@ fn the_g71_cycle_from_a_bar_leaves_the_shape_plus_the_allowance() {
     // at 45°) leaves a ring: r from 39.2 to 40, z up to (r - 39.2) cot 85°
     // above -59.9: 2 pi ∫ r (r - 39.2) cot 85° dr.
     let cot = 1.0 / 85f64.to_radians().tan();
-    let ring = 2.0 * PI * cot * ((40f64.powi(3) - 39.2f64.powi(3)) / 3.0 - 39.2 * (40f64.powi(2) - 39.2f64.powi(2)) / 2.0);
+    let ring = 2.0
+        * PI
+        * cot
+        * ((40f64.powi(3) - 39.2f64.powi(3)) / 3.0
+            - 39.2 * (40f64.powi(2) - 39.2f64.powi(2)) / 2.0);
     let want = PI * acc * h / 3.0 + ring;
     let sim_rep = &rep["sim"];
     let got = sim_rep["remaining_mm3"].as_f64().unwrap();
@@ -100,9 +136,15 @@ fn the_g71_cycle_from_a_bar_leaves_the_shape_plus_the_allowance() {
 
 #[test]
 fn a_rapid_into_the_block_through_the_runner() {
-    let prog = "G90 G54 G17\nT1 M06\nG43 H1 Z50.\nS2000 M03\nG00 X20. Y50.\nG00 Z5.\nG01 Z-2. F200\n\
+    let prog =
+        "G90 G54 G17\nT1 M06\nG43 H1 Z50.\nS2000 M03\nG00 X20. Y50.\nG00 Z5.\nG01 Z-2. F200\n\
                 G01 X80. F500\nG00 Z50.\nG00 X50. Y20.\nG00 Z-1.\nM30\n";
-    let (_, rep) = run_sim("hx-mc", prog, "box:0,0,-20,100,100,0", "[tool.1]\nkind=\"flat\"\ndiameter=10\n");
+    let (_, rep) = run_sim(
+        "hx-mc",
+        prog,
+        "box:0,0,-20,100,100,0",
+        "[tool.1]\nkind=\"flat\"\ndiameter=10\n",
+    );
     let s = &rep["sim"];
     let ev = s["events"].as_array().unwrap();
     assert_eq!(ev.len(), 1, "{s}");
@@ -124,11 +166,12 @@ fn a_stock_must_suit_the_machine() {
     let e = check_stock(&bar, &mill).unwrap_err();
     assert!(e.contains("lathe stock"), "{e}");
     let b = Stock::parse("box:0,0,-10,100,100,0").unwrap();
-    assert!(check_stock(&b, &lathe).unwrap_err().contains("machining center stock"));
+    assert!(check_stock(&b, &lathe)
+        .unwrap_err()
+        .contains("machining center stock"));
     assert!(check_stock(&b, &mill).is_ok());
     // G54 puts X0 at machine -400 of a -800..0 travel: X up to 500 is out.
     let big = Stock::parse("box:0,0,-10,500,100,0").unwrap();
     let e = check_stock(&big, &mill).unwrap_err();
     assert!(e.contains("X 0..500"), "{e}");
 }
-

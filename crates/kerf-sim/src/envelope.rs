@@ -146,7 +146,11 @@ impl Sweep {
             }
             _ => bisect_min(t0, t1, |t| {
                 let p = rho(t);
-                let dr = if p > 1e-12 { self.l2 * (t - b) / p } else { 0.0 };
+                let dr = if p > 1e-12 {
+                    self.l2 * (t - b) / p
+                } else {
+                    0.0
+                };
                 self.dz + tool.slope(p.min(r)) * dr
             }),
         };
@@ -233,7 +237,10 @@ mod tests {
                     let want = brute(tool, &s, x, y);
                     match (got, want) {
                         (Some(g), Some(w)) => {
-                            assert!((g - w).abs() < 2e-4, "{tool:?} {a:?}->{b:?} at ({x},{y}): {g} vs {w}")
+                            assert!(
+                                (g - w).abs() < 2e-4,
+                                "{tool:?} {a:?}->{b:?} at ({x},{y}): {g} vs {w}"
+                            )
                         }
                         (None, None) => {}
                         other => panic!("{tool:?} {a:?}->{b:?} at ({x},{y}): {other:?}"),

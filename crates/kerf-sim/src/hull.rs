@@ -25,13 +25,21 @@ impl Hull {
         out.upper.clear();
         for &p in pts.iter() {
             while out.lower.len() >= 2
-                && cross(out.lower[out.lower.len() - 2], out.lower[out.lower.len() - 1], p) <= 0.0
+                && cross(
+                    out.lower[out.lower.len() - 2],
+                    out.lower[out.lower.len() - 1],
+                    p,
+                ) <= 0.0
             {
                 out.lower.pop();
             }
             out.lower.push(p);
             while out.upper.len() >= 2
-                && cross(out.upper[out.upper.len() - 2], out.upper[out.upper.len() - 1], p) >= 0.0
+                && cross(
+                    out.upper[out.upper.len() - 2],
+                    out.upper[out.upper.len() - 1],
+                    p,
+                ) >= 0.0
             {
                 out.upper.pop();
             }
@@ -50,12 +58,22 @@ impl Hull {
         if z < a || z > b {
             return None;
         }
-        Some((chain_at(&self.lower, z, false), chain_at(&self.upper, z, true)))
+        Some((
+            chain_at(&self.lower, z, false),
+            chain_at(&self.upper, z, true),
+        ))
     }
 
     /// Slices at the evenly spaced z values `z0 + k dz` for k in
     /// `k0..=k1`, in order: calls `f(k, lo, hi)`. Walks both chains once.
-    pub fn slices(&self, z0: f64, dz: f64, k0: usize, k1: usize, mut f: impl FnMut(usize, f64, f64)) {
+    pub fn slices(
+        &self,
+        z0: f64,
+        dz: f64,
+        k0: usize,
+        k1: usize,
+        mut f: impl FnMut(usize, f64, f64),
+    ) {
         let (mut il, mut iu) = (0, 0);
         for k in k0..=k1 {
             let z = z0 + k as f64 * dz;
@@ -111,6 +129,9 @@ mod tests {
         assert_eq!(h.slice(1.0), Some((0.0, 3.0)));
         let mut got = Vec::new();
         h.slices(0.5, 1.0, 0, 3, |k, lo, hi| got.push((k, lo, hi)));
-        assert_eq!(got, vec![(0, 0.0, 3.5), (1, 0.0, 2.5), (2, 0.0, 1.5), (3, 0.0, 0.5)]);
+        assert_eq!(
+            got,
+            vec![(0, 0.0, 3.5), (1, 0.0, 2.5), (2, 0.0, 1.5), (3, 0.0, 0.5)]
+        );
     }
 }

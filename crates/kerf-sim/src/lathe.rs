@@ -30,7 +30,13 @@ pub struct Touch {
 
 impl Section {
     /// A bar or tube from `z_end` to `z_face`, radii `r_in`..`r_out`.
-    pub fn new(r_in: f64, r_out: f64, z_end: f64, z_face: f64, res: f64) -> Result<Section, String> {
+    pub fn new(
+        r_in: f64,
+        r_out: f64,
+        z_end: f64,
+        z_face: f64,
+        res: f64,
+    ) -> Result<Section, String> {
         let len = z_face - z_end;
         let n = (len / res).ceil();
         if !n.is_finite() || n > MAX_COLUMNS as f64 {

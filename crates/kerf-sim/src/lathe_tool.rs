@@ -126,7 +126,10 @@ mod tests {
         let z = 0.8 - 0.4;
         let want = 0.8 - 0.8 * (30f64).to_radians().cos();
         let (lo, _) = h.slice(z).unwrap();
-        assert!((lo - want).abs() <= NOSE_TOL && lo >= want - 1e-12, "{lo} {want}");
+        assert!(
+            (lo - want).abs() <= NOSE_TOL && lo >= want - 1e-12,
+            "{lo} {want}"
+        );
     }
 
     #[test]

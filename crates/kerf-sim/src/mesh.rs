@@ -33,7 +33,11 @@ pub const REVOLVE_TOL: f64 = 1e-3;
 /// The block size (cells) the mill mesh uses.
 pub fn mill_block(z: &ZMap) -> usize {
     let mut k = 1;
-    while k < BLOCK && (z.nx / k) * (z.ny / k) > MAX_TOP_VERTICES && z.nx % (2 * k) == 0 && z.ny % (2 * k) == 0 {
+    while k < BLOCK
+        && (z.nx / k) * (z.ny / k) > MAX_TOP_VERTICES
+        && z.nx.is_multiple_of(2 * k)
+        && z.ny.is_multiple_of(2 * k)
+    {
         k *= 2;
     }
     k
@@ -91,7 +95,11 @@ pub fn mill(z: &ZMap, emit: &mut dyn FnMut(Tri)) {
     ring.extend((1..=mx + 1).rev().map(|i| (i, my + 1)));
     ring.extend((1..=my + 1).rev().map(|j| (0, j)));
     let hr = |(i, j): (usize, usize)| height(clampi(i, mx), clampi(j, my));
-    let centre = [((z.x0 + x1) / 2.0) as f32, ((z.y0 + y1) / 2.0) as f32, z.zmin as f32];
+    let centre = [
+        ((z.x0 + x1) / 2.0) as f32,
+        ((z.y0 + y1) / 2.0) as f32,
+        z.zmin as f32,
+    ];
     for n in 0..ring.len() {
         let (a, b) = (ring[n], ring[(n + 1) % ring.len()]);
         let (at, bt) = (p(a.0, a.1, hr(a)), p(b.0, b.1, hr(b)));

@@ -55,7 +55,11 @@ impl Canvas {
         for k in 0..steps {
             let a = k as f64 / steps as f64 * std::f64::consts::TAU;
             for dr in [-1.0, 0.0, 1.0] {
-                self.put((x + (r + dr) * a.cos()).round() as i64, (y + (r + dr) * a.sin()).round() as i64, MARK);
+                self.put(
+                    (x + (r + dr) * a.cos()).round() as i64,
+                    (y + (r + dr) * a.sin()).round() as i64,
+                    MARK,
+                );
             }
         }
         for d in -(r as i64) / 2..=(r as i64) / 2 {
@@ -67,11 +71,32 @@ impl Canvas {
     /// Fills a triangle given in screen coordinates (x, y, depth; larger
     /// depth is nearer) with one colour, depth-tested.
     fn fill(&mut self, p: [[f64; 3]; 3], c: [u8; 3]) {
-        let x0 = p.iter().map(|v| v[0]).fold(f64::INFINITY, f64::min).floor().max(0.0) as i64;
-        let x1 = p.iter().map(|v| v[0]).fold(f64::NEG_INFINITY, f64::max).ceil().min(self.w as f64 - 1.0) as i64;
-        let y0 = p.iter().map(|v| v[1]).fold(f64::INFINITY, f64::min).floor().max(0.0) as i64;
-        let y1 = p.iter().map(|v| v[1]).fold(f64::NEG_INFINITY, f64::max).ceil().min(self.h as f64 - 1.0) as i64;
-        let area = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+        let x0 = p
+            .iter()
+            .map(|v| v[0])
+            .fold(f64::INFINITY, f64::min)
+            .floor()
+            .max(0.0) as i64;
+        let x1 = p
+            .iter()
+            .map(|v| v[0])
+            .fold(f64::NEG_INFINITY, f64::max)
+            .ceil()
+            .min(self.w as f64 - 1.0) as i64;
+        let y0 = p
+            .iter()
+            .map(|v| v[1])
+            .fold(f64::INFINITY, f64::min)
+            .floor()
+            .max(0.0) as i64;
+        let y1 = p
+            .iter()
+            .map(|v| v[1])
+            .fold(f64::NEG_INFINITY, f64::max)
+            .ceil()
+            .min(self.h as f64 - 1.0) as i64;
+        let area =
+            (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
         if area.abs() < 1e-12 {
             return;
         }
@@ -120,7 +145,11 @@ fn norm(v: [f64; 3]) -> [f64; 3] {
 }
 
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
 }
 
 fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
@@ -130,7 +159,13 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
 impl View {
     /// A camera looking along -`toward` with `world_up` up, fitting the box
     /// `lo`..`hi` into the rectangle (x0, y0, w, h) of the canvas.
-    pub fn fit(toward: [f64; 3], world_up: [f64; 3], lo: [f64; 3], hi: [f64; 3], rect: (f64, f64, f64, f64)) -> View {
+    pub fn fit(
+        toward: [f64; 3],
+        world_up: [f64; 3],
+        lo: [f64; 3],
+        hi: [f64; 3],
+        rect: (f64, f64, f64, f64),
+    ) -> View {
         let toward = norm(toward);
         let right = norm(cross(world_up, toward));
         let up = cross(toward, right);
@@ -141,7 +176,10 @@ impl View {
             scale: 1.0,
             off: (0.0, 0.0),
         };
-        let (mut a, mut b) = ((f64::INFINITY, f64::INFINITY), (f64::NEG_INFINITY, f64::NEG_INFINITY));
+        let (mut a, mut b) = (
+            (f64::INFINITY, f64::INFINITY),
+            (f64::NEG_INFINITY, f64::NEG_INFINITY),
+        );
         for k in 0..8 {
             let p = [
                 if k & 1 == 0 { lo[0] } else { hi[0] },
@@ -152,7 +190,8 @@ impl View {
             a = (a.0.min(x), a.1.min(y));
             b = (b.0.max(x), b.1.max(y));
         }
-        let s = ((rect.2 * 0.9) / (b.0 - a.0).max(1e-9)).min((rect.3 * 0.9) / (b.1 - a.1).max(1e-9));
+        let s =
+            ((rect.2 * 0.9) / (b.0 - a.0).max(1e-9)).min((rect.3 * 0.9) / (b.1 - a.1).max(1e-9));
         v.scale = s;
         v.off = (
             rect.0 + rect.2 / 2.0 - s * (a.0 + b.0) / 2.0,
@@ -172,7 +211,10 @@ impl View {
 
     /// Draws a triangle shaded by its normal; `cut` picks the cut colour.
     pub fn shade(&self, c: &mut Canvas, t: &Tri, cut: bool) {
-        let p: Vec<[f64; 3]> = t.iter().map(|v| [v[0] as f64, v[1] as f64, v[2] as f64]).collect();
+        let p: Vec<[f64; 3]> = t
+            .iter()
+            .map(|v| [v[0] as f64, v[1] as f64, v[2] as f64])
+            .collect();
         let n = cross(
             [p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]],
             [p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]],
@@ -189,8 +231,15 @@ impl View {
         ]);
         let k = 0.3 + 0.7 * dot(n, light).abs();
         let base = if cut { CUT } else { STOCK };
-        let col = [(base[0] * k) as u8, (base[1] * k) as u8, (base[2] * k) as u8];
-        c.fill([self.project(p[0]), self.project(p[1]), self.project(p[2])], col);
+        let col = [
+            (base[0] * k) as u8,
+            (base[1] * k) as u8,
+            (base[2] * k) as u8,
+        ];
+        c.fill(
+            [self.project(p[0]), self.project(p[1]), self.project(p[2])],
+            col,
+        );
     }
 }
 
@@ -203,11 +252,19 @@ pub fn render(sim: &Sim) -> Canvas {
 }
 
 fn mill(sim: &Sim) -> Canvas {
-    let Model::Mill(z) = sim.model() else { unreachable!() };
+    let Model::Mill(z) = sim.model() else {
+        unreachable!()
+    };
     let mut c = Canvas::new(1200, 900);
     let lo = [z.x0, z.y0, z.zmin];
     let hi = [z.x0 + z.nx as f64 * z.dx, z.y0 + z.ny as f64 * z.dy, z.ztop];
-    let v = View::fit([1.0, -1.0, 1.0], [0.0, 0.0, 1.0], lo, hi, (0.0, 0.0, 1200.0, 900.0));
+    let v = View::fit(
+        [1.0, -1.0, 1.0],
+        [0.0, 0.0, 1.0],
+        lo,
+        hi,
+        (0.0, 0.0, 1200.0, 900.0),
+    );
     let top = z.ztop as f32 - 1e-4;
     let (xa, xb) = (lo[0] as f32, hi[0] as f32);
     let (ya, yb) = (lo[1] as f32, hi[1] as f32);
@@ -235,7 +292,9 @@ fn mill(sim: &Sim) -> Canvas {
 }
 
 fn lathe(sim: &Sim) -> Canvas {
-    let Model::Lathe(s) = sim.model() else { unreachable!() };
+    let Model::Lathe(s) = sim.model() else {
+        unreachable!()
+    };
     let (w, h) = (1600, 700);
     let mut c = Canvas::new(w, h);
     let rmax = match sim.stock() {
@@ -274,7 +333,13 @@ fn lathe(sim: &Sim) -> Canvas {
     // Right: the part seen from three quarters, Z to the right.
     let lo = [-rmax, -rmax, za];
     let hi = [rmax, rmax, zb];
-    let v = View::fit([0.9, 0.75, 0.55], [1.0, 0.0, 0.0], lo, hi, (800.0, 0.0, 800.0, 700.0));
+    let v = View::fit(
+        [0.9, 0.75, 0.55],
+        [1.0, 0.0, 0.0],
+        lo,
+        hi,
+        (800.0, 0.0, 800.0, 700.0),
+    );
     mesh::lathe(s, &mut |t| v.shade(&mut c, &t, true));
     for e in &sim.report().events {
         if e.kind.is_collision() {

@@ -178,7 +178,13 @@ impl Sim {
         let mut done = 0.0;
         for &n in &pts {
             let d = dist(&p, &n);
-            let f = |x: f64| if total > 0.0 { t0 + (t1 - t0) * x / total } else { t1 };
+            let f = |x: f64| {
+                if total > 0.0 {
+                    t0 + (t1 - t0) * x / total
+                } else {
+                    t1
+                }
+            };
             let span = (f(done), f(done + d));
             self.segment(e, p, n, rapid, span);
             done += d;
@@ -209,12 +215,24 @@ impl Sim {
             (Some(Tool::Lathe(l)), true) => lathe_current(&l),
             (_, false) => {
                 self.report_unknown(e, at, t);
-                let r = self.tools.offsets.radius.get(&e.tool).copied().unwrap_or(0.0);
+                let r = self
+                    .tools
+                    .offsets
+                    .radius
+                    .get(&e.tool)
+                    .copied()
+                    .unwrap_or(0.0);
                 Current::Mill(MillTool::flat(if r > 0.0 { r } else { FALLBACK_RADIUS }))
             }
             (_, true) => {
                 self.report_unknown(e, at, t);
-                let (r, tip) = self.tools.offsets.nose.get(&self.offset).copied().unwrap_or((0.0, 3));
+                let (r, tip) = self
+                    .tools
+                    .offsets
+                    .nose
+                    .get(&self.offset)
+                    .copied()
+                    .unwrap_or((0.0, 3));
                 lathe_current(&LatheTool::from_offset(r.max(0.0), tip))
             }
         };
@@ -252,8 +270,17 @@ impl Sim {
         });
     }
 
-    fn mill_segment(&mut self, src: SrcRef, tool_no: u32, p0: [f64; 3], p1: [f64; 3], rapid: bool, t: (f64, f64)) {
-        let (Model::Mill(z), Some((_, _, Current::Mill(tool)))) = (&mut self.model, &self.current) else {
+    fn mill_segment(
+        &mut self,
+        src: SrcRef,
+        tool_no: u32,
+        p0: [f64; 3],
+        p1: [f64; 3],
+        rapid: bool,
+        t: (f64, f64),
+    ) {
+        let (Model::Mill(z), Some((_, _, Current::Mill(tool)))) = (&mut self.model, &self.current)
+        else {
             return;
         };
         let s = Sweep::new(p0, p1);
@@ -287,7 +314,12 @@ impl Sim {
         for (kind, vol) in found {
             let holder = kind == EventKind::HolderCollision;
             let f = first_contact(|f| {
-                let c = z.cut(tool, &Sweep::new(p0, lerp(&p0, &p1, f)), false, &mut scratch);
+                let c = z.cut(
+                    tool,
+                    &Sweep::new(p0, lerp(&p0, &p1, f)),
+                    false,
+                    &mut scratch,
+                );
                 if holder {
                     c.holder > 0.0
                 } else {
@@ -303,7 +335,15 @@ impl Sim {
         }
     }
 
-    fn lathe_segment(&mut self, src: SrcRef, tool_no: u32, p0: [f64; 3], p1: [f64; 3], rapid: bool, t: (f64, f64)) {
+    fn lathe_segment(
+        &mut self,
+        src: SrcRef,
+        tool_no: u32,
+        p0: [f64; 3],
+        p1: [f64; 3],
+        rapid: bool,
+        t: (f64, f64),
+    ) {
         let has_holder = matches!(&self.current, Some((_, _, Current::Lathe { holder, .. })) if !holder.is_empty());
         let len = dist(&p0, &p1);
         let steps = if has_holder {
@@ -319,8 +359,18 @@ impl Sim {
         }
     }
 
-    fn lathe_step(&mut self, src: SrcRef, tool_no: u32, p0: [f64; 3], p1: [f64; 3], rapid: bool, t: (f64, f64)) {
-        let (Model::Lathe(sec), Some((_, _, Current::Lathe { outline, holder }))) = (&mut self.model, &self.current) else {
+    fn lathe_step(
+        &mut self,
+        src: SrcRef,
+        tool_no: u32,
+        p0: [f64; 3],
+        p1: [f64; 3],
+        rapid: bool,
+        t: (f64, f64),
+    ) {
+        let (Model::Lathe(sec), Some((_, _, Current::Lathe { outline, holder }))) =
+            (&mut self.model, &self.current)
+        else {
             return;
         };
         let (a, b) = ((p0[2], p0[0]), (p1[2], p1[0]));
@@ -334,7 +384,11 @@ impl Sim {
         if rapid || !self.spindle_on {
             let v = sweep_of(sec, outline, 1.0, false);
             if v > 0.0 {
-                let kind = if rapid { EventKind::RapidIntoStock } else { EventKind::SpindleOffCut };
+                let kind = if rapid {
+                    EventKind::RapidIntoStock
+                } else {
+                    EventKind::SpindleOffCut
+                };
                 let f = first_contact(|f| sweep_of(sec, outline, f, false) > 0.0);
                 found.push((kind, v, f));
             }

@@ -101,7 +101,10 @@ pub fn check(bytes: &[u8]) -> Option<StlCheck> {
                 *x = f32::from_le_bytes(bytes[p..p + 4].try_into().ok()?);
             }
         }
-        let d: Vec<[f64; 3]> = v.iter().map(|p| [p[0] as f64, p[1] as f64, p[2] as f64]).collect();
+        let d: Vec<[f64; 3]> = v
+            .iter()
+            .map(|p| [p[0] as f64, p[1] as f64, p[2] as f64])
+            .collect();
         volume += (d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1])
             - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0])
             + d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]))
@@ -109,7 +112,11 @@ pub fn check(bytes: &[u8]) -> Option<StlCheck> {
         for i in 0..3 {
             let a = v[i].map(f32::to_bits);
             let b = v[(i + 1) % 3].map(f32::to_bits);
-            let (key, fwd) = if a < b { ((a, b), true) } else { ((b, a), false) };
+            let (key, fwd) = if a < b {
+                ((a, b), true)
+            } else {
+                ((b, a), false)
+            };
             let e = edges.entry(key).or_insert((0, 0));
             if fwd {
                 e.0 += 1;
@@ -119,7 +126,10 @@ pub fn check(bytes: &[u8]) -> Option<StlCheck> {
         }
     }
     let bad_edges = edges.values().filter(|(f, b)| f + b != 2).count();
-    let flipped_edges = edges.values().filter(|(f, b)| f + b == 2 && *f != 1).count();
+    let flipped_edges = edges
+        .values()
+        .filter(|(f, b)| f + b == 2 && *f != 1)
+        .count();
     Some(StlCheck {
         triangles: n,
         bad_edges,

@@ -49,7 +49,10 @@ impl Stock {
                 .parse()
                 .map_err(|_| err(format!("value {} '{s}' is not a number", i + 1)))?;
             if !v.is_finite() || v.abs() > MAX_DIM {
-                return Err(err(format!("value {} '{s}' is out of range (|v| <= {MAX_DIM} mm)", i + 1)));
+                return Err(err(format!(
+                    "value {} '{s}' is out of range (|v| <= {MAX_DIM} mm)",
+                    i + 1
+                )));
             }
             nums.push(v);
         }
@@ -65,7 +68,9 @@ impl Stock {
                     max: [x1, y1, z1],
                 })
             }
-            ("box", _) => Err(err("box needs 6 values XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX".into())),
+            ("box", _) => Err(err(
+                "box needs 6 values XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX".into()
+            )),
             ("bar", &[d, l]) => Self::turn(d, 0.0, l, 0.0).map_err(err),
             ("bar", &[d, l, f]) => Self::turn(d, 0.0, l, f).map_err(err),
             ("bar", _) => Err(err("bar needs DIAMETER,LENGTH[,FACE_Z]".into())),
@@ -84,7 +89,9 @@ impl Stock {
             return Err(format!("length {len} must be positive"));
         }
         if id < 0.0 || id >= od {
-            return Err(format!("inner diameter {id} must be 0 or more and below {od}"));
+            return Err(format!(
+                "inner diameter {id} must be 0 or more and below {od}"
+            ));
         }
         Ok(Stock::Turn {
             r_out: od / 2.0,

@@ -125,7 +125,10 @@ fn mill_tool(e: &Entry) -> Result<MillTool, String> {
         "chamfer" => {
             let tip_radius = non_negative(e.tip_diameter, "tip_diameter")? / 2.0;
             if tip_radius >= radius {
-                return Err(format!("tip_diameter must be below diameter {}", 2.0 * radius));
+                return Err(format!(
+                    "tip_diameter must be below diameter {}",
+                    2.0 * radius
+                ));
             }
             MillKind::Chamfer {
                 angle: angle(e.angle, "angle", Some(90.0))?,
@@ -164,7 +167,11 @@ fn shape_angle(s: &str) -> Result<f64, String> {
         "S" => 90.0,
         "W" => 80.0,
         "K" => 55.0,
-        other => return Err(format!("shape = \"{other}\" (C, D, K, S, T, V, W, or angle = DEG)")),
+        other => {
+            return Err(format!(
+                "shape = \"{other}\" (C, D, K, S, T, V, W, or angle = DEG)"
+            ))
+        }
     })
 }
 
@@ -210,7 +217,9 @@ fn lathe_tool(e: &Entry) -> Result<LatheTool, String> {
     };
     if let LatheKind::Groove { width, .. } = kind {
         if 2.0 * nose_radius > width {
-            return Err(format!("nose_radius = {nose_radius} is more than half the width {width}"));
+            return Err(format!(
+                "nose_radius = {nose_radius} is more than half the width {width}"
+            ));
         }
     }
     let holder = e
@@ -245,11 +254,15 @@ mod tests {
             false,
         )
         .unwrap();
-        let Tool::Mill(m) = &t.tools[&1] else { panic!() };
+        let Tool::Mill(m) = &t.tools[&1] else {
+            panic!()
+        };
         assert_eq!(m.kind, MillKind::Bull { corner: 1.0 });
         assert_eq!(m.radius, 5.0);
         assert_eq!(m.holder, vec![(5.0, 40.0), (20.0, 60.0)]);
-        let Tool::Mill(d) = &t.tools[&2] else { panic!() };
+        let Tool::Mill(d) = &t.tools[&2] else {
+            panic!()
+        };
         assert_eq!(d.kind, MillKind::Drill { point_angle: 118.0 });
     }
 
@@ -260,29 +273,67 @@ mod tests {
             true,
         )
         .unwrap();
-        let Tool::Lathe(l) = &t.tools[&1] else { panic!() };
+        let Tool::Lathe(l) = &t.tools[&1] else {
+            panic!()
+        };
         match l.kind {
-            LatheKind::Insert { angle, bisector, .. } => {
+            LatheKind::Insert {
+                angle, bisector, ..
+            } => {
                 assert_eq!(angle, 55.0);
                 assert!((bisector - 45.0).abs() < 1e-9);
             }
             _ => panic!(),
         }
-        assert!(matches!(t.tools[&5], Tool::Lathe(LatheTool { kind: LatheKind::Groove { .. }, .. })));
+        assert!(matches!(
+            t.tools[&5],
+            Tool::Lathe(LatheTool {
+                kind: LatheKind::Groove { .. },
+                ..
+            })
+        ));
     }
 
     #[test]
     fn missing_or_negative_dimensions_are_named() {
         for (text, lathe, part) in [
-            ("[tool.1]\nkind=\"flat\"\n", false, "[tool.1]: diameter is missing"),
-            ("[tool.2]\nkind=\"flat\"\ndiameter=-3\n", false, "[tool.2]: diameter = -3"),
-            ("[tool.3]\nkind=\"bull\"\ndiameter=6\n", false, "corner_radius is missing"),
-            ("[tool.4]\nkind=\"flat\"\ndiameter=6\nflute_length=0\n", false, "flute_length = 0"),
-            ("[tool.5]\nkind=\"saw\"\ndiameter=6\n", false, "kind = \"saw\""),
-            ("[tool.6]\nnose_radius=-0.4\n", true, "[tool.6]: nose_radius = -0.4"),
+            (
+                "[tool.1]\nkind=\"flat\"\n",
+                false,
+                "[tool.1]: diameter is missing",
+            ),
+            (
+                "[tool.2]\nkind=\"flat\"\ndiameter=-3\n",
+                false,
+                "[tool.2]: diameter = -3",
+            ),
+            (
+                "[tool.3]\nkind=\"bull\"\ndiameter=6\n",
+                false,
+                "corner_radius is missing",
+            ),
+            (
+                "[tool.4]\nkind=\"flat\"\ndiameter=6\nflute_length=0\n",
+                false,
+                "flute_length = 0",
+            ),
+            (
+                "[tool.5]\nkind=\"saw\"\ndiameter=6\n",
+                false,
+                "kind = \"saw\"",
+            ),
+            (
+                "[tool.6]\nnose_radius=-0.4\n",
+                true,
+                "[tool.6]: nose_radius = -0.4",
+            ),
             ("[tool.7]\nkind=\"groove\"\n", true, "width is missing"),
             ("[tool.x]\nkind=\"flat\"\n", false, "whole number"),
-            ("[tool.8]\nkind=\"flat\"\ndiameter=6\nholder=[[10,-1]]\n", false, "holder[0] length"),
+            (
+                "[tool.8]\nkind=\"flat\"\ndiameter=6\nholder=[[10,-1]]\n",
+                false,
+                "holder[0] length",
+            ),
         ] {
             let e = parse_tools(text, lathe).unwrap_err();
             assert!(e.contains(part), "{text}: {e}");

@@ -62,7 +62,10 @@ impl ZMap {
             (cells(lx), cells(ly))
         };
         if nx * ny > MAX_CELLS {
-            return Err(format!("--sim-res {res}: {} cells, more than {MAX_CELLS}", nx * ny));
+            return Err(format!(
+                "--sim-res {res}: {} cells, more than {MAX_CELLS}",
+                nx * ny
+            ));
         }
         Ok(ZMap {
             x0: min[0],
@@ -119,7 +122,13 @@ impl ZMap {
     /// old heights in `undo`) and measures what the shank and holder meet
     /// (against the heights before the move). With `write` false nothing
     /// changes.
-    pub fn cut(&mut self, tool: &MillTool, s: &Sweep, write: bool, undo: &mut Vec<(u32, f32)>) -> Cut {
+    pub fn cut(
+        &mut self,
+        tool: &MillTool,
+        s: &Sweep,
+        write: bool,
+        undo: &mut Vec<(u32, f32)>,
+    ) -> Cut {
         let mut cut = Cut::default();
         let zmin = self.zmin;
         // Shank/holder: cylinders stacked from the top of the flutes.
@@ -221,7 +230,6 @@ impl ZMap {
     }
 }
 
-
 /// The cell layout of a height field.
 #[derive(Clone, Copy, Debug)]
 pub struct Grid {
@@ -241,7 +249,6 @@ fn range(lo: f64, hi: f64, o: f64, d: f64, n: usize) -> Option<(usize, usize)> {
 }
 
 impl Grid {
-
     /// Cells within `r` of the move's XY path, row by row: calls
     /// `f(row, y, first, last)` with the row's span of cell columns.
     pub fn for_rows(&self, s: &Sweep, r: f64, mut f: impl FnMut(usize, f64, usize, usize)) {
@@ -257,7 +264,13 @@ impl Grid {
             let y = self.y0 + (j as f64 + 0.5) * self.dy;
             // The X span of the capsule on this row narrows the scan.
             let (lo, hi) = capsule_span(s, r, y);
-            let Some((a, b)) = range((lo - 1e-9).max(xa), (hi + 1e-9).min(xb), self.x0, self.dx, self.nx) else {
+            let Some((a, b)) = range(
+                (lo - 1e-9).max(xa),
+                (hi + 1e-9).min(xb),
+                self.x0,
+                self.dx,
+                self.nx,
+            ) else {
                 continue;
             };
             let (a, b) = (a.max(i0), b.min(i1));
@@ -266,7 +279,6 @@ impl Grid {
             }
         }
     }
-
 }
 
 /// X interval of the capsule (points within `r` of the move's XY

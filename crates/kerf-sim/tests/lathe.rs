@@ -32,7 +32,9 @@ fn close(got: f64, want: f64, tol: f64) {
 
 /// The material's outer radius at z (from the column there).
 fn outer(r: &Run, z: f64) -> f64 {
-    let Model::Lathe(s) = r.sim.model() else { panic!() };
+    let Model::Lathe(s) = r.sim.model() else {
+        panic!()
+    };
     let k = ((z - s.z0) / s.dz).floor() as usize;
     s.cols[k].last().map_or(0.0, |iv| iv.1)
 }
@@ -55,7 +57,11 @@ fn a_turned_step_and_a_taper() {
     r.lrapid(1, 20.0, 2.0);
     r.lfeed(2, 20.0, -30.0);
     r.lfeed(3, 26.0, -30.0);
-    close(r.sim.report().removed_mm3, PI * (625.0 - 400.0) * 30.0, 1e-6);
+    close(
+        r.sim.report().removed_mm3,
+        PI * (625.0 - 400.0) * 30.0,
+        1e-6,
+    );
     close(outer(&r, -15.0), 20.0, 1e-9);
     close(outer(&r, -30.01), 25.0, 1e-9);
     // Taper from r 20 at Z-40 to r 25 at Z-60 (fresh material from -30):
@@ -115,7 +121,7 @@ fn a_nose_radius_leaves_its_corner_radius() {
     // corner's centre is 0.8 less at most that.
     for z in [-19.2025, -19.5025, -19.9025] {
         let d = (z + 19.2f64).hypot(outer(&r, z) - 20.8);
-        assert!(d <= 0.8 && d >= 0.8 - 0.5e-3, "{z}: {d}");
+        assert!((0.8 - 0.5e-3..=0.8).contains(&d), "{z}: {d}");
     }
     close(outer(&r, -10.0025), 20.0, 1e-9);
 }
@@ -145,7 +151,10 @@ fn cutting_with_the_spindle_stopped_and_a_holder_that_hits() {
     r.lfeed(7, 24.0, -10.0);
     let rep = r.sim.report();
     assert_eq!(rep.events.len(), 1);
-    assert_eq!((rep.events[0].kind, rep.events[0].line), (EventKind::SpindleOffCut, 7));
+    assert_eq!(
+        (rep.events[0].kind, rep.events[0].line),
+        (EventKind::SpindleOffCut, 7)
+    );
 
     // A 4 mm deep blade with a holder 7 mm wide (Z-2..5 from the tip) from
     // 5 mm above the tip: the holder meets the OD (r 25) beside the groove
@@ -165,7 +174,10 @@ fn cutting_with_the_spindle_stopped_and_a_holder_that_hits() {
     r.lfeed(3, 19.0, -10.0);
     let rep = r.sim.report();
     assert_eq!(rep.events.len(), 1, "{:?}", rep.events);
-    assert_eq!((rep.events[0].kind, rep.events[0].line), (EventKind::HolderCollision, 3));
+    assert_eq!(
+        (rep.events[0].kind, rep.events[0].line),
+        (EventKind::HolderCollision, 3)
+    );
     close(rep.events[0].at[0], 20.0, 1e-6);
 }
 

@@ -32,7 +32,11 @@ fn a_flat_slot_removes_width_depth_length_plus_the_end_half_discs() {
     // w d L + pi R^2 d = 10*2*60 + pi*25*2.
     let want = 1200.0 + PI * 25.0 * 2.0;
     let bound = flat_bound(2.0 * 60.0 + 2.0 * PI * 5.0, 0.05, 2.0);
-    assert!((rep.removed_mm3 - want).abs() <= bound, "{} vs {want} ± {bound}", rep.removed_mm3);
+    assert!(
+        (rep.removed_mm3 - want).abs() <= bound,
+        "{} vs {want} ± {bound}",
+        rep.removed_mm3
+    );
     assert!((rep.stock_mm3 - rep.removed_mm3 - rep.remaining_mm3).abs() < 1e-6 * rep.stock_mm3);
     assert!(rep.events.is_empty(), "{:?}", rep.events);
     assert_eq!(rep.resolution_mm, 0.05);
@@ -54,7 +58,8 @@ fn a_ball_slot_removes_the_segment_prism_and_one_cap() {
     // (h²/24 · |d''| · area) plus the boundary cells (perimeter · slope · h²),
     // with the slope of the cut wall at the rim (4.58 / 2) and |d''| <= 3.2.
     let h: f64 = 0.05;
-    let bound = h * h / 24.0 * 3.2 * (9.2 * 60.0 + PI * 4.6 * 4.6) + (2.0 * 60.0 + 2.0 * PI * 4.6) * 2.3 * h * h;
+    let bound = h * h / 24.0 * 3.2 * (9.2 * 60.0 + PI * 4.6 * 4.6)
+        + (2.0 * 60.0 + 2.0 * PI * 4.6) * 2.3 * h * h;
     let got = r.sim.report().removed_mm3;
     assert!((got - want).abs() <= bound, "{got} vs {want} ± {bound}");
 }
@@ -68,7 +73,8 @@ fn a_drilled_hole_has_its_cone_point() {
     // The point is 5 / tan 59° high: cylinder to the shoulder plus its cone.
     let hp = 5.0 / 59f64.to_radians().tan();
     let want = PI * 25.0 * (15.0 - hp) + PI * 25.0 * hp / 3.0;
-    let bound = flat_bound(2.0 * PI * 5.0, 0.02, 15.0 - hp) + 2.0 * PI * 5.0 * 0.02 * 0.02 / hp * 5.0;
+    let bound =
+        flat_bound(2.0 * PI * 5.0, 0.02, 15.0 - hp) + 2.0 * PI * 5.0 * 0.02 * 0.02 / hp * 5.0;
     let got = r.sim.report().removed_mm3;
     assert!((got - want).abs() <= bound, "{got} vs {want} ± {bound}");
 }
@@ -99,7 +105,11 @@ fn a_rapid_into_the_stock_is_reported_at_its_line_and_first_contact() {
     assert_eq!((e.kind, e.line), (EventKind::RapidIntoStock, 7));
     // Touches the top (Z0) after 10 of the 15 mm: at t = 0 + 10/15 s.
     // (Contact is material deeper than 1 µm: the height field's EPS.)
-    assert!((e.at[2] - 0.0).abs() < 2e-6 && e.at[0] == 50.0, "{:?}", e.at);
+    assert!(
+        (e.at[2] - 0.0).abs() < 2e-6 && e.at[0] == 50.0,
+        "{:?}",
+        e.at
+    );
     assert!((e.t - 10.0 / 15.0).abs() < 1e-6, "{}", e.t);
     let bound = flat_bound(2.0 * PI * 5.0, 0.05, 5.0);
     assert!((e.volume_mm3 - PI * 25.0 * 5.0).abs() <= bound);
@@ -112,7 +122,11 @@ fn a_rapid_into_the_stock_is_reported_at_its_line_and_first_contact() {
     r.rapid(9, 50.0, 50.0, -5.0);
     let e = &r.sim.report().events[0];
     assert_eq!(e.line, 9);
-    assert!((e.at[0] - (0.025 - (25.0f64 - 0.025 * 0.025).sqrt())).abs() < 2e-6, "{:?}", e.at);
+    assert!(
+        (e.at[0] - (0.025 - (25.0f64 - 0.025 * 0.025).sqrt())).abs() < 2e-6,
+        "{:?}",
+        e.at
+    );
 
     // The same path at feed is no event.
     let mut r = Run::new("box:0,0,-20,100,100,0", tools(FLAT10), Some(0.05)).at(50.0, 50.0, 10.0);
@@ -127,7 +141,10 @@ fn cutting_with_the_spindle_stopped_is_reported() {
     r.feed(4, 50.0, 50.0, -1.0);
     let rep = r.sim.report();
     assert_eq!(rep.events.len(), 1);
-    assert_eq!((rep.events[0].kind, rep.events[0].line), (EventKind::SpindleOffCut, 4));
+    assert_eq!(
+        (rep.events[0].kind, rep.events[0].line),
+        (EventKind::SpindleOffCut, 4)
+    );
     // Moving in the air with the spindle stopped is fine.
     let mut r = Run::new("box:0,0,-20,100,100,0", tools(FLAT10), Some(0.1)).at(50.0, 50.0, 10.0);
     r.feed(4, 50.0, 50.0, 1.0);
@@ -154,7 +171,11 @@ fn the_holder_meets_the_stock_past_the_flute_length() {
     // (radius 20) less the hole (radius 5, already 8 deep).
     let want = PI * (400.0 - 25.0) * 3.0;
     let bound = flat_bound(2.0 * PI * 25.0, 0.1, 3.0);
-    assert!((e.volume_mm3 - want).abs() <= bound, "{} vs {want}", e.volume_mm3);
+    assert!(
+        (e.volume_mm3 - want).abs() <= bound,
+        "{} vs {want}",
+        e.volume_mm3
+    );
 }
 
 #[test]
@@ -165,13 +186,20 @@ fn a_non_centre_cutting_tool_must_not_plunge() {
     r.feed(3, 50.0, 50.0, -2.0);
     let rep = r.sim.report();
     assert_eq!(rep.events.len(), 1);
-    assert_eq!((rep.events[0].kind, rep.events[0].line), (EventKind::PlungeNonCentreCutting, 3));
+    assert_eq!(
+        (rep.events[0].kind, rep.events[0].line),
+        (EventKind::PlungeNonCentreCutting, 3)
+    );
     // Entering from the side at depth is how such a tool cuts.
     let mut r = Run::new("box:0,0,-20,100,100,0", tools(t), Some(0.1)).at(-10.0, 50.0, 5.0);
     r.spindle(true);
     r.feed(3, -10.0, 50.0, -2.0);
     r.feed(4, 50.0, 50.0, -2.0);
-    assert!(r.sim.report().events.is_empty(), "{:?}", r.sim.report().events);
+    assert!(
+        r.sim.report().events.is_empty(),
+        "{:?}",
+        r.sim.report().events
+    );
 }
 
 #[test]
@@ -184,7 +212,10 @@ fn a_tool_without_geometry_is_its_d_offset_and_a_warning() {
     r.feed(8, 50.0, 50.0, -1.0);
     let rep = r.sim.report();
     assert_eq!(rep.events.len(), 1);
-    assert_eq!((rep.events[0].kind, rep.events[0].line, rep.events[0].tool), (EventKind::ToolUnknown, 8, 3));
+    assert_eq!(
+        (rep.events[0].kind, rep.events[0].line, rep.events[0].tool),
+        (EventKind::ToolUnknown, 8, 3)
+    );
     assert!(!rep.collided());
     let bound = flat_bound(2.0 * PI * 4.0, 0.05, 1.0);
     assert!((rep.removed_mm3 - PI * 16.0).abs() <= bound);
@@ -200,9 +231,16 @@ fn a_dog_leg_rapid_is_simulated_along_its_corners() {
     let rapid = |r: &mut Run, linear: bool| {
         let to = [10.0, 50.0, 2.0, 0.0, 0.0, 0.0];
         let e = kerf_canon::Event {
-            src: kerf_canon::SrcRef { file: 0, line: 4, col: 1 },
+            src: kerf_canon::SrcRef {
+                file: 0,
+                line: 4,
+                col: 1,
+            },
             tool: 1,
-            cmd: kerf_canon::Canon::Rapid { m: kerf_canon::Motion { to, mto: to }, linear },
+            cmd: kerf_canon::Canon::Rapid {
+                m: kerf_canon::Motion { to, mto: to },
+                linear,
+            },
             prog: None,
         };
         let from = r.pos;
@@ -212,7 +250,11 @@ fn a_dog_leg_rapid_is_simulated_along_its_corners() {
     r.sim.set_rapid_rates([10000.0, 10000.0, 10000.0]);
     r.spindle(true);
     rapid(&mut r, false);
-    assert!(r.sim.report().events.is_empty(), "{:?}", r.sim.report().events);
+    assert!(
+        r.sim.report().events.is_empty(),
+        "{:?}",
+        r.sim.report().events
+    );
     let mut r = mk();
     r.sim.set_rapid_rates([10000.0, 10000.0, 10000.0]);
     r.spindle(true);

@@ -50,7 +50,11 @@ fn a_milled_part_is_drawn_with_its_rapid_crash_marked() {
 
 #[test]
 fn a_turned_part_is_drawn_as_section_and_view() {
-    let t = parse_tools("[tool.1]\nnose_radius=0.8\ntip=3\n[tool.2]\nnose_radius=0.4\ntip=2\n", true).unwrap();
+    let t = parse_tools(
+        "[tool.1]\nnose_radius=0.8\ntip=3\n[tool.2]\nnose_radius=0.4\ntip=2\n",
+        true,
+    )
+    .unwrap();
     let mut r = Run::new("tube:60,16,80", t, Some(0.02)).at(40.0, 0.0, 10.0);
     r.tool(1, 1);
     r.spindle(true);
@@ -58,7 +62,14 @@ fn a_turned_part_is_drawn_as_section_and_view() {
     r.lfeed(2, 6.0, -1.0);
     r.lrapid(3, 22.0, 2.0);
     r.lfeed(4, 22.0, -25.0);
-    r.arc(5, [27.0, 0.0, -30.0], [27.0, 0.0, -25.0], false, Plane::ZX, 0);
+    r.arc(
+        5,
+        [27.0, 0.0, -30.0],
+        [27.0, 0.0, -25.0],
+        false,
+        Plane::ZX,
+        0,
+    );
     r.lfeed(6, 31.0, -30.0);
     r.lrapid(7, 40.0, 2.0);
     r.tool(2, 2);

@@ -18,12 +18,23 @@ fn checked(r: &Run) -> stl::StlCheck {
 
 #[test]
 fn a_milled_pocket_and_through_slot_make_a_closed_mesh_of_the_remaining_volume() {
-    let t = parse_tools("[tool.1]\nkind=\"ball\"\ndiameter=6\n[tool.2]\nkind=\"flat\"\ndiameter=8\n", false).unwrap();
+    let t = parse_tools(
+        "[tool.1]\nkind=\"ball\"\ndiameter=6\n[tool.2]\nkind=\"flat\"\ndiameter=8\n",
+        false,
+    )
+    .unwrap();
     let mut r = Run::new("box:0,0,-10,60,40,0", t, Some(0.1)).at(10.0, 10.0, 5.0);
     r.spindle(true);
     r.feed(1, 10.0, 10.0, -4.0);
     r.feed(2, 50.0, 30.0, -2.0);
-    r.arc(3, [30.0, 20.0, -2.0], [40.0, 25.0, -2.0], false, Plane::XY, 0);
+    r.arc(
+        3,
+        [30.0, 20.0, -2.0],
+        [40.0, 25.0, -2.0],
+        false,
+        Plane::XY,
+        0,
+    );
     // A slot cut right through the block and out of its side.
     r.tool(2, 0);
     r.feed(4, 30.0, 20.0, -12.0);

@@ -300,7 +300,7 @@ impl Clock {
         let left: Vec<Sched> = self
             .sched
             .drain(..)
-            .filter(|s| s.t_end.map_or(true, |te| te > t_stop))
+            .filter(|s| s.t_end.is_none_or(|te| te > t_stop))
             .collect();
         let modes = left
             .first()

@@ -258,7 +258,7 @@ impl Runtime {
         let cur = self
             .clock
             .current()
-            .filter(|s| s.t_end.map_or(true, |te| te >= t));
+            .filter(|s| s.t_end.is_none_or(|te| te >= t));
         // Work = machine − (the current motion's machine − work offset).
         let (shift, end) = match cur.and_then(|s| s.ev.motion().map(|m| (s, m))) {
             Some((_, m)) => {

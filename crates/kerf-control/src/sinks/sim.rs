@@ -82,7 +82,10 @@ pub fn check_stock(stock: &Stock, p: &Profile) -> Result<(), String> {
         (Stock::Box { min, max }, MachineKind::Mill) => {
             let origin = p.work_offsets.values().next();
             for (i, name) in [(0, "x"), (1, "y")] {
-                let (Some(ax), o) = (p.axes.get(name), origin.and_then(|w| w.get(name)).copied().unwrap_or(0.0)) else {
+                let (Some(ax), o) = (
+                    p.axes.get(name),
+                    origin.and_then(|w| w.get(name)).copied().unwrap_or(0.0),
+                ) else {
                     continue;
                 };
                 let (lo, hi) = (min[i] + o, max[i] + o);
@@ -108,12 +111,14 @@ pub fn check_stock(stock: &Stock, p: &Profile) -> Result<(), String> {
             )),
             _ => Ok(()),
         },
-        (Stock::Box { .. }, MachineKind::Lathe) => {
-            Err(format!("--stock box: is a machining center stock; {} is a lathe (bar: or tube:)", p.name))
-        }
-        (Stock::Turn { .. }, MachineKind::Mill) => {
-            Err(format!("--stock bar:/tube: is a lathe stock; {} is a machining center (box:)", p.name))
-        }
+        (Stock::Box { .. }, MachineKind::Lathe) => Err(format!(
+            "--stock box: is a machining center stock; {} is a lathe (bar: or tube:)",
+            p.name
+        )),
+        (Stock::Turn { .. }, MachineKind::Mill) => Err(format!(
+            "--stock bar:/tube: is a lathe stock; {} is a machining center (box:)",
+            p.name
+        )),
     }
 }
 

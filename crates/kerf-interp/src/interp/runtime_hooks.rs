@@ -248,7 +248,7 @@ impl Interp {
 
 /// `G01`, `G17`, `G84.2` from a code times ten.
 fn g_name(c10: u16) -> String {
-    if c10 % 10 == 0 {
+    if c10.is_multiple_of(10) {
         format!("G{:02}", c10 / 10)
     } else {
         format!("G{:02}.{}", c10 / 10, c10 % 10)

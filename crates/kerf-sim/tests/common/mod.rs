@@ -35,7 +35,11 @@ impl Run {
 
     fn send(&mut self, line: u32, cmd: Canon, timed: bool) {
         let e = Event {
-            src: SrcRef { file: 0, line, col: 1 },
+            src: SrcRef {
+                file: 0,
+                line,
+                col: 1,
+            },
             tool: self.tool,
             cmd,
             prog: None,
@@ -52,22 +56,52 @@ impl Run {
 
     pub fn spindle(&mut self, on: bool) {
         let dir = if on { SpindleDir::Cw } else { SpindleDir::Stop };
-        self.send(1, Canon::Spindle { dir, rpm: 1000.0, css: None }, false);
+        self.send(
+            1,
+            Canon::Spindle {
+                dir,
+                rpm: 1000.0,
+                css: None,
+            },
+            false,
+        );
     }
 
     pub fn tool(&mut self, n: u32, offset: u32) {
         self.tool = n;
-        self.send(1, Canon::Tool { tool: n, offset, change: true }, false);
+        self.send(
+            1,
+            Canon::Tool {
+                tool: n,
+                offset,
+                change: true,
+            },
+            false,
+        );
     }
 
     pub fn rapid(&mut self, line: u32, x: f64, y: f64, z: f64) {
         let to = pos(x, y, z);
-        self.send(line, Canon::Rapid { m: Motion { to, mto: to }, linear: true }, true);
+        self.send(
+            line,
+            Canon::Rapid {
+                m: Motion { to, mto: to },
+                linear: true,
+            },
+            true,
+        );
     }
 
     pub fn feed(&mut self, line: u32, x: f64, y: f64, z: f64) {
         let to = pos(x, y, z);
-        self.send(line, Canon::Feed { m: Motion { to, mto: to }, feed: Feed::PerMin(100.0) }, true);
+        self.send(
+            line,
+            Canon::Feed {
+                m: Motion { to, mto: to },
+                feed: Feed::PerMin(100.0),
+            },
+            true,
+        );
     }
 
     /// Lathe move in (X radius, Z).
@@ -80,13 +114,29 @@ impl Run {
     }
 
     /// An arc in `plane` to `to` about `c` (work coordinates).
-    pub fn arc(&mut self, line: u32, to: [f64; 3], c: [f64; 3], ccw: bool, plane: Plane, turns: u32) {
+    pub fn arc(
+        &mut self,
+        line: u32,
+        to: [f64; 3],
+        c: [f64; 3],
+        ccw: bool,
+        plane: Plane,
+        turns: u32,
+    ) {
         let to = pos(to[0], to[1], to[2]);
         let center = pos(c[0], c[1], c[2]);
         let dir = if ccw { ArcDir::Ccw } else { ArcDir::Cw };
         self.send(
             line,
-            Canon::Arc { m: Motion { to, mto: to }, center, mcenter: center, dir, plane, turns, feed: Feed::PerMin(100.0) },
+            Canon::Arc {
+                m: Motion { to, mto: to },
+                center,
+                mcenter: center,
+                dir,
+                plane,
+                turns,
+                feed: Feed::PerMin(100.0),
+            },
             true,
         );
     }
