@@ -1,11 +1,11 @@
 //! Opens the output files of `kerf run` as kerf-control sinks.
 
 use std::fs::File;
-use std::io::BufWriter;
+use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 use kerf_control::sinks::sim::check_stock;
-use kerf_control::sinks::{Log, Plot, Report, Sample, SimHandle, SimSink, Toolpath};
+use kerf_control::sinks::{Log, Plot, Report, Sample, SimSink, Toolpath};
 use kerf_control::Sink;
 use kerf_interp::machine::MachineKind;
 use kerf_interp::Profile;
@@ -14,9 +14,6 @@ use kerf_sim::Stock;
 use crate::args::Outputs;
 
 type Out = BufWriter<File>;
-
-/// The sinks to run and the handle of the simulation's result.
-pub type Opened = (Vec<Box<dyn Sink>>, Option<SimHandle>);
 
 fn create(path: &Path) -> Result<Out, String> {
     File::create(path)
@@ -68,8 +65,9 @@ impl Outputs {
         }
     }
 
-    /// The simulation sink of `--stock`, checked against the machine.
-    fn sim(&self, profile: &Profile) -> Result<Option<SimSink>, String> {
+    /// The simulation sink of `--stock`, checked against the machine (it
+    /// runs before the report, which carries its section).
+    pub fn sim(&self, profile: &Profile) -> Result<Option<SimSink>, String> {
         let Some(spec) = &self.stock else {
             return Ok(None);
         };
@@ -94,13 +92,19 @@ impl Outputs {
         Ok(Some(sink))
     }
 
-    /// Creates the files and their sinks, in the order the options list
-    /// (the simulation before the report, which carries its section), and
-    /// the handle of the simulation's result.
-    pub fn open(&self, profile: &Profile) -> Result<Opened, String> {
+    /// The report sink: onto the `--report` file, or kept in memory only
+    /// (the summary and `--json` read it).
+    pub fn report(&self) -> Result<Report<Box<dyn Write>>, String> {
+        let out: Box<dyn Write> = match &self.report {
+            Some(p) => Box::new(create(p)?),
+            None => Box::new(io::sink()),
+        };
+        Ok(Report::new(out))
+    }
+
+    /// Creates the files and the sinks of the other outputs.
+    pub fn open(&self) -> Result<Vec<Box<dyn Sink>>, String> {
         let mut sinks: Vec<Box<dyn Sink>> = Vec::new();
-        let sim = self.sim(profile)?;
-        let handle = sim.as_ref().map(SimSink::handle);
         if let Some(p) = &self.toolpath {
             sinks.push(Box::new(Toolpath::new(create(p)?)));
         }
@@ -110,19 +114,9 @@ impl Outputs {
         if let Some(p) = &self.log {
             sinks.push(Box::new(Log::new(create(p)?)));
         }
-        if let Some(s) = sim {
-            sinks.push(Box::new(s));
-        }
-        if let Some(p) = &self.report {
-            let mut r = Report::new(create(p)?);
-            if let Some(h) = &handle {
-                r = r.with_sim(h.clone());
-            }
-            sinks.push(Box::new(r));
-        }
         if let Some(p) = &self.plot {
             sinks.push(Box::new(Plot::new(create(p)?)));
         }
-        Ok((sinks, handle))
+        Ok(sinks)
     }
 }

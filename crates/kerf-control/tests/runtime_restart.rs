@@ -192,21 +192,63 @@ fn reentry_path_retracts_positions_and_plunges() {
     assert!(plan.modal.contains(&"G01".to_string()));
     assert_eq!(plan.feed, Some(300.0));
     let kinds: Vec<&str> = plan.path.iter().map(|l| l.kind.as_str()).collect();
-    assert_eq!(kinds, ["rapid", "rapid", "rapid", "feed"]);
+    // The axes are at the top of Z already: no retract leg.
+    assert_eq!(kinds, ["rapid", "rapid", "feed"]);
     // Block 6 starts at work (-50, -100, -5); the G54 zero is the profile's.
     let g54 = rt.work_offset(0).unwrap();
-    let last = &plan.path[3].to;
+    let last = &plan.path[2].to;
     assert!((last["x"] - (g54[0] - 50.0)).abs() < 1e-9);
     assert!((last["y"] - (g54[1] - 100.0)).abs() < 1e-9);
     assert!((last["z"] - (g54[2] - 5.0)).abs() < 1e-9);
-    // Retract to the top of Z (0), then over, then 5 mm above and feed in.
+    // Over at the top of Z (0), down to 5 mm above, feed in.
     assert_eq!(plan.path[0].to["z"], 0.0);
-    assert!((plan.path[2].to["z"] - (g54[2])).abs() < 1e-9);
+    assert!((plan.path[1].to["z"] - (g54[2])).abs() < 1e-9);
     rt.command(Command::CycleStart).unwrap();
     rt.step(30.0);
     assert_eq!(rt.execution(), Execution::ProgramCompleted);
     let s = rt.state();
     assert!((s.position.work["y"] + 50.0).abs() < 1e-9);
+
+    // From a machine that was jogged down after a broken tool: the
+    // retract comes first.
+    let mut rt = mem(text);
+    rt.command(Command::Mode { mode: Mode::Jog }).unwrap();
+    rt.command(Command::Jog {
+        axis: "z".into(),
+        distance: -100.0,
+    })
+    .unwrap();
+    until(&mut rt, Execution::Ready, 30.0);
+    rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+    rt.command(Command::Restart {
+        line: Some(6),
+        sequence: None,
+    })
+    .unwrap();
+    let plan = rt.pending_restart().unwrap();
+    let kinds: Vec<&str> = plan.path.iter().map(|l| l.kind.as_str()).collect();
+    assert_eq!(kinds, ["rapid", "rapid", "rapid", "feed"]);
+    assert_eq!(plan.path[0].to["z"], 0.0);
+    assert_eq!(plan.path[0].to["x"], 0.0);
+    // The spindle starts at the retract height, before positioning.
+    rt.command(Command::CycleStart).unwrap();
+    let mut guard = 0;
+    while rt.state().position.machine["z"] < -1e-9 {
+        rt.step(0.01);
+        guard += 1;
+        assert!(guard < 5000);
+    }
+    // The spindle ramps to 1000 rpm in 0.5 s (2000 rpm/s), then the
+    // axes position.
+    rt.step(1.0);
+    let s = rt.state();
+    assert_eq!(s.spindle.direction, "cw");
+    assert!(
+        s.position.machine["x"] < -1.0,
+        "positioning after the spindle: {:?}",
+        s.position
+    );
+    until(&mut rt, Execution::ProgramCompleted, 60.0);
 }
 
 #[test]

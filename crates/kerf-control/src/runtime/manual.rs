@@ -3,11 +3,12 @@
 //! `[axes]`); REF returns axes to their reference position at rapid and
 //! marks them referenced.
 
-use kerf_canon::{Axis, Canon, Event, Feed, Motion, SrcRef};
+use kerf_canon::Axis;
 use kerf_interp::machine::axis_by_name;
 
 use super::command::{Op, Refusal};
 use super::mode::Execution;
+use super::moves::{machine_move, MoveKind};
 use super::Runtime;
 
 /// A hand move under way.
@@ -86,14 +87,7 @@ impl Runtime {
         } else {
             self.profile.param("jog_feed", 2000.0)
         };
-        self.start_manual(
-            Canon::Feed {
-                m: self.motion_to(to),
-                feed: Feed::PerMin(feed),
-            },
-            Vec::new(),
-        );
-        Ok(())
+        self.start_manual(op, from, to, MoveKind::Feed(feed), Vec::new())
     }
 
     /// Reference return of `axis` (or every axis) at rapid.
@@ -105,40 +99,50 @@ impl Runtime {
                 .filter(|&a| self.profile.has_axis(a))
                 .collect(),
         };
-        let mut to = self.clock.position(self.clock.t);
+        let from = self.clock.position(self.clock.t);
+        let mut to = from;
         for &a in &axes {
             to[a as usize] = self.profile.axis(a).expect("present").reference;
         }
-        self.start_manual(
-            Canon::Rapid {
-                m: self.motion_to(to),
-                linear: false,
-            },
-            axes,
-        );
-        Ok(())
+        self.start_manual(op, from, to, MoveKind::Rapid, axes)
     }
 
-    fn motion_to(&self, mto: kerf_canon::Pos) -> Motion {
+    /// Work = machine − this while the hands move (the interpreter's
+    /// offsets in force).
+    pub(super) fn work_shift(&self) -> kerf_canon::Pos {
         let w = self.interp.work_position();
         let m = self.interp.machine_position();
-        let mut to = mto;
+        let mut d = [0.0; kerf_canon::NAXES];
         for i in 0..kerf_canon::NAXES {
-            to[i] -= m[i] - w[i];
+            d[i] = m[i] - w[i];
         }
-        Motion { to, mto }
+        d
     }
 
-    fn start_manual(&mut self, cmd: Canon, referencing: Vec<Axis>) {
+    fn start_manual(
+        &mut self,
+        op: Op,
+        from: kerf_canon::Pos,
+        to: kerf_canon::Pos,
+        kind: MoveKind,
+        referencing: Vec<Axis>,
+    ) -> Result<(), Refusal> {
+        // Already there: the move is done at the next clock step.
+        let e = if super::clock::moved(&from, &to) {
+            Some(
+                machine_move(&self.profile, from, to, kind, self.work_shift())
+                    .map_err(|r| self.refuse(op, r))?,
+            )
+        } else {
+            None
+        };
         self.restart_clock();
-        self.clock.push(Event {
-            src: SrcRef::default(),
-            tool: self.phys.tool,
-            cmd,
-            prog: None,
-        });
+        if let Some(e) = e {
+            self.clock.push(e);
+        }
         self.clock.finish();
         self.manual = Some(ManualMove { referencing });
         self.exec = Execution::Active;
+        Ok(())
     }
 }

@@ -7,12 +7,13 @@
 //! plunge) is computed and reported ([`RestartPlan`]); cycle start runs it
 //! and then the program from that block.
 
-use kerf_canon::{Axis, Canon, Event, Feed, Motion, Pos, SpindleDir, SrcRef, NAXES};
+use kerf_canon::{Axis, Canon, Event, Pos, SpindleDir, SrcRef};
 use kerf_interp::{BlockStep, MachineKind};
 use serde::{Deserialize, Serialize};
 
 use super::command::{Op, Refusal};
 use super::mode::Execution;
+use super::moves::{machine_move, MoveKind};
 use super::snapshot::AxisValues;
 use super::Runtime;
 
@@ -86,9 +87,11 @@ impl Runtime {
         // From the reset state at the program start.
         self.interp.reset();
         self.load_main_program();
-        match self.silent_run(target) {
-            Ok(seen) => {
-                let plan = self.reentry(target, home, seen);
+        match self
+            .silent_run(target)
+            .and_then(|seen| self.reentry(target, home, seen))
+        {
+            Ok(plan) => {
                 self.restart = Some(plan);
                 self.exec = Execution::Ready;
                 Ok(())
@@ -186,13 +189,71 @@ impl Runtime {
     }
 
     /// The re-entry from the machine position `home` to the block start.
-    fn reentry(&self, line: u32, home: Pos, seen: Seen) -> RestartPlan {
+    fn reentry(&self, line: u32, home: Pos, seen: Seen) -> Result<RestartPlan, String> {
         let it = &self.interp;
         let target = it.machine_position();
+        let legs = self.reentry_legs(home, target);
+        let tool = it.tool();
+        let src = SrcRef {
+            file: it.block_at().0.file,
+            line,
+            col: 1,
+        };
+        let ev = |cmd: Canon| Event {
+            src,
+            tool,
+            cmd,
+            prog: None,
+        };
+        let approach = self.profile.param("jog_feed", 2000.0);
+        let shift = self.work_shift();
+        let mut events = Vec::new();
+        let mut path = Vec::new();
+        let mut from = home;
+        for (k, (kind, p)) in legs.iter().enumerate() {
+            let how = if *kind == "rapid" {
+                MoveKind::Rapid
+            } else {
+                MoveKind::Feed(approach)
+            };
+            let mut e = machine_move(&self.profile, from, *p, how, shift)?;
+            e.src = src;
+            e.tool = tool;
+            events.push(e);
+            from = *p;
+            path.push(Leg {
+                kind: kind.to_string(),
+                to: self.axis_values(p),
+            });
+            if k == 0 {
+                // At the retract height: tool, spindle, coolant.
+                if tool != self.phys.tool && tool != 0 {
+                    events.push(ev(Canon::Tool {
+                        tool,
+                        offset: 0,
+                        change: true,
+                    }));
+                }
+                events.extend(seen.clamp.iter().cloned());
+                events.extend(seen.spindle.iter().cloned());
+                if let Some((mist, flood)) = seen.coolant {
+                    events.push(ev(Canon::Coolant { mist, flood }));
+                }
+            }
+        }
+        Ok(self.plan(line, tool, &seen, path, events))
+    }
+
+    /// Retract (mill Z, lathe X) to the top of its travel, position the
+    /// other axes, plunge at rapid to the clearance, approach at feed.
+    fn reentry_legs(&self, home: Pos, target: Pos) -> Vec<(&'static str, Pos)> {
         let lathe = self.profile.kind == MachineKind::Lathe;
-        let r = if lathe { Axis::X } else { Axis::Z };
-        let ri = r as usize;
-        let top = self.profile.axis(r).map(|a| a.max).unwrap_or(home[ri]);
+        let ri = if lathe { Axis::X } else { Axis::Z } as usize;
+        let top = self
+            .profile
+            .axis(if lathe { Axis::X } else { Axis::Z })
+            .map(|a| a.max)
+            .unwrap_or(home[ri]);
         let clearance = self.profile.param("restart_clearance_mm", 5.0).abs();
         let mut p1 = home;
         p1[ri] = top.max(home[ri]);
@@ -207,65 +268,20 @@ impl Runtime {
             ("feed", target),
         ];
         legs.dedup_by(|b, a| !super::clock::moved(&a.1, &b.1));
-        let tool = it.tool();
-        let src = SrcRef {
-            file: it.block_at().0.file,
-            line,
-            col: 1,
-        };
-        let ev = |cmd: Canon| Event {
-            src,
-            tool,
-            cmd,
-            prog: None,
-        };
-        let motion = |mto: Pos| {
-            let w = it.work_position();
-            let m = it.machine_position();
-            let mut to = mto;
-            for i in 0..NAXES {
-                to[i] -= m[i] - w[i];
-            }
-            Motion { to, mto }
-        };
-        let feed = it.programmed_feed();
-        let approach = self.profile.param("jog_feed", 2000.0);
-        let mut events = Vec::new();
-        let mut path = Vec::new();
-        for (k, (kind, p)) in legs.iter().enumerate() {
-            let m = motion(*p);
-            events.push(ev(if *kind == "rapid" {
-                Canon::Rapid { m, linear: true }
-            } else {
-                Canon::Feed {
-                    m,
-                    feed: Feed::PerMin(approach),
-                }
-            }));
-            path.push(super::restart::Leg {
-                kind: kind.to_string(),
-                to: self.axis_values(p),
-            });
-            if k == 0 {
-                // At the retract height: tool, spindle, coolant.
-                if tool != self.phys.tool && tool != 0 {
-                    events.push(ev(Canon::Tool {
-                        tool,
-                        offset: 0,
-                        change: true,
-                    }));
-                }
-                if let Some(c) = &seen.clamp {
-                    events.push(c.clone());
-                }
-                if let Some(s) = &seen.spindle {
-                    events.push(s.clone());
-                }
-                if let Some((mist, flood)) = seen.coolant {
-                    events.push(ev(Canon::Coolant { mist, flood }));
-                }
-            }
+        if !super::clock::moved(&home, &legs[0].1) {
+            legs.remove(0);
         }
+        legs
+    }
+
+    fn plan(
+        &self,
+        line: u32,
+        tool: u32,
+        seen: &Seen,
+        path: Vec<Leg>,
+        events: Vec<Event>,
+    ) -> RestartPlan {
         let (dir, rpm) = match seen.spindle.as_ref().map(|e| &e.cmd) {
             Some(Canon::Spindle { dir, rpm, .. }) => (*dir, *rpm),
             _ => (SpindleDir::Stop, 0.0),
@@ -282,8 +298,8 @@ impl Runtime {
             .into(),
             mist: seen.coolant.is_some_and(|c| c.0),
             flood: seen.coolant.is_some_and(|c| c.1),
-            modal: it.modal_codes(),
-            feed,
+            modal: self.interp.modal_codes(),
+            feed: self.interp.programmed_feed(),
             path,
             events,
         }
