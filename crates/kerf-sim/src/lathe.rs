@@ -131,20 +131,33 @@ fn subtract(col: &mut Vec<(f64, f64)>, lo: f64, hi: f64, write: bool) -> f64 {
         }
     }
     if write && changed {
-        let mut out: Vec<(f64, f64)> = Vec::with_capacity(col.len() + 1);
-        for &(a, b) in col.iter() {
+        // In place: trim, drop or split the intervals the cut meets.
+        let mut i = 0;
+        while i < col.len() {
+            let (a, b) = col[i];
             if b <= lo || a >= hi {
-                out.push((a, b));
+                i += 1;
                 continue;
             }
-            if a < lo - EPS {
-                out.push((a, lo));
-            }
-            if b > hi + EPS {
-                out.push((hi, b));
+            match (a < lo - EPS, b > hi + EPS) {
+                (true, true) => {
+                    col[i] = (a, lo);
+                    col.insert(i + 1, (hi, b));
+                    i += 2;
+                }
+                (true, false) => {
+                    col[i].1 = lo;
+                    i += 1;
+                }
+                (false, true) => {
+                    col[i].0 = hi;
+                    i += 1;
+                }
+                (false, false) => {
+                    col.remove(i);
+                }
             }
         }
-        *col = out;
     }
     removed
 }
