@@ -110,7 +110,6 @@ impl RuntimeControl {
         self.sync_history();
         r.map_err(|e| self.refusal(op, before, e))
     }
-
 }
 
 fn mode_of(m: rt::Mode) -> st::Mode {
