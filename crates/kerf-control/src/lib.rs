@@ -37,6 +37,7 @@
 
 pub mod dynamics;
 pub mod job;
+pub mod lint;
 pub mod offsets;
 pub mod runner;
 pub mod runtime;

@@ -266,3 +266,137 @@ fn rate_runs_machine_time_faster() {
     assert!((mx(&rt) - (x0 - 29.95)).abs() < 1e-6);
     assert!(rt.set_rate(0.0).is_err());
 }
+
+#[test]
+fn hurco_m200_lets_block_delete_act_on_the_blocks_after_it() {
+    for (sync, want) in [(true, 20.0), (false, 30.0)] {
+        let mut rt = machine("hurco-lathe");
+        rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+        let mid = if sync { "M200" } else { "G04 F0.1" };
+        rt.load_program(
+            "m200.nc",
+            &format!("G21 G91 G94 G01 Z-10. F600\n{mid}\n/Z-10.\nZ-10.\nM30\n"),
+        )
+        .unwrap();
+        rt.command(Command::CycleStart).unwrap();
+        rt.step(0.5);
+        // Block delete switched on during the first move (1 s long).
+        rt.command(Command::Switch {
+            single_block: None,
+            optional_stop: None,
+            dry_run: None,
+            block_skip: Some(vec![1]),
+        })
+        .unwrap();
+        until(&mut rt, Execution::ProgramCompleted, 30.0);
+        // M200 empties the look-ahead (002 Table 15): the / block read
+        // after it is skipped; without it the block was read already.
+        let z = rt.state().position.machine["z"];
+        assert!((z + want).abs() < 1e-9, "M200 {sync}: z {z}");
+    }
+}
+
+#[test]
+fn single_block_in_compensation_stops_where_each_block_ends() {
+    let text = "G90 G54 G00 X0. Y0. Z10.\nG41 D1 G01 X10. F600\nY10.\nX0.\nG40 G00 X-10.\nM30\n";
+    // The interpreter's own toolpath: the end of each line's last motion.
+    let mut it = kerf_interp::Interp::new(
+        kerf_interp::Profile::builtin("hx-mc").unwrap(),
+        Default::default(),
+    );
+    it.offsets_mut().d_mut(1).unwrap().geom = 5.0;
+    let run = kerf_interp::run_interp(it, "t.nc", text);
+    assert!(run.alarm.is_none());
+    let end_of = |line: u32| {
+        run.events
+            .iter()
+            .rev()
+            .find(|e| e.src.line == line && e.motion().is_some())
+            .map(|e| e.motion().unwrap().mto)
+    };
+    let mut rt = mem(text);
+    rt.write_offset(kerf_control::runtime::OffsetWrite::D {
+        n: 1,
+        geom: Some(5.0),
+        wear: None,
+    })
+    .unwrap();
+    rt.command(Command::Switch {
+        single_block: Some(true),
+        optional_stop: None,
+        dry_run: None,
+        block_skip: None,
+    })
+    .unwrap();
+    rt.command(Command::CycleStart).unwrap();
+    let mut stops = Vec::new();
+    while rt.execution() != Execution::ProgramCompleted {
+        until(&mut rt, Execution::Interrupted, 30.0);
+        let s = rt.state();
+        stops.push((s.program.line, s.position.machine.clone()));
+        rt.command(Command::CycleStart).unwrap();
+        rt.step(0.01);
+        if stops.len() > 20 {
+            panic!("{stops:?}");
+        }
+        if rt.execution() == Execution::Active {
+            rt.run_until_stopped(30.0);
+        }
+    }
+    // One stop per block with motion (1-5; M30 completes), each at the
+    // end of that block's last move.
+    let lines: Vec<u32> = stops.iter().map(|s| s.0).collect();
+    assert_eq!(lines, [1, 2, 3, 4, 5], "{stops:?}");
+    for (line, pos) in &stops {
+        let want = end_of(*line).unwrap();
+        for (k, a) in ["x", "y", "z"].iter().enumerate() {
+            assert!(
+                (pos[*a] - want[k]).abs() < 1e-9,
+                "line {line}: {pos:?} vs {want:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn hold_in_a_dwell_keeps_the_time_left() {
+    let mut rt = mem("G04 X2.\nG91 G01 X-10. F600\nM30\n");
+    let x0 = start(&mut rt);
+    rt.step(0.5);
+    rt.command(Command::FeedHold).unwrap();
+    rt.step(3.0);
+    assert_eq!(rt.execution(), Execution::FeedHold);
+    assert_eq!(mx(&rt), x0);
+    rt.command(Command::CycleStart).unwrap();
+    // 1.5 s of dwell left, then the 10 mm move (1.01 s).
+    rt.step(1.49);
+    assert_eq!(mx(&rt), x0);
+    rt.step(0.51);
+    assert!((mx(&rt) - (x0 - 4.95)).abs() < 1e-6, "{}", mx(&rt));
+}
+
+#[test]
+fn hold_in_a_rapid_stops_on_its_trapezoid() {
+    // Rapid 10 m/min = 166.67 mm/s, accel 2000 mm/s² (rapids use the
+    // axis rapid acceleration in full): cruise after 0.0833 s / 6.944 mm.
+    let mut rt = mem("G91 G00 X-200.\nM30\n");
+    let x0 = start(&mut rt);
+    rt.step(0.5);
+    let v: f64 = 10_000.0 / 60.0;
+    let s_hold = v * v / (2.0 * 2000.0) + v * (0.5 - v / 2000.0);
+    assert!(
+        (mx(&rt) - (x0 - s_hold)).abs() < 1e-6,
+        "{} vs {}",
+        mx(&rt),
+        x0 - s_hold
+    );
+    rt.command(Command::FeedHold).unwrap();
+    rt.step(1.0);
+    let stop = s_hold + v * v / (2.0 * 2000.0);
+    assert!(
+        (mx(&rt) - (x0 - stop)).abs() < 1e-6,
+        "{} vs {}",
+        mx(&rt),
+        x0 - stop
+    );
+}

@@ -251,3 +251,77 @@ fn offset_pages_write_and_refuse() {
     // Parameters only in EDIT/MDI.
     assert!(rt.write_parameter("PI 144", 1.0).is_err());
 }
+
+#[test]
+fn a_macro_loop_without_motion_costs_bounded_work_per_step() {
+    let mut rt = mem("WHILE [1 EQ 1] DO1\n#100 = #100 + 1\nEND1\nM30\n");
+    rt.command(Command::CycleStart).unwrap();
+    let wall = std::time::Instant::now();
+    rt.step(1.0);
+    // One step executes at most 20,000 blocks; the axes do not move and
+    // machine time waits for the interpreter.
+    assert!(wall.elapsed().as_secs_f64() < 5.0);
+    assert_eq!(rt.execution(), Execution::Active);
+    let n = rt.interp().macro_var(100).unwrap();
+    assert!(n > 1000.0 && n <= 20_000.0, "{n}");
+    // RESET ends it.
+    rt.command(Command::Reset).unwrap();
+    assert_eq!(rt.execution(), Execution::Ready);
+}
+
+#[test]
+fn restart_by_sequence_number() {
+    let text = "N10 G90 G54 G00 X-10. Y-10. Z10.\nN20 G01 Z-1. F300\nN30 X-20.\nN40 M30\n";
+    let mut rt = mem(text);
+    rt.command(Command::Restart {
+        line: None,
+        sequence: Some(30),
+    })
+    .unwrap();
+    assert_eq!(rt.pending_restart().unwrap().line, 3);
+    rt.command(Command::CycleStart).unwrap();
+    until(&mut rt, Execution::ProgramCompleted, 30.0);
+    let w = rt.state().position.work;
+    assert!(
+        (w["x"] + 20.0).abs() < 1e-9 && (w["z"] + 1.0).abs() < 1e-9,
+        "{w:?}"
+    );
+}
+
+#[test]
+fn state_dir_keeps_offsets_across_machines() {
+    let dir = std::env::temp_dir().join(format!("kerf-state-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    {
+        let mut rt = machine("hx-mc");
+        rt.set_state_dir(dir.clone()).unwrap();
+        rt.write_offset(OffsetWrite::Work {
+            index: 2,
+            axis: "y".into(),
+            value: -123.25,
+        })
+        .unwrap();
+        rt.write_offset(OffsetWrite::D {
+            n: 3,
+            geom: Some(4.0),
+            wear: Some(-0.01),
+        })
+        .unwrap();
+        rt.write_variable(VarWrite {
+            n: 501,
+            value: Some(-2.5),
+        })
+        .unwrap();
+    }
+    let mut rt = machine("hx-mc");
+    rt.set_state_dir(dir.clone()).unwrap();
+    assert_eq!(rt.work_offset(2).unwrap()[1], -123.25);
+    assert_eq!(rt.interp().offsets().d(3), 3.99);
+    assert_eq!(rt.interp().macro_var(501), Some(-2.5));
+    // A torn or foreign file is an error naming it, not a panic.
+    std::fs::write(dir.join("hx-mc.work"), "0 1 2\n").unwrap();
+    let mut rt = machine("hx-mc");
+    let err = rt.set_state_dir(dir.clone()).unwrap_err();
+    assert!(err.contains("hx-mc.work:1"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -77,8 +77,13 @@ use program::Program;
 /// the axes reach the end of what was planned.
 #[derive(Clone, Debug, PartialEq)]
 enum Pause {
+    /// The look-ahead waits for the axes, then goes on (Hurco M200, M01
+    /// with the optional stop off: 002 Table 15).
+    Sync,
     SingleBlock,
-    Stop { optional: bool },
+    Stop {
+        optional: bool,
+    },
     End,
     Alarm(kerf_canon::Alarm),
 }
@@ -127,8 +132,16 @@ pub struct Runtime {
     /// Line of the last command the axes finished (the block display when
     /// nothing is under way; 0 at the program start).
     last_line: u32,
+    /// Single block: the block (file, line) whose commands went to the
+    /// planner since the last stop, and a command of the next block held
+    /// back until cycle start.
+    sb_block: Option<(u32, u32)>,
+    stash: Option<kerf_canon::Event>,
     /// A jog, handle or reference move under way.
     manual: Option<manual::ManualMove>,
+    /// Commands the interpreter keeps read ahead of the axes (the
+    /// planner's look-ahead window): the control's block buffer.
+    buffer: usize,
     /// Blocks the interpreter may execute in one call of the clock
     /// (bounds the work of one `advance` on a program of statements).
     block_budget: usize,
@@ -139,6 +152,7 @@ impl Runtime {
     /// position, with `dynamics` for the planner (see kerf-motion).
     pub fn new(profile: Profile, dynamics: Dynamics) -> Result<Runtime, String> {
         dynamics.validate()?;
+        let buffer = dynamics.lookahead.max(1);
         let interp = Interp::new(profile.clone(), Settings::default());
         let pos = interp.machine_position();
         let wx = interp.work_position()[0];
@@ -170,7 +184,10 @@ impl Runtime {
             restart: None,
             referenced: [false; NAXES],
             manual: None,
+            sb_block: None,
+            stash: None,
             last_line: 0,
+            buffer,
             block_budget: 20_000,
         })
     }
@@ -253,10 +270,14 @@ impl Runtime {
     }
 
     /// Advances machine time until the execution state is not ACTIVE (or
-    /// `max_dt` machine seconds have passed); returns the time taken.
+    /// `max_dt` machine seconds have passed, or `max_dt / 0.05 + 1000`
+    /// steps were taken: a macro loop without motion takes no machine
+    /// time); returns the machine time taken.
     pub fn run_until_stopped(&mut self, max_dt: f64) -> f64 {
         let t0 = self.clock.t;
-        while self.exec == Execution::Active && self.clock.t - t0 < max_dt {
+        let mut steps = (max_dt / 0.05).min(1e9) as u64 + 1000;
+        while self.exec == Execution::Active && self.clock.t - t0 < max_dt && steps > 0 {
+            steps -= 1;
             self.step(0.05f64.min(max_dt - (self.clock.t - t0)).max(1e-6));
         }
         self.clock.t - t0

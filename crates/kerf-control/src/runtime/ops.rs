@@ -147,6 +147,7 @@ impl Runtime {
             }
             x if x.is_stop_between_blocks() => {
                 self.pause = None;
+                self.sb_block = None;
                 self.exec = Execution::Active;
             }
             Execution::Ready | Execution::ProgramCompleted if self.mode == Mode::Mem => {
@@ -211,6 +212,8 @@ impl Runtime {
         self.hold_at = None;
         self.held = None;
         self.restart = None;
+        self.stash = None;
+        self.sb_block = None;
         self.manual_clear();
         self.phys.spindle = kerf_canon::SpindleDir::Stop;
         self.phys.rpm = 0.0;

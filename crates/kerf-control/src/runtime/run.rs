@@ -13,7 +13,8 @@ use super::mode::Execution;
 use super::snapshot::{AlarmInfo, AxisValues, Positions, ProgramAt, Spindle, State};
 use super::{Pause, Runtime};
 
-/// How far ahead of the axes the interpreter is kept, s of machine time.
+/// How far ahead of the axes the interpreter is kept, s of machine time
+/// (and at least the planner's look-ahead window of commands).
 const AHEAD: f64 = 0.5;
 
 impl Runtime {
@@ -38,6 +39,13 @@ impl Runtime {
                     return false;
                 }
                 let emitted = self.clock.sched.len() > before;
+                if self.hurco()
+                    && self.pause.is_none()
+                    && self.interp.last_block_has_m(1)
+                    && !self.switches.optional_stop
+                {
+                    self.pause = Some(Pause::Sync);
+                }
                 let statement = self.interp.last_block_is_statement();
                 let sb_macro = self.profile.param("single_block_macro", 0.0) != 0.0;
                 if self.switches.single_block
@@ -68,9 +76,23 @@ impl Runtime {
     /// one of them paused the program (M00/M01, the end).
     fn drain_events(&mut self) -> bool {
         while self.pause.is_none() {
-            let Some(e) = self.interp.take_event() else {
+            let Some(e) = self.stash.take().or_else(|| self.interp.take_event()) else {
                 return true;
             };
+            // Single block: a command of another block than the one being
+            // stepped waits for the next cycle start (compensation hands
+            // out two blocks' moves after one read).
+            let block = (e.src.file, e.src.line);
+            if self.switches.single_block && self.interp.single_block_stop() {
+                match self.sb_block {
+                    Some(b) if b != block => {
+                        self.stash = Some(e);
+                        self.pause = Some(Pause::SingleBlock);
+                        return false;
+                    }
+                    _ => self.sb_block = Some(block),
+                }
+            }
             match &e.cmd {
                 Canon::Stop { optional } => {
                     self.pause = Some(Pause::Stop {
@@ -78,6 +100,7 @@ impl Runtime {
                     })
                 }
                 Canon::End { .. } => self.pause = Some(Pause::End),
+                Canon::Aux { m: 200, .. } if self.hurco() => self.pause = Some(Pause::Sync),
                 Canon::Message(text) => {
                     let r = self.record(RecordKind::Message, "", text, Some(e.src));
                     self.log.push(r);
@@ -118,7 +141,11 @@ impl Runtime {
         let mut budget = self.block_budget;
         loop {
             // Keep the plan ahead of the axes.
-            while self.feeding() && budget > 0 && self.clock.planned_until() < target + AHEAD {
+            while self.feeding()
+                && budget > 0
+                && (self.clock.planned_until() < target + AHEAD
+                    || self.clock.sched.len() < self.buffer)
+            {
                 budget -= 1;
                 if !self.feed_block() {
                     break;
@@ -164,6 +191,12 @@ impl Runtime {
     /// The commands the axes have passed by time `t`: the spindle, tool
     /// and coolant change.
     fn apply_passed(&mut self, t: f64) {
+        // In a feed hold the commands after the stop wait (their planned
+        // times are those before the hold).
+        let t = match &self.held {
+            Some(h) => t.min(h.t_stop),
+            None => t,
+        };
         let phys = &mut self.phys;
         let last = &mut self.last_line;
         self.clock.drop_finished(t, |s: &Sched| {
@@ -203,8 +236,10 @@ impl Runtime {
         }
         let Some(p) = self.pause.clone() else { return };
         match p {
+            Pause::Sync => self.pause = None,
             Pause::SingleBlock => {
                 self.pause = None;
+                self.sb_block = None;
                 self.exec = Execution::Interrupted;
             }
             Pause::Stop { optional } => {
@@ -244,6 +279,10 @@ impl Runtime {
         }
     }
 
+    fn hurco(&self) -> bool {
+        self.profile.dialect == kerf_interp::DialectId::Hurco
+    }
+
     /// Feed hold at machine time `t`.
     pub(super) fn hold_now(&mut self, t: f64) {
         self.hold_at = None;
@@ -258,10 +297,29 @@ impl Runtime {
     pub fn state(&self) -> State {
         let t = self.clock.t;
         let mpos = self.clock.position(t);
-        let cur = self
-            .clock
-            .current()
-            .filter(|s| s.t_end.is_none_or(|te| te >= t));
+        let t_eff = match &self.held {
+            Some(h) => t.min(h.t_stop),
+            None => t,
+        };
+        let moving = self.exec == Execution::Active && self.held.is_none();
+        // Running: the command under way; in a feed hold: the one
+        // interrupted; stopped: the last one finished.
+        let cur = if moving {
+            self.clock
+                .current()
+                .filter(|s| s.t_end.is_none_or(|te| te >= t))
+        } else if self.held.is_some() {
+            self.clock
+                .sched
+                .iter()
+                .find(|s| s.t_end.is_none_or(|te| te > t_eff))
+        } else {
+            self.clock
+                .sched
+                .iter()
+                .rev()
+                .find(|s| s.t_end.is_some_and(|te| te <= t_eff + 1e-12))
+        };
         // Work = machine − (the current motion's machine − work offset).
         let (shift, end) = match cur.and_then(|s| s.ev.motion().map(|m| (s, m))) {
             Some((_, m)) => {

@@ -79,6 +79,16 @@ impl Interp {
         self.block.stmt.is_some()
     }
 
+    /// Whether the last block read carried M code `m` (e.g. the Hurco M01
+    /// with the optional stop off, which still empties the look-ahead,
+    /// 002 Table 15).
+    pub fn last_block_has_m(&self, m: u32) -> bool {
+        self.block
+            .words
+            .iter()
+            .any(|w| w.addr == Addr::L(b'M') && matches!(w.val, Val::Num(n) if n.value == m as f64))
+    }
+
     /// Whether a move is held for the next block (cutter / nose radius
     /// compensation, `,C`/`,R`): the block's motion is not out yet.
     pub fn holds_motion(&self) -> bool {
