@@ -3,6 +3,7 @@
 //! to its end, 1 it stopped on an alarm, 2 usage or I/O error.
 
 mod dynamics;
+mod expand;
 mod offsets;
 mod plot;
 mod report;
@@ -83,6 +84,19 @@ enum Cmd {
         #[command(flatten)]
         common: Common,
     },
+    /// Write the program as plain G-code for another control: every macro,
+    /// call, cycle, compensation, transform and offset resolved
+    /// (docs/expand.md).
+    Expand {
+        #[command(flatten)]
+        common: Common,
+        /// Target: `fanuc` (the same kind of control) or `linuxcnc`.
+        #[arg(long, default_value = "fanuc")]
+        to: String,
+        /// Output file (default: standard output).
+        #[arg(short = 'o', long = "output", value_name = "OUT.nc")]
+        out: Option<PathBuf>,
+    },
     /// List the built-in machine profiles.
     Machines,
 }
@@ -120,6 +134,7 @@ fn main() -> ExitCode {
             run(&common, toolpath, report, plot, sample, log, false)
         }
         Cmd::Check { common } => run(&common, None, None, None, None, None, true),
+        Cmd::Expand { common, to, out } => expand::expand(&common, &to, out),
     }
 }
 

@@ -1,0 +1,2 @@
+//! Shared by the expansion tests.
+pub mod programs;

@@ -1,0 +1,167 @@
+//! `kerf expand --to fanuc` round trip: for every example, corpus program
+//! and rs274 reference program, `kerf run` of the expanded output gives
+//! the same motions as `kerf run` of the original, record for record:
+//! the kind, the end point `to` on every axis and the arc centre to 1 µm,
+//! the arc direction, the feed (mm/min), the thread lead, the dwell time
+//! and the tool. The source lines differ (the output has its own) and so
+//! may `mto` and `t_end` (the output needs no work offset or tool length
+//! to reach the same tip positions).
+//!
+//! A program that stops on an alarm must expand up to the alarm: `kerf
+//! expand` exits 1 with the same alarm line as `kerf run`, and the
+//! output runs to its end with the records the original made before the
+//! alarm.
+
+mod common;
+
+use std::path::Path;
+
+use common::programs::{corpus, examples, records, rs274_programs, scratch, Case};
+use serde_json::Value;
+
+const TOL: f64 = 1e-3;
+
+fn close(a: &Value, b: &Value) -> bool {
+    match (a.as_f64(), b.as_f64()) {
+        (Some(x), Some(y)) => (x - y).abs() <= TOL * x.abs().max(1.0),
+        _ => a == b,
+    }
+}
+
+/// Differences between two records, or None when they are the same motion.
+fn differs(a: &Value, b: &Value) -> Option<String> {
+    for key in ["kind", "dir", "tool"] {
+        if a.get(key) != b.get(key) {
+            return Some(format!("{key} {:?} vs {:?}", a.get(key), b.get(key)));
+        }
+    }
+    for key in ["to", "center"] {
+        let (pa, pb) = (a.get(key), b.get(key));
+        let same = match (pa.and_then(Value::as_object), pb.and_then(Value::as_object)) {
+            (Some(x), Some(y)) => {
+                x.len() == y.len()
+                    && x.iter().all(|(k, v)| {
+                        let w = y.get(k).and_then(Value::as_f64);
+                        matches!((v.as_f64(), w), (Some(p), Some(q)) if (p - q).abs() <= TOL)
+                    })
+            }
+            (None, None) => true,
+            _ => false,
+        };
+        if !same {
+            return Some(format!("{key} {pa:?} vs {pb:?}"));
+        }
+    }
+    for key in ["feed", "feed_per_rev", "lead", "seconds", "revolutions"] {
+        match (a.get(key), b.get(key)) {
+            (Some(x), Some(y)) if close(x, y) => {}
+            (None, None) => {}
+            (x, y) => return Some(format!("{key} {x:?} vs {y:?}")),
+        }
+    }
+    None
+}
+
+/// `kerf run` with a toolpath: (exit code, first stderr line, records).
+fn run(case: &Case, program: &Path, tag: &str) -> (Option<i32>, String, Vec<Value>) {
+    let tp = scratch(&format!("{}-{tag}", case.label), "jsonl");
+    let _ = std::fs::remove_file(&tp);
+    let out = case
+        .kerf("run", program, &["--toolpath", tp.to_str().unwrap()])
+        .output()
+        .expect("kerf runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    let first = err.lines().find(|l| l.contains(": alarm ")).unwrap_or("").to_string();
+    (out.status.code(), first, records(&tp))
+}
+
+/// Runs one case; returns its problems (empty when the round trip holds)
+/// and whether it was compared.
+fn round_trip(case: &Case) -> (Vec<String>, bool) {
+    let (code, alarm, want) = run(case, &case.program, "orig");
+    if !matches!(code, Some(0) | Some(1)) {
+        return (Vec::new(), false);
+    }
+    let nc = scratch(&case.label, "expanded.nc");
+    let out = case
+        .kerf("expand", &case.program, &["-o", nc.to_str().unwrap()])
+        .output()
+        .expect("kerf expands");
+    let err = String::from_utf8_lossy(&out.stderr);
+    let mut problems = Vec::new();
+    if out.status.code() != code {
+        problems.push(format!(
+            "expand exit {:?}, run exit {code:?}: {}",
+            out.status.code(),
+            err.trim()
+        ));
+        return (problems, true);
+    }
+    let expand_alarm = err.lines().find(|l| l.contains(": alarm ")).unwrap_or("");
+    if expand_alarm != alarm {
+        problems.push(format!("expand alarm '{expand_alarm}', run alarm '{alarm}'"));
+    }
+    let (code2, alarm2, got) = run(case, &nc, "expanded");
+    if code2 != Some(0) {
+        problems.push(format!(
+            "the expanded program ({}) exits {code2:?}: {alarm2}",
+            nc.display()
+        ));
+        return (problems, true);
+    }
+    if want.len() != got.len() {
+        problems.push(format!(
+            "{} records from the original, {} from the expanded program",
+            want.len(),
+            got.len()
+        ));
+    }
+    for (i, (a, b)) in want.iter().zip(&got).enumerate() {
+        if let Some(d) = differs(a, b) {
+            problems.push(format!(
+                "record {i} (original line {}, expanded line {}): {d}",
+                a["line"], b["line"]
+            ));
+            break;
+        }
+    }
+    (problems, true)
+}
+
+fn check_all(cases: &[Case]) -> usize {
+    let mut failures = Vec::new();
+    let mut compared = 0;
+    for case in cases {
+        let (problems, done) = round_trip(case);
+        compared += done as usize;
+        for p in problems {
+            failures.push(format!("{}: {p}", case.label));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {} programs differ:\n{}",
+        failures.len(),
+        cases.len(),
+        failures.join("\n")
+    );
+    compared
+}
+
+#[test]
+fn examples_expand_to_the_same_motions() {
+    let cases = examples();
+    let n = check_all(&cases);
+    // Every example either completes or stops on an alarm.
+    assert_eq!(n, cases.len());
+    assert!(n > 50, "only {n} examples found");
+}
+
+#[test]
+fn corpus_and_reference_programs_expand_to_the_same_motions() {
+    let mut cases = corpus();
+    cases.extend(rs274_programs());
+    let n = check_all(&cases);
+    println!("{n} of {} programs compared", cases.len());
+    assert!(n >= rs274_programs().len());
+}
