@@ -1,11 +1,11 @@
 //! `kerf expand --to fanuc` round trip: for every example, corpus program
 //! and rs274 reference program, `kerf run` of the expanded output gives
 //! the same motions as `kerf run` of the original, record for record:
-//! the kind, the end point `to` on every axis and the arc centre to 1 µm,
-//! the arc direction, the feed (mm/min), the thread lead, the dwell time
-//! and the tool. The source lines differ (the output has its own) and so
-//! may `mto` and `t_end` (the output needs no work offset or tool length
-//! to reach the same tip positions).
+//! the kind, the end point `to` and `mto` (the output sets the original's
+//! frame where it changes) on every axis and the arc centre to 1 µm, the
+//! arc direction, the feed (mm/min), the thread lead, the dwell time and
+//! the tool. The source lines differ (the output has its own) and so may
+//! `t_end` (the output's blocks are not the original's).
 //!
 //! A program that stops on an alarm must expand up to the alarm: `kerf
 //! expand` exits 1 with the same alarm line as `kerf run`, and the
@@ -35,7 +35,7 @@ fn differs(a: &Value, b: &Value) -> Option<String> {
             return Some(format!("{key} {:?} vs {:?}", a.get(key), b.get(key)));
         }
     }
-    for key in ["to", "center"] {
+    for key in ["to", "mto", "center"] {
         let (pa, pb) = (a.get(key), b.get(key));
         let same = match (pa.and_then(Value::as_object), pb.and_then(Value::as_object)) {
             (Some(x), Some(y)) => {

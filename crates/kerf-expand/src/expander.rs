@@ -13,10 +13,9 @@ use kerf_canon::{Alarm, ArcDir, Axis, Canon, Event, Feed, Motion, Plane, Pos, NA
 use crate::num;
 use crate::target::{Spelling, Target, ThreadWord};
 
-/// Past this distance (mm) between the arc start the output program holds
-/// and the start the original had, the output resets its frame first
-/// (rounding of the written numbers stays far below it).
-const FRAME_TOL: f64 = 2e-3;
+/// A change of the original's frame (machine − work) larger than this (mm)
+/// is set in the output; smaller ones are float noise.
+const FRAME_TOL: f64 = 1e-7;
 
 /// Writes events as G-code blocks.
 pub struct Expander<W: Write> {
@@ -31,6 +30,8 @@ pub struct Expander<W: Write> {
     held: Pos,
     /// The machine position after the previous motion of the original.
     prev_mto: Pos,
+    /// The output's frame: machine − work position per axis.
+    shift: Pos,
     motion: Option<u8>,
     feed_mode: Option<usize>,
     feed: Option<i64>,
@@ -67,6 +68,7 @@ impl<W: Write> Expander<W> {
             written: [None; NAXES],
             held: start_work,
             prev_mto: start_machine,
+            shift: std::array::from_fn(|i| start_machine[i] - start_work[i]),
             motion: None,
             feed_mode: None,
             feed: None,
@@ -325,6 +327,17 @@ impl<W: Write> Expander<W> {
     /// The axis words of a move to `to`: every axis whose written value
     /// changes, and the axes in `always` (an arc's plane).
     fn axis_words(&mut self, to: &Pos, always: [usize; 2]) {
+        // A move that goes nowhere in the output's numbers still names an
+        // axis, so that it is a motion (the original's record) there too.
+        let first = self.axes.first().map_or(0, |a| *a as usize);
+        let always = if always[0] == usize::MAX { [first, usize::MAX] } else { always };
+        let mut any = false;
+        for k in 0..self.axes.len() {
+            let i = self.axes[k] as usize;
+            let n = self.scaled_axis(i, to[i]);
+            any |= self.written[i] != Some(n);
+        }
+        let always = if any && always[1] == usize::MAX { [usize::MAX; 2] } else { always };
         for k in 0..self.axes.len() {
             let i = self.axes[k] as usize;
             let n = self.scaled_axis(i, to[i]);
@@ -343,6 +356,7 @@ impl<W: Write> Expander<W> {
     }
 
     fn linear(&mut self, g: u8, m: &Motion, feed: Option<Feed>) -> Written {
+        self.frame(m);
         self.motion_prefix();
         if let Some(f) = feed {
             self.feed_mode_code(feed_parts(f).0);
@@ -368,40 +382,43 @@ impl<W: Write> Expander<W> {
         }
     }
 
-    /// The arc's start the original had, in the work frame of its end
-    /// (machine positions are frame-free; work and machine differ by a
-    /// shift only).
-    fn original_start(&self, m: &Motion) -> Pos {
-        let mut s = self.prev_mto;
-        for i in 0..NAXES {
-            s[i] += m.to[i] - m.mto[i];
+    /// Keeps the output's frame (work = machine − shift) the original's.
+    /// Where the original's changed since the last motion (a work offset
+    /// selected, G92/G52, a tool length or tool offset taken up), the
+    /// output sets the same frame at the current position with G92 (PUMA
+    /// G50), as a block of its own before the move; so every move starts
+    /// and ends where the original's did, in machine coordinates too.
+    fn frame(&mut self, m: &Motion) {
+        let mut changed = false;
+        for k in 0..self.axes.len() {
+            let i = self.axes[k] as usize;
+            if (m.mto[i] - m.to[i] - self.shift[i]).abs() > FRAME_TOL {
+                changed = true;
+            }
         }
-        s
-    }
-
-    /// When the frame changed between moves without a motion (a work
-    /// offset selected, G92 …), the output sets its own frame (G92, PUMA
-    /// G50) so the arc starts where the original's did.
-    fn frame_reset(&mut self, start: &Pos, a1: usize, a2: usize) -> bool {
-        if (start[a1] - self.held[a1]).abs() <= FRAME_TOL
-            && (start[a2] - self.held[a2]).abs() <= FRAME_TOL
-        {
-            return false;
+        if !changed {
+            return;
         }
         let g = match (self.sp.target, self.sp.control) {
             (Target::Fanuc, crate::Control::Puma) => "G50",
             _ => "G92",
         };
         self.code(g);
-        for i in [a1, a2] {
-            let n = self.scaled_axis(i, start[i]);
+        for k in 0..self.axes.len() {
+            let i = self.axes[k] as usize;
+            let shift = m.mto[i] - m.to[i];
+            if (shift - self.shift[i]).abs() <= FRAME_TOL {
+                continue;
+            }
+            self.shift[i] = shift;
+            let n = self.scaled_axis(i, self.prev_mto[i] - shift);
             self.written[i] = Some(n);
             self.held[i] = self.value_of(i, n);
             self.sep();
             self.buf.push(AXIS_LETTERS[i]);
             num::put_scaled(&mut self.buf, n, self.sp.decimals);
         }
-        true
+        self.buf.push(b'\n');
     }
 
     fn arc(
@@ -420,11 +437,7 @@ impl<W: Write> Expander<W> {
                 "an arc of more than one turn has no single-block form on this control",
             ));
         }
-        let start = self.original_start(m);
-        if self.frame_reset(&start, a1, a2) {
-            // The frame block is a block of its own before the arc.
-            self.buf.push(b'\n');
-        }
+        self.frame(m);
         let from = self.held;
         self.motion_prefix();
         self.feed_mode_code(feed_parts(feed).0);
@@ -446,11 +459,15 @@ impl<W: Write> Expander<W> {
     }
 
     fn thread(&mut self, m: &Motion, lead: f64) -> Written {
+        self.frame(m);
         self.motion_prefix();
+        // Hurco: the lead goes with the axis of the longer move (002 G33).
+        let x_longer = (m.to[0] - self.held[0]).abs() > (m.to[2] - self.held[2]).abs() + 1e-9;
         let (g, letter) = match (self.sp.target, self.sp.thread) {
             (Target::LinuxCnc, _) => (33, b'K'),
             (_, ThreadWord::G32F) => (32, b'F'),
             (_, ThreadWord::G33F) => (33, b'F'),
+            (_, ThreadWord::G33K) if x_longer => (33, b'I'),
             (_, ThreadWord::G33K) => (33, b'K'),
         };
         self.motion_code(g);

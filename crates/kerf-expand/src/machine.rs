@@ -218,9 +218,12 @@ impl<W: Write> Expander<W> {
         let control = self.sp().control;
         self.put_str("T");
         if !linux && control.is_lathe() {
-            // T tool(2) offset(2): PUMA T0101, Hurco T mm…nn.
+            // T tool(2) offset(2), PUMA T0101, Hurco T mm…nn; the offset
+            // number is 00: the tool offset is in the output's frame
+            // (G50/G92 before the next move), not taken up a second time.
+            let _ = offset;
             num::put_uint(self.buf(), tool as u64, 2);
-            num::put_uint(self.buf(), offset as u64, 2);
+            self.put_str("00");
         } else {
             num::put_uint(self.buf(), tool as u64, 1);
         }
