@@ -181,7 +181,7 @@ impl<W: Write> Expander<W> {
             return Written::Nothing;
         }
         self.coolant = (mist, flood);
-        // One M code per block on the Fanuc controls: M09 first when
+        // One M code per block (Fanuc; LinuxCNC's one modal group): M09 first when
         // something goes off, then what comes on, each its own block.
         let mut codes: Vec<&str> = Vec::with_capacity(3);
         if (was_mist && !mist) || (was_flood && !flood) {
@@ -203,8 +203,9 @@ impl<W: Write> Expander<W> {
         let linux = self.sp().target == Target::LinuxCnc;
         for (k, c) in codes.iter().enumerate() {
             if k > 0 {
-                self.put_str(if linux { " " } else { "\n" });
+                self.put_str("\n");
             }
+            // LinuxCNC spells them M7 M8 M9.
             self.put_str(if linux { &c[..1] } else { c });
             if linux {
                 self.put_str(&c[2..]);
