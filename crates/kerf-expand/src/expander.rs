@@ -40,6 +40,9 @@ pub struct Expander<W: Write> {
     pub(crate) coolant: (bool, bool),
     exact_stop_block: bool,
     blocks: u64,
+    /// The file the cached comment head is for, and `(NAME:` for it.
+    comment_file: String,
+    comment_head: Vec<u8>,
 }
 
 /// How an event maps to an output block: the words go to `buf`, then the
@@ -77,6 +80,8 @@ impl<W: Write> Expander<W> {
             coolant: (false, false),
             exact_stop_block: false,
             blocks: 0,
+            comment_file: String::new(),
+            comment_head: b"(:".to_vec(),
         }
     }
 
@@ -197,29 +202,35 @@ impl<W: Write> Expander<W> {
     /// Ends the block in `buf` (or each of its lines, when an event takes
     /// more than one block) with the source comment and writes it.
     fn end_block(&mut self, file: &str, line: u32) -> io::Result<()> {
-        let mut tail = Vec::with_capacity(80);
-        tail.push(b'(');
-        push_comment_text(&mut tail, base_name(file), 64);
-        tail.push(b':');
+        if file != self.comment_file {
+            self.comment_file.clear();
+            self.comment_file.push_str(file);
+            self.comment_head.clear();
+            self.comment_head.push(b'(');
+            push_comment_text(&mut self.comment_head, base_name(file), 64);
+            self.comment_head.push(b':');
+        }
+        let multi = self.buf.contains(&b'\n');
+        if !multi {
+            self.sep();
+            self.buf.extend_from_slice(&self.comment_head);
+            num::put_uint(&mut self.buf, line as u64, 1);
+            self.buf.extend_from_slice(b")\n");
+            self.blocks += 1;
+            return self.w.write_all(&self.buf);
+        }
+        let mut tail = self.comment_head.clone();
         num::put_uint(&mut tail, line as u64, 1);
         tail.extend_from_slice(b")\n");
-        let mut rest: &[u8] = &self.buf;
-        loop {
-            let (piece, more) = match rest.iter().position(|&c| c == b'\n') {
-                Some(k) => (&rest[..k], Some(&rest[k + 1..])),
-                None => (rest, None),
-            };
+        for piece in self.buf.split(|&c| c == b'\n') {
             self.w.write_all(piece)?;
             if !piece.is_empty() {
                 self.w.write_all(b" ")?;
             }
             self.w.write_all(&tail)?;
             self.blocks += 1;
-            match more {
-                Some(r) => rest = r,
-                None => return Ok(()),
-            }
         }
+        Ok(())
     }
 
     fn word(&mut self, letter: u8, v: f64, dec: u32) {
@@ -331,22 +342,22 @@ impl<W: Write> Expander<W> {
         // axis, so that it is a motion (the original's record) there too.
         let first = self.axes.first().map_or(0, |a| *a as usize);
         let always = if always[0] == usize::MAX { [first, usize::MAX] } else { always };
+        let mut n = [0i64; NAXES];
         let mut any = false;
         for k in 0..self.axes.len() {
             let i = self.axes[k] as usize;
-            let n = self.scaled_axis(i, to[i]);
-            any |= self.written[i] != Some(n);
+            n[i] = self.scaled_axis(i, to[i]);
+            any |= self.written[i] != Some(n[i]);
         }
         let always = if any && always[1] == usize::MAX { [usize::MAX; 2] } else { always };
         for k in 0..self.axes.len() {
             let i = self.axes[k] as usize;
-            let n = self.scaled_axis(i, to[i]);
-            if self.written[i] != Some(n) || always.contains(&i) {
-                self.written[i] = Some(n);
-                self.held[i] = self.value_of(i, n);
+            if self.written[i] != Some(n[i]) || always.contains(&i) {
+                self.written[i] = Some(n[i]);
+                self.held[i] = self.value_of(i, n[i]);
                 self.sep();
                 self.buf.push(AXIS_LETTERS[i]);
-                num::put_scaled(&mut self.buf, n, self.sp.decimals);
+                num::put_scaled(&mut self.buf, n[i], self.sp.decimals);
             }
         }
     }
