@@ -16,7 +16,7 @@ mod common;
 
 use std::path::Path;
 
-use common::programs::{corpus, examples, records, rs274_programs, scratch, Case};
+use common::programs::{corpus, examples, expand_programs, records, rs274_programs, scratch, Case};
 use serde_json::Value;
 
 const TOL: f64 = 1e-3;
@@ -164,4 +164,12 @@ fn corpus_and_reference_programs_expand_to_the_same_motions() {
     let n = check_all(&cases);
     println!("{n} of {} programs compared", cases.len());
     assert!(n >= rs274_programs().len());
+}
+
+#[test]
+fn macro_cycle_transform_programs_expand_to_the_same_motions() {
+    let cases = expand_programs();
+    assert!(cases.len() >= 4);
+    // Each of them completes (they are written to), so each is compared.
+    assert_eq!(check_all(&cases), cases.len());
 }

@@ -19,7 +19,7 @@ mod common;
 
 use std::process::{Command, Stdio};
 
-use common::programs::{corpus, examples, records, rs274_programs, scratch, Case};
+use common::programs::{corpus, examples, expand_programs, records, rs274_programs, scratch, Case};
 use serde_json::Value;
 
 const TOL: f64 = 1e-3 + 1e-4;
@@ -189,6 +189,7 @@ fn rs274_runs_the_linuxcnc_output_to_kerfs_end_points() {
     let mut cases: Vec<Case> = examples().into_iter().filter(Case::is_mill).collect();
     cases.extend(corpus().into_iter().filter(Case::is_mill));
     cases.extend(rs274_programs());
+    cases.extend(expand_programs().into_iter().filter(Case::is_mill));
     let (mut compared, mut moves, mut failures) = (0, 0, Vec::new());
     for case in &cases {
         if let Some((n, problems)) = check(case) {

@@ -6,12 +6,10 @@
 /// The integer `v × 10^dec` rounded half away from zero, saturating at
 /// ±10^15 (no axis, feed or speed comes near; it keeps the text bounded).
 pub fn scaled(v: f64, dec: u32) -> i64 {
-    let s = (v * POW10[dec as usize]).round();
-    if s.is_nan() {
-        0
-    } else {
-        s.clamp(-1e15, 1e15) as i64
-    }
+    // `f64::round` is a library call on the x86-64 baseline; adding ½ with
+    // the value's sign and truncating (`as` saturates, NaN gives 0) is not.
+    let s = (v * POW10[dec as usize]).clamp(-1e15, 1e15);
+    (s + 0.5f64.copysign(s)) as i64
 }
 
 /// The value a scaled integer stands for.

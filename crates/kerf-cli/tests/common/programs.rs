@@ -1,7 +1,9 @@
 //! The programs the expansion tests run: every example under `examples/`
 //! (machine and `--set` switches from its `.expect.toml` files), the
 //! shared corpus beside the repository (machine by folder, as
-//! tests/corpus.rs), and the rs274 reference programs of kerf-interp.
+//! tests/corpus.rs), the rs274 reference programs of kerf-interp, and the
+//! programs written for the expansion (`tests/expand/MACHINE/*.nc`: macros,
+//! cycles, transforms and compensation together).
 
 #![allow(dead_code)]
 
@@ -132,6 +134,24 @@ pub fn rs274_programs() -> Vec<Case> {
             sets: vec!["PI 129=0.254".into()],
         })
         .collect()
+}
+
+/// The expansion's own programs, `tests/expand/MACHINE/NAME.nc`.
+pub fn expand_programs() -> Vec<Case> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/expand");
+    let mut out = Vec::new();
+    for sub in sorted_files(&dir) {
+        let machine = sub.file_name().unwrap().to_string_lossy().to_string();
+        for p in sorted_files(&sub) {
+            out.push(Case {
+                label: format!("expand/{machine}/{}", p.file_name().unwrap().to_string_lossy()),
+                program: p,
+                machine: machine.clone(),
+                sets: Vec::new(),
+            });
+        }
+    }
+    out
 }
 
 /// A scratch file path for this test binary.
