@@ -77,7 +77,9 @@ pub fn expand(c: &Common, to: &str, out: Option<PathBuf>) -> ExitCode {
     let mut x = Expander::new(w, sp, axes, it.work_position(), it.machine_position());
     let name = c.program.display().to_string();
     let io = |e: std::io::Error| {
-        let place = out.as_ref().map_or("stdout".into(), |p| p.display().to_string());
+        let place = out
+            .as_ref()
+            .map_or("stdout".into(), |p| p.display().to_string());
         usage_error(format!("{place}: {e}"))
     };
     if let Err(e) = x.start(&name) {

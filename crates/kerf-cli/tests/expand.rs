@@ -71,7 +71,11 @@ fn run(case: &Case, program: &Path, tag: &str) -> (Option<i32>, String, Vec<Valu
         .output()
         .expect("kerf runs");
     let err = String::from_utf8_lossy(&out.stderr);
-    let first = err.lines().find(|l| l.contains(": alarm ")).unwrap_or("").to_string();
+    let first = err
+        .lines()
+        .find(|l| l.contains(": alarm "))
+        .unwrap_or("")
+        .to_string();
     (out.status.code(), first, records(&tp))
 }
 
@@ -99,7 +103,9 @@ fn round_trip(case: &Case) -> (Vec<String>, bool) {
     }
     let expand_alarm = err.lines().find(|l| l.contains(": alarm ")).unwrap_or("");
     if expand_alarm != alarm {
-        problems.push(format!("expand alarm '{expand_alarm}', run alarm '{alarm}'"));
+        problems.push(format!(
+            "expand alarm '{expand_alarm}', run alarm '{alarm}'"
+        ));
     }
     let (code2, alarm2, got) = run(case, &nc, "expanded");
     if code2 != Some(0) {

@@ -65,7 +65,11 @@ fn parse_canon(text: &str) -> Result<Vec<Move>, String> {
         } else if l.contains("STRAIGHT_TRAVERSE(") || l.contains("STRAIGHT_FEED(") {
             let a = args(l);
             out.push(Move {
-                kind: if l.contains("TRAVERSE") { "rapid" } else { "feed" },
+                kind: if l.contains("TRAVERSE") {
+                    "rapid"
+                } else {
+                    "feed"
+                },
                 to: [a[0], a[1], a[2], a[5]],
                 centre: None,
                 line: n + 1,
@@ -127,11 +131,18 @@ fn check(case: &Case) -> Option<(usize, Vec<String>)> {
         .collect();
     let ngc = scratch(&case.label, "ngc");
     let out = case
-        .kerf("expand", &case.program, &["--to", "linuxcnc", "-o", ngc.to_str().unwrap()])
+        .kerf(
+            "expand",
+            &case.program,
+            &["--to", "linuxcnc", "-o", ngc.to_str().unwrap()],
+        )
         .output()
         .unwrap();
     if !out.status.success() {
-        return Some((0, vec![format!("expand: {}", String::from_utf8_lossy(&out.stderr))]));
+        return Some((
+            0,
+            vec![format!("expand: {}", String::from_utf8_lossy(&out.stderr))],
+        ));
     }
     let text = std::fs::read_to_string(&ngc).unwrap();
     let tbl = scratch(&case.label, "tbl");
@@ -145,7 +156,8 @@ fn check(case: &Case) -> Option<(usize, Vec<String>)> {
         .stdin(Stdio::null())
         .output()
         .unwrap();
-    let canon = String::from_utf8_lossy(&rs.stdout).to_string() + &String::from_utf8_lossy(&rs.stderr);
+    let canon =
+        String::from_utf8_lossy(&rs.stdout).to_string() + &String::from_utf8_lossy(&rs.stderr);
     let got = match parse_canon(&canon) {
         Ok(g) => g,
         Err(e) => return Some((0, vec![format!("{e} ({})", ngc.display())])),
@@ -155,7 +167,11 @@ fn check(case: &Case) -> Option<(usize, Vec<String>)> {
         problems.push(format!("kerf {} moves, rs274 {}", want.len(), got.len()));
     }
     for (i, (w, g)) in want.iter().zip(&got).enumerate() {
-        let kerf_kind = if w["kind"] == "thread" { "feed" } else { w["kind"].as_str().unwrap() };
+        let kerf_kind = if w["kind"] == "thread" {
+            "feed"
+        } else {
+            w["kind"].as_str().unwrap()
+        };
         let to = ["x", "y", "z", "c"].map(|a| axis(w, "to", a));
         let mut bad = kerf_kind != g.kind || (0..4).any(|k| (to[k] - g.to[k]).abs() > TOL);
         if let Some((c, dir)) = g.centre {
@@ -180,7 +196,12 @@ fn check(case: &Case) -> Option<(usize, Vec<String>)> {
 
 #[test]
 fn rs274_runs_the_linuxcnc_output_to_kerfs_end_points() {
-    if Command::new("rs274").arg("-h").stdin(Stdio::null()).output().is_err() {
+    if Command::new("rs274")
+        .arg("-h")
+        .stdin(Stdio::null())
+        .output()
+        .is_err()
+    {
         println!(
             "skipped: rs274 not installed (apt-get install -y --no-install-recommends linuxcnc-uspace)"
         );

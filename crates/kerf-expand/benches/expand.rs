@@ -115,7 +115,10 @@ fn main() {
             events.push(e);
         }
         let start = interp(&path);
-        report("write", (0..runs).map(|_| write_only(&events, &start)).collect());
+        report(
+            "write",
+            (0..runs).map(|_| write_only(&events, &start)).collect(),
+        );
     }
     if want("pipeline") {
         report("pipeline", (0..runs).map(|_| pipeline(&path)).collect());

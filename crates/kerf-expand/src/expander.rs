@@ -156,7 +156,13 @@ impl<W: Write> Expander<W> {
     pub fn alarm(&mut self, a: &Alarm, file: &str) -> io::Result<()> {
         self.buf.clear();
         self.buf.extend_from_slice(b"(ALARM ");
-        let text = format!("{} {}:{}: {}", a.code, base_name(file), a.src.line, a.message);
+        let text = format!(
+            "{} {}:{}: {}",
+            a.code,
+            base_name(file),
+            a.src.line,
+            a.message
+        );
         push_comment_text(&mut self.buf, &text, 200);
         self.buf.extend_from_slice(b")\n");
         self.w.write_all(&self.buf)
@@ -341,7 +347,11 @@ impl<W: Write> Expander<W> {
         // A move that goes nowhere in the output's numbers still names an
         // axis, so that it is a motion (the original's record) there too.
         let first = self.axes.first().map_or(0, |a| *a as usize);
-        let always = if always[0] == usize::MAX { [first, usize::MAX] } else { always };
+        let always = if always[0] == usize::MAX {
+            [first, usize::MAX]
+        } else {
+            always
+        };
         let mut n = [0i64; NAXES];
         let mut any = false;
         for k in 0..self.axes.len() {
@@ -349,7 +359,11 @@ impl<W: Write> Expander<W> {
             n[i] = self.scaled_axis(i, to[i]);
             any |= self.written[i] != Some(n[i]);
         }
-        let always = if any && always[1] == usize::MAX { [usize::MAX; 2] } else { always };
+        let always = if any && always[1] == usize::MAX {
+            [usize::MAX; 2]
+        } else {
+            always
+        };
         for k in 0..self.axes.len() {
             let i = self.axes[k] as usize;
             if self.written[i] != Some(n[i]) || always.contains(&i) {

@@ -145,7 +145,7 @@ impl<W: Write> Expander<W> {
                 let n = num::scaled(rpm, 3);
                 let was_css = self.spindle.css.take().is_some();
                 // The speed of a stopped spindle is written once it runs.
-                if (self.spindle.rpm != Some(n) || was_css) && (rpm > 0.0 || was_css) {
+                if was_css || (self.spindle.rpm != Some(n) && rpm > 0.0) {
                     self.put_str(if was_css { "G97 S" } else { "S" });
                     num::put_scaled(self.buf(), n, 3);
                     self.spindle.rpm = Some(n);
@@ -268,7 +268,11 @@ impl<W: Write> Expander<W> {
                 Written::Nothing
             }
             c => {
-                self.put_str(if c == ClampWord::G50 { "G50 S" } else { "G92 S" });
+                self.put_str(if c == ClampWord::G50 {
+                    "G50 S"
+                } else {
+                    "G92 S"
+                });
                 num::put(self.buf(), rpm, 3);
                 Written::Block
             }

@@ -12,7 +12,11 @@ const LATHE: [Axis; 2] = [Axis::X, Axis::Z];
 
 fn ev(line: u32, cmd: Canon) -> Event {
     Event {
-        src: SrcRef { file: 0, line, col: 1 },
+        src: SrcRef {
+            file: 0,
+            line,
+            col: 1,
+        },
         tool: 1,
         cmd,
         prog: None,
@@ -33,7 +37,13 @@ fn p(x: f64, y: f64, z: f64) -> Pos {
 
 /// The event blocks (header and trailer left out) for `events` on a
 /// machine starting at work 0 with machine = work + `off`.
-fn blocks(target: Target, control: Control, axes: &[Axis], off: Pos, events: &[Event]) -> Vec<String> {
+fn blocks(
+    target: Target,
+    control: Control,
+    axes: &[Axis],
+    off: Pos,
+    events: &[Event],
+) -> Vec<String> {
     let sp = Spelling::new(target, control);
     let header = sp.header().len();
     let start = [0.0; 6];
@@ -44,27 +54,52 @@ fn blocks(target: Target, control: Control, axes: &[Axis], off: Pos, events: &[E
     }
     let n = x.blocks() as usize;
     let text = String::from_utf8(x.finish().unwrap()).unwrap();
-    text.lines().skip(header).take(n).map(String::from).collect()
+    text.lines()
+        .skip(header)
+        .take(n)
+        .map(String::from)
+        .collect()
 }
 
 #[test]
 fn mill_moves_modal_words_and_arc_centres_from_the_start() {
     let o = [0.0; 6];
     let events = [
-        ev(3, Canon::Rapid { m: mv(p(10.0, 0.0, 5.0), o), linear: true }),
-        ev(4, Canon::Feed { m: mv(p(10.0, 0.0, -1.0), o), feed: Feed::PerMin(120.0) }),
+        ev(
+            3,
+            Canon::Rapid {
+                m: mv(p(10.0, 0.0, 5.0), o),
+                linear: true,
+            },
+        ),
+        ev(
+            4,
+            Canon::Feed {
+                m: mv(p(10.0, 0.0, -1.0), o),
+                feed: Feed::PerMin(120.0),
+            },
+        ),
         // A quarter circle CCW about (10, 10) from (10, 0) to (20, 10):
         // I = 10 - 10 = 0, J = 10 - 0 = 10.
-        ev(5, Canon::Arc {
-            m: mv(p(20.0, 10.0, -1.0), o),
-            center: p(10.0, 10.0, -1.0),
-            mcenter: p(10.0, 10.0, -1.0),
-            dir: ArcDir::Ccw,
-            plane: Plane::XY,
-            turns: 0,
-            feed: Feed::PerMin(120.0),
-        }),
-        ev(6, Canon::Feed { m: mv(p(20.0, 10.0, -1.0), o), feed: Feed::PerMin(80.5) }),
+        ev(
+            5,
+            Canon::Arc {
+                m: mv(p(20.0, 10.0, -1.0), o),
+                center: p(10.0, 10.0, -1.0),
+                mcenter: p(10.0, 10.0, -1.0),
+                dir: ArcDir::Ccw,
+                plane: Plane::XY,
+                turns: 0,
+                feed: Feed::PerMin(120.0),
+            },
+        ),
+        ev(
+            6,
+            Canon::Feed {
+                m: mv(p(20.0, 10.0, -1.0), o),
+                feed: Feed::PerMin(80.5),
+            },
+        ),
     ];
     assert_eq!(
         blocks(Target::Fanuc, Control::Hx, &MILL, o, &events),
@@ -90,8 +125,20 @@ fn a_new_frame_is_set_with_g92_before_the_move() {
     let g54 = p(-400.0, -250.0, -300.0);
     let g55 = p(-350.0, -250.0, -300.0);
     let events = [
-        ev(2, Canon::Rapid { m: mv(p(10.0, 0.0, 0.0), g54), linear: true }),
-        ev(4, Canon::Rapid { m: mv(p(-40.0, 5.0, 0.0), g55), linear: true }),
+        ev(
+            2,
+            Canon::Rapid {
+                m: mv(p(10.0, 0.0, 0.0), g54),
+                linear: true,
+            },
+        ),
+        ev(
+            4,
+            Canon::Rapid {
+                m: mv(p(-40.0, 5.0, 0.0), g55),
+                linear: true,
+            },
+        ),
     ];
     // The machine starts at work 0 of G54.
     assert_eq!(
@@ -110,18 +157,40 @@ fn puma_x_is_a_diameter_its_arc_i_a_radius() {
     // Radius 20 → X40. diameter. Arc CW in ZX from (r20, z0) to (r25, z-5)
     // about (r20, z-5): I = 20 - 20 = 0, K = -5 - 0 = -5.
     let events = [
-        ev(7, Canon::Feed { m: mv(p(20.0, 0.0, 0.0), o), feed: Feed::PerRev(0.2) }),
-        ev(8, Canon::Arc {
-            m: mv(p(25.0, 0.0, -5.0), o),
-            center: p(20.0, 0.0, -5.0),
-            mcenter: p(20.0, 0.0, -5.0),
-            dir: ArcDir::Cw,
-            plane: Plane::ZX,
-            turns: 0,
-            feed: Feed::PerRev(0.2),
-        }),
-        ev(9, Canon::Thread { m: mv(p(25.0, 0.0, -30.0), o), lead: 1.5 }),
-        ev(10, Canon::Tool { tool: 3, offset: 3, change: true }),
+        ev(
+            7,
+            Canon::Feed {
+                m: mv(p(20.0, 0.0, 0.0), o),
+                feed: Feed::PerRev(0.2),
+            },
+        ),
+        ev(
+            8,
+            Canon::Arc {
+                m: mv(p(25.0, 0.0, -5.0), o),
+                center: p(20.0, 0.0, -5.0),
+                mcenter: p(20.0, 0.0, -5.0),
+                dir: ArcDir::Cw,
+                plane: Plane::ZX,
+                turns: 0,
+                feed: Feed::PerRev(0.2),
+            },
+        ),
+        ev(
+            9,
+            Canon::Thread {
+                m: mv(p(25.0, 0.0, -30.0), o),
+                lead: 1.5,
+            },
+        ),
+        ev(
+            10,
+            Canon::Tool {
+                tool: 3,
+                offset: 3,
+                change: true,
+            },
+        ),
     ];
     assert_eq!(
         blocks(Target::Fanuc, Control::Puma, &LATHE, o, &events),
@@ -143,12 +212,42 @@ fn puma_x_is_a_diameter_its_arc_i_a_radius() {
 fn hurco_thread_lead_follows_the_longer_axis_and_dwell_is_f() {
     let o = [0.0; 6];
     let events = [
-        ev(1, Canon::Rapid { m: mv(p(10.0, 0.0, 2.0), o), linear: true }),
+        ev(
+            1,
+            Canon::Rapid {
+                m: mv(p(10.0, 0.0, 2.0), o),
+                linear: true,
+            },
+        ),
         // Facing thread: X moves 8 (radius), Z 0 → the lead is I.
-        ev(2, Canon::Thread { m: mv(p(2.0, 0.0, 2.0), o), lead: 2.0 }),
-        ev(3, Canon::Thread { m: mv(p(2.0, 0.0, -20.0), o), lead: 2.0 }),
-        ev(4, Canon::Dwell { seconds: 1.5, revolutions: 0.0 }),
-        ev(5, Canon::Dwell { seconds: 0.0, revolutions: 3.0 }),
+        ev(
+            2,
+            Canon::Thread {
+                m: mv(p(2.0, 0.0, 2.0), o),
+                lead: 2.0,
+            },
+        ),
+        ev(
+            3,
+            Canon::Thread {
+                m: mv(p(2.0, 0.0, -20.0), o),
+                lead: 2.0,
+            },
+        ),
+        ev(
+            4,
+            Canon::Dwell {
+                seconds: 1.5,
+                revolutions: 0.0,
+            },
+        ),
+        ev(
+            5,
+            Canon::Dwell {
+                seconds: 0.0,
+                revolutions: 3.0,
+            },
+        ),
     ];
     assert_eq!(
         blocks(Target::Fanuc, Control::Hurco, &LATHE, o, &events),
@@ -165,16 +264,62 @@ fn hurco_thread_lead_follows_the_longer_axis_and_dwell_is_f() {
 #[test]
 fn spindle_coolant_stops_and_end() {
     let events = [
-        ev(1, Canon::Spindle { dir: SpindleDir::Cw, rpm: 1200.0, css: None }),
-        ev(2, Canon::Coolant { mist: false, flood: true }),
+        ev(
+            1,
+            Canon::Spindle {
+                dir: SpindleDir::Cw,
+                rpm: 1200.0,
+                css: None,
+            },
+        ),
+        ev(
+            2,
+            Canon::Coolant {
+                mist: false,
+                flood: true,
+            },
+        ),
         ev(3, Canon::Mode(ModeChange::SpindleClamp(2000.0))),
-        ev(4, Canon::Spindle { dir: SpindleDir::Cw, rpm: 800.0, css: Some(150.0) }),
+        ev(
+            4,
+            Canon::Spindle {
+                dir: SpindleDir::Cw,
+                rpm: 800.0,
+                css: Some(150.0),
+            },
+        ),
         // CSS following the diameter: the same G96, nothing to write.
-        ev(5, Canon::Spindle { dir: SpindleDir::Cw, rpm: 950.0, css: Some(150.0) }),
-        ev(6, Canon::Spindle { dir: SpindleDir::Stop, rpm: 950.0, css: Some(150.0) }),
-        ev(7, Canon::Coolant { mist: true, flood: false }),
+        ev(
+            5,
+            Canon::Spindle {
+                dir: SpindleDir::Cw,
+                rpm: 950.0,
+                css: Some(150.0),
+            },
+        ),
+        ev(
+            6,
+            Canon::Spindle {
+                dir: SpindleDir::Stop,
+                rpm: 950.0,
+                css: Some(150.0),
+            },
+        ),
+        ev(
+            7,
+            Canon::Coolant {
+                mist: true,
+                flood: false,
+            },
+        ),
         ev(8, Canon::Stop { optional: false }),
-        ev(9, Canon::Aux { m: 19, name: "spindle orientation" }),
+        ev(
+            9,
+            Canon::Aux {
+                m: 19,
+                name: "spindle orientation",
+            },
+        ),
         ev(10, Canon::End { code: 30 }),
     ];
     let o = [0.0; 6];
@@ -223,5 +368,8 @@ fn program_frame_per_target() {
     let mut x = Expander::new(Vec::new(), sp, MILL.to_vec(), [0.0; 6], [0.0; 6]);
     x.start("a.nc").unwrap();
     let text = String::from_utf8(x.finish().unwrap()).unwrap();
-    assert_eq!(text, "G21 (KERF EXPAND OF a.nc TO linuxcnc)\nG17 G40 G49 G80 G90 G91.1\n");
+    assert_eq!(
+        text,
+        "G21 (KERF EXPAND OF a.nc TO linuxcnc)\nG17 G40 G49 G80 G90 G91.1\n"
+    );
 }

@@ -96,7 +96,11 @@ pub fn corpus() -> Vec<Case> {
     let dir = root().join("../shared/corpus");
     let mut out = Vec::new();
     for sub in sorted_files(&dir) {
-        let folder = sub.file_name().unwrap().to_string_lossy().to_ascii_lowercase();
+        let folder = sub
+            .file_name()
+            .unwrap()
+            .to_string_lossy()
+            .to_ascii_lowercase();
         let machine = if folder.starts_with("mill") {
             "hx-mc"
         } else if folder.starts_with("lathe") {
@@ -108,7 +112,10 @@ pub fn corpus() -> Vec<Case> {
         };
         for p in sorted_files(&sub) {
             out.push(Case {
-                label: format!("corpus/{folder}/{}", p.file_name().unwrap().to_string_lossy()),
+                label: format!(
+                    "corpus/{folder}/{}",
+                    p.file_name().unwrap().to_string_lossy()
+                ),
                 program: p,
                 machine: machine.into(),
                 sets: Vec::new(),
@@ -144,7 +151,10 @@ pub fn expand_programs() -> Vec<Case> {
         let machine = sub.file_name().unwrap().to_string_lossy().to_string();
         for p in sorted_files(&sub) {
             out.push(Case {
-                label: format!("expand/{machine}/{}", p.file_name().unwrap().to_string_lossy()),
+                label: format!(
+                    "expand/{machine}/{}",
+                    p.file_name().unwrap().to_string_lossy()
+                ),
                 program: p,
                 machine: machine.clone(),
                 sets: Vec::new(),
