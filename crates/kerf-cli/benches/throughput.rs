@@ -30,9 +30,7 @@ use std::time::Instant;
 use kerf_interp::{Interp, Profile, Settings, Step};
 use kerf_motion::Planner;
 
-#[path = "../src/dynamics.rs"]
-#[allow(dead_code)]
-mod dynamics;
+use kerf_control::dynamics;
 use kerf_lang::{parse_block, Block, LexOptions, LineSource, RawBlock};
 
 struct Sample {

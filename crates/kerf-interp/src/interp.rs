@@ -35,6 +35,7 @@ mod lathe_chamfer;
 mod lathe_mrc;
 mod lathe_shape;
 mod motion;
+mod mover;
 mod offset_data;
 mod polar_interp;
 mod probe;
@@ -106,8 +107,9 @@ enum FeedMode {
 struct State {
     /// Active code (×10) per modal group.
     modal: [u16; 32],
-    /// Current position, machine coordinates.
-    pos: Pos,
+    /// Current position, machine coordinates: set only by the move seam
+    /// (interp/mover.rs).
+    mover: mover::Mover,
     /// Work offsets G54…G59 (machine coordinates of each work zero).
     wcs: [Pos; 6],
     /// Active work system index.
@@ -171,6 +173,20 @@ const MAX_LOOP_DEPTH: usize = 3;
 
 /// A remembered loop scan: file, loop head offset, labels open around it.
 type LoopKey = (u32, u64, [u32; MAX_LOOP_DEPTH]);
+
+/// The one-shot (group 0) G codes of a block that change how it runs.
+#[derive(Clone, Copy, Default)]
+struct OneShots {
+    g53: bool,
+    dwell: bool,
+    g09: bool,
+    g60: Option<u32>,
+    setting: bool,
+    refret: Option<(u16, u32)>,
+    skip: Option<(u16, u32)>,
+    g45: Option<(u16, u32)>,
+    mrc: Option<(u16, u32)>,
+}
 
 /// The interpreter.
 pub struct Interp {
@@ -375,7 +391,7 @@ impl Interp {
         }
         let mut st = State {
             modal,
-            pos: profile.start_position(),
+            mover: mover::Mover::new(profile.start_position()),
             wcs,
             wcs_idx: 0,
             shift: [0.0; NAXES],
@@ -537,14 +553,14 @@ impl Interp {
 
     /// Current position in machine coordinates.
     pub fn machine_position(&self) -> Pos {
-        self.st.pos
+        self.st.mover.pos()
     }
 
     /// Current position of the tool tip in the active work coordinate
     /// system (tool length / tool offsets not included, as `Motion::to`).
     pub fn work_position(&self) -> Pos {
         let o = self.origin();
-        let mut p = self.st.pos;
+        let mut p = self.st.mover.pos();
         for i in 0..NAXES {
             p[i] -= o[i] + self.st.tlo[i];
         }
@@ -578,7 +594,7 @@ impl Interp {
     /// Current position in programmed coordinates (tool tip).
     fn programmed_position(&self) -> Pos {
         let o = self.prog_origin();
-        let mut p = self.st.pos;
+        let mut p = self.st.mover.pos();
         for i in 0..NAXES {
             p[i] -= o[i];
         }
@@ -656,6 +672,48 @@ impl Interp {
         }
     }
 
+    /// The loop guard's count for a block ending at byte `here`: true when
+    /// the block was read before (executed again after a jump back).
+    fn count_repeat(&mut self, here: u64) -> R<bool> {
+        let repeated = here <= self.high_water;
+        if repeated {
+            self.repeated += 1;
+            if self.repeated > self.repeat_budget {
+                return Err(self.alarm(
+                    AlarmKind::LoopLimit,
+                    0,
+                    format!(
+                        "more than {} blocks executed again by loops (loop guard)",
+                        self.repeat_budget
+                    ),
+                ));
+            }
+        } else {
+            self.high_water = here;
+        }
+        Ok(repeated)
+    }
+
+    /// A `%` block: opens the tape (the program starts after it), opens a
+    /// library file, or ends the program or the file.
+    fn percent_block(&mut self) -> R<bool> {
+        if !self.calls.stack.is_empty() {
+            // A library file's leading % opens it; any other ends it.
+            if self.raw.mark.offset == 0 {
+                return Ok(true);
+            }
+            return Err(self.sub_end_alarm());
+        }
+        if self.tape_started {
+            self.emit_end(0)?;
+            return Ok(false);
+        }
+        self.tape_started = true;
+        // The program proper starts after the leading %.
+        self.program_start = self.src.as_ref().expect("loaded").tell();
+        Ok(true)
+    }
+
     /// Reads and executes one block. Ok(false) at the end of the program.
     fn next_block(&mut self) -> R<bool> {
         let src = match self.src.as_mut() {
@@ -706,23 +764,7 @@ impl Interp {
         // Loop guard: blocks executed again (after a jump back) are counted
         // against a budget, however long the repeated section is.
         let next = self.src.as_ref().map(|s| s.tell()).unwrap_or_default();
-        let here = next.offset;
-        let repeated = here <= self.high_water;
-        if repeated {
-            self.repeated += 1;
-            if self.repeated > self.repeat_budget {
-                return Err(self.alarm(
-                    AlarmKind::LoopLimit,
-                    0,
-                    format!(
-                        "more than {} blocks executed again by loops (loop guard)",
-                        self.repeat_budget
-                    ),
-                ));
-            }
-        } else {
-            self.high_water = here;
-        }
+        let repeated = self.count_repeat(next.offset)?;
         if cached.is_none() {
             self.parse_raw()?;
             if repeated {
@@ -731,21 +773,7 @@ impl Interp {
             }
         }
         if self.block.percent {
-            if !self.calls.stack.is_empty() {
-                // A library file's leading % opens it; any other ends it.
-                if self.raw.mark.offset == 0 {
-                    return Ok(true);
-                }
-                return Err(self.sub_end_alarm());
-            }
-            if self.tape_started {
-                self.emit_end(0)?;
-                return Ok(false);
-            }
-            self.tape_started = true;
-            // The program proper starts after the leading %.
-            self.program_start = self.src.as_ref().expect("loaded").tell();
-            return Ok(true);
+            return self.percent_block();
         }
         self.tape_started = true;
         if self.block.program.is_some() && self.program_header()? {
@@ -930,65 +958,8 @@ impl Interp {
                     self.words.m[self.words.nm] = (v as u32, w.at);
                     self.words.nm += 1;
                 }
-                Addr::L(l) => {
-                    if !self.letter_ok[(l - b'A') as usize] {
-                        return Err(self.alarm(
-                            AlarmKind::IllegalAddress,
-                            w.at,
-                            format!("address {} is not used by this control", l as char),
-                        ));
-                    }
-                    if let Some(ax) = Axis::from_letter(l) {
-                        if !self.has_axis[ax as usize]
-                            && !self.letter_is_argument(l)
-                            && !self.macro_args()
-                        {
-                            return Err(self.alarm(
-                                AlarmKind::NoSuchAxis,
-                                w.at,
-                                format!("this machine has no {} axis", l as char),
-                            ));
-                        }
-                    }
-                    let li = (l - b'A') as usize;
-                    if self.words.letters[li].is_some() && !self.macro_args() {
-                        return Err(self.alarm(
-                            AlarmKind::DuplicateAddress,
-                            w.at,
-                            format!("address {} twice in one block", l as char),
-                        ));
-                    }
-                    self.words.letters[li] = Some(wv);
-                }
-                Addr::Comma(c) => {
-                    if self.dialect.id != DialectId::Hx || !matches!(c, b'C' | b'R') {
-                        return Err(self.alarm(
-                            AlarmKind::IllegalAddress,
-                            w.at,
-                            format!("address ,{} is not used by this control", c as char),
-                        ));
-                    }
-                    let slot = if c == b'C' {
-                        &mut self.words.comma_c
-                    } else {
-                        &mut self.words.comma_r
-                    };
-                    if slot.is_some() {
-                        return Err(self.alarm(
-                            AlarmKind::DuplicateAddress,
-                            w.at,
-                            format!("address ,{} twice in one block", c as char),
-                        ));
-                    }
-                    *slot = Some(wv);
-                    if self.words.comma_c.is_some() && self.words.comma_r.is_some() {
-                        return Err(self.alarm(
-                            AlarmKind::CornerConflict,
-                            w.at,
-                            ",C (chamfer) and ,R (corner R) in one block",
-                        ));
-                    }
-                }
+                Addr::L(l) => self.collect_letter(l, wv)?,
+                Addr::Comma(c) => self.collect_comma(c, wv)?,
                 Addr::Long(k) => {
                     if self.words.nlong >= self.words.long.len() {
                         return Err(self.alarm(
@@ -1001,6 +972,69 @@ impl Interp {
                     self.words.nlong += 1;
                 }
             }
+        }
+        Ok(())
+    }
+
+    /// A letter address word of the block (not G or M).
+    #[inline]
+    fn collect_letter(&mut self, l: u8, wv: WVal) -> R<()> {
+        if !self.letter_ok[(l - b'A') as usize] {
+            return Err(self.alarm(
+                AlarmKind::IllegalAddress,
+                wv.at,
+                format!("address {} is not used by this control", l as char),
+            ));
+        }
+        if let Some(ax) = Axis::from_letter(l) {
+            if !self.has_axis[ax as usize] && !self.letter_is_argument(l) && !self.macro_args() {
+                return Err(self.alarm(
+                    AlarmKind::NoSuchAxis,
+                    wv.at,
+                    format!("this machine has no {} axis", l as char),
+                ));
+            }
+        }
+        let li = (l - b'A') as usize;
+        if self.words.letters[li].is_some() && !self.macro_args() {
+            return Err(self.alarm(
+                AlarmKind::DuplicateAddress,
+                wv.at,
+                format!("address {} twice in one block", l as char),
+            ));
+        }
+        self.words.letters[li] = Some(wv);
+        Ok(())
+    }
+
+    /// A `,C` / `,R` word (HX chamfer and corner R).
+    fn collect_comma(&mut self, c: u8, wv: WVal) -> R<()> {
+        if self.dialect.id != DialectId::Hx || !matches!(c, b'C' | b'R') {
+            return Err(self.alarm(
+                AlarmKind::IllegalAddress,
+                wv.at,
+                format!("address ,{} is not used by this control", c as char),
+            ));
+        }
+        let slot = if c == b'C' {
+            &mut self.words.comma_c
+        } else {
+            &mut self.words.comma_r
+        };
+        if slot.is_some() {
+            return Err(self.alarm(
+                AlarmKind::DuplicateAddress,
+                wv.at,
+                format!("address ,{} twice in one block", c as char),
+            ));
+        }
+        *slot = Some(wv);
+        if self.words.comma_c.is_some() && self.words.comma_r.is_some() {
+            return Err(self.alarm(
+                AlarmKind::CornerConflict,
+                wv.at,
+                ",C (chamfer) and ,R (corner R) in one block",
+            ));
         }
         Ok(())
     }
@@ -1083,30 +1117,7 @@ impl Interp {
                 n_one += 1;
             }
         }
-        // Classify M codes.
-        let mut transfer: Option<(MAction, u32)> = None;
-        for i in 0..self.words.nm {
-            let (m, at) = self.words.m[i];
-            if self.mcode(m).is_none() {
-                return Err(self.alarm(
-                    AlarmKind::UnknownM,
-                    at,
-                    format!("M{m:02} is not an M code of this control"),
-                ));
-            }
-            if let Some(mc) = self.mcode(m) {
-                if matches!(mc.action, MAction::SubCall | MAction::SubReturn) {
-                    if transfer.is_some() {
-                        return Err(self.alarm(
-                            AlarmKind::MCodeConflict,
-                            at,
-                            "M98 and M99 in one block",
-                        ));
-                    }
-                    transfer = Some((mc.action, at));
-                }
-            }
-        }
+        let transfer = self.classify_m()?;
         // A held ,C/,R move, or one in this block, cannot be followed by a
         // block that moves otherwise or leaves the program.
         if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
@@ -1146,16 +1157,6 @@ impl Interp {
         if let Some((c, at, face_m)) = hurco_macro {
             return self.hurco_macro_block(c, at, face_m);
         }
-        // Coordinate-setting one-shots (G92 / G50 / G59) act before motion.
-        let mut g53 = false;
-        let mut dwell = false;
-        let mut g09 = false;
-        let mut g60: Option<u32> = None;
-        let mut setting = false;
-        let mut refret: Option<(u16, u32)> = None;
-        let mut skip: Option<(u16, u32)> = None;
-        let mut g45: Option<(u16, u32)> = None;
-        let mut mrc: Option<(u16, u32)> = None;
         let rdata = self.rotary_interp_codes()?;
         let xdata = self.transform_codes(&one_shot[..n_one])? || rdata;
         if let Some(dw) = self.words.get(b'D') {
@@ -1170,53 +1171,127 @@ impl Interp {
         {
             self.tool_length()?;
         }
-        // Cutter / tool nose radius compensation codes, before the
-        // one-shots (a G92 or G28 ends a held move first).
+        let g39 = self.block_comp(&one_shot[..n_one], cycle)?;
+        // Coordinate-setting one-shots (G92 / G50 / G59) act before motion.
+        let os = self.one_shots(&one_shot[..n_one])?;
+        let OneShots {
+            dwell,
+            g09,
+            setting,
+            refret,
+            ..
+        } = os;
+        self.before_motion(hurco, dwell)?;
+        if d.id == DialectId::Puma && self.words.nm > 0 {
+            self.lathe_m_codes();
+        }
+        if g09 && !hurco {
+            self.emit(Canon::Mode(ModeChange::ExactStopBlock));
+        }
+        // A dwell or a coordinate-setting block does not move: its axis
+        // words are the time or the new coordinates.
+        let no_motion = dwell || setting || xdata || g39;
+        self.block_motion(&os, no_motion, (cycle, was_cycle, hurco_cycle))?;
+        if hurco && !no_motion && self.has_axis_word() {
+            self.hurco_moved();
+        }
+        if g09 && hurco {
+            // Table 1: exact stop after the motion.
+            self.emit(Canon::Mode(ModeChange::ExactStopBlock));
+        }
+        self.end_of_block(transfer, refret.is_some() || !no_motion)
+    }
+
+    /// Cutter / tool nose radius compensation codes, before the one-shots
+    /// (a G92 or G28 ends a held move first). True for a G39 block.
+    fn block_comp(&mut self, one_shot: &[(u16, u32)], cycle: bool) -> R<bool> {
         let comp_words = self.words.has(b'D')
             || self
                 .words
                 .gs()
                 .iter()
                 .any(|g| matches!(g.0, 170 | 180 | 190 | 390 | 400 | 410 | 420));
-        let g39 = if comp_words || (self.comp.is_some() && (n_one > 0 || cycle)) {
+        if comp_words || (self.comp.is_some() && (!one_shot.is_empty() || cycle)) {
             let special = cycle
-                || one_shot[..n_one].iter().any(|g| {
+                || one_shot.iter().any(|g| {
                     matches!(g.0, 270 | 280 | 290 | 300 | 530 | 310..=314 | 370..=374 | 450..=480 | 700..=760)
                 });
-            let setting = one_shot[..n_one]
+            let setting = one_shot
                 .iter()
-                .any(|g| is_coordinate_setting(d.id, g.0));
-            self.comp_codes(&one_shot[..n_one], special, setting)?
+                .any(|g| is_coordinate_setting(self.dialect.id, g.0));
+            self.comp_codes(one_shot, special, setting)
         } else {
-            false
-        };
-        for &(c, at) in &one_shot[..n_one] {
+            Ok(false)
+        }
+    }
+
+    /// The block's M codes checked; the M98/M99 it carries (one at most).
+    fn classify_m(&self) -> R<Option<(MAction, u32)>> {
+        let mut transfer: Option<(MAction, u32)> = None;
+        for i in 0..self.words.nm {
+            let (m, at) = self.words.m[i];
+            if self.mcode(m).is_none() {
+                return Err(self.alarm(
+                    AlarmKind::UnknownM,
+                    at,
+                    format!("M{m:02} is not an M code of this control"),
+                ));
+            }
+            if let Some(mc) = self.mcode(m) {
+                if matches!(mc.action, MAction::SubCall | MAction::SubReturn) {
+                    if transfer.is_some() {
+                        return Err(self.alarm(
+                            AlarmKind::MCodeConflict,
+                            at,
+                            "M98 and M99 in one block",
+                        ));
+                    }
+                    transfer = Some((mc.action, at));
+                }
+            }
+        }
+        Ok(transfer)
+    }
+
+    /// Runs the block's one-shot codes that act before motion (G10 on
+    /// the PUMA, coordinate setting, G59 on the Hurco) and notes the rest.
+    fn one_shots(&mut self, one_shot: &[(u16, u32)]) -> R<OneShots> {
+        let d = self.dialect;
+        let hurco = d.hurco_order;
+        let mut os = OneShots::default();
+        for &(c, at) in one_shot {
             match (d.id, c) {
-                (_, 40) => dwell = true,
-                (_, 270 | 280 | 290 | 300) => refret = Some((c, at)),
-                (_, 90) => g09 = true,
-                (DialectId::Hx, 600) => g60 = Some(at),
+                (_, 40) => os.dwell = true,
+                (_, 270 | 280 | 290 | 300) => os.refret = Some((c, at)),
+                (_, 90) => os.g09 = true,
+                (DialectId::Hx, 600) => os.g60 = Some(at),
                 (_, 530) => {
                     if hurco {
                         self.g53_checks(at)?;
                     }
-                    g53 = true
+                    os.g53 = true
                 }
-                (DialectId::Hx, 310..=314 | 370..=374) => skip = Some((c, at)),
-                (DialectId::Hx, 450 | 460 | 470 | 480) => g45 = Some((c, at)),
+                (DialectId::Hx, 310..=314 | 370..=374) => os.skip = Some((c, at)),
+                (DialectId::Hx, 450 | 460 | 470 | 480) => os.g45 = Some((c, at)),
                 (DialectId::Puma, 100) => {
-                    setting = true;
+                    os.setting = true;
                     self.g10(at)?
                 }
-                (DialectId::Puma, 700..=760) => mrc = Some((c, at)),
+                (DialectId::Puma, 700..=760) => os.mrc = Some((c, at)),
                 _ if is_coordinate_setting(d.id, c) => {
-                    setting = true;
+                    os.setting = true;
                     self.coordinate_setting(at)?
                 }
                 (DialectId::Hurco, 590) => self.st.shift = [0.0; NAXES],
                 _ => {}
             }
         }
+        Ok(os)
+    }
+
+    /// The machine functions before motion in the control's order: F, T,
+    /// S, the before-motion M codes and the dwell (Hurco: 002 Table 1).
+    fn before_motion(&mut self, hurco: bool, dwell: bool) -> R<()> {
         if hurco {
             self.g96_r()?;
         }
@@ -1242,45 +1317,51 @@ impl Interp {
                 self.dwell()?;
             }
         }
-        if d.id == DialectId::Puma && self.words.nm > 0 {
-            self.lathe_m_codes();
-        }
-        if g09 && !hurco {
-            self.emit(Canon::Mode(ModeChange::ExactStopBlock));
-        }
-        // A dwell or a coordinate-setting block does not move: its axis
-        // words are the time or the new coordinates.
-        let no_motion = dwell || setting || xdata || g39;
-        if let Some((c, at)) = refret {
+        Ok(())
+    }
+
+    /// The block's motion: a reference return, a skip, a lathe cycle, or
+    /// (when the block's axis words are a move) G53, a canned cycle, G60,
+    /// G45-G48 or the modal motion. `cycles`: (HX cycle mode, entered
+    /// before this block, Hurco cycle mode).
+    fn block_motion(
+        &mut self,
+        os: &OneShots,
+        no_motion: bool,
+        cycles: (bool, bool, bool),
+    ) -> R<()> {
+        let (cycle, was_cycle, hurco_cycle) = cycles;
+        if let Some((c, at)) = os.refret {
             self.reference_return(c, at)?;
-        } else if let Some((c, at)) = skip {
+        } else if let Some((c, at)) = os.skip {
             self.skip_block(c, at)?;
-        } else if let Some((c, at)) = mrc {
+        } else if let Some((c, at)) = os.mrc {
             self.mrc(c, at)?;
         } else if !no_motion {
-            if g53 {
+            if os.g53 {
                 self.g53()?;
             } else if cycle {
-                self.canned_cycle(!was_cycle, g60.is_some())?;
+                self.canned_cycle(!was_cycle, os.g60.is_some())?;
             } else if hurco_cycle {
                 if self.words.has(b'X') || self.words.has(b'Z') || self.words.has(b'R') {
                     self.hurco_drill()?;
                 }
-            } else if let Some(at) = g60 {
+            } else if let Some(at) = os.g60 {
                 self.g60(at)?;
-            } else if let Some((c, at)) = g45 {
+            } else if let Some((c, at)) = os.g45 {
                 self.tool_offset_motion(c, at)?;
             } else {
                 self.motion()?;
             }
         }
-        if hurco && !no_motion && self.has_axis_word() {
-            self.hurco_moved();
-        }
-        if g09 && hurco {
-            // Table 1: exact stop after the motion.
-            self.emit(Canon::Mode(ModeChange::ExactStopBlock));
-        }
+        Ok(())
+    }
+
+    /// After the motion: the after-motion M codes, the end-of-block
+    /// system codes, compensation's block end, then the subprogram call or
+    /// return (or the G66 modal call when the block `moved`).
+    fn end_of_block(&mut self, transfer: Option<(MAction, u32)>, moved: bool) -> R<bool> {
+        let d = self.dialect;
         // After-motion M codes, then the end-of-block system codes.
         self.run_m(|m| {
             m.1 == MWhen::After
@@ -1302,10 +1383,7 @@ impl Interp {
             Some((_, at)) => self.m99(at)?,
             None => {
                 // G66 in force: a block with an axis move calls the macro.
-                if !self.calls.modal.is_empty()
-                    && (refret.is_some() || !no_motion)
-                    && self.has_axis_word()
-                {
+                if !self.calls.modal.is_empty() && moved && self.has_axis_word() {
                     self.modal_call(self.motion_at())?;
                 }
             }

@@ -45,6 +45,11 @@ pub struct Done {
     /// interpolation plus half the smoothing delay (`stages·T/2`), the
     /// moment the smoothed command passes its end point on a straight run.
     pub t_end: f64,
+    /// Seconds this record adds to the [`Breakdown`]: to `cutting` for a
+    /// feed, arc or thread (its interpolation, and its settling when it
+    /// stops), to `rapid` for a rapid (with its settling), to `dwell` for a
+    /// dwell. The records' times sum to those three totals.
+    pub time: f64,
 }
 
 /// One piece of the (pre-smoothing) timeline, for the sampler.
@@ -217,6 +222,9 @@ pub struct Planner {
     /// spindle stopped): the control would wait for ever; they are timed
     /// as 0 s and counted here.
     pub stalled: u64,
+    /// Cutting time of the event whose segments are being finalized (its
+    /// `Done::time` once the last one is).
+    ev_spent: f64,
 }
 
 /// The following error `e` of a first-order position loop of gain `k`
@@ -285,6 +293,7 @@ impl Planner {
             max_rpm: f64::INFINITY,
             s_clamp: f64::INFINITY,
             stalled: 0,
+            ev_spent: 0.0,
             lag: [0.0; NAXES],
             gain,
             q_tmin: 0.0,
@@ -490,10 +499,10 @@ impl Planner {
         }
     }
 
-    fn done(&mut self, t_end: f64) {
+    fn done(&mut self, t_end: f64, time: f64) {
         let id = self.next_id;
         self.next_id += 1;
-        self.done.push_back(Done { id, t_end });
+        self.done.push_back(Done { id, t_end, time });
     }
 
     /// Accounts for one event.
@@ -554,7 +563,7 @@ impl Planner {
                 }
                 self.hold(t);
                 self.time.dwell += t;
-                self.done(self.now);
+                self.done(self.now, t);
             }
             Canon::Spindle { dir, rpm, css }
                 if css.is_some()
@@ -736,7 +745,7 @@ impl Planner {
         };
         self.hold(drain);
         self.time.rapid += dur + drain;
-        self.done(self.now);
+        self.done(self.now, dur + drain);
     }
 
     /// Speed and acceleration limits of a path along `g`, mm/s and mm/s².
@@ -966,6 +975,7 @@ impl Planner {
             self.done.push_back(Done {
                 id,
                 t_end: self.now,
+                time: 0.0,
             });
             return;
         }
@@ -1008,6 +1018,7 @@ impl Planner {
                     self.done.push_back(Done {
                         id,
                         t_end: self.now,
+                        time: std::mem::take(&mut self.ev_spent),
                     });
                 }
                 continue;
@@ -1176,8 +1187,13 @@ impl Planner {
             self.now + 0.5 * self.drain_time()
         };
         self.time.cutting += spent;
+        self.ev_spent += spent;
         if s.last {
-            self.done.push_back(Done { id: s.id, t_end });
+            self.done.push_back(Done {
+                id: s.id,
+                t_end,
+                time: std::mem::take(&mut self.ev_spent),
+            });
         }
     }
 }
@@ -1223,6 +1239,39 @@ mod tests {
             let y = if k % 2 == 0 { 0.0 } else { 0.05 };
             pl.push(&feed_to(k as f64 * 5.0, y));
         }
+    }
+
+    #[test]
+    fn record_times_sum_to_the_breakdown() {
+        let mut pl = Planner::new(dynm(), [0.0; NAXES], 0.0);
+        let p = [0.0, 50.0, 0.0, 0.0, 0.0, 0.0];
+        pl.push(&ev(Canon::Rapid {
+            m: Motion { to: p, mto: p },
+            linear: true,
+        }));
+        // 100 mm at 1200 mm/min from rest to rest: 5 s at 20 mm/s plus
+        // v/a = 0.01 s for the two ramps, before settling.
+        pl.push(&feed_to(100.0, 50.0));
+        pl.push(&ev(Canon::Dwell {
+            seconds: 1.5,
+            revolutions: 0.0,
+        }));
+        zigzag(&mut pl, 30);
+        pl.finish();
+        let mut done = Vec::new();
+        while let Some(d) = pl.next_done() {
+            done.push(d);
+        }
+        assert_eq!(done.len(), 33);
+        assert!((done[0].time - pl.time.rapid).abs() < 1e-12);
+        assert!(done[1].time >= 5.01 - 1e-9, "{}", done[1].time);
+        assert_eq!(done[2].time, 1.5);
+        let cut: f64 = done[1].time + done[3..].iter().map(|d| d.time).sum::<f64>();
+        assert!(
+            (cut - pl.time.cutting).abs() < 1e-9,
+            "{cut} vs {}",
+            pl.time.cutting
+        );
     }
 
     #[test]

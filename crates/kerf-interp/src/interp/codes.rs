@@ -351,7 +351,7 @@ impl Interp {
                 let i = ax as usize;
                 self.st.local[i] = 0.0;
                 self.st.shift[i] =
-                    self.st.pos[i] - self.st.wcs[self.st.wcs_idx][i] - self.st.tlo[i] - t;
+                    self.st.mover.pos()[i] - self.st.wcs[self.st.wcs_idx][i] - self.st.tlo[i] - t;
             }
         }
         let _ = (any, at);
@@ -359,7 +359,7 @@ impl Interp {
     }
 
     pub(super) fn g53(&mut self) -> R<()> {
-        let mut to = self.st.pos;
+        let mut to = self.st.mover.pos();
         let mut any = false;
         for ax in Axis::ALL {
             if let Some(w) = self.words.get(ax_letter(ax)) {
@@ -378,18 +378,7 @@ impl Interp {
             .find(|g| g.0 == 530)
             .map(|g| g.1)
             .unwrap_or(0);
-        self.check_travel(&to, at)?;
-        self.check_stroke(&to, true, at)?;
-        let m = Motion {
-            to: self.work_of(&to),
-            mto: to,
-        };
-        self.st.pos = to;
-        self.emit(Canon::Rapid {
-            m,
-            linear: self.linear_rapid(),
-        });
-        Ok(())
+        self.rapid_machine_always(to, at)
     }
 
     pub(super) fn linear_rapid(&self) -> bool {

@@ -204,16 +204,10 @@ impl Interp {
         }
     }
 
-    /// The block's compensation codes (G39/G40/G41/G42, D), run before its
-    /// one-shot codes. `special`: the block moves otherwise than by
-    /// G00-G03 (G28-G30, G53, cycles, G45-G48, G31); `setting`: G92/G50.
-    /// True when the block is a G39 (no move of its own).
-    pub(super) fn comp_codes(
-        &mut self,
-        one_shot: &[(u16, u32)],
-        special: bool,
-        setting: bool,
-    ) -> R<bool> {
+    /// The block's D (mills: an offset number), and G41/G42 with a
+    /// reference return or G53, which cannot start the offset (000
+    /// §13.2.1: "[G00/G01] X_ Y_ G41"; G40 with them is a cancel: allowed).
+    fn comp_check_words(&self, one_shot: &[(u16, u32)]) -> R<()> {
         if self.profile.kind == MachineKind::Mill {
             if let Some(dw) = self.words.get(b'D') {
                 if dw.v < 0.0 || dw.v.fract() != 0.0 || !self.offsets.valid(dw.v as usize) {
@@ -229,11 +223,6 @@ impl Interp {
                 }
             }
         }
-        let mode = self.st.modal[COMP_GROUP];
-        let g39 = one_shot.iter().find(|g| g.0 == 390).map(|g| g.1);
-        // G41/G42 go with G00/G01 (000 §13.2.1: "[G00/G01] X_ Y_ G41");
-        // a reference return or machine-coordinate move cannot start the
-        // offset (G40 with them is a cancel: allowed).
         if let Some(&(g, _)) = one_shot
             .iter()
             .find(|g| matches!(g.0, 270 | 280 | 290 | 300 | 530))
@@ -250,6 +239,22 @@ impl Interp {
                 ));
             }
         }
+        Ok(())
+    }
+
+    /// The block's compensation codes (G39/G40/G41/G42, D), run before its
+    /// one-shot codes. `special`: the block moves otherwise than by
+    /// G00-G03 (G28-G30, G53, cycles, G45-G48, G31); `setting`: G92/G50.
+    /// True when the block is a G39 (no move of its own).
+    pub(super) fn comp_codes(
+        &mut self,
+        one_shot: &[(u16, u32)],
+        special: bool,
+        setting: bool,
+    ) -> R<bool> {
+        self.comp_check_words(one_shot)?;
+        let mode = self.st.modal[COMP_GROUP];
+        let g39 = one_shot.iter().find(|g| g.0 == 390).map(|g| g.1);
         if self.comp.is_none() {
             if mode == 400 {
                 if let Some(at) = g39 {
@@ -643,15 +648,15 @@ impl Interp {
                 if comp::dist(base, e) >= comp::EPS {
                     cap.push((Seg::Line { a: base, b: e }, motion, true));
                 }
-                self.st.pos = self.to_machine(&tw);
+                self.place_at(&tw);
                 self.comp = None;
                 return Ok(());
             }
-            let prog = self.st.pos;
-            self.st.pos = self.offset_to_machine(&self.plane_pt(cur_t, base));
+            let start = self.offset_to_machine(&self.plane_pt(cur_t, base));
+            let prog = self.place_machine(start);
             let r = self.line_to(tw, speed, at);
             if r.is_err() {
-                self.st.pos = prog;
+                self.place_machine(prog);
             }
             r?;
             self.comp = None;
@@ -693,7 +698,7 @@ impl Interp {
             events,
             corner,
         });
-        self.st.pos = self.to_machine(&tw);
+        self.place_at(&tw);
         Ok(())
     }
 
@@ -855,8 +860,8 @@ impl Interp {
         let tw_t = self.xf_point(&tw);
         let (a1, a2, _) = self.st.plane.axes();
         let p = padd((cur_t[a1], cur_t[a2]), vec);
-        let prog = self.st.pos;
-        self.st.pos = self.offset_to_machine(&self.plane_pt(cur_t, p));
+        let start = self.offset_to_machine(&self.plane_pt(cur_t, p));
+        let prog = self.place_machine(start);
         self.comp_prog = Some(self.work_of(&self.to_machine(&tw)));
         // The vector is in the transformed plane: the target back in
         // program coordinates for the move.
@@ -868,11 +873,11 @@ impl Interp {
         };
         let r = self.plain_motion(mode, target, any, at);
         self.comp_prog = None;
-        self.st.pos = if r.is_ok() {
-            self.to_machine(&tw)
+        if r.is_ok() {
+            self.place_at(&tw);
         } else {
-            prog
-        };
+            self.place_machine(prog);
+        }
         r
     }
 
@@ -953,7 +958,7 @@ impl Interp {
     /// the corner's plane point), then the corner's pieces. Alarms point
     /// at the held block's motion word.
     fn comp_flush(&mut self, h: &mut Held, j: &Join) -> R<()> {
-        let prog = self.st.pos;
+        let prog = self.st.mover.pos();
         // The held points are already transformed (scaling, mirror,
         // rotation of their own block): emitted through the offset stack
         // only.
@@ -965,7 +970,7 @@ impl Interp {
         self.st.xf = xf;
         self.comp_prog = None;
         self.cur = here;
-        self.st.pos = prog;
+        self.place_machine(prog);
         events.clear();
         if let Some(c) = self.comp.as_deref_mut() {
             if c.spare.capacity() < events.capacity() {
@@ -1035,7 +1040,7 @@ impl Interp {
         }
         let s = self.plane_pt(h.start, padd(h.cstart, h.tip));
         let e = self.plane_pt(h.end, padd(j.end1, h.tip));
-        self.st.pos = self.to_machine(&s);
+        self.place_at(&s);
         self.comp_prog = Some(self.work_of(&self.to_machine(&h.end)));
         let feed = |me: &Self| match h.speed {
             Speed::Feed(f) => Ok(f),
@@ -1054,20 +1059,8 @@ impl Interp {
         }
         // The events of the blocks between, at the corner.
         if !events.is_empty() {
-            let (a1, a2, _) = self.st.plane.axes();
-            let me = self.to_machine(&e);
-            for ev in events.iter_mut() {
-                if let Canon::Rapid { m, .. } | Canon::Feed { m, .. } = &mut ev.cmd {
-                    ev.prog = Some(Box::new(m.to));
-                    m.mto[a1] = me[a1];
-                    m.mto[a2] = me[a2];
-                    m.to = self.work_of(&m.mto);
-                }
-            }
-            if let Some(last) = events.iter().rev().find_map(|e| e.motion()) {
-                self.st.pos = last.mto;
-            }
-            self.queue.extend(events.drain(..));
+            let corner = self.to_machine(&e);
+            self.release_held(events, &corner)?;
         }
         let mut prev = j.end1;
         let corner = self.plane_pt(base, h.seg.end());

@@ -216,7 +216,7 @@ impl Interp {
             held: Vec::new(),
         };
         // The next block reads from the virtual corner.
-        self.st.pos = self.to_machine(&tw);
+        self.place_at(&tw);
         self.corner = Some(Box::new(pending));
         Ok(())
     }

@@ -152,6 +152,42 @@ impl Interp {
         Ok(true)
     }
 
+    /// The cycle data words Q (peck, shift), P (dwell) and, for G76/G87,
+    /// the shift I/J along the plane axes `axes`.
+    fn cycle_qpij(&mut self, code: u16, axes: (usize, usize)) -> R<()> {
+        let (a1, a2) = axes;
+        if let Some(w) = self.words.get(b'Q') {
+            let v = self.linear(w);
+            if v <= 0.0 {
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    w.at,
+                    format!("canned cycle Q must be positive (Q{})", fmt_num(w.v)),
+                ));
+            }
+            self.cyc.q = Some(v);
+        }
+        if let Some(w) = self.words.get(b'P') {
+            if w.point || w.v < 0.0 {
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    w.at,
+                    "canned cycle dwell P is in milliseconds, positive, without a decimal point",
+                ));
+            }
+            self.cyc.p = Some(w.v / 1000.0);
+        }
+        if matches!(code, 760 | 870) {
+            let (l1, l2) = (b"IJK"[a1], b"IJK"[a2]);
+            let (w1, w2) = (self.words.get(l1), self.words.get(l2));
+            if w1.is_some() || w2.is_some() {
+                let v = |me: &Self, w: Option<WVal>| w.map(|w| me.linear(w)).unwrap_or(0.0);
+                self.cyc.ij = Some((v(self, w1), v(self, w2)));
+            }
+        }
+        Ok(())
+    }
+
     /// Executes a block in canned cycle mode: stores the cycle data and,
     /// if the block names a position, R or the depth, drills K holes.
     pub(super) fn canned_cycle(&mut self, entered: bool, g60: bool) -> R<()> {
@@ -214,35 +250,7 @@ impl Interp {
                     }
                 });
         }
-        if let Some(w) = self.words.get(b'Q') {
-            let v = self.linear(w);
-            if v <= 0.0 {
-                return Err(self.alarm(
-                    AlarmKind::OutOfRange,
-                    w.at,
-                    format!("canned cycle Q must be positive (Q{})", fmt_num(w.v)),
-                ));
-            }
-            self.cyc.q = Some(v);
-        }
-        if let Some(w) = self.words.get(b'P') {
-            if w.point || w.v < 0.0 {
-                return Err(self.alarm(
-                    AlarmKind::OutOfRange,
-                    w.at,
-                    "canned cycle dwell P is in milliseconds, positive, without a decimal point",
-                ));
-            }
-            self.cyc.p = Some(w.v / 1000.0);
-        }
-        if matches!(code, 760 | 870) {
-            let (l1, l2) = (b"IJK"[a1], b"IJK"[a2]);
-            let (w1, w2) = (self.words.get(l1), self.words.get(l2));
-            if w1.is_some() || w2.is_some() {
-                let v = |me: &Self, w: Option<WVal>| w.map(|w| me.linear(w)).unwrap_or(0.0);
-                self.cyc.ij = Some((v(self, w1), v(self, w2)));
-            }
-        }
+        self.cycle_qpij(code, (a1, a2))?;
         let count = match self.words.get(b'K') {
             None => 1,
             Some(k) if k.v >= 0.0 && k.v <= 9999.0 && k.v.fract() == 0.0 => k.v as u32,

@@ -97,6 +97,7 @@ impl Interp {
             rotary::Path::Arc { r, sweep, .. } => rotary::arc_chords(r, sweep, self.chord_tol()),
             rotary::Path::Line { .. } => 1,
         };
+        let mut points = Vec::with_capacity(n);
         for i in 1..=n {
             let t = if i == n { 1.0 } else { i as f64 / n as f64 };
             let mut p = lerp(&cur, &tw, t);
@@ -105,8 +106,8 @@ impl Interp {
                 p[a1] = q.0 / scale(a1);
                 p[a2] = q.1 / scale(a2);
             }
-            self.chord_to(p, feed, at)?;
+            points.push(p);
         }
-        Ok(())
+        self.chords(&points, feed, at)
     }
 }

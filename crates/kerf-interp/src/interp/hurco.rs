@@ -312,17 +312,7 @@ impl Interp {
 
     /// A spindle-synchronised straight move to `tw` (program coordinates).
     pub(super) fn hurco_thread_to(&mut self, tw: Pos, lead: f64, at: u32) -> R<()> {
-        let mto = self.to_machine(&tw);
-        self.check_travel(&mto, at)?;
-        self.st.pos = mto;
-        self.emit(Canon::Thread {
-            m: Motion {
-                to: self.work_of(&mto),
-                mto,
-            },
-            lead,
-        });
-        Ok(())
+        self.thread_move(tw, lead, at)
     }
 }
 

@@ -76,25 +76,7 @@ impl Interp {
             .find(|g| matches!(g.0, 730 | 740 | 810..=840))
             .map(|g| g.1)
             .unwrap_or(0);
-        // Modal data from the block.
-        for l in [b'Q', b'P', b'A'] {
-            if let Some(w) = self.words.get(l) {
-                self.check_range(l, w)?;
-                if w.v < 0.0 {
-                    return Err(self.alarm(
-                        AlarmKind::OutOfRange,
-                        w.at,
-                        format!("{} must not be negative in a drill cycle", l as char),
-                    ));
-                }
-                let v = if l == b'P' { w.v } else { self.len_word(w) };
-                match l {
-                    b'Q' => self.hurco.drill.q = Some(v),
-                    b'P' => self.hurco.drill.p = Some(v),
-                    _ => self.hurco.drill.a = Some(v),
-                }
-            }
-        }
+        self.drill_qpa()?;
         let cur = self.prog_pos();
         let init = *self.hurco.drill.init.get_or_insert(cur[2]);
         if let Some(w) = self.words.get(b'R') {
@@ -170,40 +152,70 @@ impl Interp {
                 }
                 self.drill_go(Speed::Rapid, None, Some(ret), at)?;
             }
-            840 | 740 => {
-                let (fwd, rev) = if code == 840 {
-                    (SpindleDir::Cw, SpindleDir::Ccw)
-                } else {
-                    (SpindleDir::Ccw, SpindleDir::Cw)
-                };
-                let q = d.q.unwrap_or(0.0);
-                let n = if q > 0.0 {
-                    ((z - r).abs() / q).ceil().max(1.0)
-                } else {
-                    1.0
-                };
-                if n > 10_000.0 {
-                    return Err(self.alarm(AlarmKind::OutOfRange, at, "more than 10,000 in-feeds"));
-                }
-                if self.st.spindle != fwd {
-                    self.drill_spindle(fwd);
-                }
-                for k in 1..=n as u64 {
-                    let depth = if k as f64 >= n {
-                        z
-                    } else {
-                        r + dir * q * k as f64
-                    };
-                    self.drill_go(Speed::Modal, None, Some(depth), at)?;
-                    self.drill_spindle(rev);
-                    self.drill_dwell(d.p.unwrap_or(0.0));
-                    self.drill_go(Speed::Modal, None, Some(r), at)?;
-                    self.drill_spindle(fwd);
-                }
-                self.drill_go(Speed::Rapid, None, Some(ret), at)?;
-            }
+            840 | 740 => self.drill_tap(code, (r, z, ret), at)?,
             _ => {}
         }
+        Ok(())
+    }
+
+    /// The block's Q, P and A: modal drill data.
+    fn drill_qpa(&mut self) -> R<()> {
+        for l in [b'Q', b'P', b'A'] {
+            if let Some(w) = self.words.get(l) {
+                self.check_range(l, w)?;
+                if w.v < 0.0 {
+                    return Err(self.alarm(
+                        AlarmKind::OutOfRange,
+                        w.at,
+                        format!("{} must not be negative in a drill cycle", l as char),
+                    ));
+                }
+                let v = if l == b'P' { w.v } else { self.len_word(w) };
+                match l {
+                    b'Q' => self.hurco.drill.q = Some(v),
+                    b'P' => self.hurco.drill.p = Some(v),
+                    _ => self.hurco.drill.a = Some(v),
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// G84 / G74 tapping from R to Z (Q in-feeds), back to `ret`.
+    fn drill_tap(&mut self, code: u16, levels: (f64, f64, f64), at: u32) -> R<()> {
+        let (r, z, ret) = levels;
+        let d = self.hurco.drill;
+        let dir = if z < r { -1.0 } else { 1.0 };
+        let (fwd, rev) = if code == 840 {
+            (SpindleDir::Cw, SpindleDir::Ccw)
+        } else {
+            (SpindleDir::Ccw, SpindleDir::Cw)
+        };
+        let q = d.q.unwrap_or(0.0);
+        let n = if q > 0.0 {
+            ((z - r).abs() / q).ceil().max(1.0)
+        } else {
+            1.0
+        };
+        if n > 10_000.0 {
+            return Err(self.alarm(AlarmKind::OutOfRange, at, "more than 10,000 in-feeds"));
+        }
+        if self.st.spindle != fwd {
+            self.drill_spindle(fwd);
+        }
+        for k in 1..=n as u64 {
+            let depth = if k as f64 >= n {
+                z
+            } else {
+                r + dir * q * k as f64
+            };
+            self.drill_go(Speed::Modal, None, Some(depth), at)?;
+            self.drill_spindle(rev);
+            self.drill_dwell(d.p.unwrap_or(0.0));
+            self.drill_go(Speed::Modal, None, Some(r), at)?;
+            self.drill_spindle(fwd);
+        }
+        self.drill_go(Speed::Rapid, None, Some(ret), at)?;
         Ok(())
     }
 

@@ -158,18 +158,7 @@ impl Interp {
                 "threading move that changes X (taper or face thread, run-out chamfer) in G96 (constant surface speed): the spindle speed would change during the cut; program G97",
             ));
         }
-        let mto = self.to_machine(&tw);
-        self.check_travel(&mto, at)?;
-        self.check_stroke(&mto, false, at)?;
-        self.st.pos = mto;
-        self.emit(Canon::Thread {
-            m: Motion {
-                to: self.work_of(&mto),
-                mto,
-            },
-            lead,
-        });
-        Ok(())
+        self.thread_move(tw, lead, at)
     }
 
     /// The block's move in G32, G90, G92 or G94 mode (PUMA).

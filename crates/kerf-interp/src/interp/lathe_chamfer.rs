@@ -38,10 +38,10 @@ impl Interp {
         match self.lathe.ddi_base.take() {
             None => self.target(),
             Some(b) => {
-                let real = self.st.pos;
-                self.st.pos = self.to_machine(&b);
+                let b = self.to_machine(&b);
+                let real = self.place_machine(b);
                 let r = self.target();
-                self.st.pos = real;
+                self.place_machine(real);
                 r
             }
         }

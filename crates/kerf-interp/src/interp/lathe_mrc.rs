@@ -63,6 +63,43 @@ impl Interp {
         }
     }
 
+    /// The first block of G71/G72 (U or W: Δd, R: escape) or G73 (U, W:
+    /// relief, R: divisions): modal data only.
+    fn mrc_first_block(&mut self, code: u16) -> R<()> {
+        match code {
+            710 | 720 => {
+                let l = if code == 710 { b'U' } else { b'W' };
+                if let Some(d) = self.positive(l, "depth of cut Δd")? {
+                    self.lathe.mrc.depth = Some(d);
+                }
+                if let Some(w) = self.words.get(b'R') {
+                    self.lathe.mrc.escape = Some(self.linear(w).abs());
+                }
+            }
+            _ => {
+                let (mut i, mut k) = self.lathe.mrc.relief.unwrap_or((None, None));
+                if let Some(w) = self.words.get(b'U') {
+                    i = Some(self.linear(w));
+                }
+                if let Some(w) = self.words.get(b'W') {
+                    k = Some(self.linear(w));
+                }
+                self.lathe.mrc.relief = Some((i, k));
+                if let Some(w) = self.words.get(b'R') {
+                    if w.v < 1.0 || w.v.fract() != 0.0 || w.v > 9999.0 {
+                        return Err(self.alarm(
+                            AlarmKind::MrcValue,
+                            w.at,
+                            "G73 R (number of divisions d) must be a whole number 1-9999",
+                        ));
+                    }
+                    self.lathe.mrc.divisions = Some(w.v as u32);
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// G70, G71, G72, G73.
     fn mrc_shape_cycle(&mut self, code: u16, at: u32) -> R<()> {
         let has_pq = self.words.has(b'P') || self.words.has(b'Q');
@@ -70,39 +107,7 @@ impl Interp {
             if code == 700 {
                 return Err(self.alarm(AlarmKind::MrcNoPq, at, "G70 without P (ns) and Q (nf)"));
             }
-            // First block: modal data only.
-            match code {
-                710 | 720 => {
-                    let l = if code == 710 { b'U' } else { b'W' };
-                    if let Some(d) = self.positive(l, "depth of cut Δd")? {
-                        self.lathe.mrc.depth = Some(d);
-                    }
-                    if let Some(w) = self.words.get(b'R') {
-                        self.lathe.mrc.escape = Some(self.linear(w).abs());
-                    }
-                }
-                _ => {
-                    let (mut i, mut k) = self.lathe.mrc.relief.unwrap_or((None, None));
-                    if let Some(w) = self.words.get(b'U') {
-                        i = Some(self.linear(w));
-                    }
-                    if let Some(w) = self.words.get(b'W') {
-                        k = Some(self.linear(w));
-                    }
-                    self.lathe.mrc.relief = Some((i, k));
-                    if let Some(w) = self.words.get(b'R') {
-                        if w.v < 1.0 || w.v.fract() != 0.0 || w.v > 9999.0 {
-                            return Err(self.alarm(
-                                AlarmKind::MrcValue,
-                                w.at,
-                                "G73 R (number of divisions d) must be a whole number 1-9999",
-                            ));
-                        }
-                        self.lathe.mrc.divisions = Some(w.v as u32);
-                    }
-                }
-            }
-            return Ok(());
+            return self.mrc_first_block(code);
         }
         let (ns, nf) = match (self.words.get(b'P'), self.words.get(b'Q')) {
             (Some(p), Some(q)) => (self.seq_word(p)?, self.seq_word(q)?),
@@ -252,7 +257,7 @@ impl Interp {
             return Ok(None);
         }
         let saved = self.comp.take();
-        let pos = self.st.pos;
+        let pos = self.st.mover.pos();
         if before != 400 {
             self.comp_set_mode(before, None);
         }
@@ -260,7 +265,7 @@ impl Interp {
         let r = self.shape_run(a, s, at, false);
         let cap = self.comp_capture.take().unwrap_or_default();
         self.comp = saved;
-        self.st.pos = pos;
+        self.place_machine(pos);
         r?;
         let zx = |q: (f64, f64)| turning::p(q.1, q.0);
         let k = cap
@@ -362,7 +367,7 @@ impl Interp {
                 if let Some(cap) = self.comp_capture.as_mut() {
                     cap.push((cs, src, true));
                 }
-                self.st.pos = self.to_machine(&self.zx_full(seg.to));
+                self.place_at(&self.zx_full(seg.to));
             }
         }
         self.comp_shape_end()

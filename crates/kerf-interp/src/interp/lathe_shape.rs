@@ -445,46 +445,7 @@ impl Interp {
         if amt == 0.0 {
             return Ok(());
         }
-        let d1 = len.signum();
-        let b = seg.to;
-        let (pre, post) = if along_z {
-            (
-                turning::p(b.x, b.z - d1 * amt),
-                turning::p(b.x + s * amt, b.z),
-            )
-        } else {
-            (
-                turning::p(b.x - d1 * amt, b.z),
-                turning::p(b.x, b.z + s * amt),
-            )
-        };
-        let arc = (c.letter == b'R').then(|| {
-            let cen = if along_z {
-                turning::p(pre.x + s * amt, pre.z)
-            } else {
-                turning::p(pre.x, pre.z + s * amt)
-            };
-            let (u1, v1) = if along_z { (d1, 0.0) } else { (0.0, d1) };
-            let (u2, v2) = if along_z { (0.0, s) } else { (s, 0.0) };
-            (cen, u1 * v2 - v1 * u2 > 0.0)
-        });
-        shape.segs[i].to = pre;
-        shape.segs[i + 1].from = post;
-        shape.segs.insert(
-            i + 1,
-            Seg {
-                from: pre,
-                to: post,
-                arc,
-            },
-        );
-        let mode = shape.modes[i];
-        shape.modes.insert(i + 1, mode);
-        let speed = shape.speeds[i];
-        shape.speeds.insert(i + 1, speed);
-        shape.comps.insert(i + 1, None);
-        let src = shape.srcs[i];
-        shape.srcs.insert(i + 1, src);
+        insert_corner(shape, i, c.letter == b'R', along_z, (len.signum(), s), amt);
         Ok(())
     }
 
@@ -521,4 +482,59 @@ impl Interp {
         }
         Ok(c)
     }
+}
+
+/// Shortens shape segment `i` by `amt` before its end and inserts the
+/// chamfer (or, `round`, the corner arc) to the next segment's new start.
+/// `along_z`: segment `i` moves in Z; `(d1, s)`: the signs of its move and
+/// of the next one's.
+fn insert_corner(
+    shape: &mut Shape,
+    i: usize,
+    round: bool,
+    along_z: bool,
+    signs: (f64, f64),
+    amt: f64,
+) {
+    let (d1, s) = signs;
+    let seg = shape.segs[i];
+    let b = seg.to;
+    let (pre, post) = if along_z {
+        (
+            turning::p(b.x, b.z - d1 * amt),
+            turning::p(b.x + s * amt, b.z),
+        )
+    } else {
+        (
+            turning::p(b.x - d1 * amt, b.z),
+            turning::p(b.x, b.z + s * amt),
+        )
+    };
+    let arc = (round).then(|| {
+        let cen = if along_z {
+            turning::p(pre.x + s * amt, pre.z)
+        } else {
+            turning::p(pre.x, pre.z + s * amt)
+        };
+        let (u1, v1) = if along_z { (d1, 0.0) } else { (0.0, d1) };
+        let (u2, v2) = if along_z { (0.0, s) } else { (s, 0.0) };
+        (cen, u1 * v2 - v1 * u2 > 0.0)
+    });
+    shape.segs[i].to = pre;
+    shape.segs[i + 1].from = post;
+    shape.segs.insert(
+        i + 1,
+        Seg {
+            from: pre,
+            to: post,
+            arc,
+        },
+    );
+    let mode = shape.modes[i];
+    shape.modes.insert(i + 1, mode);
+    let speed = shape.speeds[i];
+    shape.speeds.insert(i + 1, speed);
+    shape.comps.insert(i + 1, None);
+    let src = shape.srcs[i];
+    shape.srcs.insert(i + 1, src);
 }

@@ -3,16 +3,7 @@
 
 use super::*;
 
-/// How fast a straight move goes.
-#[derive(Clone, Copy, Debug)]
-pub(super) enum Speed {
-    /// G00.
-    Rapid,
-    /// The modal feed (F, G94/G95/G93).
-    Modal,
-    /// A feed fixed earlier.
-    Feed(Feed),
-}
+pub(super) use super::mover::Speed;
 
 impl Interp {
     // ---- motion ------------------------------------------------------------------
@@ -101,75 +92,6 @@ impl Interp {
         self.st.polar_origin.set(origin);
     }
 
-    /// A point in program coordinates → machine coordinates (scaling,
-    /// rotation, then the offset stack).
-    pub(super) fn to_machine(&self, w: &Pos) -> Pos {
-        if self.st.xf.active() {
-            self.offset_to_machine(&self.st.xf.forward(w))
-        } else {
-            self.offset_to_machine(w)
-        }
-    }
-
-    /// A point in (transformed) local coordinates → machine coordinates:
-    /// the offset stack only.
-    pub(super) fn offset_to_machine(&self, w: &Pos) -> Pos {
-        let o = self.prog_origin();
-        let mut m = *w;
-        for i in 0..NAXES {
-            m[i] += o[i];
-        }
-        m
-    }
-
-    /// Stored stroke check 2 (G22): the whole path from the current
-    /// position to `to` (machine coordinates) — for the HX's non-linear
-    /// rapid the dog-leg the axes really follow — must stay out of the
-    /// forbidden area.
-    pub(super) fn check_stroke(&self, to: &Pos, rapid: bool, at: u32) -> R<()> {
-        let Some(area) = self.stroke_check_area() else {
-            return Ok(());
-        };
-        let from = self.st.pos;
-        let bad = if rapid && !self.linear_rapid() {
-            let rates = [Axis::X, Axis::Y, Axis::Z]
-                .map(|a| self.profile.axis(a).map(|d| d.rapid).unwrap_or(0.0));
-            crate::stroke::dogleg(&from, to, rates)
-                .windows(2)
-                .any(|w| area.segment_enters(&w[0], &w[1]))
-        } else {
-            area.segment_enters(&from, to)
-        };
-        if bad {
-            return Err(self.stroke_alarm(&area, at));
-        }
-        Ok(())
-    }
-
-    /// The G22 area when the check is on.
-    pub(super) fn stroke_check_area(&self) -> Option<crate::stroke::Area> {
-        let area = self.st.stroke_area?;
-        let grp = self.dialect.gcode(230)?.group as usize;
-        (self.st.modal[grp] == 220).then_some(area)
-    }
-
-    pub(super) fn stroke_alarm(&self, area: &crate::stroke::Area, at: u32) -> Alarm {
-        let side = if area.outside { "leaves" } else { "enters" };
-        self.alarm(
-            AlarmKind::Overtravel,
-            at,
-            format!(
-                "stored stroke check (G22): the move {side} the forbidden area X {}…{} Y {}…{} Z {}…{} (machine)",
-                fmt_num(area.lo[0]),
-                fmt_num(area.hi[0]),
-                fmt_num(area.lo[1]),
-                fmt_num(area.hi[1]),
-                fmt_num(area.lo[2]),
-                fmt_num(area.hi[2])
-            ),
-        )
-    }
-
     /// `G22 X_ Y_ Z_ I_ J_ K_`: the forbidden area, machine coordinates,
     /// (X, Y, Z) the upper and (I, J, K) the lower corner; an axis given by
     /// neither spans all. PM 3474 = 1 forbids the outside (000 §15.5.3).
@@ -217,34 +139,10 @@ impl Interp {
             outside: self.profile.param("PM 3474", 0.0) == 1.0,
         };
         // The tool may not already be where the check forbids.
-        if area.forbids(&self.st.pos) {
+        if area.forbids(&self.st.mover.pos()) {
             return Err(self.stroke_alarm(&area, at));
         }
         self.st.stroke_area = Some(area);
-        Ok(())
-    }
-
-    pub(super) fn check_travel(&self, m: &Pos, at: u32) -> R<()> {
-        for ax in Axis::ALL {
-            if let Some((min, max)) = self.travel[ax as usize] {
-                let v = m[ax as usize];
-                if v < min - 1e-9 || v > max + 1e-9 {
-                    let side = if v > max { '+' } else { '-' };
-                    return Err(self.alarm(
-                        AlarmKind::Overtravel,
-                        at,
-                        format!(
-                            "overtravel {side}{}: machine {} = {:.3} outside [{}, {}]",
-                            ax.name().to_uppercase(),
-                            ax.name().to_uppercase(),
-                            v,
-                            min,
-                            max
-                        ),
-                    ));
-                }
-            }
-        }
         Ok(())
     }
 
@@ -331,33 +229,6 @@ impl Interp {
     /// the travel limits and emitted. `at` positions any alarm.
     pub(super) fn move_line(&mut self, rapid: bool, tw: Pos, at: u32) -> R<()> {
         self.line_to(tw, if rapid { Speed::Rapid } else { Speed::Modal }, at)
-    }
-
-    /// [`Self::move_line`] with the speed given: a rapid, the modal feed,
-    /// or a feed fixed earlier (the parts of a ,C/,R move keep the feed of
-    /// their own block).
-    pub(super) fn line_to(&mut self, tw: Pos, speed: Speed, at: u32) -> R<()> {
-        let mto = self.to_machine(&tw);
-        self.check_travel(&mto, at)?;
-        self.check_stroke(&mto, matches!(speed, Speed::Rapid), at)?;
-        let m = Motion {
-            to: self.work_of(&mto),
-            mto,
-        };
-        let cmd = match speed {
-            Speed::Rapid => Canon::Rapid {
-                m,
-                linear: self.linear_rapid(),
-            },
-            Speed::Modal => Canon::Feed {
-                m,
-                feed: self.feed(at)?,
-            },
-            Speed::Feed(feed) => Canon::Feed { m, feed },
-        };
-        self.st.pos = mto;
-        self.emit(cmd);
-        Ok(())
     }
 
     pub(super) fn arc(&mut self, tw: Pos, any: bool, ccw: bool, at: u32) -> R<()> {
@@ -505,69 +376,6 @@ impl Interp {
         Ok((st, et, center_t, ccw_t))
     }
 
-    /// An arc from `start` to `tw` (program coordinates) about `center`
-    /// (in the plane) at `feed`: travel-checked and emitted. The axes
-    /// outside the plane move linearly (helix).
-    pub(super) fn arc_to(
-        &mut self,
-        start: Pos,
-        tw: Pos,
-        center: (f64, f64),
-        ccw: bool,
-        feed: Feed,
-        at: u32,
-    ) -> R<()> {
-        let plane = self.st.plane;
-        let (a1, a2, _) = plane.axes();
-        let (cur, tw, center, ccw) = self.transform_arc(start, tw, center, ccw, at)?;
-        let s = (cur[a1], cur[a2]);
-        let e = (tw[a1], tw[a2]);
-        // Travel: the arc's extremes in the plane, the end point elsewhere.
-        let (u0, v0, u1, v1) = arc::bbox(s, e, center, ccw);
-        for (u, v) in [(u0, v0), (u1, v1)] {
-            let mut p = tw;
-            p[a1] = u;
-            p[a2] = v;
-            self.check_travel(&self.offset_to_machine(&p), at)?;
-        }
-        let mto = self.offset_to_machine(&tw);
-        self.check_travel(&mto, at)?;
-        let mut c = cur;
-        c[a1] = center.0;
-        c[a2] = center.1;
-        let mcenter = self.offset_to_machine(&c);
-        if let Some(area) = self.stroke_check_area() {
-            let sw = arc::sweep(s, e, center, ccw);
-            let pts = crate::stroke::arc_points(
-                &self.st.pos,
-                &mto,
-                (mcenter[a1], mcenter[a2]),
-                (a1, a2),
-                if ccw { sw } else { -sw },
-                1e-4,
-            );
-            if pts.windows(2).any(|w| area.segment_enters(&w[0], &w[1])) {
-                return Err(self.stroke_alarm(&area, at));
-            }
-        }
-        let c = self.work_of(&mcenter);
-        let dir = if ccw { ArcDir::Ccw } else { ArcDir::Cw };
-        self.st.pos = mto;
-        self.emit(Canon::Arc {
-            m: Motion {
-                to: self.work_of(&mto),
-                mto,
-            },
-            center: c,
-            mcenter,
-            dir,
-            plane,
-            turns: 0,
-            feed,
-        });
-        Ok(())
-    }
-
     /// G33 on the HX (000 §4.8): a straight move synchronised with the
     /// spindle, F = lead (mm/rev, modal with the other feeds).
     fn thread_line(&mut self, tw: Pos, at: u32) -> R<()> {
@@ -581,40 +389,7 @@ impl Interp {
                 "G33 with the spindle stopped: the threading move would wait forever",
             ));
         }
-        let mto = self.to_machine(&tw);
-        self.check_travel(&mto, at)?;
-        self.check_stroke(&mto, false, at)?;
-        self.st.pos = mto;
-        self.emit(Canon::Thread {
-            m: Motion {
-                to: self.work_of(&mto),
-                mto,
-            },
-            lead,
-        });
-        Ok(())
-    }
-
-    /// An arc with R whose plane end point equals its start: only the other
-    /// axes move (helical with zero sweep), as a feed.
-    pub(super) fn linear_only(&mut self, tw: Pos) -> R<()> {
-        let at = self.motion_at();
-        let mto = self.to_machine(&tw);
-        if mto == self.st.pos {
-            return Ok(());
-        }
-        self.check_travel(&mto, at)?;
-        self.check_stroke(&mto, false, at)?;
-        let feed = self.feed(at)?;
-        self.st.pos = mto;
-        self.emit(Canon::Feed {
-            m: Motion {
-                to: self.work_of(&mto),
-                mto,
-            },
-            feed,
-        });
-        Ok(())
+        self.thread_move(tw, lead, at)
     }
 
     // ---- tool length, reference returns ----------------------------------------
@@ -687,27 +462,16 @@ impl Interp {
             named[ax as usize] = self.has_axis[ax as usize]
                 && (self.words.has(ax_letter(ax)) || self.uvw(ax).is_some());
         }
-        let linear = self.linear_rapid();
-        let rapid_to = |me: &mut Self, mto: Pos| -> R<()> {
-            me.check_travel(&mto, at)?;
-            me.check_stroke(&mto, true, at)?;
-            if mto != me.st.pos {
-                me.st.pos = mto;
-                let m = Motion {
-                    to: me.work_of(&mto),
-                    mto,
-                };
-                me.emit(Canon::Rapid { m, linear });
-            }
-            Ok(())
-        };
+        let rapid_to = |me: &mut Self, mto: Pos| me.rapid_machine(mto, at);
         match c {
             270 => {
                 let mto = self.to_machine(&tw);
                 rapid_to(self, mto)?;
                 for ax in Axis::ALL {
                     let i = ax as usize;
-                    if named[i] && (self.st.pos[i] - self.reference_point(1, ax)).abs() > 1e-6 {
+                    if named[i]
+                        && (self.st.mover.pos()[i] - self.reference_point(1, ax)).abs() > 1e-6
+                    {
                         // The check follows the move: the positioning is
                         // made, then the control alarms.
                         self.after_block = Some(self.alarm(
@@ -747,7 +511,7 @@ impl Interp {
                         self.st.g28_mid[i] = Some(tw[i]);
                     }
                 }
-                let mut r = self.st.pos;
+                let mut r = self.st.mover.pos();
                 for ax in Axis::ALL {
                     if named[ax as usize] {
                         r[ax as usize] = self.reference_point(n, ax);

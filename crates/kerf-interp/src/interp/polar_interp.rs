@@ -235,13 +235,16 @@ impl Interp {
         };
         let feed = self.feed(at)?;
         let chords = rotary::polar_chords(&path, (cur[X], th0), self.chord_tol());
-        for (t, (x, th)) in chords {
-            let mut p = lerp(&cur, &tw, t);
-            p[X] = x;
-            p[C] = c0 + th;
-            self.chord_to(p, feed, at)?;
-        }
-        Ok(())
+        let points: Vec<Pos> = chords
+            .into_iter()
+            .map(|(t, (x, th))| {
+                let mut p = lerp(&cur, &tw, t);
+                p[X] = x;
+                p[C] = c0 + th;
+                p
+            })
+            .collect();
+        self.chords(&points, feed, at)
     }
 
     /// An arc in a virtual plane from `s` to `e`: the centre from R, or
@@ -323,22 +326,6 @@ impl Interp {
             sweep: if ccw { sw } else { -sw },
             e,
         }))
-    }
-
-    /// A chord to `p` (program coordinates): checked against the travel
-    /// limits and emitted as a feed.
-    pub(super) fn chord_to(&mut self, p: Pos, feed: Feed, at: u32) -> R<()> {
-        let mto = self.to_machine(&p);
-        self.check_travel(&mto, at)?;
-        self.st.pos = mto;
-        self.emit(Canon::Feed {
-            m: Motion {
-                to: self.work_of(&mto),
-                mto,
-            },
-            feed,
-        });
-        Ok(())
     }
 }
 

@@ -54,7 +54,7 @@ impl Interp {
         let fresh = Self::power_on_state(&self.profile, self.dialect);
         let old = std::mem::replace(&mut self.st, fresh);
         let st = &mut self.st;
-        st.pos = old.pos;
+        st.mover = old.mover;
         st.wcs = old.wcs;
         st.shift = old.shift;
         st.stroke_area = old.stroke_area;

@@ -307,7 +307,7 @@ impl Interp {
             S => self.st.s,
             DNum => self.sys.d,
             HNum => self.st.h as f64,
-            Machine(k) => return Ok(self.axis_value_of(k, &self.st.pos)),
+            Machine(k) => return Ok(self.axis_value_of(k, &self.st.mover.pos())),
             Work(k) => return Ok(self.axis_value_of(k, &self.work_position())),
             Programmed(k) => return Ok(self.axis_value_of(k, &self.programmed_position())),
             Skip(k) => {

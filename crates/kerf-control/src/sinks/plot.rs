@@ -1,11 +1,52 @@
 //! SVG plot of the toolpath: the XY view for mills, the XZ half-section for
 //! lathes (Z to the right, radius X up). Rapids dashed, cuts solid.
 
-use kerf_canon::{Canon, Event, Pos};
+use std::io::{self, Write};
+
+use kerf_canon::{Alarm, Canon, Event, Pos};
 use kerf_interp::MachineKind;
 
+use crate::sink::{Context, Sink};
+
+/// The plot sink: draws every motion, writes the SVG at the end.
+pub struct Plot<W: Write> {
+    out: W,
+    drawing: Drawing,
+}
+
+impl<W: Write> Plot<W> {
+    /// A plot written onto `out` at the end of the run.
+    pub fn new(out: W) -> Plot<W> {
+        Plot {
+            out,
+            drawing: Drawing::new(MachineKind::Mill),
+        }
+    }
+}
+
+impl<W: Write> Sink for Plot<W> {
+    fn name(&self) -> &str {
+        "plot"
+    }
+
+    fn start(&mut self, cx: &Context) -> io::Result<()> {
+        self.drawing = Drawing::new(cx.interp.profile().kind);
+        Ok(())
+    }
+
+    fn event(&mut self, e: &Event, from: &Pos, _cx: &Context) -> io::Result<()> {
+        self.drawing.add(e, from);
+        Ok(())
+    }
+
+    fn finish(&mut self, _cx: &Context, _alarm: Option<&Alarm>) -> io::Result<()> {
+        self.out.write_all(self.drawing.svg().as_bytes())?;
+        self.out.flush()
+    }
+}
+
 /// Collects path segments in view coordinates.
-pub struct Plot {
+pub struct Drawing {
     kind: MachineKind,
     /// (rapid?, SVG path data) per segment.
     segs: Vec<(bool, String)>,
@@ -14,9 +55,10 @@ pub struct Plot {
     started: bool,
 }
 
-impl Plot {
-    pub fn new(kind: MachineKind) -> Plot {
-        Plot {
+impl Drawing {
+    /// An empty drawing in the view of this kind of machine.
+    pub fn new(kind: MachineKind) -> Drawing {
+        Drawing {
             kind,
             segs: Vec::new(),
             min: (f64::MAX, f64::MAX),

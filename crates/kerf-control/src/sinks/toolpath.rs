@@ -1,12 +1,15 @@
 //! The toolpath sink: one JSON object per canonical motion (and dwell), in
-//! execution order. Format: docs/formats.md.
+//! execution order, written when its end time is planned. Format:
+//! docs/formats.md.
 
 use std::io::{self, Write};
 
 use kerf_canon::{Axis, Canon, Event, Feed, Pos};
 
+use crate::sink::{Context, Sink, Timed};
+
 /// Writes JSON Lines.
-pub struct Writer<W: Write> {
+pub struct Toolpath<W: Write> {
     w: W,
     axes: Vec<Axis>,
     buf: String,
@@ -38,12 +41,13 @@ fn json_str(out: &mut String, s: &str) {
     out.push('"');
 }
 
-impl<W: Write> Writer<W> {
-    /// A writer for a machine with these axes.
-    pub fn new(w: W, axes: Vec<Axis>) -> Writer<W> {
-        Writer {
+impl<W: Write> Toolpath<W> {
+    /// A writer onto `w`; the axes are the machine's, taken at the start
+    /// of the run.
+    pub fn new(w: W) -> Toolpath<W> {
+        Toolpath {
             w,
-            axes,
+            axes: Vec::new(),
             buf: String::with_capacity(512),
         }
     }
@@ -147,9 +151,24 @@ impl<W: Write> Writer<W> {
         self.buf.push_str("}\n");
         self.w.write_all(self.buf.as_bytes())
     }
+}
 
-    /// Flushes the output.
-    pub fn finish(&mut self) -> io::Result<()> {
+impl<W: Write> Sink for Toolpath<W> {
+    fn name(&self) -> &str {
+        "toolpath"
+    }
+
+    fn start(&mut self, cx: &Context) -> io::Result<()> {
+        self.axes = super::axes_of(cx.interp.profile());
+        Ok(())
+    }
+
+    fn timed(&mut self, t: &Timed, cx: &Context) -> io::Result<()> {
+        let file = cx.file(t.event.src.file);
+        self.write(t.event, file, &t.to, t.t_end, t.feed_mm_min)
+    }
+
+    fn finish(&mut self, _cx: &Context, _alarm: Option<&kerf_canon::Alarm>) -> io::Result<()> {
         self.w.flush()
     }
 }

@@ -1,0 +1,37 @@
+//! The outputs the `kerf` CLI writes, one [`Sink`](crate::Sink) per file:
+//!
+//! - [`Toolpath`]: one JSON line per motion and dwell, with its end time;
+//! - [`Report`]: the JSON summary of the run;
+//! - [`Plot`]: an SVG drawing of the path;
+//! - [`Sample`]: the smoothed axis setpoints at a fixed period (CSV);
+//! - [`Log`]: the operator messages, one per line;
+//! - [`Expand`]: the program as plain G-code for a target control
+//!   (docs/expand.md).
+//!
+//! Each takes any `io::Write`; formats are in docs/formats.md.
+
+pub mod expand;
+pub mod log;
+pub mod plot;
+pub mod report;
+pub mod sample;
+pub mod toolpath;
+
+pub use expand::Expand;
+pub use log::Log;
+pub use plot::Plot;
+pub use report::Report;
+pub use sample::Sample;
+pub use toolpath::Toolpath;
+
+use kerf_canon::Axis;
+use kerf_interp::Profile;
+
+/// The machine's axes in output order (X Y Z A B C as present).
+pub fn axes_of(p: &Profile) -> Vec<Axis> {
+    Axis::ALL
+        .iter()
+        .copied()
+        .filter(|a| p.has_axis(*a))
+        .collect()
+}

@@ -1,0 +1,161 @@
+//! Warnings: what a real control accepts but is most likely a mistake.
+//! Each is a [`Warning`] with a code, a message and the source position
+//! (docs/alarms.md "Warnings"). The [`Detector`] watches the event stream
+//! and the planner while the runner runs; the decimal-point check reads
+//! the program text ([`crate::lint`]).
+//!
+//! | code | what |
+//! | --- | --- |
+//! | `KERF-W001` | a dimension word without a decimal point in a program that otherwise writes them |
+//! | `KERF-W002` | a lathe-style program (feeds below 1 mm/min, constant surface speed) on a mill profile |
+//! | `KERF-W003` | an empty program |
+//! | `KERF-W004` | a per-revolution feed or thread with the spindle stopped (timed as 0 s) |
+//! | `KERF-W005` | a program that ends without M02/M30 |
+
+use kerf_canon::{Canon, Event, Feed, SrcRef};
+use kerf_interp::{Interp, MachineKind};
+
+/// Most warnings kept in one run; the rest are counted.
+pub const MAX_WARNINGS: usize = 1000;
+
+/// One warning with its source position.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Warning {
+    /// `KERF-W001` …
+    pub code: &'static str,
+    /// What was seen and what to do.
+    pub message: String,
+    /// The file, as alarms name it.
+    pub file: String,
+    /// 1-based line.
+    pub line: u32,
+    /// 1-based column (0 when the warning is about the whole file).
+    pub col: u32,
+}
+
+/// The warnings of a run, in the order found, at most [`MAX_WARNINGS`].
+#[derive(Clone, Debug, Default)]
+pub struct Warnings {
+    /// The warnings kept.
+    pub list: Vec<Warning>,
+    /// How many more were found and not kept.
+    pub dropped: u64,
+}
+
+impl Warnings {
+    /// Adds a warning (counted only once the list is full).
+    pub fn push(&mut self, w: Warning) {
+        if self.list.len() < MAX_WARNINGS {
+            self.list.push(w);
+        } else {
+            self.dropped += 1;
+        }
+    }
+
+    fn at(&mut self, it: &Interp, src: SrcRef, code: &'static str, message: String) {
+        self.push(Warning {
+            code,
+            message,
+            file: it.file_name(src.file).to_string(),
+            line: src.line,
+            col: src.col,
+        });
+    }
+}
+
+/// Watches a run for the warnings the event stream and the planner show.
+#[derive(Debug, Default)]
+pub struct Detector {
+    events: u64,
+    /// Inside a stretch of cutting moves the planner could not time.
+    stalled: bool,
+    /// The code of the last `End` event (0: end of text or `%`).
+    end: Option<(u32, SrcRef)>,
+    /// First sign of a lathe program on a mill: where and why.
+    lathe: Option<(SrcRef, String)>,
+}
+
+impl Detector {
+    /// Looks at one event; `stalled` says whether the planner could not
+    /// time it (a cut with no feed because the spindle is stopped).
+    pub fn event(&mut self, e: &Event, stalled: bool, it: &Interp, out: &mut Warnings) {
+        self.events += 1;
+        if stalled && !self.stalled {
+            out.at(
+                it,
+                e.src,
+                "KERF-W004",
+                "cutting with the spindle stopped (a per-revolution feed or a thread \
+                 with no spindle speed): the control would wait here; timed as 0 s"
+                    .into(),
+            );
+        }
+        if e.motion().is_some() {
+            self.stalled = stalled;
+        }
+        if let Canon::End { code } = e.cmd {
+            self.end = Some((code, e.src));
+        }
+        if self.lathe.is_none() && it.profile().kind == MachineKind::Mill {
+            self.lathe = lathe_sign(e).map(|why| (e.src, why));
+        }
+    }
+
+    /// At the end of a run that was not stopped by an alarm.
+    pub fn end(&mut self, it: &Interp, alarm: bool, out: &mut Warnings) {
+        if let Some((src, why)) = self.lathe.take() {
+            let p = it.profile();
+            out.at(
+                it,
+                src,
+                "KERF-W002",
+                format!(
+                    "this looks like a lathe program ({why}) but the machine is the mill {}: \
+                     choose the lathe with --machine puma-lathe or --machine hurco-lathe",
+                    p.name
+                ),
+            );
+        }
+        if alarm {
+            return;
+        }
+        if it.blocks() == 0 && self.events <= 1 {
+            out.push(Warning {
+                code: "KERF-W003",
+                message: "empty program: no blocks to run".into(),
+                file: it.file_name(0).to_string(),
+                line: 1,
+                col: 0,
+            });
+            return;
+        }
+        match self.end {
+            Some((2 | 30, _)) | Some((99, _)) => {}
+            Some((_, src)) => out.at(
+                it,
+                src,
+                "KERF-W005",
+                "the program ends without M02 or M30".into(),
+            ),
+            None => {}
+        }
+    }
+}
+
+/// Why an event looks like it was written for a lathe, if it does.
+fn lathe_sign(e: &Event) -> Option<String> {
+    match &e.cmd {
+        Canon::Feed {
+            feed: Feed::PerMin(v),
+            ..
+        }
+        | Canon::Arc {
+            feed: Feed::PerMin(v),
+            ..
+        } if *v > 0.0 && *v < 1.0 => Some(format!(
+            "F{v} is {v} mm/min here: a lathe's feed per revolution?"
+        )),
+        Canon::Spindle { css: Some(v), .. } => Some(format!("constant surface speed G96 S{v}")),
+        _ => None,
+    }
+}
