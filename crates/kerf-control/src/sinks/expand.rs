@@ -87,3 +87,51 @@ impl<W: Write> Sink for Expand<W> {
         x.finish().map(drop)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Job;
+
+    fn expand(text: &str, target: Target) -> (String, Option<Alarm>) {
+        let mut runner = Job::text("part.nc", text).machine("hx-mc").load().unwrap();
+        runner.interpret_only();
+        let mut out = Vec::new();
+        let mut sink = Expand::new(&mut out, target);
+        let outcome = runner.run(&mut [&mut sink as &mut dyn Sink]).unwrap();
+        drop(sink);
+        (String::from_utf8(out).unwrap(), outcome.alarm)
+    }
+
+    #[test]
+    fn writes_the_program_from_the_start_position() {
+        // hx-mc starts at machine 0 with G54 at (-400, -250, -250): work
+        // (400, 250, 250); the first move names every axis.
+        let (text, alarm) = expand("G0 X10. Y5.\nG1 X20. F600.\nM30\n", Target::Fanuc);
+        assert!(alarm.is_none());
+        assert_eq!(
+            text,
+            "%\nO0001 (KERF EXPAND OF part.nc TO fanuc)\nG21\nG17 G40 G49 G80 G90\n\
+             G00 X10. Y5. Z250. C0. (part.nc:1)\n\
+             G94 G01 X20. F600. (part.nc:2)\n\
+             M30 (part.nc:3)\n%\n"
+        );
+    }
+
+    #[test]
+    fn stops_at_the_alarm_with_a_comment() {
+        // The arc's end is 50.99 mm from the centre, its start 40: F_82112.
+        let (text, alarm) = expand("G0 X0 Y0\nG2 X50. Y50. I40. F100.\nM30\n", Target::LinuxCnc);
+        assert_eq!(
+            alarm.map(|a| (a.code, a.src.line)),
+            Some(("F_82112".into(), 2))
+        );
+        let last: Vec<&str> = text.lines().rev().take(2).collect();
+        assert_eq!(last[1], "G0 X0. Y0. Z250. C0. (part.nc:1)");
+        assert!(
+            last[0].starts_with("(ALARM F_82112 part.nc:2: arc end point"),
+            "{}",
+            last[0]
+        );
+    }
+}
