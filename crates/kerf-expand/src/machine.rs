@@ -231,6 +231,15 @@ impl<W: Write> Expander<W> {
         if change && (linux || control == Control::Hx) {
             self.put_str(if linux { " M6" } else { " M06" });
         }
+        if change && linux {
+            // LinuxCNC's M6 stops the spindle (a Fanuc turret index or M06
+            // leaves it to the program): start it again as it was.
+            match self.spindle.dir {
+                Some(SpindleDir::Cw) => self.put_str("\nM3"),
+                Some(SpindleDir::Ccw) => self.put_str("\nM4"),
+                _ => {}
+            }
+        }
         Written::Block
     }
 

@@ -209,6 +209,42 @@ fn puma_x_is_a_diameter_its_arc_i_a_radius() {
 }
 
 #[test]
+fn linuxcnc_m6_restarts_the_spindle_it_stops() {
+    let events = [
+        ev(
+            1,
+            Canon::Spindle {
+                dir: SpindleDir::Ccw,
+                rpm: 500.0,
+                css: None,
+            },
+        ),
+        ev(
+            2,
+            Canon::Tool {
+                tool: 2,
+                offset: 2,
+                change: true,
+            },
+        ),
+    ];
+    let o = [0.0; 6];
+    assert_eq!(
+        blocks(Target::LinuxCnc, Control::Puma, &LATHE, o, &events),
+        [
+            "S500. M4 (part.nc:1)",
+            "T2 M6 (part.nc:2)",
+            "M4 (part.nc:2)"
+        ]
+    );
+    // The PUMA's turret index leaves the spindle running.
+    assert_eq!(
+        blocks(Target::Fanuc, Control::Puma, &LATHE, o, &events),
+        ["S500. M04 (part.nc:1)", "T0200 (part.nc:2)"]
+    );
+}
+
+#[test]
 fn hurco_thread_lead_follows_the_longer_axis_and_dwell_is_f() {
     let o = [0.0; 6];
     let events = [
