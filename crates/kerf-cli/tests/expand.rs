@@ -179,3 +179,43 @@ fn macro_cycle_transform_programs_expand_to_the_same_motions() {
     // Each of them completes (they are written to), so each is compared.
     assert_eq!(check_all(&cases), cases.len());
 }
+
+#[test]
+fn standard_output_unknown_target_and_unwritable_output() {
+    let prog = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/hx/contour.nc");
+    let kerf = || std::process::Command::new(env!("CARGO_BIN_EXE_kerf"));
+    // Without -o the program goes to stdout, the same text as -o writes.
+    let out = kerf().arg("expand").arg(&prog).output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let file = scratch("stdout-vs-file", "nc");
+    let o2 = kerf()
+        .arg("expand")
+        .arg(&prog)
+        .arg("-o")
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert_eq!(o2.status.code(), Some(0));
+    assert_eq!(out.stdout, std::fs::read(&file).unwrap());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.starts_with("%\nO0001 (KERF EXPAND OF contour.nc TO fanuc)\n"));
+    assert!(
+        text.contains("\nG17 G03 X50. Y10. I0. J10. (contour.nc:10)\n"),
+        "{text}"
+    );
+    // A target kerf does not write, and a folder that is not there: exit 2.
+    let bad = kerf()
+        .args(["expand", "--to", "haas"])
+        .arg(&prog)
+        .output()
+        .unwrap();
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("unknown target 'haas'"));
+    let nowhere = kerf()
+        .arg("expand")
+        .arg(&prog)
+        .args(["-o", "/nonexistent-folder/out.nc"])
+        .output()
+        .unwrap();
+    assert_eq!(nowhere.status.code(), Some(2));
+}

@@ -18,6 +18,8 @@ pub struct Case {
     /// `--machine` argument (a built-in name or a profile file).
     pub machine: String,
     pub sets: Vec<String>,
+    /// `--lib` folders.
+    pub libs: Vec<PathBuf>,
 }
 
 impl Case {
@@ -32,6 +34,9 @@ impl Case {
         c.arg(sub).arg(program).arg("--machine").arg(&self.machine);
         for s in &self.sets {
             c.arg("--set").arg(s);
+        }
+        for l in &self.libs {
+            c.arg("--lib").arg(l);
         }
         c.args(extra);
         c
@@ -85,6 +90,7 @@ pub fn examples() -> Vec<Case> {
                 program,
                 machine,
                 sets,
+                libs: Vec::new(),
             });
         }
     }
@@ -119,6 +125,7 @@ pub fn corpus() -> Vec<Case> {
                 program: p,
                 machine: machine.into(),
                 sets: Vec::new(),
+                libs: Vec::new(),
             });
         }
     }
@@ -139,16 +146,21 @@ pub fn rs274_programs() -> Vec<Case> {
             program: p,
             machine: "hx-mc".into(),
             sets: vec!["PI 129=0.254".into()],
+            libs: Vec::new(),
         })
         .collect()
 }
 
-/// The expansion's own programs, `tests/expand/MACHINE/NAME.nc`.
+/// The expansion's own programs, `tests/expand/MACHINE/NAME.nc`, run
+/// with `--lib tests/expand/lib`.
 pub fn expand_programs() -> Vec<Case> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/expand");
     let mut out = Vec::new();
     for sub in sorted_files(&dir) {
         let machine = sub.file_name().unwrap().to_string_lossy().to_string();
+        if machine == "lib" {
+            continue;
+        }
         for p in sorted_files(&sub) {
             out.push(Case {
                 label: format!(
@@ -158,6 +170,7 @@ pub fn expand_programs() -> Vec<Case> {
                 program: p,
                 machine: machine.clone(),
                 sets: Vec::new(),
+                libs: vec![dir.join("lib")],
             });
         }
     }
