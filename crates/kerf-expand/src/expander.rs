@@ -17,12 +17,18 @@ use crate::target::{Spelling, Target, ThreadWord};
 /// is set in the output; smaller ones are float noise.
 const FRAME_TOL: f64 = 1e-7;
 
+/// Output is handed to the writer in pieces of about this many bytes.
+const FLUSH_AT: usize = 1 << 16;
+
 /// Writes events as G-code blocks.
 pub struct Expander<W: Write> {
     w: W,
     sp: Spelling,
     axes: Vec<Axis>,
+    /// Output not yet handed to `w` (written in pieces of `FLUSH_AT`).
     buf: Vec<u8>,
+    /// Where the block being built starts in `buf`.
+    start: usize,
     /// Last value written per axis, scaled (X as a diameter when the
     /// output writes diameters); None until first written.
     written: [Option<i64>; NAXES],
@@ -67,7 +73,8 @@ impl<W: Write> Expander<W> {
             w,
             sp,
             axes,
-            buf: Vec::with_capacity(256),
+            buf: Vec::with_capacity(FLUSH_AT + 4096),
+            start: 0,
             written: [None; NAXES],
             held: start_work,
             prev_mto: start_machine,
@@ -102,23 +109,21 @@ impl<W: Write> Expander<W> {
         let mut rest = header;
         if let Some((&first, tail)) = header.split_first() {
             if first == "%" {
-                self.w.write_all(b"%\n")?;
+                self.buf.extend_from_slice(b"%\n");
                 rest = tail;
             }
         }
         for (i, line) in rest.iter().enumerate() {
-            self.w.write_all(line.as_bytes())?;
+            self.buf.extend_from_slice(line.as_bytes());
             if i == 0 {
-                self.buf.clear();
                 self.buf.extend_from_slice(b" (KERF EXPAND OF ");
                 push_comment_text(&mut self.buf, base_name(source), 96);
                 self.buf.extend_from_slice(b" TO ");
-                self.buf
-                    .extend_from_slice(self.sp.target.to_string().as_bytes());
+                let t = self.sp.target.to_string();
+                self.buf.extend_from_slice(t.as_bytes());
                 self.buf.push(b')');
-                self.w.write_all(&self.buf)?;
             }
-            self.w.write_all(b"\n")?;
+            self.buf.push(b'\n');
         }
         Ok(())
     }
@@ -126,7 +131,7 @@ impl<W: Write> Expander<W> {
     /// Writes one event with its source comment; `file` is the name of the
     /// file `e.src.file` refers to.
     pub fn event(&mut self, e: &Event, file: &str) -> io::Result<()> {
-        self.buf.clear();
+        self.start = self.buf.len();
         let done = match &e.cmd {
             Canon::Rapid { m, .. } => self.linear(0, m, None),
             Canon::Feed { m, feed } => self.linear(1, m, Some(*feed)),
@@ -146,15 +151,17 @@ impl<W: Write> Expander<W> {
             } => self.dwell(*seconds, *revolutions),
             _ => self.machine_event(&e.cmd),
         };
-        if let Written::Block = done {
-            self.end_block(file, e.src.line)?;
+        match done {
+            Written::Block => self.end_block(file, e.src.line),
+            Written::Nothing => {
+                self.buf.truncate(self.start);
+                Ok(())
+            }
         }
-        Ok(())
     }
 
     /// Writes where the program stopped on an alarm, as a comment.
     pub fn alarm(&mut self, a: &Alarm, file: &str) -> io::Result<()> {
-        self.buf.clear();
         self.buf.extend_from_slice(b"(ALARM ");
         let text = format!(
             "{} {}:{}: {}",
@@ -165,16 +172,18 @@ impl<W: Write> Expander<W> {
         );
         push_comment_text(&mut self.buf, &text, 200);
         self.buf.extend_from_slice(b")\n");
-        self.w.write_all(&self.buf)
+        Ok(())
     }
 
     /// Writes the trailer, flushes and hands the writer back.
     pub fn finish(mut self) -> io::Result<W> {
         let t = self.sp.trailer();
         if !t.is_empty() {
-            self.w.write_all(t.as_bytes())?;
-            self.w.write_all(b"\n")?;
+            self.buf.extend_from_slice(t.as_bytes());
+            self.buf.push(b'\n');
         }
+        self.w.write_all(&self.buf)?;
+        self.buf.clear();
         self.w.flush()?;
         Ok(self.w)
     }
@@ -216,25 +225,30 @@ impl<W: Write> Expander<W> {
             push_comment_text(&mut self.comment_head, base_name(file), 64);
             self.comment_head.push(b':');
         }
-        let multi = self.buf.contains(&b'\n');
+        let multi = self.buf[self.start..].contains(&b'\n');
         if !multi {
             self.sep();
             self.buf.extend_from_slice(&self.comment_head);
             num::put_uint(&mut self.buf, line as u64, 1);
             self.buf.extend_from_slice(b")\n");
             self.blocks += 1;
-            return self.w.write_all(&self.buf);
-        }
-        let mut tail = self.comment_head.clone();
-        num::put_uint(&mut tail, line as u64, 1);
-        tail.extend_from_slice(b")\n");
-        for piece in self.buf.split(|&c| c == b'\n') {
-            self.w.write_all(piece)?;
-            if !piece.is_empty() {
-                self.w.write_all(b" ")?;
+        } else {
+            let mut tail = self.comment_head.clone();
+            num::put_uint(&mut tail, line as u64, 1);
+            tail.extend_from_slice(b")\n");
+            let block = self.buf.split_off(self.start);
+            for piece in block.split(|&c| c == b'\n') {
+                self.buf.extend_from_slice(piece);
+                if !piece.is_empty() {
+                    self.buf.push(b' ');
+                }
+                self.buf.extend_from_slice(&tail);
+                self.blocks += 1;
             }
-            self.w.write_all(&tail)?;
-            self.blocks += 1;
+        }
+        if self.buf.len() >= FLUSH_AT {
+            self.w.write_all(&self.buf)?;
+            self.buf.clear();
         }
         Ok(())
     }
@@ -247,7 +261,7 @@ impl<W: Write> Expander<W> {
 
     /// A space between words (none at the start of a block).
     fn sep(&mut self) {
-        if !self.buf.is_empty() && self.buf.last() != Some(&b'\n') {
+        if self.buf.len() > self.start && self.buf.last() != Some(&b'\n') {
             self.buf.push(b' ');
         }
     }
