@@ -29,10 +29,13 @@ pub struct Expander<W: Write> {
     buf: Vec<u8>,
     /// Where the block being built starts in `buf`.
     start: usize,
+    /// The block being built has more than one line (`new_line`).
+    multi: bool,
     /// Last value written per axis, scaled (X as a diameter when the
     /// output writes diameters); None until first written.
     written: [Option<i64>; NAXES],
-    /// The position the output program holds (radius X, mm).
+    /// The start position (radius X, mm): what the output program holds
+    /// on an axis it has not written yet.
     held: Pos,
     /// The machine position after the previous motion of the original.
     prev_mto: Pos,
@@ -75,6 +78,7 @@ impl<W: Write> Expander<W> {
             axes,
             buf: Vec::with_capacity(FLUSH_AT + 4096),
             start: 0,
+            multi: false,
             written: [None; NAXES],
             held: start_work,
             prev_mto: start_machine,
@@ -132,6 +136,7 @@ impl<W: Write> Expander<W> {
     /// file `e.src.file` refers to.
     pub fn event(&mut self, e: &Event, file: &str) -> io::Result<()> {
         self.start = self.buf.len();
+        self.multi = false;
         let done = match &e.cmd {
             Canon::Rapid { m, .. } => self.linear(0, m, None),
             Canon::Feed { m, feed } => self.linear(1, m, Some(*feed)),
@@ -225,8 +230,7 @@ impl<W: Write> Expander<W> {
             push_comment_text(&mut self.comment_head, base_name(file), 64);
             self.comment_head.push(b':');
         }
-        let multi = self.buf[self.start..].contains(&b'\n');
-        if !multi {
+        if !std::mem::take(&mut self.multi) {
             self.sep();
             self.buf.extend_from_slice(&self.comment_head);
             num::put_uint(&mut self.buf, line as u64, 1);
@@ -257,6 +261,13 @@ impl<W: Write> Expander<W> {
         self.sep();
         self.buf.push(letter);
         num::put(&mut self.buf, v, dec);
+    }
+
+    /// Ends a line inside the block being built: the event takes more
+    /// than one block, each gets the source comment.
+    pub(crate) fn new_line(&mut self) {
+        self.buf.push(b'\n');
+        self.multi = true;
     }
 
     /// A space between words (none at the start of a block).
@@ -382,11 +393,19 @@ impl<W: Write> Expander<W> {
             let i = self.axes[k] as usize;
             if self.written[i] != Some(n[i]) || always.contains(&i) {
                 self.written[i] = Some(n[i]);
-                self.held[i] = self.value_of(i, n[i]);
                 self.sep();
                 self.buf.push(AXIS_LETTERS[i]);
                 num::put_scaled(&mut self.buf, n[i], self.sp.decimals);
             }
+        }
+    }
+
+    /// The position the output program holds on axis `i`: what it last
+    /// wrote, or the start.
+    fn held(&self, i: usize) -> f64 {
+        match self.written[i] {
+            Some(n) => self.value_of(i, n),
+            None => self.held[i],
         }
     }
 
@@ -452,12 +471,11 @@ impl<W: Write> Expander<W> {
             self.shift[i] = shift;
             let n = self.scaled_axis(i, self.prev_mto[i] - shift);
             self.written[i] = Some(n);
-            self.held[i] = self.value_of(i, n);
             self.sep();
             self.buf.push(AXIS_LETTERS[i]);
             num::put_scaled(&mut self.buf, n, self.sp.decimals);
         }
-        self.buf.push(b'\n');
+        self.new_line();
     }
 
     fn arc(
@@ -477,7 +495,7 @@ impl<W: Write> Expander<W> {
             ));
         }
         self.frame(m);
-        let from = self.held;
+        let from: Pos = std::array::from_fn(|i| self.held(i));
         self.motion_prefix();
         self.feed_mode_code(feed_parts(feed).0);
         self.plane_code(plane);
@@ -501,7 +519,7 @@ impl<W: Write> Expander<W> {
         self.frame(m);
         self.motion_prefix();
         // Hurco: the lead goes with the axis of the longer move (002 G33).
-        let x_longer = (m.to[0] - self.held[0]).abs() > (m.to[2] - self.held[2]).abs() + 1e-9;
+        let x_longer = (m.to[0] - self.held(0)).abs() > (m.to[2] - self.held(2)).abs() + 1e-9;
         let (g, letter) = match (self.sp.target, self.sp.thread) {
             (Target::LinuxCnc, _) => (33, b'K'),
             (_, ThreadWord::G32F) => (32, b'F'),

@@ -203,7 +203,7 @@ impl<W: Write> Expander<W> {
         let linux = self.sp().target == Target::LinuxCnc;
         for (k, c) in codes.iter().enumerate() {
             if k > 0 {
-                self.put_str("\n");
+                self.new_line();
             }
             // LinuxCNC spells them M7 M8 M9.
             self.put_str(if linux { &c[..1] } else { c });
@@ -235,8 +235,14 @@ impl<W: Write> Expander<W> {
             // LinuxCNC's M6 stops the spindle (a Fanuc turret index or M06
             // leaves it to the program): start it again as it was.
             match self.spindle.dir {
-                Some(SpindleDir::Cw) => self.put_str("\nM3"),
-                Some(SpindleDir::Ccw) => self.put_str("\nM4"),
+                Some(SpindleDir::Cw) => {
+                    self.new_line();
+                    self.put_str("M3");
+                }
+                Some(SpindleDir::Ccw) => {
+                    self.new_line();
+                    self.put_str("M4");
+                }
                 _ => {}
             }
         }

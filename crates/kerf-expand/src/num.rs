@@ -19,39 +19,36 @@ pub fn unscaled(n: i64, dec: u32) -> f64 {
 
 /// Appends the scaled integer `n` (value × 10^dec) as decimal text.
 pub fn put_scaled(out: &mut Vec<u8>, n: i64, dec: u32) {
-    if n < 0 {
-        out.push(b'-');
-    }
+    // Built right to left in a stack buffer, appended once.
+    let mut text = [0u8; 32];
+    let mut at = text.len();
     let mut u = n.unsigned_abs();
-    let mut digits = [0u8; 24];
-    let mut len = 0;
-    // Fraction digits, least significant first, then the integer part.
+    // The fraction without its trailing zeros.
+    let mut frac = false;
     for _ in 0..dec {
-        digits[len] = b'0' + (u % 10) as u8;
+        let d = (u % 10) as u8;
         u /= 10;
-        len += 1;
+        if d != 0 || frac {
+            frac = true;
+            at -= 1;
+            text[at] = b'0' + d;
+        }
     }
-    let frac_len = len;
+    at -= 1;
+    text[at] = b'.';
     loop {
-        digits[len] = b'0' + (u % 10) as u8;
+        at -= 1;
+        text[at] = b'0' + (u % 10) as u8;
         u /= 10;
-        len += 1;
         if u == 0 {
             break;
         }
     }
-    for i in (frac_len..len).rev() {
-        out.push(digits[i]);
+    if n < 0 {
+        at -= 1;
+        text[at] = b'-';
     }
-    out.push(b'.');
-    // Drop trailing zeros of the fraction.
-    let mut lo = 0;
-    while lo < frac_len && digits[lo] == b'0' {
-        lo += 1;
-    }
-    for i in (lo..frac_len).rev() {
-        out.push(digits[i]);
-    }
+    out.extend_from_slice(&text[at..]);
 }
 
 /// Appends `v` rounded to `dec` decimals.
