@@ -39,11 +39,18 @@ pub struct Common {
     /// on the HX, #500-#999 on the Fanuc lathes; docs/formats.md).
     #[arg(long, value_name = "DIR")]
     pub state: Option<PathBuf>,
+    /// Print nothing on success (warnings and alarms still go to stderr).
+    #[arg(long, short)]
+    pub quiet: bool,
+    /// Print the report (JSON) on stdout instead of the summary.
+    #[arg(long, conflicts_with = "quiet")]
+    pub json: bool,
 }
 
 impl Common {
-    /// The job these options describe.
-    pub fn job(&self) -> Job {
+    /// The job these options describe; `check` reads the state but does
+    /// not write it.
+    pub fn job(&self, check: bool) -> Job {
         let mut job = Job::file(&self.program).machine(&self.machine);
         for dir in &self.lib {
             job = job.lib(dir);
@@ -56,6 +63,9 @@ impl Common {
         }
         if let Some(d) = &self.state {
             job = job.state(d);
+        }
+        if check {
+            job = job.read_only();
         }
         job
     }
@@ -93,7 +103,8 @@ pub enum Cmd {
         #[command(flatten)]
         outputs: Outputs,
     },
-    /// Check a program: run it without writing outputs; report alarms.
+    /// Check a program: run it without writing any file (not even the
+    /// --state folder); print the same summary, warnings and alarms.
     Check {
         #[command(flatten)]
         common: Common,
@@ -113,4 +124,11 @@ pub enum Cmd {
     },
     /// List the built-in machine profiles.
     Machines,
+    /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
+    Completions {
+        /// The shell.
+        shell: clap_complete::Shell,
+    },
+    /// Print the manual page (roff; `kerf man | man -l -`).
+    Man,
 }

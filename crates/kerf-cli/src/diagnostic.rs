@@ -1,10 +1,15 @@
-//! Alarms on stderr as compilers print errors: `FILE:LINE:COL: alarm CODE:
-//! MESSAGE`, the source line, a caret under the column.
+//! Alarms and warnings on stderr as compilers print errors: `FILE:LINE:COL:
+//! alarm CODE: MESSAGE`, the source line (clipped around the column when
+//! long), a caret under the column counted in characters.
 
 use std::fs::File;
 use std::io::Write;
 
 use kerf_canon::Alarm;
+use kerf_control::Warning;
+
+/// Characters of a source line shown around the column at most.
+const WIDTH: usize = 100;
 
 /// Prints the alarm with its source line and caret.
 pub fn print_alarm(a: &Alarm, file: &str) {
@@ -15,17 +20,60 @@ pub fn print_alarm(a: &Alarm, file: &str) {
         file, a.src.line, a.src.col, a.code, a.message
     );
     if let Some(line) = source_line(file, a.src.line) {
-        let shown: String = line
-            .chars()
-            .map(|c| if c == '\t' { ' ' } else { c })
-            .collect();
+        let (shown, caret) = excerpt(&line, a.src.col as usize);
         let _ = writeln!(err, "  {shown}");
-        let col = (a.src.col as usize).saturating_sub(1).min(shown.len());
-        let _ = writeln!(err, "  {}^", " ".repeat(col));
+        let _ = writeln!(err, "  {}^", " ".repeat(caret));
     }
 }
 
-fn source_line(file: &str, line: u32) -> Option<String> {
+/// Prints one warning line.
+pub fn print_warning(w: &Warning) {
+    let col = if w.col == 0 {
+        String::new()
+    } else {
+        format!("{}:", w.col)
+    };
+    eprintln!(
+        "{}:{}:{col} warning {}: {}",
+        w.file, w.line, w.code, w.message
+    );
+}
+
+/// The line as shown (tabs as spaces, control characters as `?`,
+/// clipped to about [`WIDTH`] characters around the column with `…` where
+/// cut) and the caret's offset in characters under it. `col` is the
+/// 1-based byte column of the line's bytes.
+pub fn excerpt(line: &[u8], col: usize) -> (String, usize) {
+    let at = col.saturating_sub(1).min(line.len());
+    let before = String::from_utf8_lossy(&line[..at]).chars().count();
+    let chars: Vec<char> = String::from_utf8_lossy(line)
+        .chars()
+        .map(|c| match c {
+            '\t' => ' ',
+            c if c.is_control() => '?',
+            c => c,
+        })
+        .collect();
+    let caret = before.min(chars.len());
+    if chars.len() <= WIDTH {
+        return (chars.into_iter().collect(), caret);
+    }
+    let start = caret.saturating_sub(WIDTH / 2).min(chars.len() - WIDTH);
+    let end = start + WIDTH;
+    let mut s = String::new();
+    if start > 0 {
+        s.push('…');
+    }
+    s.extend(&chars[start..end]);
+    if end < chars.len() {
+        s.push('…');
+    }
+    (s, caret - start + usize::from(start > 0))
+}
+
+/// Line `line` of `file` (at most 4 KiB of it, without the newline and a
+/// leading UTF-8 byte-order mark).
+fn source_line(file: &str, line: u32) -> Option<Vec<u8>> {
     use std::io::{BufRead, Read};
     let f = File::open(file).ok()?;
     let mut r = std::io::BufReader::new(f);
@@ -38,8 +86,13 @@ fn source_line(file: &str, line: u32) -> Option<String> {
             return None;
         }
         if n == line {
-            let s = String::from_utf8_lossy(&buf);
-            return Some(s.trim_end_matches(['\n', '\r']).to_string());
+            while matches!(buf.last(), Some(b'\n' | b'\r')) {
+                buf.pop();
+            }
+            if n == 1 && buf.starts_with(b"\xEF\xBB\xBF") {
+                buf.drain(..3);
+            }
+            return Some(buf);
         }
         if buf.last() != Some(&b'\n') {
             // The rest of an over-long line.
@@ -48,4 +101,34 @@ fn source_line(file: &str, line: u32) -> Option<String> {
         }
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_caret_counts_characters_not_bytes() {
+        // "(Ø) X1" : the X is byte 6 (Ø is two bytes) but character 5.
+        let line = "(Ø) X1".as_bytes();
+        assert_eq!(line[5], b'X');
+        let (shown, caret) = excerpt(line, 6);
+        assert_eq!(shown, "(Ø) X1");
+        assert_eq!(caret, 4);
+        assert_eq!(shown.chars().nth(caret), Some('X'));
+    }
+
+    #[test]
+    fn a_long_line_is_clipped_around_the_column() {
+        let mut line = "A".repeat(3000);
+        line.replace_range(2000..2001, "X");
+        let (shown, caret) = excerpt(line.as_bytes(), 2001);
+        assert_eq!(shown.chars().count(), WIDTH + 2);
+        assert!(shown.starts_with('…') && shown.ends_with('…'));
+        assert_eq!(shown.chars().nth(caret), Some('X'));
+        // Near the start: no leading ellipsis.
+        let (shown, caret) = excerpt(line.as_bytes(), 3);
+        assert!(!shown.starts_with('…') && shown.ends_with('…'));
+        assert_eq!(caret, 2);
+    }
 }

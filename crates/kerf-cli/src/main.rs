@@ -3,18 +3,22 @@
 //! to its end, 1 it stopped on an alarm, 2 usage or I/O error.
 //!
 //! Running is kerf-control's: this crate parses the arguments, opens the
-//! output files, prints and picks the exit status.
+//! output files, shows progress, prints and picks the exit status.
 
 mod args;
 mod diagnostic;
 mod expand;
+mod manual;
 mod outputs;
+mod progress;
+mod summary;
 
 use std::io::Write;
 use std::process::ExitCode;
 
 use clap::Parser;
-use kerf_control::{Outcome, Sink};
+use kerf_control::sinks::report::Document;
+use kerf_control::{Outcome, Progress, Sink};
 use kerf_interp::{machine::BUILTIN, Profile};
 
 use args::{Cli, Cmd, Common, Outputs};
@@ -29,6 +33,8 @@ fn main() -> ExitCode {
             }
             ExitCode::SUCCESS
         }
+        Cmd::Completions { shell } => manual::completions(shell),
+        Cmd::Man => manual::man(),
         Cmd::Run { common, outputs } => run(&common, &outputs, false),
         Cmd::Check { common } => run(&common, &Outputs::default(), true),
         Cmd::Expand { common, to, out } => expand::expand(&common, &to, out.as_deref()),
@@ -40,52 +46,63 @@ fn usage_error(msg: impl std::fmt::Display) -> ExitCode {
     ExitCode::from(2)
 }
 
-/// Loads the job, runs it through the sinks the options ask for, prints
-/// the result.
+/// Loads the job, opens every output before the run, runs it with a
+/// progress bar, prints the result.
 fn run(c: &Common, outputs: &Outputs, check: bool) -> ExitCode {
     if let Err(e) = outputs.validate() {
         return usage_error(e);
     }
-    let job = c.job();
+    let job = c.job(check);
     let mut runner = match job.load() {
         Ok(r) => r,
         Err(e) => return usage_error(e),
     };
-    let mut sinks = match outputs.open() {
+    let (mut report, mut sinks) = match outputs.report().and_then(|r| Ok((r, outputs.open()?))) {
         Ok(s) => s,
         Err(e) => return usage_error(e),
     };
-    if sinks.is_empty() {
-        // No outputs asked for: only interpret (as `kerf check`).
-        runner.interpret_only();
-    }
-    let mut refs: Vec<&mut dyn Sink> = sinks.iter_mut().map(|s| s.as_mut() as _).collect();
-    match runner.run(&mut refs) {
-        Ok(outcome) => print_outcome(&job.program_name(), &outcome, check),
-        Err(e) => usage_error(e),
-    }
+    let mut refs: Vec<&mut dyn Sink> = vec![&mut report];
+    refs.extend(sinks.iter_mut().map(|s| s.as_mut() as &mut dyn Sink));
+    let mut bar = progress::Progress::new(c.quiet);
+    let stepped = loop {
+        match runner.step(&mut refs) {
+            Ok(Progress::Running) => bar.tick(&runner),
+            Ok(Progress::Ended) => break Ok(()),
+            Err(e) => break Err(e),
+        }
+    };
+    bar.done();
+    let outcome = match stepped.and_then(|_| runner.finish(&mut refs)) {
+        Ok(o) => o,
+        Err(e) => return usage_error(e),
+    };
+    drop(refs);
+    let doc = report.document().expect("the report is made at finish");
+    print_outcome(c, &job.program_name(), &outcome, doc, check)
 }
 
-fn print_outcome(name: &str, o: &Outcome, check: bool) -> ExitCode {
-    if o.stalled > 0 {
-        eprintln!(
-            "kerf: warning: {} cutting moves with the spindle stopped (per-revolution feed or thread) timed as 0 s",
-            o.stalled
-        );
+fn print_outcome(c: &Common, name: &str, o: &Outcome, doc: &Document, check: bool) -> ExitCode {
+    for w in &o.warnings {
+        diagnostic::print_warning(w);
+    }
+    if o.warnings_dropped > 0 {
+        eprintln!("kerf: {} more warnings not shown", o.warnings_dropped);
+    }
+    if c.json {
+        let text = serde_json::to_string_pretty(doc).expect("report serialises");
+        let _ = writeln!(std::io::stdout().lock(), "{text}");
     }
     if let Some(a) = &o.alarm {
         diagnostic::print_alarm(a, &o.alarm_file);
         return ExitCode::from(1);
     }
-    let mut out = std::io::stdout().lock();
-    let _ = match (check, o.cycle_time) {
-        (true, _) => writeln!(out, "{name}: ok ({} blocks)", o.blocks),
-        (false, Some(t)) => writeln!(
-            out,
-            "{name}: completed ({} blocks, cycle time {t:.1} s)",
-            o.blocks
-        ),
-        (false, None) => writeln!(out, "{name}: completed ({} blocks)", o.blocks),
-    };
+    if !c.quiet && !c.json {
+        let verdict = if check { "ok" } else { "completed" };
+        let _ = write!(
+            std::io::stdout().lock(),
+            "{}",
+            summary::text(name, verdict, doc)
+        );
+    }
     ExitCode::SUCCESS
 }

@@ -1,7 +1,7 @@
 //! Opens the output files of `kerf run` as kerf-control sinks.
 
 use std::fs::File;
-use std::io::BufWriter;
+use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 use kerf_control::sinks::{Log, Plot, Report, Sample, Toolpath};
@@ -37,7 +37,17 @@ impl Outputs {
         sample_arg(&self.sample).map(|_| ())
     }
 
-    /// Creates the files and their sinks, in the order the options list.
+    /// The report sink: onto the `--report` file, or kept in memory only
+    /// (the summary and `--json` read it).
+    pub fn report(&self) -> Result<Report<Box<dyn Write>>, String> {
+        let out: Box<dyn Write> = match &self.report {
+            Some(p) => Box::new(create(p)?),
+            None => Box::new(io::sink()),
+        };
+        Ok(Report::new(out))
+    }
+
+    /// Creates the files and the sinks of the other outputs.
     pub fn open(&self) -> Result<Vec<Box<dyn Sink>>, String> {
         let mut sinks: Vec<Box<dyn Sink>> = Vec::new();
         if let Some(p) = &self.toolpath {
@@ -48,9 +58,6 @@ impl Outputs {
         }
         if let Some(p) = &self.log {
             sinks.push(Box::new(Log::new(create(p)?)));
-        }
-        if let Some(p) = &self.report {
-            sinks.push(Box::new(Report::new(create(p)?)));
         }
         if let Some(p) = &self.plot {
             sinks.push(Box::new(Plot::new(create(p)?)));

@@ -163,13 +163,57 @@ impl Job {
         if let Some(path) = &self.offsets {
             crate::offsets::load(path, &mut it)?;
         }
+        let lint = self.lint(it.profile());
         it.load_main(&self.program_name(), opened.reader);
         let mut runner = Runner::new(it, dynamics);
+        runner.lint_with(lint);
         runner.track_source(opened.len, opened.read);
         if let Some(dir) = self.state.as_ref().filter(|_| !self.read_only) {
             runner.save_state_to(dir.clone());
         }
         Ok(runner)
+    }
+}
+
+impl Job {
+    /// Starts the decimal-point check of the main program: on its own
+    /// thread for a file (it reads the file a second time), at once for
+    /// text in memory.
+    fn lint(&self, profile: &Profile) -> Lint {
+        let name = self.program_name();
+        match &self.source {
+            Source::File(path) => {
+                let (profile, path) = (profile.clone(), path.clone());
+                Lint::Running(std::thread::spawn(move || {
+                    let opened = crate::source::open_file(&path).ok()?;
+                    crate::lint::decimal_points(&profile, &name, opened.reader).ok()
+                }))
+            }
+            Source::Text { text, .. } => {
+                let found = crate::source::open_text(&name, text.as_bytes())
+                    .ok()
+                    .and_then(|o| crate::lint::decimal_points(profile, &name, o.reader).ok());
+                Lint::Done(found.unwrap_or_default())
+            }
+        }
+    }
+}
+
+/// The decimal-point check of a run: running beside it, or done.
+pub enum Lint {
+    /// On its own thread (`None` if the file could not be read again).
+    Running(std::thread::JoinHandle<Option<Vec<crate::Warning>>>),
+    /// Its warnings.
+    Done(Vec<crate::Warning>),
+}
+
+impl Lint {
+    /// Its warnings, waiting for the thread if it still runs.
+    pub fn join(self) -> Vec<crate::Warning> {
+        match self {
+            Lint::Running(h) => h.join().ok().flatten().unwrap_or_default(),
+            Lint::Done(w) => w,
+        }
     }
 }
 

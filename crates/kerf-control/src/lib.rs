@@ -9,7 +9,10 @@
 //! - [`sinks`] holds the outputs the CLI writes: toolpath, report, plot,
 //!   sample, log, one file each;
 //! - [`settings`], [`offsets`] and [`dynamics`] read the `--set` list, an
-//!   offsets file and a profile's `[motion]` table.
+//!   offsets file and a profile's `[motion]` table;
+//! - [`runtime`]: the controller runtime (modes, execution states, machine
+//!   time, feed hold, single block, reset, restart, MDI, offsets,
+//!   alarm history, persistence); see docs/runtime.md.
 //!
 //! ```
 //! use kerf_control::{sinks::Toolpath, Job, Sink};
@@ -29,10 +32,15 @@
 //! Architecture invariant: nothing in this crate prints or exits; every
 //! failure is a value returned to the caller.
 
+// Axis arithmetic indexes several parallel position arrays by slot.
+#![allow(clippy::needless_range_loop)]
+
 pub mod dynamics;
 pub mod job;
+pub mod lint;
 pub mod offsets;
 pub mod runner;
+pub mod runtime;
 pub mod settings;
 pub mod sink;
 pub mod sinks;

@@ -24,6 +24,7 @@ use kerf_canon::{Alarm, Canon, Event, Pos};
 use kerf_interp::{Interp, Step};
 use kerf_motion::{Dynamics, Piece, Planner};
 
+use crate::job::Lint;
 use crate::sink::{Context, Sink, Timed};
 use crate::warnings::{Detector, Warning, Warnings};
 
@@ -109,6 +110,7 @@ pub struct Runner {
     warnings: Warnings,
     /// Size of the main program and the count of bytes read from it.
     source: Option<(u64, Arc<AtomicU64>)>,
+    lint: Option<Lint>,
 }
 
 impl Runner {
@@ -135,7 +137,13 @@ impl Runner {
             detector: Detector::default(),
             warnings: Warnings::default(),
             source: None,
+            lint: None,
         }
+    }
+
+    /// Adds the decimal-point check's warnings at the end of the run.
+    pub fn lint_with(&mut self, lint: Lint) {
+        self.lint = Some(lint);
     }
 
     /// Reports the main program's progress from `read`, the bytes read of
@@ -328,6 +336,15 @@ impl Runner {
         }
         self.detector
             .end(&self.it, self.alarm.is_some(), &mut self.warnings);
+        if let Some(lint) = self.lint.take() {
+            for w in lint.join() {
+                self.warnings.push(w);
+            }
+            // In source order within each file.
+            self.warnings
+                .list
+                .sort_by(|a, b| (&a.file, a.line, a.col).cmp(&(&b.file, b.line, b.col)));
+        }
         if let Some(dir) = &self.state {
             kerf_interp::state::save_retained(dir, &self.it)
                 .and_then(|_| kerf_interp::state::save_offsets(dir, &self.it))

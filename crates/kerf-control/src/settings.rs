@@ -28,11 +28,12 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
                     if lv == "off" {
                         continue;
                     }
+                    // 0-9, and 10 (000 §2.3.3: "/0 ~ /10" on the HX).
                     let n: u16 = lv
                         .parse()
-                        .map_err(|_| format!("--set block_skip={v}: levels are 0-9"))?;
-                    if n > 9 {
-                        return Err(format!("--set block_skip={v}: levels are 0-9"));
+                        .map_err(|_| format!("--set block_skip={v}: levels are 0-10"))?;
+                    if n > 10 {
+                        return Err(format!("--set block_skip={v}: levels are 0-10"));
                     }
                     s.block_skip |= 1 << n;
                 }
@@ -47,6 +48,12 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
             "optional_stop" => s.optional_stop = on_off(k, v)?,
             "single_block" => s.single_block = on_off(k, v)?,
             "dry_run" => s.dry_run = on_off(k, v)?,
+            "main_passes" => {
+                s.main_passes = v
+                    .parse()
+                    .map_err(|_| format!("--set main_passes={v}: expected a count"))?
+            }
+            "calculator_decimal" => profile.calculator_decimal = on_off(k, v)?,
             "max_blocks" => {
                 s.max_blocks = v
                     .parse()
@@ -226,6 +233,8 @@ mod tests {
         assert!(parse(&["in.7000=2".into()], &mut p).is_err());
         assert!(parse(&["in.7036=1".into()], &mut p).is_err());
         assert!(parse(&["block_skip=12".into()], &mut p).is_err());
+        let s = parse(&["block_skip=10".into()], &mut p).unwrap();
+        assert_eq!(s.block_skip, 1 << 10);
     }
 
     #[test]
@@ -252,6 +261,28 @@ mod tests {
         parse(&["immediate_offsets=off".into()], &mut p).unwrap();
         assert!(!p.tools.immediate_offsets);
         assert!(parse(&["probe.time=25:00:00".into()], &mut p).is_err());
+    }
+
+    /// The calculator-type decimal point and the main-program M99 passes
+    /// are `--set` keys (issue 15).
+    #[test]
+    fn calculator_decimal_and_main_passes() {
+        let mut p = Profile::builtin("puma-lathe").unwrap();
+        assert!(!p.calculator_decimal);
+        let s = parse(
+            &["calculator_decimal=on".into(), "main_passes=3".into()],
+            &mut p,
+        )
+        .unwrap();
+        assert!(p.calculator_decimal);
+        assert_eq!(s.main_passes, 3);
+        parse(&["calculator_decimal=off".into()], &mut p).unwrap();
+        assert!(!p.calculator_decimal);
+        assert!(parse(&["calculator_decimal=maybe".into()], &mut p).is_err());
+        assert!(parse(&["main_passes=-1".into()], &mut p).is_err());
+        // A profile parameter of the PUMA.
+        parse(&["tape_format_10_11=0".into()], &mut p).unwrap();
+        assert_eq!(p.params["tape_format_10_11"], 0.0);
     }
 
     #[test]

@@ -243,6 +243,20 @@ pub struct Rough {
     pub allow_z: f64,
 }
 
+const NO_LENGTH_Z: &str = "the shape has no length in Z";
+const NO_LENGTH_X: &str = "the shape has no length in X";
+
+/// The direction of the cutting along Z: that of the shape's first
+/// segment that moves in Z (0 if none does). A shape that later comes back
+/// to (or past) its start Z is then not monotonic at the segment that turns
+/// back, which is the one the alarm names.
+fn cutting_direction(segs: &[Seg]) -> f64 {
+    segs.iter()
+        .map(|s| sign(s.to.z - s.from.z))
+        .find(|&d| d != 0.0)
+        .unwrap_or(0.0)
+}
+
 /// G71 type I (fanuc-semantics §1.2, A.1): the roughing levels in X from
 /// the start point `a`, each cut parallel to Z until the shape shifted by
 /// the allowances, the 45° escape and the return in Z, then the
@@ -269,16 +283,15 @@ pub fn g71(
     let shift = p(r.allow_x, r.allow_z);
     let first = start.add(shift);
     let segs: Vec<Seg> = shape.iter().map(|s| s.shifted(shift)).collect();
-    let last = segs.last().map(|s| s.to).unwrap_or(first);
     let sx = sign(first.x - a.x);
-    let sz = sign(last.z - first.z);
+    let sz = cutting_direction(&segs);
     if sx == 0.0 {
         return Err(CycleError::Value(
             "the start point is level with the shape's first point in X: nothing to rough".into(),
         ));
     }
     if sz == 0.0 {
-        return Err(CycleError::Value("the shape has no length in Z".into()));
+        return Err(CycleError::Value(NO_LENGTH_Z.into()));
     }
     // Type I: monotonic in both axes (flat allowed); X goes back toward
     // the start point's side.
@@ -477,16 +490,15 @@ pub fn g71_type2(
     let shift = p(r.allow_x, r.allow_z);
     let first = start.add(shift);
     let segs: Vec<Seg> = shape.iter().map(|s| s.shifted(shift)).collect();
-    let last = segs.last().map(|s| s.to).unwrap_or(first);
     let sx = sign(first.x - a.x);
-    let sz = sign(last.z - first.z);
+    let sz = cutting_direction(&segs);
     if sx == 0.0 {
         return Err(CycleError::Value(
             "the start point is level with the shape's first point in X: nothing to rough".into(),
         ));
     }
     if sz == 0.0 {
-        return Err(CycleError::Value("the shape has no length in Z".into()));
+        return Err(CycleError::Value(NO_LENGTH_Z.into()));
     }
     // Z monotonic (flat allowed); X free.
     for (i, s) in segs.iter().enumerate() {
@@ -652,6 +664,7 @@ pub fn g72(
         CycleError::NotMonotonic(i, ax) => {
             CycleError::NotMonotonic(i, if ax == 'X' { 'Z' } else { 'X' })
         }
+        CycleError::Value(m) if m == NO_LENGTH_Z => CycleError::Value(NO_LENGTH_X.into()),
         e => e,
     })
 }

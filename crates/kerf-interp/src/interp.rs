@@ -39,12 +39,16 @@ mod mover;
 mod offset_data;
 mod polar_interp;
 mod probe;
+mod puma_words;
 mod reset;
+mod runtime_hooks;
 mod skip;
+mod system_b;
 mod sysvars;
 mod tool_offset;
 mod transforms;
 
+pub use runtime_hooks::{BlockStep, InterpSnapshot};
 pub use sysvars::MacroSwitches;
 
 /// Operator-panel switches and run options.
@@ -64,6 +68,10 @@ pub struct Settings {
     /// Most blocks executed before the loop guard stops the run
     /// (0 = no limit).
     pub max_blocks: u64,
+    /// Passes of a main program that ends in M99 without L (a bar-feed
+    /// loop the control repeats until reset): 0 or 1 = one pass, then
+    /// the program ends with a note (`--set main_passes=N`).
+    pub main_passes: u32,
     /// Interface input signals as four 32-bit words: HX UI000-UI031 …
     /// UI300-UI331 (#7000-#7035); Fanuc #1000-#1015 are word 0's low bits.
     pub inputs: [u32; 4],
@@ -264,6 +272,9 @@ pub struct Interp {
     cache: block_cache::BlockCache,
     /// PUMA lathe cycle data (interp/lathe.rs, interp/lathe_mrc.rs).
     lathe: lathe::LatheData,
+    /// A tool length offset change in G91: (the block, the change of the
+    /// offset vector), which that block's incremental move adds.
+    tlo_inc: Option<(u64, Pos)>,
     /// Hurco state: fixture offsets, offset activation, drill cycles,
     /// probe datums (interp/hurco.rs).
     hurco: Box<hurco::HurcoState>,
@@ -319,6 +330,8 @@ impl Interp {
             None
         };
         let settings_sb = settings.single_block;
+        let system_b_on =
+            dialect.id == DialectId::Puma && profile.param("gcode_system_b", 0.0) != 0.0;
         let mut cyc = cycles::CycleData::default();
         cyc.params = cycles::CycleParams::from_profile(&profile);
         Interp {
@@ -365,7 +378,11 @@ impl Interp {
             comp_prog: None,
             comp_capture: None,
             cache: block_cache::BlockCache::default(),
-            lathe: lathe::LatheData::default(),
+            lathe: lathe::LatheData {
+                system_b: system_b_on,
+                ..Default::default()
+            },
+            tlo_inc: None,
             hurco,
         }
     }
@@ -775,7 +792,18 @@ impl Interp {
         if self.block.percent {
             return self.percent_block();
         }
-        self.tape_started = true;
+        // Text before the first % is tape leader: comment and blank lines
+        // there do not start the program, so the % after them opens it
+        // instead of ending it.
+        let b = &self.block;
+        if !b.words.is_empty()
+            || b.stmt.is_some()
+            || b.program.is_some()
+            || b.n.is_some()
+            || b.loop_cmd.is_some()
+        {
+            self.tape_started = true;
+        }
         if self.block.program.is_some() && self.program_header()? {
             self.emit_end(0)?;
             return Ok(false);
@@ -932,7 +960,7 @@ impl Interp {
                             format!("G{} is not a G code of this control", fmt_num(v)),
                         ));
                     }
-                    self.words.g[self.words.ng] = (c10 as u16, w.at);
+                    self.words.g[self.words.ng] = (self.g_of_system(c10 as u16, w.at)?, w.at);
                     self.words.ng += 1;
                 }
                 Addr::L(b'M') => {
@@ -973,13 +1001,16 @@ impl Interp {
                 }
             }
         }
+        if self.lathe.system_b {
+            self.system_b_words()?;
+        }
         Ok(())
     }
 
     /// A letter address word of the block (not G or M).
     #[inline]
     fn collect_letter(&mut self, l: u8, wv: WVal) -> R<()> {
-        if !self.letter_ok[(l - b'A') as usize] {
+        if !self.letter_ok[(l - b'A') as usize] && !self.macro_args() {
             return Err(self.alarm(
                 AlarmKind::IllegalAddress,
                 wv.at,
@@ -1077,6 +1108,9 @@ impl Interp {
             if let Some(r) = self.code_call()? {
                 return Ok(r);
             }
+        }
+        if self.dialect.id == DialectId::Puma && !self.macro_args() {
+            self.puma_words()?;
         }
         self.execute_block()
     }
@@ -1231,10 +1265,17 @@ impl Interp {
         for i in 0..self.words.nm {
             let (m, at) = self.words.m[i];
             if self.mcode(m).is_none() {
+                // Fanuc programs ask for rigid tapping with M29 before G84;
+                // the HX has G84.2/G84.3 instead (000 §12.3.5-12.3.6).
+                let hint = if m == 29 && self.dialect.id == DialectId::Hx {
+                    ": rigid tapping on this control is G84.2 (G84.3 left-hand), without M29"
+                } else {
+                    ""
+                };
                 return Err(self.alarm(
                     AlarmKind::UnknownM,
                     at,
-                    format!("M{m:02} is not an M code of this control"),
+                    format!("M{m:02} is not an M code of this control{hint}"),
                 ));
             }
             if let Some(mc) = self.mcode(m) {
@@ -1520,6 +1561,8 @@ impl Interp {
             210 => st.metric = true,
             540..=590 if d != DialectId::Hurco => st.wcs_idx = ((c - 540) / 10) as usize,
             900 if d != DialectId::Puma => st.absolute = true,
+            system_b::ABS if d == DialectId::Puma => st.absolute = true,
+            system_b::INC if d == DialectId::Puma => st.absolute = false,
             910 if d != DialectId::Puma => st.absolute = false,
             930 => st.feed_mode = FeedMode::Inverse,
             940 => st.feed_mode = FeedMode::PerMin,

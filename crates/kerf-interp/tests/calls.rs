@@ -134,21 +134,46 @@ M30
     ));
 }
 
-/// Plain M99 at the end of a main program restarts it forever: the loop
-/// guard stops it with KERF-0101 instead of hanging.
+/// Plain M99 at the end of a main program (a bar-feed loop) restarts it
+/// until the operator resets the control. kerf runs one pass by default
+/// and ends (status 0) with a note; `main_passes` runs N (here 3: 3 × 2
+/// moves); a count beyond the loop guard still stops with KERF-0101
+/// instead of hanging.
 #[test]
-fn runaway_main_m99_ends_in_loop_guard() {
-    let r = run_with_param(
-        "hx-mc",
-        "max_jumps",
-        500.0,
-        "%\nG54 G91 G00 X-1.\nX1.\nM99\n%\n",
-    );
+fn main_m99_runs_its_passes() {
+    let text = "%\nG54 G91 G00 X-1.\nX1.\nM99\n%\n";
+    let r = run_on("hx-mc", text);
+    ok(&r);
+    assert_eq!(moves(&r).len(), 2);
+    assert!(r.events.iter().any(|e| matches!(&e.cmd,
+        Canon::Message(m) if m.starts_with("M99 in the main program: ended after 1 pass "))));
+    assert!(matches!(
+        r.events.last().unwrap().cmd,
+        Canon::End { code: 99 }
+    ));
+    let with = |passes: u32, key: &str, v: f64, text: &str| {
+        let mut p = Profile::builtin(if key == "max_jumps" {
+            "hx-mc"
+        } else {
+            "puma-lathe"
+        })
+        .unwrap();
+        p.params.insert(key.into(), v);
+        let s = Settings {
+            main_passes: passes,
+            ..Settings::default()
+        };
+        kerf_interp::run_text(p, s, "t.nc", text)
+    };
+    let r = with(3, "max_jumps", 500.0, text);
+    ok(&r);
+    assert_eq!(moves(&r).len(), 6);
+    let r = with(1_000_000, "max_jumps", 500.0, text);
     assert_eq!(alarm(&r), ("KERF-0101", 4));
     assert_eq!(moves(&r).len(), 2 * 501);
     // With the default guard too (max_repeat_blocks), on a tiny budget.
-    let r = run_with_param(
-        "puma-lathe",
+    let r = with(
+        1_000_000,
         "max_repeat_blocks",
         300.0,
         "G00 W-1.\nW1.\nM99\n",

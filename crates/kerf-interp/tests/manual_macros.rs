@@ -79,3 +79,68 @@ fn macro_circle_of_000_14_5_2() {
     assert_eq!(feeds[30], ("feed", 25.0, 43.301, 50.0));
     assert_eq!(feeds[360], ("feed", 0.0, 50.0, 50.0));
 }
+
+/// 000 §14.2.3's macro O9300, which reads the block end point #5001-#5003
+/// and the machine position #5021-#5023 (fanuc-semantics §6.7), as printed
+/// except: `#1 = #5001,` ends with `;`, `X#H24` is `X#24` (OCR), and the
+/// manual's placeholders Xp, Yp, Zp (a point in machine coordinates) are
+/// −380., −220., −240. By hand, from G54 (−400, −250, −250): the tool at
+/// work (10, 20, 30) = machine (−390, −230, −220); #1-#3 = 10, 20, 30; G00
+/// X50. Y40. → machine (−350, −210, −220); G91 by (−380 + 350, −220 + 210,
+/// −240 + 220) = (−30, −10, −20) → machine (−380, −220, −240) = work (20,
+/// 30, 10); then, still G91, by (50, 40, −10) → (70, 70, 0), by (10, 20)
+/// → (80, 90, 0), by Z 30 → (80, 90, 30).
+#[test]
+fn o9300_of_000_14_2_3_reads_5001_and_5021() {
+    let prog = "G54 G90 G00 X10. Y20. Z30.\nG65 P9300 X50. Y40. Z-10.\nM30\n\
+                O9300\n#1 = #5001;\n#2 = #5002;\n#3 = #5003;\nG00 X#24 Y#25;\nG04;\n\
+                G91 X[-380. - #5021] Y[-220. - #5022] Z[-240. - #5023];\n\
+                X#24 Y#25 Z#26;\nX#1 Y#2;\nZ#3;\nM99\n";
+    let r = run_on("hx-mc", prog);
+    ok(&r);
+    assert_eq!(
+        moves(&r),
+        vec![
+            ("rapid", 10.0, 20.0, 30.0),
+            ("rapid", 50.0, 40.0, 30.0),
+            ("rapid", 20.0, 30.0, 10.0),
+            ("rapid", 70.0, 70.0, 0.0),
+            ("rapid", 80.0, 90.0, 0.0),
+            ("rapid", 80.0, 90.0, 30.0),
+        ]
+    );
+}
+
+/// 000 §5.4's dwell example as printed (OCR `GO0`/`GO01`/`MO3` read as
+/// G00/G01/M03, the lost comments dropped), with a last `G04 P1` added
+/// after the restore. `#3120` is PI 120 (the parameter window #3000+n):
+/// the program saves it (0 on hx-mc), sets 1 so that `G04 P1` in G95
+/// counts spindle revolutions (P in 1/1000: 0.001 rev), and restores it,
+/// after which `G04 P1` is 1 ms again. `G04 X3` (no point) is 3 ms.
+#[test]
+fn dwell_example_of_000_5_4_with_pi_120() {
+    use kerf_canon::Canon;
+    let prog = "G54 G00 X0. Y0. Z0.\nG94 G01 X10. F500.\nG04 X3\nX20.\nG95 M03 S60. F5.\nY10.\n\
+                #100 = #3120\n#3120 =1\nG04 P1\n#3120 = #100\nG04 P1\nM30\n";
+    let r = run_on("hx-mc", prog);
+    ok(&r);
+    let dwells: Vec<(f64, f64)> = r
+        .events
+        .iter()
+        .filter_map(|e| match e.cmd {
+            Canon::Dwell {
+                seconds,
+                revolutions,
+            } => Some((round(seconds), round(revolutions))),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(dwells, vec![(0.003, 0.0), (0.0, 0.001), (0.001, 0.0)]);
+    // #3000 and #3006 keep their alarm/message meaning beside the window.
+    let r = run_on(
+        "hx-mc",
+        "#3006 = 1 (HELLO)\n#1 = #3129\nIF [#1 NE 0.1] GOTO 9\n#3000 = 7 (STOP)\nN9 M30\n",
+    );
+    let a = r.alarm.as_ref().expect("the #3000 alarm: PI 129 reads 0.1");
+    assert!(a.message.contains("STOP"), "{}", a.message);
+}

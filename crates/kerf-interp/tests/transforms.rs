@@ -94,37 +94,46 @@ fn rotation_turns_arcs() {
     assert_eq!(dir, ArcDir::Cw);
 }
 
-/// 000 §15.2.2: `G51 X0. Y0. Z0. I2000 J1000` then `G02 X100. Y0. R100.`
-/// from (0, 100): X doubled, Y kept, the end is (200, 0). With unequal
+/// 000 §15.2.2 as printed: `G51 X0. Y0. Z0. I2000. J1000.` ("X 2, Y 1")
+/// then `G02 X100. Y0. R100.` from (0, 100): the factors are 1/1000 with
+/// or without the decimal point (§15.2.1 "1/1000 (2 = P2000, 0.5 =
+/// P500)"), so X is doubled, Y kept, and the end is (200, 0) as the
+/// manual's comment "X200. Y0." says. With unequal
 /// factors R takes the larger factor (R 200): centre on the right of the
 /// chord (0,100)→(200,0): midpoint (100, 50), half chord √12500, offset
 /// √(40000 - 12500) = 165.831240 along (-0.447214, -0.894427) →
 /// (25.838015, -98.323970).
 #[test]
 fn scaling_example_of_000_15_2_2() {
-    let r = run_on(
-        "hx-mc",
-        "G90 G00 X0. Y100.\nG51 X0. Y0. Z0. I2000 J1000\nG02 X100. Y0. R100. F500.\n",
-    );
-    ok(&r);
-    let (m, center, dir) = first_arc(&r);
-    assert_eq!((round(m.to[0]), round(m.to[1])), (200.0, 0.0));
-    assert_eq!((round(center[0]), round(center[1])), (25.838015, -98.32397));
-    assert_eq!(dir, ArcDir::Cw);
+    for g51 in [
+        "G51 X0. Y0. Z0. I2000. J1000.",
+        "G51 X0. Y0. Z0. I2000 J1000",
+    ] {
+        let r = run_on(
+            "hx-mc",
+            &format!("G90 G00 X0. Y100.\n{g51}\nG02 X100. Y0. R100. F500.\n"),
+        );
+        ok(&r);
+        let (m, center, dir) = first_arc(&r);
+        assert_eq!((round(m.to[0]), round(m.to[1])), (200.0, 0.0), "{g51}");
+        assert_eq!((round(center[0]), round(center[1])), (25.838015, -98.32397));
+        assert_eq!(dir, ArcDir::Cw);
+    }
 }
 
 /// 000 §15.2 / §15.3 pattern examples: a subprogram O1234 (kerf's: the
 /// manual's figure is lost) run at a G52 origin unscaled, then scaled
-/// ×1.5, then mirrored ×-1.5 in X and Y.
+/// ×1.5, then mirrored ×-1.5 in X and Y; the G51 blocks as 000 prints
+/// them (`I1000. J1000.`, `I1500. J1500.`, `I-1500. J-1500.`: 1/1000).
 #[test]
 fn scaling_and_mirror_with_a_subprogram() {
     let sub = "O1234\nG01 X20. Y0 F300\nX20. Y10.\nX0 Y0\nM99\n";
     let r = run_on(
         "hx-mc",
         &format!(
-            "O0001\nG90 G00 X0 Y0\nG52 X22. Y22.\nG51 X0. Y0. I1000 J1000\nG00 X0 Y0\nM98 P1234\n\
-             G52 X85. Y50.\nG51 X0. Y0. I1500 J1500\nG00 X0 Y0\nM98 P1234\n\
-             G51 X0. Y0. I-1500 J-1500\nG00 X0 Y0\nM98 P1234\nG50\nG52 X0 Y0\nM30\n{sub}"
+            "O0001\nG90 G00 X0 Y0\nG52 X22. Y22.\nG51 X0. Y0. I1000. J1000.\nG00 X0 Y0\nM98 P1234\n\
+             G52 X85. Y50.\nG51 X0. Y0. I1500. J1500.\nG00 X0 Y0\nM98 P1234\n\
+             G51 X0. Y0. I-1500. J-1500.\nG00 X0 Y0\nM98 P1234\nG50\nG52 X0 Y0\nM30\n{sub}"
         ),
     );
     ok(&r);

@@ -147,6 +147,23 @@ impl<'a> P<'a> {
         while self.i < self.t.len() && is_blank(self.t[self.i]) {
             self.i += 1;
         }
+        if self.depth > 0 && self.t.get(self.i) == Some(&b'(') {
+            self.skip_inner_comment();
+        }
+    }
+
+    /// A comment inside `[ ]` is skipped like a space (the brackets around
+    /// it still balance); an unclosed one is left for the bracket check.
+    fn skip_inner_comment(&mut self) {
+        while self.t.get(self.i) == Some(&b'(') {
+            match memchr::memchr(b')', &self.t[self.i + 1..]) {
+                Some(k) => self.i += k + 2,
+                None => return,
+            }
+            while self.i < self.t.len() && is_blank(self.t[self.i]) {
+                self.i += 1;
+            }
+        }
     }
 
     #[inline]
@@ -175,7 +192,13 @@ impl<'a> P<'a> {
                     let level = match self.peek() {
                         Some(d @ b'0'..=b'9') => {
                             self.i += 1;
-                            (d - b'0') as u16
+                            // 000 §2.3.3: levels "/0 ~ /10" on the HX.
+                            if d == b'1' && self.peek() == Some(b'0') {
+                                self.i += 1;
+                                10
+                            } else {
+                                (d - b'0') as u16
+                            }
                         }
                         _ => 1,
                     };
@@ -531,6 +554,10 @@ impl<'a> P<'a> {
         let mut i = self.i;
         let mut mant: u64 = 0;
         let mut digits: u32 = 0;
+        // Digits that count against the limit: leading zeros of the
+        // integer part do not (`X0.42928932` has the 8 digits of
+        // `X.42928932`).
+        let mut counted: u32 = 0;
         let mut frac: i32 = 0;
         let mut point = false;
         let max = (self.o.max_digits as u32).min(18);
@@ -538,7 +565,10 @@ impl<'a> P<'a> {
             let c = t[i];
             if c.is_ascii_digit() {
                 digits += 1;
-                if digits > max {
+                if c != b'0' || mant != 0 || point {
+                    counted += 1;
+                }
+                if counted > max {
                     return err(LexErrorKind::TooManyDigits, at);
                 }
                 mant = mant * 10 + (c - b'0') as u64;
@@ -562,7 +592,7 @@ impl<'a> P<'a> {
         Ok(Num {
             value,
             point,
-            digits: digits as u8,
+            digits: digits.min(255) as u8,
         })
     }
 

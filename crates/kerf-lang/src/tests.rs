@@ -110,6 +110,13 @@ fn block_delete_levels() {
     assert_eq!(b.deletes, vec![(0, 1)]);
     let b = parse("G00 X1 /2 Y2");
     assert_eq!(b.deletes, vec![(2, 1 << 2)]);
+    // 000 §2.3.3: "/0 ~ /10", a level 10.
+    let b = parse("/10 N5 X1");
+    assert_eq!(b.deletes, vec![(0, 1 << 10)]);
+    assert_eq!(b.n, Some(5));
+    let b = parse("/1N10 X1");
+    assert_eq!(b.deletes, vec![(0, 1 << 1)]);
+    assert_eq!(b.n, Some(10));
 }
 
 #[test]
@@ -270,4 +277,44 @@ fn errors_carry_the_column() {
 fn deep_unary_chains_are_bounded() {
     let s = format!("#1={}1", "-".repeat(200));
     assert_eq!(fail(&s).kind, LexErrorKind::NestingTooDeep);
+}
+
+/// A leading zero is not a digit of the number (issue 15: `X0.42928932`
+/// was refused where `X.42928932` was read): with the PUMA's 8 digits both
+/// are 8 digits, `X1.42928932` is 9.
+#[test]
+fn leading_zeros_do_not_count_as_digits() {
+    let o = LexOptions {
+        max_digits: 8,
+        ..LexOptions::default()
+    };
+    let b = parse_with("X0.42928932", &o);
+    assert_eq!(num(&b, 0), (b'X', 0.42928932, true));
+    let b = parse_with("X.42928932", &o);
+    assert_eq!(num(&b, 0), (b'X', 0.42928932, true));
+    let b = parse_with("Z-00012345678", &o);
+    assert_eq!(num(&b, 0), (b'Z', -12345678.0, false));
+    let mut b = Block::default();
+    let e = parse_block(b"X1.42928932", &o, &mut b).unwrap_err();
+    assert_eq!(e.kind, LexErrorKind::TooManyDigits);
+    // Zeros after the point are digits of the number.
+    let e = parse_block(b"X0.004292893", &o, &mut b).unwrap_err();
+    assert_eq!(e.kind, LexErrorKind::TooManyDigits);
+    assert_eq!(num(&parse_with("X0", &o), 0), (b'X', 0.0, false));
+}
+
+/// A comment inside `[ ]` is skipped like a space; the brackets balance.
+#[test]
+fn comment_inside_brackets() {
+    let b = parse("#1 = [1 + (ONE) 2]");
+    assert!(matches!(b.stmt, Some(Stmt::Assign { .. })));
+    let b = parse("G01 X[#1 (HALF) / 2] F100.");
+    assert_eq!(b.words.len(), 3);
+    assert!(matches!(
+        parse("IF [#1 (COUNT) GT 2] GOTO 5").stmt,
+        Some(Stmt::IfGoto { .. })
+    ));
+    assert!(parse("X[(A)(B) 1]").words.len() == 1);
+    // Unclosed: still an error, not a comment to the end of the block.
+    assert!(parse_block(b"X[1 (OOPS]", &LexOptions::default(), &mut Block::default()).is_err());
 }

@@ -21,6 +21,6 @@ pub mod sampler;
 pub mod trap;
 
 pub use dynamics::{AccelType, CornerOverride, Dynamics};
-pub use planner::{Breakdown, Done, Piece, PieceKind, Planner};
+pub use planner::{Breakdown, Done, Modes, Piece, PieceKind, Planner};
 pub use sampler::Sampler;
 pub use trap::Trap;

@@ -11,6 +11,9 @@ use crate::dynamics::Dynamics;
 use crate::geom::{line_len, Geom};
 use crate::trap::Trap;
 
+mod resume;
+pub use resume::Modes;
+
 /// Time totals by category, seconds.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Breakdown {

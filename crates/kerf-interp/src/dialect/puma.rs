@@ -16,7 +16,10 @@ const LATER_LATHE: Support =
 /// G codes of 001 (system A). G10, G31 and G65-G67 are not in 001's
 /// G-code table but are Fanuc 0-T codes (001 itself uses G31 in the M86
 /// example); they are kept so that programs reach the "not yet supported"
-/// alarm instead of "unknown G code".
+/// alarm instead of "unknown G code". G18, G53, G54-G59 and G80 are not in
+/// 001 either (001 is silent on work coordinate systems); they are the
+/// Fanuc 0-T/16T/18T standard codes real lathe programs start with
+/// (`G18 G21 G40 G80 G99`, `G54`), docs/dialects.md §3.
 #[rustfmt::skip]
 pub static GCODES: &[GCode] = &[
     g(0, 1, true, "positioning (rapid feed)", Yes), // # in 001
@@ -35,10 +38,18 @@ pub static GCODES: &[GCode] = &[
     g(300, 0, false, "2nd reference return", Yes),
     g(310, 0, false, "skip cutting", LATER_LATHE), // Fanuc 0-T; used in 001's M86 example
     g(320, 1, false, "thread process (thread cutting)", Yes), // 001 prints "#G32": see docs/dialects.md
+    g(180, 16, true, "plane selection ZX", Yes), // not in 001; the lathe's plane, Fanuc 0-T/16T reset state
     g(400, 7, true, "cancel of compensation", Yes), // not #-marked in 001; Fanuc reset state
     g(410, 7, false, "tool nose radius compensation left", Yes),
     g(420, 7, false, "tool nose radius compensation right", Yes),
     g(500, 0, false, "coordinate system setting, max spindle speed setting", Yes),
+    g(530, 0, false, "machine coordinate system selection", Yes), // not in 001; Fanuc 0-T standard
+    g(540, 14, true, "work coordinate system 1 selection", Yes), // G54-G59: not in 001; Fanuc 0-T standard
+    g(550, 14, false, "work coordinate system 2 selection", Yes),
+    g(560, 14, false, "work coordinate system 3 selection", Yes),
+    g(570, 14, false, "work coordinate system 4 selection", Yes),
+    g(580, 14, false, "work coordinate system 5 selection", Yes),
+    g(590, 14, false, "work coordinate system 6 selection", Yes),
     g(650, 0, false, "user macro simple call", Yes), // Fanuc 0-T, not in 001's table
     g(660, 12, false, "user macro modal call", Yes),
     g(670, 12, true, "user macro modal call cancel", Yes),
@@ -49,10 +60,15 @@ pub static GCODES: &[GCode] = &[
     g(740, 0, false, "compound repeat cycle (peck drilling in Z direction)", Yes),
     g(750, 0, false, "compound repeat cycle (grooving in X direction)", Yes),
     g(760, 0, false, "compound repeat cycle (thread cutting cycle)", Yes),
+    g(800, 10, true, "canned cycle for drilling cancel", Yes), // not in 001; Fanuc 0-T; the PUMA has no drilling cycles to cancel
     g(900, 1, false, "fixed cycle (process cycle in turning)", Yes),
     g(920, 1, false, "fixed cycle (thread process cycle)", Yes),
     g(940, 1, false, "fixed cycle (facing process cycle)", Yes),
     g(960, 2, false, "constant surface speed control", Yes),
+    // G-code system B's G90/G91 (interp/system_b.rs translates them to these
+    // internal numbers; in system A a program cannot write them).
+    g(9000, 3, true, "absolute programming (G-code system B G90)", Yes),
+    g(9010, 3, false, "incremental programming (G-code system B G91)", Yes),
     g(970, 2, true, "constant surface speed control cancel (rpm)", Yes), // # in 001
     g(980, 5, false, "feed per minute (mm/min)", Yes),
     g(990, 5, true, "feed per revolution (mm/rev)", Yes), // # in 001
@@ -163,7 +179,9 @@ pub static DIALECT: Dialect = Dialect {
     id: DialectId::Puma,
     gcodes: GCODES,
     mcodes: MCODES,
-    letters: b"ABCDEFGHIJKLMNOPQRSTUWXZ",
+    // 001 "Meaning of Address": O N G X Z U W I K R F E M S T P Q L A D C
+    // (C the direct chamfer); no B, H, J, V, Y on the two-axis lathe.
+    letters: b"ACDEFGIKLMNOPQRSTUWXZ",
     long_names: &[],
     diameter_default: true,
     uvw_incremental: true,

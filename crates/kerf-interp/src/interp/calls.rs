@@ -124,6 +124,8 @@ pub(super) struct Calls {
     pub(super) end_seq: Option<u32>,
     /// Main-program `M99 ... L`: (offset of the M99 block, jumps left).
     main_repeat: Option<(u64, u32)>,
+    /// Passes of the main program ended by an M99 without L so far.
+    main_passes: u32,
     /// G66 modal calls in force, oldest first.
     pub(super) modal: Vec<ModalCall>,
 }
@@ -772,6 +774,8 @@ impl Interp {
                 return Ok(());
             }
             self.calls.main_repeat = Some((here, left - 1));
+        } else if self.main_m99_last_pass()? {
+            return Ok(());
         }
         self.count_jump(at)?;
         self.loops.clear();
@@ -791,6 +795,26 @@ impl Interp {
                 self.seek(s)
             }
         }
+    }
+
+    /// A main program ending in M99 without L (a bar-feed loop) repeats
+    /// until the operator resets the control. kerf runs
+    /// `Settings::main_passes` passes (0 = 1) and then ends the program
+    /// (status 0) with an operator message saying so. True when this M99
+    /// ended it.
+    fn main_m99_last_pass(&mut self) -> R<bool> {
+        self.calls.main_passes += 1;
+        let n = self.settings.main_passes.max(1);
+        if self.calls.main_passes < n {
+            return Ok(false);
+        }
+        let s = if n == 1 { "" } else { "es" };
+        self.emit(Canon::Message(format!(
+            "M99 in the main program: ended after {n} pass{s} (the control repeats it until reset; --set main_passes=N runs N)"
+        )));
+        self.emit_end(99)?;
+        self.finished = true;
+        Ok(true)
     }
 
     /// G65 P_ L_ (000 §14.1.1) and G66 P_ L_ (§14.1.2) with arguments:
@@ -946,6 +970,7 @@ impl Interp {
         self.calls.stack.clear();
         self.calls.end_seq = None;
         self.calls.main_repeat = None;
+        self.calls.main_passes = 0;
         self.calls.modal.clear();
     }
 

@@ -316,6 +316,16 @@ impl Interp {
         if secs < 0.0 || revs < 0.0 {
             return Err(self.alarm(AlarmKind::OutOfRange, 0, "negative dwell"));
         }
+        // HX PI 120 = 1: in G95 the dwell counts spindle revolutions, in
+        // the same units (000 §5.4, "(G95) PI 120 (#3120) 1").
+        let (secs, revs) = if self.dialect.id == DialectId::Hx
+            && self.st.feed_mode == FeedMode::PerRev
+            && self.profile.param("PI 120", 0.0) == 1.0
+        {
+            (0.0, secs)
+        } else {
+            (secs, revs)
+        };
         self.emit(Canon::Dwell {
             seconds: secs,
             revolutions: revs,
@@ -358,7 +368,15 @@ impl Interp {
         Ok(())
     }
 
+    /// G53: a rapid to machine coordinates for this block. Machine
+    /// coordinates are absolute only: in G91 (and with the lathe's U/W)
+    /// the block is ignored, as Fanuc does (fanuc-semantics §6.2; 000
+    /// §7.1.1 prints the format `G90 G53 X_Y_Z_`).
     pub(super) fn g53(&mut self) -> R<()> {
+        let incremental = !self.st.absolute || Axis::ALL.iter().any(|&ax| self.uvw(ax).is_some());
+        if incremental {
+            return Ok(());
+        }
         let mut to = self.st.mover.pos();
         let mut any = false;
         for ax in Axis::ALL {

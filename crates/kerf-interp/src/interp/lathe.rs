@@ -24,6 +24,8 @@ pub(super) struct LatheData {
     pub(super) ddi_base: Option<Pos>,
     /// Modal first-block values of G70-G76 (interp/lathe_mrc.rs).
     pub(super) mrc: super::lathe_mrc::MrcModal,
+    /// G-code system B selected (`gcode_system_b = 1`, interp/system_b.rs).
+    pub(super) system_b: bool,
 }
 
 impl Interp {

@@ -66,6 +66,9 @@ impl Interp {
     /// The first block of G71/G72 (U or W: Δd, R: escape) or G73 (U, W:
     /// relief, R: divisions): modal data only.
     fn mrc_first_block(&mut self, code: u16) -> R<()> {
+        if let Some(w) = self.words.get(b'D') {
+            return Err(self.unused_word(b'D', w.at, "the one-block cycle with P and Q"));
+        }
         match code {
             710 | 720 => {
                 let l = if code == 710 { b'U' } else { b'W' };
@@ -86,14 +89,7 @@ impl Interp {
                 }
                 self.lathe.mrc.relief = Some((i, k));
                 if let Some(w) = self.words.get(b'R') {
-                    if w.v < 1.0 || w.v.fract() != 0.0 || w.v > 9999.0 {
-                        return Err(self.alarm(
-                            AlarmKind::MrcValue,
-                            w.at,
-                            "G73 R (number of divisions d) must be a whole number 1-9999",
-                        ));
-                    }
-                    self.lathe.mrc.divisions = Some(w.v as u32);
+                    self.lathe.mrc.divisions = Some(self.mrc_divisions(w, "G73 R")?);
                 }
             }
         }
@@ -128,6 +124,7 @@ impl Interp {
             .map(|w| self.linear(w) * half)
             .unwrap_or(0.0);
         let dw = self.words.get(b'W').map(|w| self.linear(w)).unwrap_or(0.0);
+        self.mrc_one_block_shape(code)?;
         let p_at = self.words.get(b'P').map(|w| w.at).unwrap_or(at);
         let q_at = self.words.get(b'Q').map(|w| w.at).unwrap_or(at);
         let a = self.zx_pos();
@@ -208,29 +205,63 @@ impl Interp {
         match res {
             Ok(()) => {}
             Err(turning::CycleError::NotMonotonic(i, ax)) => {
-                return Err(self.alarm(
-                    AlarmKind::MrcNotMonotonic,
-                    p_at,
-                    if comp {
-                        format!(
-                            "G{} type {}: the shape N{ns}-N{nf} offset by the nose radius (the imaginary tip's path) is not monotonic in {ax} (piece {} after N{ns})",
-                            code / 10,
-                            if type2 { "II" } else { "I" },
-                            i + 1
-                        )
-                    } else {
-                        format!(
-                            "G{} type {}: the shape N{ns}-N{nf} is not monotonic in {ax} (segment {} after N{ns})",
-                            code / 10,
-                            if type2 { "II" } else { "I" },
-                            i + 1
-                        )
-                    },
-                ));
+                let line = shape.srcs.get(i).map_or(0, |s| s.line);
+                let what = format!("G{} type {}", code / 10, if type2 { "II" } else { "I" });
+                let msg = not_monotonic_msg(&what, (ns, nf), comp, ax, i, line);
+                return Err(self.alarm(AlarmKind::MrcNotMonotonic, p_at, msg));
             }
             Err(e) => return Err(self.alarm(AlarmKind::MrcValue, at, super::lathe::cycle_msg(&e))),
         }
         self.emit_moves(&out, None, at)
+    }
+
+    /// The one-block words of a G71/G72/G73 P Q block (Fanuc 10/11 tape
+    /// format, fanuc-semantics §10.2): G71/G72 `D` = Δd (radius, the
+    /// decimal-point rule), G73 `I`/`K` = Δi/Δk (radius) and `D` = the
+    /// divisions. Like the first block of the 0-T form they are modal. `I`
+    /// or `K` where the cycle does not read them is an alarm (`D` is
+    /// checked with the block's addresses, interp/puma_words.rs).
+    fn mrc_one_block_shape(&mut self, code: u16) -> R<()> {
+        let one_block = self.tape_format_10_11();
+        for l in [b'I', b'K'] {
+            if let Some(w) = self.words.get(l) {
+                if !(one_block && code == 730) {
+                    return Err(self.unused_word(l, w.at, "a one-block G73 (relief Δi, Δk)"));
+                }
+            }
+        }
+        if code == 730 {
+            let (mut i, mut k) = self.lathe.mrc.relief.unwrap_or((None, None));
+            if let Some(w) = self.words.get(b'I') {
+                i = Some(self.linear(w));
+            }
+            if let Some(w) = self.words.get(b'K') {
+                k = Some(self.linear(w));
+            }
+            if i.is_some() || k.is_some() {
+                self.lathe.mrc.relief = Some((i, k));
+            }
+            if let Some(w) = self.words.get(b'D') {
+                self.lathe.mrc.divisions = Some(self.mrc_divisions(w, "G73 D")?);
+            }
+        } else if code != 700 {
+            if let Some(d) = self.positive(b'D', "depth of cut Δd")? {
+                self.lathe.mrc.depth = Some(d);
+            }
+        }
+        Ok(())
+    }
+
+    /// A G73 number of divisions (R of the 0-T form, D of the 10/11 form).
+    fn mrc_divisions(&self, w: WVal, what: &str) -> R<u32> {
+        if w.v < 1.0 || w.v.fract() != 0.0 || w.v > 9999.0 {
+            return Err(self.alarm(
+                AlarmKind::MrcValue,
+                w.at,
+                format!("{what} (number of divisions d) must be a whole number 1-9999"),
+            ));
+        }
+        Ok(w.v as u32)
     }
 
     /// A P/Q sequence-number word.
@@ -458,26 +489,23 @@ impl Interp {
         );
         let columns = self.words.has(cross) || self.words.has(cross_inc);
         // G74: P = shift Δi (X), Q = peck Δk (Z); G75: P = peck Δi (X),
-        // Q = shift Δk (Z).
-        let pv = self
-            .words
-            .get(b'P')
-            .map(|w| self.linear(w).abs())
-            .unwrap_or(0.0);
-        let qv = self
-            .words
-            .get(b'Q')
-            .map(|w| self.linear(w).abs())
-            .unwrap_or(0.0);
+        // Q = shift Δk (Z). The one-block form (Fanuc 10/11) writes them
+        // I, K and the relief Δd as D.
+        let (li, lk, ld) = self.mrc_peck_letters(code)?;
+        let amount = |me: &Self, l: u8| me.words.get(l).map(|w| me.linear(w).abs());
+        let (pv, qv) = (amount(self, li), amount(self, lk));
         let (shift, peck) = if code == 740 { (pv, qv) } else { (qv, pv) };
-        let relief = self.words.get(b'R').map(|w| self.linear(w)).unwrap_or(0.0);
+        let (shift, peck) = (shift.unwrap_or(0.0), peck.unwrap_or(0.0));
+        let relief = self.words.get(ld).map(|w| self.linear(w)).unwrap_or(0.0);
         let escape = self
             .lathe
             .mrc
             .peck_escape
             .unwrap_or_else(|| self.mrc_param(5139, 0.1));
+        let end = turning::p(xend.unwrap_or(a.x), zend.unwrap_or(a.z));
+        self.mrc_peck_amounts(code, a, end, (li, lk), (pv, qv), at)?;
         let k = turning::Peck {
-            end: turning::p(xend.unwrap_or(a.x), zend.unwrap_or(a.z)),
+            end,
             shift,
             peck,
             relief,
@@ -493,12 +521,165 @@ impl Interp {
         if let Err(e) = r {
             let wat = self
                 .words
-                .get(if code == 740 { b'Q' } else { b'P' })
+                .get(if code == 740 { lk } else { li })
                 .map(|w| w.at)
                 .unwrap_or(at);
             return Err(self.alarm(AlarmKind::MrcValue, wat, super::lathe::cycle_msg(&e)));
         }
         self.emit_moves(&out, None, at)
+    }
+
+    /// The one-block G76 (Fanuc 10/11 tape format, fanuc-semantics §10.2):
+    /// `A` the tool angle (replaces a for this and later cycles, as the
+    /// first block's P does), `P` the cutting method (only P1, single
+    /// edge with a constant amount, which is what the 0-T form cuts), `Q`
+    /// the thread start angle (canon has no spindle phase: an operator
+    /// message). The letters of i, k, Δd are I, K, D.
+    fn g76_one_block(&mut self, ang: &mut f64) -> R<(u8, u8, u8)> {
+        let w = [b'I', b'K', b'D', b'A']
+            .iter()
+            .find_map(|&l| self.words.get(l))
+            .expect("one of them");
+        if !self.tape_format_10_11() {
+            return Err(self.unused_word(b'I', w.at, "a one-block G76 (tape_format_10_11 on)"));
+        }
+        if let Some(r) = self.words.get(b'R') {
+            return Err(self.alarm(
+                AlarmKind::MrcValue,
+                r.at,
+                "G76: R(i) of the 0-T form with I K D A of the one-block form",
+            ));
+        }
+        if let Some(a) = self.words.get(b'A') {
+            let v = a.v;
+            *ang = v;
+            if let Some((m, r, _)) = self.lathe.mrc.thread_p {
+                self.lathe.mrc.thread_p = Some((m, r, v));
+            } else {
+                self.lathe.mrc.thread_p = Some((
+                    self.mrc_param(5142, 1.0) as u32,
+                    self.mrc_param(5130, 10.0) as u32,
+                    v,
+                ));
+            }
+        }
+        if let Some(p) = self.words.get(b'P') {
+            if p.v != 1.0 {
+                return Err(self.alarm(
+                    AlarmKind::MrcValue,
+                    p.at,
+                    format!(
+                        "G76 P{}: only P1 (single-edge cutting, constant amount) is made",
+                        fmt_num(p.v)
+                    ),
+                ));
+            }
+        }
+        if let Some(q) = self.words.get(b'Q') {
+            let deg = self.angular(q);
+            if deg != 0.0 {
+                self.emit(Canon::Message(format!(
+                    "thread start angle {}",
+                    fmt_num(deg)
+                )));
+            }
+        }
+        Ok((b'I', b'K', b'D'))
+    }
+
+    /// G74/G75: the peck (G74 Δk along Z, G75 Δi along X) and the shift
+    /// between columns (G74 Δi, G75 Δk) must be given and positive when
+    /// their axis moves; the alarm names the cycle's own letter.
+    fn mrc_peck_amounts(
+        &self,
+        code: u16,
+        a: P,
+        end: P,
+        (li, lk): (u8, u8),
+        (vi, vk): (Option<f64>, Option<f64>),
+        at: u32,
+    ) -> R<()> {
+        let (dx, dz) = ((end.x - a.x).abs() > 1e-9, (end.z - a.z).abs() > 1e-9);
+        let g = code / 10;
+        // (moves, letter, value, name)
+        let checks = [
+            (
+                dx,
+                li,
+                vi,
+                if code == 740 {
+                    "shift Δi"
+                } else {
+                    "peck depth Δi"
+                },
+            ),
+            (
+                dz,
+                lk,
+                vk,
+                if code == 740 {
+                    "peck depth Δk"
+                } else {
+                    "shift Δk"
+                },
+            ),
+        ];
+        for (moves, l, v, name) in checks {
+            if !moves {
+                continue;
+            }
+            let axis = if l == li { "X" } else { "Z" };
+            match v {
+                Some(v) if v > 0.0 => {}
+                Some(_) => {
+                    let w = self.words.get(l).expect("present");
+                    return Err(self.alarm(
+                        AlarmKind::MrcValue,
+                        w.at,
+                        format!("G{g}: {name} ({}) must be positive", l as char),
+                    ));
+                }
+                None => {
+                    return Err(self.alarm(
+                        AlarmKind::MrcValue,
+                        at,
+                        format!(
+                            "G{g}: {name} ({}) missing: the end {axis} differs from the start",
+                            l as char
+                        ),
+                    ))
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The letters of a G74/G75 block's Δi, Δk, Δd: `P Q R` (0-T) or `I
+    /// K D` (the one-block form of the Fanuc 10/11 tape format, profile
+    /// `tape_format_10_11`); the two mixed, or I/K/D with the parameter
+    /// off, are alarms.
+    fn mrc_peck_letters(&self, code: u16) -> R<(u8, u8, u8)> {
+        let new = [b'I', b'K', b'D'].into_iter().find(|&l| self.words.has(l));
+        let Some(l) = new else {
+            return Ok((b'P', b'Q', b'R'));
+        };
+        let w = self.words.get(l).expect("present");
+        if !self.tape_format_10_11() {
+            return Err(self.unused_word(l, w.at, "a one-block G74/G75 (tape_format_10_11 on)"));
+        }
+        if let Some(o) = [b'P', b'Q', b'R'].into_iter().find(|&o| self.words.has(o)) {
+            return Err(self.alarm(
+                AlarmKind::MrcValue,
+                self.words.get(o).expect("present").at,
+                format!(
+                    "G{}: {} of the 0-T form with {} of the one-block form (I K D)",
+                    code / 10,
+                    o as char,
+                    l as char
+                ),
+            ));
+        }
+        Ok((b'I', b'K', b'D'))
     }
 
     /// G76.
@@ -537,20 +718,32 @@ impl Interp {
         } else if let Some(w) = self.words.get(b'W') {
             end.z = a.z + self.linear(w);
         }
-        let (m, r, ang) = self.lathe.mrc.thread_p.unwrap_or((
+        let (m, r, mut ang) = self.lathe.mrc.thread_p.unwrap_or((
             self.mrc_param(5142, 1.0) as u32,
             self.mrc_param(5130, 10.0) as u32,
             self.mrc_param(5143, 60.0),
         ));
-        let Some(k) = self.words.get(b'P') else {
+        // 0-T: R(i) P(k) Q(Δd); one-block (Fanuc 10/11): I(i) K(k) D(Δd)
+        // A(a) P(method) Q(start angle).
+        let one_block = [b'I', b'K', b'D', b'A'].iter().any(|&l| self.words.has(l));
+        let (li, lk, ld) = if one_block {
+            self.g76_one_block(&mut ang)?
+        } else {
+            (b'R', b'P', b'Q')
+        };
+        let Some(k) = self.words.get(lk) else {
             return Err(self.alarm(
                 AlarmKind::MrcValue,
                 at,
-                "G76 without the thread height P(k)",
+                format!("G76 without the thread height {}(k)", lk as char),
             ));
         };
-        let Some(dd) = self.words.get(b'Q') else {
-            return Err(self.alarm(AlarmKind::MrcValue, at, "G76 without the first depth Q(Δd)"));
+        let Some(dd) = self.words.get(ld) else {
+            return Err(self.alarm(
+                AlarmKind::MrcValue,
+                at,
+                format!("G76 without the first depth {}(Δd)", ld as char),
+            ));
         };
         let lead = self.st.feed.unwrap_or(0.0);
         if !self.words.has(b'F') && lead <= 0.0 {
@@ -571,7 +764,7 @@ impl Interp {
                 .allowance
                 .unwrap_or_else(|| self.mrc_param(5141, 0.0)),
             end,
-            taper: self.words.get(b'R').map(|w| self.linear(w)).unwrap_or(0.0),
+            taper: self.words.get(li).map(|w| self.linear(w)).unwrap_or(0.0),
             height: self.linear(k),
             first_depth: self.linear(dd),
             lead,
@@ -581,5 +774,29 @@ impl Interp {
             return Err(self.alarm(AlarmKind::MrcValue, at, super::lathe::cycle_msg(&e)));
         }
         self.emit_moves(&out, None, at)
+    }
+}
+
+/// PS064's message: the cycle (`G71 type I` …), the shape N(ns)-N(nf),
+/// the axis, and the offending segment `i` (0-based) with its line — or,
+/// on the nose-radius-compensated path, the piece.
+fn not_monotonic_msg(
+    what: &str,
+    (ns, nf): (u32, u32),
+    comp: bool,
+    ax: char,
+    i: usize,
+    line: u32,
+) -> String {
+    if comp {
+        format!(
+            "{what}: the shape N{ns}-N{nf} offset by the nose radius (the imaginary tip's path) is not monotonic in {ax} (piece {} after N{ns})",
+            i + 1
+        )
+    } else {
+        format!(
+            "{what}: the shape N{ns}-N{nf} is not monotonic in {ax} (segment {} after N{ns}, line {line})",
+            i + 1
+        )
     }
 }

@@ -34,7 +34,11 @@ impl Interp {
             if let Some(w) = abs_w {
                 self.check_range(l, w)?;
                 let v = self.axis_value(ax, w);
-                t[i] = if self.st.absolute { v } else { cur[i] + v };
+                t[i] = if self.st.absolute {
+                    v
+                } else {
+                    cur[i] + v + self.tlo_change(i)
+                };
                 any = true;
                 programmed[i] = true;
             } else if let Some(il) = inc_l {
@@ -51,6 +55,15 @@ impl Interp {
             self.polar_target(&cur, &mut t);
         }
         Ok((t, any))
+    }
+
+    /// The change of the tool length offset made by this block's
+    /// G43/G44/G49/H in G91 on axis slot `i` (0 otherwise).
+    fn tlo_change(&self, i: usize) -> f64 {
+        match self.tlo_inc {
+            Some((b, d)) if b == self.blocks => d[i],
+            _ => 0.0,
+        }
     }
 
     /// G16: the plane's first-axis word is a radius, the second an angle
@@ -252,7 +265,25 @@ impl Interp {
         at: u32,
     ) -> R<Option<(f64, f64)>> {
         let plane = self.st.plane;
-        let (a1, a2, _) = plane.axes();
+        let (a1, a2, normal) = plane.axes();
+        // The centre word of the axis normal to the plane (J in G18, K in
+        // G17, I in G19) is not part of the arc: an alarm, never ignored.
+        let off_plane = b"IJK"[normal];
+        if let Some(w) = self.words.get(off_plane) {
+            let (g, pair) = match plane {
+                Plane::XY => ("G17", "I and J"),
+                Plane::ZX => ("G18", "K and I"),
+                Plane::YZ => ("G19", "J and K"),
+            };
+            return Err(self.alarm(
+                AlarmKind::IllegalAddress,
+                w.at,
+                format!(
+                    "{} is not a centre word of the {g} plane (its centre is {pair})",
+                    off_plane as char
+                ),
+            ));
+        }
         let cur = self.prog_pos();
         let s = (cur[a1], cur[a2]);
         let e = (tw[a1], tw[a2]);
@@ -414,7 +445,18 @@ impl Interp {
             }
             self.st.h = h.v as u32;
         }
+        let old = self.st.tlo;
         self.refresh_tool_length();
+        // In G91 the block's incremental move counts from the tip as the
+        // old offset had it, so the machine moves by the move plus the
+        // offset change (fanuc-semantics §5.1).
+        if !self.st.absolute && old != self.st.tlo {
+            let mut d = [0.0; NAXES];
+            for i in 0..NAXES {
+                d[i] = self.st.tlo[i] - old[i];
+            }
+            self.tlo_inc = Some((self.blocks, d));
+        }
         Ok(())
     }
 

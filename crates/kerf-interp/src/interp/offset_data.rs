@@ -67,15 +67,20 @@ impl Interp {
             if !self.has_axis[i] {
                 continue;
             }
-            if let Some(w) = self.words.get(ax_letter(ax)) {
-                let v = self.axis_value(ax, w);
-                let slot = if p == 0 {
-                    &mut self.st.shift[i]
-                } else {
-                    &mut self.st.wcs[p - 1][i]
-                };
-                *slot = if self.st.absolute { v } else { *slot + v };
-            }
+            // Absolute words replace (G91 on the HX adds); the lathe's
+            // U/W add.
+            let (w, add) = match (self.words.get(ax_letter(ax)), self.uvw(ax)) {
+                (Some(w), _) => (w, !self.st.absolute),
+                (None, Some(l)) => (self.words.get(l).expect("present"), true),
+                (None, None) => continue,
+            };
+            let v = self.axis_value(ax, w);
+            let slot = if p == 0 {
+                &mut self.st.shift[i]
+            } else {
+                &mut self.st.wcs[p - 1][i]
+            };
+            *slot = if add { *slot + v } else { v };
         }
         Ok(())
     }
@@ -116,6 +121,21 @@ impl Interp {
 
     /// `G10 P_ X_ Z_ R_ Q_` / `U_ W_ C_` on a lathe.
     fn g10_lathe(&mut self, at: u32) -> R<()> {
+        // `G10 L2 P1-P6 X Z` (U W add): the work offsets G54-G59, Fanuc
+        // 0-T/16T standard (001 is silent).
+        if let Some(l) = self.words.get(b'L') {
+            if l.v != 2.0 {
+                return Err(self.alarm(
+                    AlarmKind::OutOfRange,
+                    l.at,
+                    format!(
+                        "G10 L{}: L2 (work offset) or no L (tool offset)",
+                        fmt_num(l.v)
+                    ),
+                ));
+            }
+            return self.g10_l2(at);
+        }
         let count = self.offsets.count();
         let p = self.g10_p(
             at,

@@ -130,6 +130,9 @@ enum Sys {
     /// Work offset G54+w, axis number.
     Wcs(usize, usize),
     SingleBlock,
+    /// HX parameter window: #3000+n is PI n (000 pairs them throughout,
+    /// e.g. §5.4 `#3120` = PI 120).
+    Param(usize),
     /// HX #4018: 1 while the program runs in TPG (the control's tool-path
     /// graphic check), 0 in a real run.
     Tpg,
@@ -190,8 +193,15 @@ impl Interp {
                 2368..=2370 => Shift(i - 2368),
                 2377..=2430 => Wcs((i - 2377) / 9, (i - 2377) % 9),
                 3083 => SingleBlock,
+                // #3000 and #3006 keep Fanuc's alarm and message meaning
+                // (calls.rs): 000 names no PI 0 or PI 6.
+                3001..=3999 if i != 3006 => Param(i - 3000),
                 4018 => Tpg,
                 4083..=4086 => Work(i - 4083),
+                // 000 §14.2.3's O9300 reads the Fanuc block end point and
+                // machine position (fanuc-semantics §6.7).
+                5001..=5004 => Programmed(i - 5001),
+                5021..=5024 => Machine(i - 5021),
                 4379..=4382 => Machine(i - 4379),
                 4792 => S,
                 4882 => DNum,
@@ -303,6 +313,7 @@ impl Interp {
             Shift(k) => return Ok(self.axis_value_of(k, &self.st.shift).or(Some(0.0))),
             Wcs(w, k) => return Ok(self.axis_value_of(k, &self.st.wcs[w]).or(Some(0.0))),
             SingleBlock => self.sys.single_block,
+            Param(n) => self.profile.param(&format!("PI {n}"), 0.0),
             Tpg => (self.profile.param("tpg", 0.0) != 0.0) as u8 as f64,
             S => self.st.s,
             DNum => self.sys.d,
@@ -317,7 +328,15 @@ impl Interp {
                     .unwrap_or_else(|| self.programmed_position());
                 return Ok(self.axis_value_of(k, &p));
             }
-            Modal(g) => self.st.modal.get(g).copied().unwrap_or(0) as f64 / 10.0,
+            Modal(g) => {
+                let c = self.st.modal.get(g).copied().unwrap_or(0);
+                let c = if self.system_b() {
+                    super::system_b::to_b(c)
+                } else {
+                    c
+                };
+                c as f64 / 10.0
+            }
             InBit(w, b) => bit(&self.sys.inputs, w, b),
             InWord(w, mask) => (self.sys.inputs[w] & mask) as f64,
             OutBit(w, b) => bit(&self.sys.outputs, w, b),
@@ -421,6 +440,9 @@ impl Interp {
                 }
             }
             SingleBlock => self.sys.single_block = flag(x)? as u8 as f64,
+            Param(n) => {
+                self.profile.params.insert(format!("PI {n}"), x);
+            }
             OutBit(w, b) => {
                 if flag(x)? {
                     self.sys.outputs[w] |= 1 << b;

@@ -112,10 +112,13 @@ impl Interp {
         Ok(data)
     }
 
-    /// A scale factor: P/I/J/K in 1/1000 without a decimal point
-    /// (`P2000` = ×2, 000 §15.2), as written with one (`P2.` = ×2).
+    /// A scale factor: P/I/J/K in 1/1000 (`P2000` = `P2000.` = ×2, 000
+    /// §15.2).
     fn scale_factor(&self, w: WVal) -> R<f64> {
-        let f = if w.point { w.v } else { w.v / 1000.0 };
+        // Always 1/1000, with or without a decimal point: 000 prints every
+        // G51 factor with one and means ×2 / ×1.5 (§15.2 `I1000. J1000.`,
+        // `I1500. J1500.`, §15.2.2 `I2000. J1000.`, §15.3 `I-1500.`).
+        let f = w.v / 1000.0;
         if !(0.001..=999.999).contains(&f.abs()) {
             return Err(self.alarm(
                 AlarmKind::OutOfRange,

@@ -1,0 +1,71 @@
+//! The progress bar on stderr: shown only when stderr is a terminal and
+//! the run has taken more than a second; blocks, bytes read of the
+//! program, elapsed time.
+
+use std::io::IsTerminal;
+use std::time::{Duration, Instant};
+
+use indicatif::{ProgressBar, ProgressStyle};
+use kerf_control::Runner;
+
+/// After how long a run shows the bar.
+const DELAY: Duration = Duration::from_secs(1);
+
+/// Steps between looks at the clock.
+const EVERY: u32 = 4096;
+
+/// Drives the bar from the runner's progress.
+pub struct Progress {
+    on: bool,
+    start: Instant,
+    steps: u32,
+    bar: Option<ProgressBar>,
+}
+
+impl Progress {
+    /// A bar that will show if stderr is a terminal and `quiet` is off.
+    pub fn new(quiet: bool) -> Progress {
+        Progress {
+            on: !quiet && std::io::stderr().is_terminal(),
+            start: Instant::now(),
+            steps: 0,
+            bar: None,
+        }
+    }
+
+    /// Called after every step of the runner.
+    pub fn tick(&mut self, r: &Runner) {
+        if !self.on {
+            return;
+        }
+        self.steps += 1;
+        if self.steps < EVERY {
+            return;
+        }
+        self.steps = 0;
+        if self.bar.is_none() && self.start.elapsed() < DELAY {
+            return;
+        }
+        let (read, len) = r.source_progress().unwrap_or((0, 0));
+        let bar = self.bar.get_or_insert_with(|| new_bar(len));
+        bar.set_position(read);
+        bar.set_message(format!("{} blocks", r.interp().blocks()));
+    }
+
+    /// Removes the bar.
+    pub fn done(self) {
+        if let Some(b) = self.bar {
+            b.finish_and_clear();
+        }
+    }
+}
+
+fn new_bar(len: u64) -> ProgressBar {
+    let bar = ProgressBar::new(len);
+    let style =
+        ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {bytes}/{total_bytes} {msg}")
+            .unwrap_or_else(|_| ProgressStyle::default_bar())
+            .progress_chars("=> ");
+    bar.set_style(style);
+    bar
+}

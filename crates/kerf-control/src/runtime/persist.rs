@@ -1,0 +1,137 @@
+//! `--state DIR`: the tool offsets and retained variables in the files of
+//! kerf_interp::state (`<profile>.offsets`, `<profile>.vars`) and the work
+//! offsets in `<profile>.work`, each replaced atomically (temporary file,
+//! fsync, rename, directory fsync): a kill at any instant leaves the old
+//! or the new file, never a torn one, and a write is acknowledged only
+//! after its file is on disk.
+//!
+//! ```text
+//! # kerf work offsets: G54+index, machine coordinates x y z a b c
+//! 0 -400 -250 -250 0 0 0
+//! ```
+
+use std::fs::{self, File};
+use std::io::{self, Write};
+use std::path::{Path, PathBuf};
+
+use kerf_canon::NAXES;
+use kerf_interp::Interp;
+
+use super::Runtime;
+
+fn work_file(dir: &Path, it: &Interp) -> PathBuf {
+    let f = kerf_interp::state::offsets_file(dir, &it.profile().name);
+    f.with_extension("work")
+}
+
+/// Loads what `dir` keeps into the interpreter (missing files: nothing).
+pub(super) fn load(dir: &Path, it: &mut Interp) -> Result<(), String> {
+    fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    kerf_interp::state::load_retained(dir, it)?;
+    kerf_interp::state::load_offsets(dir, it)?;
+    let path = work_file(dir, it);
+    let text = match fs::read_to_string(&path) {
+        Ok(t) => t,
+        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(()),
+        Err(e) => return Err(format!("{}: {e}", path.display())),
+    };
+    for (n, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let bad = || format!("{}:{}: expected 'INDEX X Y Z A B C'", path.display(), n + 1);
+        let nums: Vec<f64> = line
+            .split_whitespace()
+            .map(|w| w.parse::<f64>().map_err(|_| bad()))
+            .collect::<Result<_, _>>()?;
+        if nums.len() != 1 + NAXES || nums[0].fract() != 0.0 || !(0.0..6.0).contains(&nums[0]) {
+            return Err(bad());
+        }
+        let mut p = [0.0; NAXES];
+        p.copy_from_slice(&nums[1..]);
+        it.set_work_offset(nums[0] as usize, p);
+    }
+    Ok(())
+}
+
+/// Which files a save writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Part {
+    /// Tool offsets.
+    Tools,
+    /// Work offsets.
+    Work,
+    /// Retained variables.
+    Vars,
+    /// All three.
+    All,
+}
+
+/// Saves what `dir` keeps (the files of `part`).
+pub(super) fn save(dir: &Path, it: &Interp, part: Part) -> Result<(), String> {
+    let err = |e: io::Error| format!("--state {}: {e}", dir.display());
+    if matches!(part, Part::Tools | Part::All) {
+        kerf_interp::state::save_offsets(dir, it).map_err(err)?;
+    }
+    if matches!(part, Part::Vars | Part::All) {
+        kerf_interp::state::save_retained(dir, it).map_err(err)?;
+    }
+    if !matches!(part, Part::Work | Part::All) {
+        return Ok(());
+    }
+    let mut text =
+        String::from("# kerf work offsets: G54+index, machine coordinates x y z a b c\n");
+    for i in 0..6 {
+        let p = it.work_offset(i).unwrap_or([0.0; NAXES]);
+        text.push_str(&i.to_string());
+        for v in p {
+            text.push(' ');
+            text.push_str(&format!("{v:?}"));
+        }
+        text.push('\n');
+    }
+    write_atomic(dir, &work_file(dir, it), &text).map_err(err)
+}
+
+/// Replaces `path` with `text`: temporary file `.NAME.tmpPID` in the same
+/// folder, fsync, rename, folder fsync (as kerf_interp::state does).
+fn write_atomic(dir: &Path, path: &Path, text: &str) -> io::Result<()> {
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("state");
+    let tmp = dir.join(format!(".{name}.tmp{}", std::process::id()));
+    let write = || -> io::Result<()> {
+        let mut f = File::create(&tmp)?;
+        f.write_all(text.as_bytes())?;
+        f.sync_all()?;
+        drop(f);
+        fs::rename(&tmp, path)?;
+        if let Ok(d) = File::open(dir) {
+            let _ = d.sync_all();
+        }
+        Ok(())
+    };
+    let r = write();
+    if r.is_err() {
+        let _ = fs::remove_file(&tmp);
+    }
+    r
+}
+
+impl Runtime {
+    /// Saves `part` to `--state` now; the error names the folder.
+    pub(super) fn save_state_now(&self, part: Part) -> Result<(), String> {
+        match &self.state_dir {
+            Some(d) => save(d, &self.interp, part),
+            None => Ok(()),
+        }
+    }
+
+    /// Saves at the end of a run or a reset (the program may have written
+    /// offsets and retained variables); a failure goes to the history.
+    pub(super) fn save_state(&mut self) {
+        if let Err(e) = self.save_state_now(Part::All) {
+            let r = self.record(super::RecordKind::Message, "STATE", &e, None);
+            self.log.push(r);
+        }
+    }
+}

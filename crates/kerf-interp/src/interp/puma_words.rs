@@ -1,0 +1,89 @@
+//! The PUMA's (Fanuc 0-T) addresses that only some blocks use. 001's
+//! address table ("Meaning of Address") gives A, D, E, L and the cycle
+//! parameters a meaning in a few codes only; a block that carries one of
+//! them where no code reads it stops with PS009 instead of ignoring the
+//! word (the HX alarms an unused axis the same way). B, H, J, V and Y are
+//! not addresses of the PUMA at all (`dialect/puma.rs`).
+//!
+//! - `A`: the tool angle of the one-block G76 (Fanuc 10/11 tape format).
+//! - `D`: the depth / divisions / relief of the one-block G71-G76.
+//! - `E`: the thread lead (001 "F, E: designation of feedrate and thread
+//!   lead") in a threading block (G32, G92, G76); it is read as F.
+//! - `L`: the repetitions of `M98` (and `G10 L2`).
+
+use super::*;
+
+impl Interp {
+    /// Whether the profile reads the one-block G71-G76 of the Fanuc 10/11
+    /// tape format (`tape_format_10_11 = 1`, on for the PUMA).
+    pub(super) fn tape_format_10_11(&self) -> bool {
+        self.profile.param("tape_format_10_11", 0.0) != 0.0
+    }
+
+    /// A, D, E, L on the PUMA: allowed only where a code of the block
+    /// reads them; E in a thread block becomes its F.
+    pub(super) fn puma_words(&mut self) -> R<()> {
+        let mrc = self
+            .words
+            .gs()
+            .iter()
+            .find(|g| (710..=760).contains(&g.0))
+            .map(|g| g.0);
+        let one_block = self.tape_format_10_11();
+        if let Some(w) = self.words.get(b'A') {
+            if !(one_block && mrc == Some(760)) {
+                return Err(self.unused_word(b'A', w.at, "the tool angle of a one-block G76"));
+            }
+        }
+        if let Some(w) = self.words.get(b'D') {
+            if !(one_block && mrc.is_some()) {
+                let why = if mrc.is_some() {
+                    "a one-block G71-G76 (profile parameter tape_format_10_11 is off)"
+                } else {
+                    "a one-block G71-G76"
+                };
+                return Err(self.unused_word(b'D', w.at, why));
+            }
+        }
+        if let Some(w) = self.words.get(b'L') {
+            let m98 = self.words.ms().iter().any(|m| m.0 == 98);
+            if !m98 && !self.words.has_g(100) {
+                return Err(self.unused_word(b'L', w.at, "M98 (repetitions) and G10 L2"));
+            }
+        }
+        if let Some(w) = self.words.get(b'E') {
+            let thread_code = |c: u16| matches!(c, 320 | 920 | 760);
+            let motion_g = self.words.gs().iter().find(|g| {
+                self.gcode(g.0).is_some_and(|d| d.group == 1) || (700..=760).contains(&g.0)
+            });
+            let thread = match motion_g {
+                Some(g) => thread_code(g.0),
+                None => thread_code(self.st.modal[1]),
+            };
+            if !thread {
+                return Err(self.unused_word(b'E', w.at, "a threading block (G32, G92, G76)"));
+            }
+            if let Some(f) = self.words.get(b'F') {
+                return Err(self.alarm(
+                    AlarmKind::DuplicateAddress,
+                    f.at,
+                    "F and E (both the thread lead) in one block",
+                ));
+            }
+            self.words.letters[(b'F' - b'A') as usize] = Some(w);
+            self.words.letters[(b'E' - b'A') as usize] = None;
+        }
+        Ok(())
+    }
+
+    pub(super) fn unused_word(&self, l: u8, at: u32, used_by: &str) -> Alarm {
+        self.alarm(
+            AlarmKind::IllegalAddress,
+            at,
+            format!(
+                "address {} is not used in this block (on this control only {used_by} reads it)",
+                l as char
+            ),
+        )
+    }
+}
