@@ -21,6 +21,7 @@ mod common;
 
 use std::process::{Command, Stdio};
 
+use common::generate::{program, PROGRAMS};
 use common::programs::{corpus, examples, expand_programs, records, rs274_programs, scratch, Case};
 use serde_json::Value;
 
@@ -234,4 +235,42 @@ fn rs274_runs_the_linuxcnc_output_to_kerfs_end_points() {
     );
     assert!(mills >= 40, "only {mills} mill programs compared");
     assert!(moves >= 1000, "only {moves} moves compared");
+}
+
+#[test]
+fn rs274_runs_the_generated_programs_to_kerfs_end_points() {
+    if Command::new("rs274")
+        .arg("-h")
+        .stdin(Stdio::null())
+        .output()
+        .is_err()
+    {
+        println!(
+            "skipped: rs274 not installed (apt-get install -y --no-install-recommends linuxcnc-uspace)"
+        );
+        return;
+    }
+    let (mut compared, mut moves, mut failures) = (0, 0, Vec::new());
+    for seed in 0..PROGRAMS {
+        let path = scratch(&format!("generated-{seed}"), "nc");
+        std::fs::write(&path, program(seed)).unwrap();
+        let case = Case {
+            label: format!("generated/{seed}"),
+            program: path,
+            machine: "hx-mc".into(),
+            sets: Vec::new(),
+            libs: Vec::new(),
+        };
+        if let Some((n, problems)) = check(&case) {
+            compared += 1;
+            moves += n;
+            failures.extend(problems.into_iter().map(|p| format!("{}: {p}", case.label)));
+        }
+    }
+    println!("{compared} of {PROGRAMS} generated programs, {moves} moves compared with rs274");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(
+        compared * 2 >= PROGRAMS as usize,
+        "only {compared} programs compared"
+    );
 }
