@@ -1,7 +1,9 @@
-//! The expansion round trip on generated HX programs: moves in G90 and
-//! G91, R arcs in the three planes, rotation (G68), scaling (G51), local
-//! coordinates (G52), two work offsets, tool length compensation, macro
-//! variables, dwells and the spindle, in random order from fixed seeds.
+//! The expansion round trip on generated programs (tests/common/generate.rs):
+//! HX programs with moves in G90 and G91, R arcs in the three planes,
+//! rotation (G68), scaling (G51), local coordinates (G52), two work offsets,
+//! tool length compensation, macro variables, dwells and the spindle; PUMA
+//! programs with diameter X, U/W, R arcs, G32, G90 cycles, G96/G97, tool
+//! offsets; in random order from fixed seeds.
 //! For each, the toolpath of the program and the toolpath of its `--to
 //! fanuc` expansion run again are the same record for record (as
 //! tests/expand.rs compares them); a program that stops on an alarm must
@@ -9,7 +11,7 @@
 
 mod common;
 
-use common::generate::{program, PROGRAMS};
+use common::generate::{lathe_program, program, PROGRAMS};
 use common::records::differs;
 use kerf_canon::Alarm;
 use kerf_control::sinks::{Expand, Toolpath};
@@ -18,8 +20,8 @@ use kerf_expand::Target;
 use serde_json::Value;
 
 /// The toolpath records and the alarm of a run of `text`.
-fn run(name: &str, text: &str) -> (Vec<Value>, Option<Alarm>) {
-    let runner = Job::text(name, text).machine("hx-mc").load().unwrap();
+fn run(machine: &str, name: &str, text: &str) -> (Vec<Value>, Option<Alarm>) {
+    let runner = Job::text(name, text).machine(machine).load().unwrap();
     let mut out = Vec::new();
     let mut tp = Toolpath::new(&mut out);
     let outcome = runner.run(&mut [&mut tp as &mut dyn Sink]).unwrap();
@@ -33,8 +35,8 @@ fn run(name: &str, text: &str) -> (Vec<Value>, Option<Alarm>) {
 }
 
 /// The `--to fanuc` expansion of `text` and the alarm it stopped on.
-fn expand(name: &str, text: &str) -> (String, Option<Alarm>) {
-    let mut runner = Job::text(name, text).machine("hx-mc").load().unwrap();
+fn expand(machine: &str, name: &str, text: &str) -> (String, Option<Alarm>) {
+    let mut runner = Job::text(name, text).machine(machine).load().unwrap();
     runner.interpret_only();
     let mut out = Vec::new();
     let mut sink = Expand::new(&mut out, Target::Fanuc);
@@ -43,24 +45,23 @@ fn expand(name: &str, text: &str) -> (String, Option<Alarm>) {
     (String::from_utf8(out).unwrap(), outcome.alarm)
 }
 
-#[test]
-fn generated_programs_expand_to_the_same_motions() {
+/// Round-trips the programs `make` generates on `machine`; returns
+/// (programs completed, records compared, failures).
+fn round_trips(machine: &str, make: fn(u64) -> String) -> (usize, usize, Vec<String>) {
     let (mut completed, mut records, mut failures) = (0, 0, Vec::new());
     for seed in 0..PROGRAMS {
-        let text = program(seed);
-        let (want, alarm) = run("gen.nc", &text);
-        let (nc, alarm2) = expand("gen.nc", &text);
-        if alarm.as_ref().map(|a| (&a.code, a.src.line))
-            != alarm2.as_ref().map(|a| (&a.code, a.src.line))
-        {
+        let text = make(seed);
+        let (want, alarm) = run(machine, "gen.nc", &text);
+        let (nc, alarm2) = expand(machine, "gen.nc", &text);
+        let key = |a: &Option<Alarm>| a.as_ref().map(|a| (a.code.clone(), a.src.line));
+        if key(&alarm) != key(&alarm2) {
             failures.push(format!(
                 "seed {seed}: run alarm {alarm:?}, expand alarm {alarm2:?}"
             ));
             continue;
         }
         completed += alarm.is_none() as usize;
-
-        let (got, again) = run("expanded.nc", &nc);
+        let (got, again) = run(machine, "expanded.nc", &nc);
         if let Some(a) = again {
             failures.push(format!("seed {seed}: the expansion alarms {a:?}\n{nc}"));
             continue;
@@ -86,6 +87,23 @@ fn generated_programs_expand_to_the_same_motions() {
             ));
         }
     }
+    (completed, records, failures)
+}
+
+#[test]
+fn generated_mill_programs_expand_to_the_same_motions() {
+    let (completed, records, failures) = round_trips("hx-mc", program);
+    println!("{PROGRAMS} programs, {completed} completed, {records} records compared");
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+    assert!(
+        completed * 2 >= PROGRAMS as usize,
+        "only {completed} programs completed"
+    );
+}
+
+#[test]
+fn generated_lathe_programs_expand_to_the_same_motions() {
+    let (completed, records, failures) = round_trips("puma-lathe", lathe_program);
     println!("{PROGRAMS} programs, {completed} completed, {records} records compared");
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
     assert!(

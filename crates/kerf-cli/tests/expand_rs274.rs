@@ -21,7 +21,7 @@ mod common;
 
 use std::process::{Command, Stdio};
 
-use common::generate::{program, PROGRAMS};
+use common::generate::{lathe_program, program, PROGRAMS};
 use common::programs::{corpus, examples, expand_programs, records, rs274_programs, scratch, Case};
 use serde_json::Value;
 
@@ -251,26 +251,36 @@ fn rs274_runs_the_generated_programs_to_kerfs_end_points() {
         return;
     }
     let (mut compared, mut moves, mut failures) = (0, 0, Vec::new());
-    for seed in 0..PROGRAMS {
-        let path = scratch(&format!("generated-{seed}"), "nc");
-        std::fs::write(&path, program(seed)).unwrap();
-        let case = Case {
-            label: format!("generated/{seed}"),
-            program: path,
-            machine: "hx-mc".into(),
-            sets: Vec::new(),
-            libs: Vec::new(),
-        };
-        if let Some((n, problems)) = check(&case) {
-            compared += 1;
-            moves += n;
-            failures.extend(problems.into_iter().map(|p| format!("{}: {p}", case.label)));
+    let makers: [(&str, fn(u64) -> String); 2] =
+        [("hx-mc", program), ("puma-lathe", lathe_program)];
+    // Half the seeds of tests/expand_random.rs per machine: each program
+    // costs three processes here.
+    let seeds = PROGRAMS / 2;
+    for (machine, make) in makers {
+        for seed in 0..seeds {
+            let path = scratch(&format!("generated-{machine}-{seed}"), "nc");
+            std::fs::write(&path, make(seed)).unwrap();
+            let case = Case {
+                label: format!("generated/{machine}/{seed}"),
+                program: path,
+                machine: machine.into(),
+                sets: Vec::new(),
+                libs: Vec::new(),
+            };
+            if let Some((n, problems)) = check(&case) {
+                compared += 1;
+                moves += n;
+                failures.extend(problems.into_iter().map(|p| format!("{}: {p}", case.label)));
+            }
         }
     }
-    println!("{compared} of {PROGRAMS} generated programs, {moves} moves compared with rs274");
+    println!(
+        "{compared} of {} generated programs, {moves} moves compared with rs274",
+        2 * PROGRAMS
+    );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(
-        compared * 2 >= PROGRAMS as usize,
+        compared as u64 >= PROGRAMS,
         "only {compared} programs compared"
     );
 }

@@ -126,3 +126,51 @@ pub fn program(seed: u64) -> String {
     p.push_str("M05\nM30\n");
     p
 }
+
+/// A generated PUMA (Fanuc 0-T, system A) program: X as a diameter, moves
+/// absolute (X Z) and incremental (U W), R arcs, G32 threads, G90 and G94
+/// turning cycles, feed per revolution and per minute, CSS and rpm, tool
+/// changes with offsets, macro variables and dwells.
+pub fn lathe_program(seed: u64) -> String {
+    let mut g = Rng(seed.wrapping_mul(0xD1B54A32D192ED03) ^ 0x2545F491);
+    let mut p = String::from("G21\nG50 S2000\nG00 X200. Z50. T0101\nG97 S800 M03\nG00 X120. Z5.\n");
+    let dia = |g: &mut Rng| format!("{:.3}", 40.0 + g.below(160_001) as f64 / 1000.0);
+    let z = |g: &mut Rng| format!("{:.3}", -80.0 + g.below(90_001) as f64 / 1000.0);
+    for _ in 0..BLOCKS {
+        let line = match g.below(14) {
+            0 | 1 => format!("G00 X{} Z{}", dia(&mut g), z(&mut g)),
+            2..=4 => format!("G01 X{} Z{} F0.{}", dia(&mut g), z(&mut g), 1 + g.below(4)),
+            5 | 6 => {
+                let code = if g.below(2) == 0 { "G02" } else { "G03" };
+                // Chords up to about 180 mm: R 100 reaches.
+                format!("{code} X{} Z{} R100. F0.2", dia(&mut g), z(&mut g))
+            }
+            7 => format!("G01 U{} W{} F0.15", g.coord(10.0), g.coord(10.0)),
+            8 => format!(
+                "G00 X{} Z5.\nG32 Z{} F{}",
+                dia(&mut g),
+                z(&mut g),
+                1 + g.below(3)
+            ),
+            9 => (if g.below(2) == 0 {
+                "G96 S150 M03"
+            } else {
+                "G97 S900 M03"
+            })
+            .into(),
+            10 => format!("G00 X200. Z50.\nT0{}0{}", 1 + g.below(3), 1 + g.below(3)),
+            11 => format!(
+                "G00 X{} Z5.\nG90 X{} Z{} F0.25\nG00 X200.",
+                160 + g.below(20),
+                dia(&mut g),
+                z(&mut g)
+            ),
+            12 => format!("#1 = {}\nG98 G01 X#1 Z[#1 / -4] F300.\nG99", dia(&mut g)),
+            _ => format!("G04 X0.{}", 1 + g.below(9)),
+        };
+        p.push_str(&line);
+        p.push('\n');
+    }
+    p.push_str("G00 X200. Z50.\nM05\nM30\n");
+    p
+}
