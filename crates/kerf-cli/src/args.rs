@@ -131,4 +131,6 @@ pub enum Cmd {
     },
     /// Print the manual page (roff; `kerf man | man -l -`).
     Man,
+    /// Serve the operator screen and its API (docs/hmi.md).
+    Serve(crate::serve::Args),
 }

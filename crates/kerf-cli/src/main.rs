@@ -11,6 +11,7 @@ mod expand;
 mod manual;
 mod outputs;
 mod progress;
+mod serve;
 mod summary;
 
 use std::io::Write;
@@ -37,7 +38,11 @@ fn main() -> ExitCode {
         Cmd::Man => manual::man(),
         Cmd::Run { common, outputs } => run(&common, &outputs, false),
         Cmd::Check { common } => run(&common, &Outputs::default(), true),
+<<<<<<< HEAD
         Cmd::Expand { common, to, out } => expand::expand(&common, &to, out.as_deref()),
+=======
+        Cmd::Serve(a) => serve::run(a),
+>>>>>>> main
     }
 }
 

@@ -542,3 +542,87 @@ fn hx_g62_slows_inside_corners_of_the_compensated_path() {
         "G62 {g62} s, G64 {g64} s"
     );
 }
+
+/// A main program ending in M99 (a bar-feed loop) runs one pass and exits
+/// 0, with the operator message and warning KERF-W006 in the report;
+/// `--set main_passes=3` runs three passes (3 × 2 moves). The system-B
+/// and calculator-type decimal point keys reach the interpreter (issue 15).
+#[test]
+fn main_m99_passes_and_issue_15_keys() {
+    let p = tmp("m99.nc", "%\nG54 G91 G00 X-1.\nX1.\nM99\n%\n");
+    let rep = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli/m99.json");
+    for (passes, motions) in [(None, 2), (Some("main_passes=3"), 6)] {
+        let mut c = kerf();
+        c.arg("run").arg(&p).arg("--report").arg(&rep);
+        if let Some(s) = passes {
+            c.args(["--set", s]);
+        }
+        let out = c.output().unwrap();
+        assert_success(&out);
+        let r = read_json(&rep);
+        assert_eq!(r["status"], "completed");
+        assert_eq!(r["motions"], motions);
+        assert_eq!(r["warnings"][0]["code"], "KERF-W006");
+        assert!(r["messages"][0]["text"]
+            .as_str()
+            .unwrap()
+            .starts_with("M99 in the main program: ended after"));
+    }
+    // G-code system B: G90/G95 and G92 S are accepted with the key.
+    let p = tmp(
+        "sysb.nc",
+        "G21 G90 G40 G95\nG92 S500\nG97 S300 M3\nG0 X50. Z5.\nM30\n",
+    );
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .args(["--machine", "puma-lathe"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1), "system A: G95 is unknown");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .args(["--machine", "puma-lathe", "--set", "gcode_system_b=1"])
+        .output()
+        .unwrap();
+    assert_success(&out);
+    // Calculator-type decimal point: X40 = 40 mm diameter.
+    let p = tmp("calc.nc", "G0 X40 Z-2\nM30\n");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .args(["--machine", "puma-lathe", "--set", "calculator_decimal=on"])
+        .args(["--report"])
+        .arg(&rep)
+        .output()
+        .unwrap();
+    assert_success(&out);
+    let r = read_json(&rep);
+    assert_eq!(r["final"]["work"]["z"], -2.0, "{r}");
+}
+
+/// The PUMA's G55 takes its zero from the `--offsets` table (machine Z
+/// −500): `G55 G00 X50. Z10.` ends at machine (radius 25, −490), reading
+/// (25, 10).
+#[test]
+fn puma_work_offsets_from_the_offset_table() {
+    let p = tmp("g55.nc", "G55 G00 X50. Z10.\nM30\n");
+    let off = tmp("g55.toml", "[g55]\nx = 0.0\nz = -500.0\n");
+    let tp = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli/g55.jsonl");
+    let out = kerf()
+        .arg("run")
+        .arg(&p)
+        .args(["--machine", "puma-lathe", "--offsets"])
+        .arg(&off)
+        .arg("--toolpath")
+        .arg(&tp)
+        .output()
+        .unwrap();
+    assert_success(&out);
+    let line = std::fs::read_to_string(&tp).unwrap();
+    let v: serde_json::Value = serde_json::from_str(line.lines().next().unwrap()).unwrap();
+    assert_eq!(v["to"]["x"], 25.0);
+    assert_eq!(v["to"]["z"], 10.0);
+    assert_eq!(v["mto"]["z"], -490.0);
+}

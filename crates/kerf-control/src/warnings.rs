@@ -11,6 +11,7 @@
 //! | `KERF-W003` | an empty program |
 //! | `KERF-W004` | a per-revolution feed or thread with the spindle stopped (timed as 0 s) |
 //! | `KERF-W005` | a program that ends without M02/M30 |
+//! | `KERF-W006` | a main program that ends in M99 (a bar-feed loop): kerf ran `main_passes` passes, the control repeats until reset |
 
 use kerf_canon::{Canon, Event, Feed, SrcRef};
 use kerf_interp::{Interp, MachineKind};
@@ -130,7 +131,13 @@ impl Detector {
             return;
         }
         match self.end {
-            Some((2 | 30, _)) | Some((99, _)) => {}
+            Some((2 | 30, _)) => {}
+            Some((99, src)) => out.at(
+                it,
+                src,
+                "KERF-W006",
+                "the main program ends in M99: the control repeats it until reset; kerf ran the passes of --set main_passes (default 1)".into(),
+            ),
             Some((_, src)) => out.at(
                 it,
                 src,

@@ -20,7 +20,10 @@ const FRAME_TOL: f64 = 1e-7;
 /// Output is handed to the writer in pieces of about this many bytes.
 const FLUSH_AT: usize = 1 << 16;
 
-/// Writes events as G-code blocks.
+/// Writes events as G-code blocks: [`Expander::start`] once, then
+/// [`Expander::event`] for every event in order ([`Expander::alarm`] if
+/// the run stopped on one), then [`Expander::finish`], which writes the
+/// trailer and the last buffered blocks.
 pub struct Expander<W: Write> {
     w: W,
     sp: Spelling,

@@ -315,3 +315,32 @@ fn parameter_off_alarms() {
     );
     assert_eq!(alarm(&r), ("PS009", 2, 15));
 }
+
+/// R in the block with P and Q is read by no form of G71-G73 (it belongs
+/// to the 0-T first block): PS009 at the R, not ignored.
+#[test]
+fn r_in_the_p_q_block_alarms() {
+    let r = run_on(
+        PUMA,
+        "G00 X70. Z2.\nG71 P1 Q2 D2. R1. F0.3\nN1 G01 X60.\nN2 Z-10.\n",
+    );
+    assert_eq!(alarm(&r), ("PS009", 2, 15));
+}
+
+/// The first block `G74 R(e)` reads only R: a peck amount written there
+/// (without the end point, so no cycle runs) is PS009, not ignored.
+#[test]
+fn g74_first_block_reads_only_r() {
+    let r = run_on(PUMA, "G00 X60. Z1.\nG74 R0.5 Q2000\n");
+    assert_eq!(alarm(&r), ("PS009", 2, 10));
+    let r = run_on(PUMA, "G00 X60. Z1.\nG75 R0.5 K2.\n");
+    assert_eq!(alarm(&r), ("PS009", 2, 10));
+    // G71's first block reads U and R only, G72's W and R.
+    let r = run_on(PUMA, "G00 X60. Z1.\nG71 U2. R0.5 W1.\n");
+    assert_eq!(alarm(&r), ("PS009", 2, 14));
+    let r = run_on(PUMA, "G00 X60. Z1.\nG72 W2. R0.5 U1.\n");
+    assert_eq!(alarm(&r), ("PS009", 2, 14));
+    // The same for G76's first block (P Q R only).
+    let r = run_on(PUMA, "G00 X60. Z1.\nG76 P021060 Q100 D.5\n");
+    assert_eq!(alarm(&r), ("PS009", 2, 18));
+}

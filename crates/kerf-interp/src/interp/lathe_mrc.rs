@@ -66,8 +66,15 @@ impl Interp {
     /// The first block of G71/G72 (U or W: Δd, R: escape) or G73 (U, W:
     /// relief, R: divisions): modal data only.
     fn mrc_first_block(&mut self, code: u16) -> R<()> {
-        if let Some(w) = self.words.get(b'D') {
-            return Err(self.unused_word(b'D', w.at, "the one-block cycle with P and Q"));
+        // G71 reads U R, G72 W R, G73 U W R; nothing else is read here.
+        let unread: &[u8] = match code {
+            710 => b"WDIK",
+            720 => b"UDIK",
+            _ => b"DIK",
+        };
+        if let Some(&l) = unread.iter().find(|&&l| self.words.has(l)) {
+            let w = self.words.get(l).expect("present");
+            return Err(self.unused_word(l, w.at, "the cycle block with P and Q"));
         }
         match code {
             710 | 720 => {
@@ -223,6 +230,13 @@ impl Interp {
     /// checked with the block's addresses, interp/puma_words.rs).
     fn mrc_one_block_shape(&mut self, code: u16) -> R<()> {
         let one_block = self.tape_format_10_11();
+        if let Some(w) = self.words.get(b'R') {
+            return Err(self.unused_word(
+                b'R',
+                w.at,
+                "the first block of G71-G73 (without P and Q)",
+            ));
+        }
         for l in [b'I', b'K'] {
             if let Some(w) = self.words.get(l) {
                 if !(one_block && code == 730) {
@@ -468,6 +482,14 @@ impl Interp {
         };
         let has_end = [b'X', b'U', b'Z', b'W'].iter().any(|&l| self.words.has(l));
         if !has_end {
+            // The first block `G74 R(e)` reads only R.
+            if let Some(l) = [b'P', b'Q', b'I', b'K', b'D']
+                .into_iter()
+                .find(|&l| self.words.has(l))
+            {
+                let w = self.words.get(l).expect("present");
+                return Err(self.unused_word(l, w.at, "the block with the end point X/Z"));
+            }
             if let Some(w) = self.words.get(b'R') {
                 self.lathe.mrc.peck_escape = Some(self.linear(w).abs());
             }
@@ -686,6 +708,14 @@ impl Interp {
     fn mrc_thread(&mut self, at: u32) -> R<()> {
         let has_end = [b'X', b'U', b'Z', b'W'].iter().any(|&l| self.words.has(l));
         if !has_end {
+            // The first block `G76 P(m r a) Q(Δdmin) R(d)` reads only those.
+            if let Some(l) = [b'I', b'K', b'D', b'A']
+                .into_iter()
+                .find(|&l| self.words.has(l))
+            {
+                let w = self.words.get(l).expect("present");
+                return Err(self.unused_word(l, w.at, "the block with the end point X/Z"));
+            }
             if let Some(w) = self.words.get(b'P') {
                 if w.v < 0.0 || w.v.fract() != 0.0 || w.v > 999_999.0 || w.point {
                     return Err(self.alarm(

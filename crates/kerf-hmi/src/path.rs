@@ -1,0 +1,430 @@
+//! The backplot of the loaded program: the interpreter runs over the text
+//! once (no motion, no planner) on a background thread and the motions
+//! become points of a polyline, arcs cut into chords. Points are kept in
+//! the binary record the browser draws from directly (docs/hmi.md
+//! "Toolpath records"), and decimated so that at most [`MAX_POINTS`] are
+//! held whatever the size of the program.
+
+use std::io::Cursor;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use kerf_canon::{Canon, Event, Pos};
+use kerf_interp::{Interp, Profile, Settings, Step};
+
+/// Bytes per point record.
+pub const RECORD: usize = 20;
+/// Most points held; past it the path is decimated.
+pub const MAX_POINTS: usize = 2_000_000;
+/// Chord tolerance for arcs, mm.
+const CHORD_TOL: f64 = 0.005;
+/// Most blocks the trace runs (a program that loops for ever ends here).
+const MAX_BLOCKS: u64 = 50_000_000;
+/// Longest time the trace runs.
+const MAX_TIME: Duration = Duration::from_secs(120);
+
+/// Move kinds in a record.
+pub mod kind {
+    /// Rapid traverse.
+    pub const RAPID: u8 = 0;
+    /// Linear feed.
+    pub const FEED: u8 = 1;
+    /// Arc (chord of).
+    pub const ARC: u8 = 2;
+    /// Thread.
+    pub const THREAD: u8 = 3;
+    /// The start point.
+    pub const START: u8 = 255;
+}
+
+/// The points made so far, shared between the tracer and the senders.
+#[derive(Debug, Default)]
+pub struct PathStore {
+    /// Which trace this is (changes at every load and every decimation).
+    pub id: u32,
+    /// The records, `RECORD` bytes each.
+    pub bytes: Vec<u8>,
+    /// The trace ran to the program's end (or its limit).
+    pub done: bool,
+    /// Shortest distance kept between points of one run, mm (0 until the
+    /// path had to be decimated).
+    pub min_step: f64,
+    /// Why the trace ended early, if it did (an alarm, a limit).
+    pub note: Option<String>,
+}
+
+impl PathStore {
+    /// Number of points.
+    pub fn points(&self) -> usize {
+        self.bytes.len() / RECORD
+    }
+}
+
+/// A running trace: dropping it (or [`Trace::cancel`]) stops the thread.
+pub struct Trace {
+    stop: Arc<AtomicBool>,
+}
+
+impl Trace {
+    /// Stops the trace at the next block.
+    pub fn cancel(&self) {
+        self.stop.store(true, Ordering::Relaxed);
+    }
+}
+
+impl Drop for Trace {
+    fn drop(&mut self) {
+        self.cancel();
+    }
+}
+
+/// Starts tracing `text` on `profile` into `store` (its content replaced,
+/// `id` bumped).
+pub fn start(
+    profile: Profile,
+    libs: Vec<std::path::PathBuf>,
+    name: &str,
+    text: Arc<str>,
+    store: Arc<Mutex<PathStore>>,
+) -> Trace {
+    let stop = Arc::new(AtomicBool::new(false));
+    {
+        let mut s = lock(&store);
+        s.id = s.id.wrapping_add(1);
+        s.bytes.clear();
+        s.done = false;
+        s.min_step = 0.0;
+        s.note = None;
+    }
+    let flag = stop.clone();
+    let name = name.to_string();
+    std::thread::spawn(move || {
+        let settings = Settings {
+            max_blocks: MAX_BLOCKS,
+            ..Settings::default()
+        };
+        let mut it = Interp::new(profile, settings);
+        for d in libs {
+            it.add_lib_dir(d);
+        }
+        let bytes: Vec<u8> = text.as_bytes().to_vec();
+        it.load_main(&name, Box::new(Cursor::new(bytes)));
+        run(&mut it, &store, &flag);
+    });
+    Trace { stop }
+}
+
+fn lock(s: &Mutex<PathStore>) -> std::sync::MutexGuard<'_, PathStore> {
+    s.lock().unwrap_or_else(|p| p.into_inner())
+}
+
+/// Points are made in batches and published under the lock.
+fn run(it: &mut Interp, store: &Mutex<PathStore>, stop: &AtomicBool) {
+    let began = Instant::now();
+    let mut b = Builder::new(it.work_position());
+    let mut note = None;
+    let mut n = 0u64;
+    loop {
+        n += 1;
+        if n % 4096 == 0 {
+            if stop.load(Ordering::Relaxed) {
+                return;
+            }
+            if began.elapsed() > MAX_TIME {
+                note = Some(format!("trace stopped after {} s", MAX_TIME.as_secs()));
+                break;
+            }
+            b.publish(store);
+        }
+        match it.step() {
+            Step::Event(e) => b.event(&e),
+            Step::End => break,
+            Step::Alarm(a) => {
+                note = Some(format!(
+                    "alarm {} at line {}: {}",
+                    a.code, a.src.line, a.message
+                ));
+                break;
+            }
+        }
+    }
+    if stop.load(Ordering::Relaxed) {
+        return;
+    }
+    b.publish(store);
+    let mut s = lock(store);
+    s.done = true;
+    s.note = note;
+}
+
+/// Turns motions into records.
+struct Builder {
+    /// Records not yet published.
+    fresh: Vec<u8>,
+    last: [f32; 3],
+    last_kind: u8,
+    min_step: f64,
+    at: Pos,
+}
+
+impl Builder {
+    fn new(start: Pos) -> Builder {
+        let mut b = Builder {
+            fresh: Vec::with_capacity(1 << 16),
+            last: [f32::NAN; 3],
+            last_kind: kind::START,
+            min_step: 0.0,
+            at: start,
+        };
+        b.push(&start, 0, kind::START, 0, true);
+        b
+    }
+
+    fn event(&mut self, e: &Event) {
+        let line = e.src.line;
+        let tool = e.tool;
+        match &e.cmd {
+            Canon::Rapid { m, .. } => self.push(&m.to, line, kind::RAPID, tool, false),
+            Canon::Feed { m, .. } => self.push(&m.to, line, kind::FEED, tool, false),
+            Canon::Thread { m, .. } => self.push(&m.to, line, kind::THREAD, tool, false),
+            Canon::Arc {
+                m,
+                center,
+                dir,
+                plane,
+                turns,
+                ..
+            } => {
+                let from = self.at;
+                for p in arc_points(
+                    &from,
+                    &m.to,
+                    center,
+                    plane.axes(),
+                    *dir == kerf_canon::ArcDir::Ccw,
+                    *turns,
+                ) {
+                    self.push(&p, line, kind::ARC, tool, false);
+                }
+                self.push(&m.to, line, kind::ARC, tool, true);
+            }
+            _ => return,
+        }
+        if let Some(m) = e.motion() {
+            self.at = m.to;
+        }
+    }
+
+    /// Adds a point; a point closer than `min_step` to the last one of
+    /// the same kind is left out unless `keep`.
+    fn push(&mut self, p: &Pos, line: u32, k: u8, tool: u32, keep: bool) {
+        let q = [p[0] as f32, p[1] as f32, p[2] as f32];
+        if k == self.last_kind && !keep && self.min_step > 0.0 {
+            let d = (0..3)
+                .map(|i| (q[i] - self.last[i]) as f64)
+                .map(|v| v * v)
+                .sum::<f64>()
+                .sqrt();
+            if d < self.min_step {
+                return;
+            }
+        }
+        self.last = q;
+        self.last_kind = k;
+        for v in q {
+            self.fresh.extend_from_slice(&v.to_le_bytes());
+        }
+        self.fresh.extend_from_slice(&line.to_le_bytes());
+        self.fresh.push(k);
+        self.fresh.push(tool.min(255) as u8);
+        self.fresh.extend_from_slice(&[0, 0]);
+    }
+
+    /// Moves the fresh records into the store, decimating when full.
+    fn publish(&mut self, store: &Mutex<PathStore>) {
+        let mut s = lock(store);
+        s.bytes.extend_from_slice(&self.fresh);
+        self.fresh.clear();
+        while s.points() > MAX_POINTS {
+            self.min_step = if self.min_step == 0.0 {
+                0.05
+            } else {
+                self.min_step * 2.0
+            };
+            let kept = decimate(&s.bytes, self.min_step);
+            s.bytes = kept;
+            s.min_step = self.min_step;
+            s.id = s.id.wrapping_add(1);
+        }
+    }
+}
+
+/// Keeps the points at least `step` from the last kept point of the same
+/// run of one kind, and every point where the kind changes.
+pub fn decimate(bytes: &[u8], step: f64) -> Vec<u8> {
+    let mut out = Vec::with_capacity(bytes.len() / 2);
+    let mut last: Option<([f32; 3], u8)> = None;
+    let n = bytes.len() / RECORD;
+    for i in 0..n {
+        let r = &bytes[i * RECORD..(i + 1) * RECORD];
+        let p = record_point(r);
+        let k = r[16];
+        let next_kind = (i + 1 < n).then(|| bytes[(i + 1) * RECORD + 16]);
+        let keep = match last {
+            None => true,
+            Some((q, lk)) => {
+                lk != k
+                    || next_kind != Some(k)
+                    || (0..3)
+                        .map(|j| ((p[j] - q[j]) as f64).powi(2))
+                        .sum::<f64>()
+                        .sqrt()
+                        >= step
+            }
+        };
+        if keep {
+            out.extend_from_slice(r);
+            last = Some((p, k));
+        }
+    }
+    out
+}
+
+/// The x, y, z of one record.
+pub fn record_point(r: &[u8]) -> [f32; 3] {
+    let f = |o: usize| f32::from_le_bytes([r[o], r[o + 1], r[o + 2], r[o + 3]]);
+    [f(0), f(4), f(8)]
+}
+
+/// Interior chord points of an arc (the end point not included), so that
+/// no chord is further than `CHORD_TOL` from the circle; at most 720 per
+/// turn.
+fn arc_points(
+    from: &Pos,
+    to: &Pos,
+    c: &Pos,
+    (a, b, n): (usize, usize, usize),
+    ccw: bool,
+    turns: u32,
+) -> Vec<Pos> {
+    let s = (from[a], from[b]);
+    let e = (to[a], to[b]);
+    let cc = (c[a], c[b]);
+    let r = (s.0 - cc.0).hypot(s.1 - cc.1);
+    let sweep =
+        kerf_canon::geom::sweep(s, e, cc, ccw) + std::f64::consts::TAU * turns.min(1000) as f64;
+    if !(r > 1e-9) || !sweep.is_finite() {
+        return Vec::new();
+    }
+    let step = if r > CHORD_TOL {
+        (2.0 * (1.0 - CHORD_TOL / r).acos()).max(std::f64::consts::TAU / 720.0)
+    } else {
+        std::f64::consts::FRAC_PI_2
+    };
+    let count = ((sweep / step).ceil() as usize).clamp(1, 720 * 1001);
+    let a0 = (s.1 - cc.1).atan2(s.0 - cc.0);
+    let sign = if ccw { 1.0 } else { -1.0 };
+    let mut out = Vec::with_capacity(count.saturating_sub(1));
+    for i in 1..count {
+        let f = i as f64 / count as f64;
+        let ang = a0 + sign * sweep * f;
+        let mut p = *from;
+        for k in 0..p.len() {
+            p[k] = from[k] + (to[k] - from[k]) * f;
+        }
+        p[a] = cc.0 + r * ang.cos();
+        p[b] = cc.1 + r * ang.sin();
+        p[n] = from[n] + (to[n] - from[n]) * f;
+        out.push(p);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn trace(machine: &str, text: &str) -> PathStore {
+        let store = Arc::new(Mutex::new(PathStore::default()));
+        let p = Profile::builtin(machine).unwrap();
+        let _t = start(p, vec![], "t.nc", text.into(), store.clone());
+        let began = Instant::now();
+        while !lock(&store).done {
+            assert!(began.elapsed() < Duration::from_secs(20), "trace hangs");
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        Arc::try_unwrap(store)
+            .map(|m| m.into_inner().unwrap())
+            .unwrap_or_else(|a| std::mem::take(&mut *lock(&a)))
+    }
+
+    fn points(s: &PathStore) -> Vec<([f32; 3], u32, u8)> {
+        s.bytes
+            .chunks(RECORD)
+            .map(|r| {
+                let line = u32::from_le_bytes([r[12], r[13], r[14], r[15]]);
+                (record_point(r), line, r[16])
+            })
+            .collect()
+    }
+
+    #[test]
+    fn lines_and_a_quarter_arc_become_points_on_the_circle() {
+        // G54 is the profile's; positions are work coordinates.
+        let s = trace(
+            "hx-mc",
+            "G90 G17 G54 G00 X10. Y0 Z5.\nG01 X20. F500.\nG03 X10. Y10. I-10. J0\nM30\n",
+        );
+        let p = points(&s);
+        assert_eq!(p[0].2, kind::START);
+        assert_eq!((p[1].0, p[1].1, p[1].2), ([10.0, 0.0, 5.0], 1, kind::RAPID));
+        assert_eq!((p[2].0, p[2].1, p[2].2), ([20.0, 0.0, 5.0], 2, kind::FEED));
+        let arc: Vec<_> = p[3..].iter().filter(|q| q.2 == kind::ARC).collect();
+        // r = 10, tol 0.005: step = 2 acos(1 - 0.0005) = 0.06325 rad; a
+        // quarter turn (1.5708 rad) needs ceil(24.8) = 25 chords.
+        assert_eq!(arc.len(), 25);
+        for q in &arc {
+            let r = ((q.0[0] - 10.0).powi(2) + q.0[1].powi(2)).sqrt();
+            assert!((r - 10.0).abs() < 1e-4, "{q:?} off the circle");
+            assert_eq!(q.1, 3);
+        }
+        assert_eq!(arc.last().unwrap().0, [10.0, 10.0, 5.0]);
+        assert!(s.note.is_none());
+    }
+
+    #[test]
+    fn an_alarm_ends_the_trace_with_its_line() {
+        let s = trace("hx-mc", "G00 X1.\nG01 X2.\nM30\n");
+        // G01 without any F is F_82011-type alarm on the HX: the trace
+        // keeps what came before and names the line.
+        let note = s.note.clone().unwrap_or_default();
+        assert!(note.contains("line 2"), "{note}");
+        assert_eq!(points(&s).len(), 2);
+    }
+
+    #[test]
+    fn decimation_keeps_kind_changes_and_run_ends() {
+        let mut b = Builder::new([0.0; 6]);
+        for i in 1..=100 {
+            b.push(
+                &[i as f64 * 0.01, 0.0, 0.0, 0.0, 0.0, 0.0],
+                1,
+                kind::FEED,
+                1,
+                false,
+            );
+        }
+        b.push(&[1.0, 5.0, 0.0, 0.0, 0.0, 0.0], 2, kind::RAPID, 1, false);
+        let all = b.fresh.clone();
+        let kept = decimate(&all, 0.1);
+        let pts: Vec<_> = kept.chunks(RECORD).map(record_point).collect();
+        // start, the first feed point (kind change), every 0.1 mm (ten
+        // steps of 0.01 each), the last feed point, the rapid.
+        assert_eq!(pts.first().unwrap(), &[0.0, 0.0, 0.0]);
+        assert_eq!(pts[1], [0.01, 0.0, 0.0]);
+        assert!(pts.contains(&[1.0, 0.0, 0.0]));
+        assert_eq!(pts.last().unwrap(), &[1.0, 5.0, 0.0]);
+        assert!(pts.len() <= 14, "{} points kept", pts.len());
+    }
+}

@@ -1,0 +1,288 @@
+//! The server's shared state and the clock: the runtime behind one lock,
+//! the loaded program's text, the backplot, and the ticker that advances
+//! machine time and publishes the state once per tick for every client.
+
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex, MutexGuard, Weak};
+use std::time::{Duration, Instant};
+
+use kerf_interp::Profile;
+use tokio::sync::watch;
+
+use crate::control::Control;
+use crate::path::{PathStore, Trace};
+use crate::state::State;
+
+/// Period of the ticker: 50 Hz.
+pub const TICK: Duration = Duration::from_millis(20);
+
+/// The loaded program's text with its line starts (for the PROG page).
+pub struct Program {
+    /// Name it was loaded under.
+    pub name: String,
+    /// The text.
+    pub text: Arc<str>,
+    /// Byte offset of each line's start.
+    pub lines: Vec<usize>,
+}
+
+impl Program {
+    /// Indexes `text`.
+    pub fn new(name: &str, text: Arc<str>) -> Program {
+        let mut lines = vec![0];
+        lines.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        if lines.last() == Some(&text.len()) && text.len() > 0 {
+            lines.pop();
+        }
+        Program {
+            name: name.to_string(),
+            text,
+            lines,
+        }
+    }
+
+    /// Line `n` (1-based) without its line end.
+    pub fn line(&self, n: usize) -> Option<&str> {
+        let start = *self.lines.get(n.checked_sub(1)?)?;
+        let end = self.lines.get(n).copied().unwrap_or(self.text.len());
+        Some(self.text[start..end].trim_end_matches(['\n', '\r']))
+    }
+
+    /// Number of lines.
+    pub fn count(&self) -> usize {
+        if self.text.is_empty() {
+            0
+        } else {
+            self.lines.len()
+        }
+    }
+}
+
+/// One published state: the value and its JSON, made once per tick.
+pub struct Frame {
+    /// The state.
+    pub state: State,
+    /// `state` as JSON text with `"type":"state"`, shared by every client
+    /// (cloning it copies no bytes).
+    pub json: axum::extract::ws::Utf8Bytes,
+}
+
+type Job = Box<dyn FnOnce(&mut dyn Control) + Send>;
+
+/// Makes the controller on its own thread.
+pub type MakeControl = Box<dyn FnOnce() -> Result<Box<dyn Control>, String> + Send>;
+
+/// What every handler shares.
+pub struct Shared {
+    jobs: Mutex<std::sync::mpsc::Sender<Job>>,
+    /// The machine profile (for the backplot and `/api/machine`).
+    pub profile: Profile,
+    /// Library folders.
+    pub libs: Vec<PathBuf>,
+    /// The loaded program.
+    pub program: Mutex<Option<Arc<Program>>>,
+    /// The backplot.
+    pub path: Arc<Mutex<PathStore>>,
+    trace: Mutex<Option<Trace>>,
+    /// The newest state.
+    pub frames: watch::Sender<Arc<Frame>>,
+    /// Token needed for state-changing requests (None on loopback).
+    pub token: Option<String>,
+    /// Machine time per wall-clock second.
+    pub rate: f64,
+}
+
+fn lock<T: ?Sized>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|p| p.into_inner())
+}
+
+impl Shared {
+    /// Starts the controller made by `make` on a thread of its own.
+    pub fn new(
+        make: MakeControl,
+        profile: Profile,
+        libs: Vec<PathBuf>,
+        token: Option<String>,
+        rate: f64,
+    ) -> Result<Arc<Shared>, String> {
+        let (jobs, rx) = std::sync::mpsc::channel::<Job>();
+        let (ready_tx, ready_rx) = std::sync::mpsc::channel();
+        let (weak_tx, weak_rx) = std::sync::mpsc::channel::<Weak<Shared>>();
+        std::thread::Builder::new()
+            .name("kerf-control".into())
+            .spawn(move || {
+                let c = match make() {
+                    Ok(c) => c,
+                    Err(e) => {
+                        let _ = ready_tx.send(Err(e));
+                        return;
+                    }
+                };
+                let _ = ready_tx.send(Ok(c.state()));
+                if let Ok(weak) = weak_rx.recv() {
+                    control_loop(c, rx, weak, rate);
+                }
+            })
+            .map_err(|e| format!("controller thread: {e}"))?;
+        let state = ready_rx
+            .recv()
+            .map_err(|_| "the controller did not start".to_string())??;
+        let frame = make_frame(state, &PathStore::default());
+        let (tx, _) = watch::channel(Arc::new(frame));
+        let shared = Arc::new(Shared {
+            jobs: Mutex::new(jobs),
+            profile,
+            libs,
+            program: Mutex::new(None),
+            path: Arc::new(Mutex::new(PathStore::default())),
+            trace: Mutex::new(None),
+            frames: tx,
+            token,
+            rate,
+        });
+        let _ = weak_tx.send(Arc::downgrade(&shared));
+        Ok(shared)
+    }
+
+    /// Runs `f` on the controller's thread and waits for its answer.
+    pub fn with<R: Send + 'static>(
+        &self,
+        f: impl FnOnce(&mut dyn Control) -> R + Send + 'static,
+    ) -> Result<R, crate::error::ApiError> {
+        let (tx, rx) = std::sync::mpsc::sync_channel(1);
+        let job: Job = Box::new(move |c| {
+            let _ = tx.send(f(c));
+        });
+        lock(&self.jobs)
+            .send(job)
+            .map_err(|_| crate::error::ApiError::internal("the controller has stopped"))?;
+        rx.recv()
+            .map_err(|_| crate::error::ApiError::internal("the controller failed on this request"))
+    }
+
+    /// Loads a program: into the runtime, then the PROG text and the
+    /// backplot.
+    pub fn load(&self, name: &str, text: String) -> Result<Arc<Program>, crate::error::ApiError> {
+        let text: Arc<str> = text.into();
+        let (n, t) = (name.to_string(), text.clone());
+        self.with(move |c| c.load(&n, &t))??;
+        let prog = Arc::new(Program::new(name, text.clone()));
+        *lock(&self.program) = Some(prog.clone());
+        let t = crate::path::start(
+            self.profile.clone(),
+            self.libs.clone(),
+            name,
+            text,
+            self.path.clone(),
+        );
+        *lock(&self.trace) = Some(t);
+        self.publish();
+        Ok(prog)
+    }
+
+    /// The loaded program.
+    pub fn program(&self) -> Option<Arc<Program>> {
+        lock(&self.program).clone()
+    }
+
+    /// Fills an alarm's block text from the loaded program when it came
+    /// from the main program and the runtime left it empty.
+    pub fn fill_block(&self, a: &mut crate::state::AlarmInfo) {
+        if !a.block.is_empty() || a.line == 0 {
+            return;
+        }
+        if let Some(p) = self.program() {
+            if a.file == p.name || a.file.is_empty() {
+                if let Some(l) = p.line(a.line as usize) {
+                    a.block = l.chars().take(512).collect();
+                }
+            }
+        }
+    }
+
+    /// Publishes the state now (after a command, so clients see it at once).
+    pub fn publish(&self) {
+        let Ok(state) = self.with(|c| c.state()) else {
+            return;
+        };
+        self.publish_state(state);
+    }
+
+    /// Publishes a state just read from the controller.
+    pub fn publish_state(&self, mut state: State) {
+        if let Some(a) = state.alarm.as_mut() {
+            self.fill_block(a);
+        }
+        let path = lock(&self.path);
+        let frame = make_frame(state, &path);
+        drop(path);
+        self.frames.send_if_modified(|old| {
+            if old.json == frame.json {
+                return false;
+            }
+            *old = Arc::new(frame);
+            true
+        });
+    }
+}
+
+fn make_frame(mut state: State, path: &PathStore) -> Frame {
+    state.path = crate::state::PathInfo {
+        id: path.id,
+        points: path.points() as u32,
+        done: path.done,
+        note: path.note.clone(),
+    };
+    let mut v = serde_json::to_value(&state).unwrap_or_default();
+    if let Some(o) = v.as_object_mut() {
+        o.insert("type".into(), "state".into());
+    }
+    Frame {
+        json: v.to_string().into(),
+        state,
+    }
+}
+
+/// The controller's thread: jobs as they come and, every [`TICK`], the
+/// clock advanced by the wall time that passed × `rate` and the state
+/// published (one wake-up per tick, nothing else in between). Ends when
+/// the server is dropped.
+fn control_loop(
+    mut c: Box<dyn Control>,
+    rx: std::sync::mpsc::Receiver<Job>,
+    weak: Weak<Shared>,
+    rate: f64,
+) {
+    use std::sync::mpsc::RecvTimeoutError;
+    let mut last = Instant::now();
+    let mut next = last + TICK;
+    loop {
+        match rx.recv_timeout(next.saturating_duration_since(Instant::now())) {
+            // A job that panics loses its answer (the caller gets an
+            // error); the controller goes on.
+            Ok(job) => {
+                let c = &mut *c;
+                let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(c)));
+            }
+            Err(RecvTimeoutError::Timeout) => {
+                let now = Instant::now();
+                // A stalled process (suspended, starved) does not jump the machine.
+                let wall = now.duration_since(last).as_secs_f64().min(0.25);
+                last = now;
+                next += TICK;
+                if next < now {
+                    next = now + TICK;
+                }
+                let state = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                    c.advance(wall * rate);
+                    c.state()
+                }));
+                let Some(shared) = weak.upgrade() else { break };
+                if let Ok(state) = state {
+                    shared.publish_state(state);
+                }
+            }
+            Err(RecvTimeoutError::Disconnected) => break,
+        }
+    }
+}

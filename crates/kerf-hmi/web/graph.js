@@ -1,0 +1,275 @@
+// GRAPH: the backplot in three.js. The server sends the planned path as
+// binary point records (docs/hmi.md "Toolpath records"); they go straight
+// into typed arrays of one line strip (a point repeated where the colour
+// changes, so each segment has one colour). Orthographic camera with
+// OrbitControls: orbit, pan, zoom; TOP/FRONT/SIDE/ISO views per machine.
+import * as THREE from 'three';
+import { OrbitControls } from './vendor/OrbitControls.js';
+
+const RECORD = 20;
+const KIND_COLOURS = {
+  0: [0xe0, 0x50, 0x50], // rapid
+  1: [0x40, 0xd0, 0xff], // feed
+  2: [0x60, 0xff, 0x80], // arc
+  3: [0xff, 0xd0, 0x40], // thread
+  255: [0x80, 0x80, 0x80], // start
+};
+const TOOL_PALETTE = [
+  [0xff, 0x70, 0x70], [0x70, 0xc0, 0xff], [0x90, 0xff, 0x70], [0xff, 0xd0, 0x50],
+  [0xd0, 0x80, 0xff], [0x50, 0xff, 0xe0], [0xff, 0x90, 0x30], [0xff, 0x70, 0xd0],
+];
+
+export class Graph {
+  constructor(el, machine, info) {
+    this.el = el;
+    this.machine = machine;
+    this.info = info;
+    this.lathe = machine.kind === 'lathe';
+    this.byTool = false;
+    this.pathId = -1;
+    this.n = 0; // vertices used
+    this.points = 0; // records received
+    this.cap = 0;
+    this.kinds = null; // kind per vertex (for recolouring)
+    this.tools = null;
+    this.box = new THREE.Box3(); // every point but the start
+    this.cutBox = new THREE.Box3(); // feeds, arcs, threads
+    this.frames = 0;
+    this.frameTimes = [];
+    this.firstFrameAt = null;
+
+    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(Math.min(devicePixelRatio, 2));
+    el.append(this.renderer.domElement);
+    this.scene = new THREE.Scene();
+    this.scene.background = new THREE.Color(machine.style === 'hurco' ? 0xf4f6f9 : 0x05070a);
+    this.camera = new THREE.OrthographicCamera(-100, 100, 100, -100, -1e6, 1e6);
+    this.controls = null;
+
+    this.material = new THREE.LineBasicMaterial({ vertexColors: true });
+    this.line = null;
+    this.grow(1 << 14);
+
+    this.axes = new THREE.AxesHelper(20);
+    this.scene.add(this.axes);
+    this.tool = this.makeTool();
+    this.scene.add(this.tool);
+
+    new ResizeObserver(() => this.resize()).observe(el);
+    for (const b of document.querySelectorAll('[data-view]')) b.onclick = () => this.view(b.dataset.view);
+    const byTool = document.getElementById('graph-by-tool');
+    byTool.onchange = () => { this.byTool = byTool.checked; this.recolour(); };
+    this.resize();
+    this.view(this.lathe ? 'front' : 'iso');
+  }
+
+  makeTool() {
+    const g = new THREE.ConeGeometry(2, 8, 16);
+    // Tip at the origin, pointing along -Z (mill) or -X (lathe insert).
+    g.translate(0, 4, 0);
+    if (this.lathe) g.rotateZ(Math.PI / 2);
+    else g.rotateX(Math.PI / 2);
+    const m = new THREE.Mesh(g, new THREE.MeshBasicMaterial({ color: 0xffffff, transparent: true, opacity: 0.85 }));
+    m.renderOrder = 2;
+    return m;
+  }
+
+  /** Makes room for `need` vertices (keeping those drawn). */
+  grow(need) {
+    if (need <= this.cap) return;
+    let cap = Math.max(this.cap * 2, 1 << 14);
+    while (cap < need) cap *= 2;
+    const pos = new Float32Array(cap * 3);
+    const col = new Uint8Array(cap * 3);
+    const kinds = new Uint8Array(cap);
+    const tools = new Uint8Array(cap);
+    if (this.line) {
+      pos.set(this.line.geometry.attributes.position.array.subarray(0, this.n * 3));
+      col.set(this.line.geometry.attributes.color.array.subarray(0, this.n * 3));
+      kinds.set(this.kinds.subarray(0, this.n));
+      tools.set(this.tools.subarray(0, this.n));
+      this.scene.remove(this.line);
+      this.line.geometry.dispose();
+    }
+    const geo = new THREE.BufferGeometry();
+    geo.setAttribute('position', new THREE.BufferAttribute(pos, 3));
+    geo.setAttribute('color', new THREE.BufferAttribute(col, 3, true));
+    geo.setDrawRange(0, this.n);
+    this.line = new THREE.Line(geo, this.material);
+    this.line.frustumCulled = false;
+    this.scene.add(this.line);
+    this.cap = cap;
+    this.kinds = kinds;
+    this.tools = tools;
+  }
+
+  colour(kind, tool) {
+    return this.byTool ? TOOL_PALETTE[tool % TOOL_PALETTE.length] : (KIND_COLOURS[kind] || KIND_COLOURS[1]);
+  }
+
+  clear(id) {
+    this.pathId = id;
+    this.n = 0;
+    this.points = 0;
+    this.box.makeEmpty();
+    this.cutBox.makeEmpty();
+    this.fitted = false;
+    this.line.geometry.setDrawRange(0, 0);
+  }
+
+  /** One binary message: 16-byte header, then records. */
+  records(buf) {
+    const dv = new DataView(buf);
+    const id = dv.getUint32(0, true), first = dv.getUint32(4, true), count = dv.getUint32(8, true);
+    if (id !== this.pathId) this.clear(id);
+    if (first !== this.points) return; // out of order: the next state resends
+    this.grow(this.n + count * 2 + 2);
+    const pos = this.line.geometry.attributes.position.array;
+    const col = this.line.geometry.attributes.color.array;
+    const start = this.n;
+    let lastKind = this.n ? this.kinds[this.n - 1] : -1;
+    let lastTool = this.n ? this.tools[this.n - 1] : -1;
+    for (let i = 0; i < count; i++) {
+      const o = 16 + i * RECORD;
+      const x = dv.getFloat32(o, true), y = dv.getFloat32(o + 4, true), z = dv.getFloat32(o + 8, true);
+      const kind = dv.getUint8(o + 16), tool = dv.getUint8(o + 17);
+      if (this.n > 0 && (kind !== lastKind || tool !== lastTool)) {
+        // Repeat the previous point in the new colour: the segment to
+        // this point is drawn in one colour.
+        const p = (this.n - 1) * 3;
+        this.put(pos, col, pos[p], pos[p + 1], pos[p + 2], kind, tool);
+      }
+      this.put(pos, col, x, y, z, kind, tool);
+      if (kind !== 255) {
+        const v = new THREE.Vector3(x, y, z);
+        this.box.expandByPoint(v);
+        if (kind !== 0) {
+          // A cut runs from the point before it.
+          this.cutBox.expandByPoint(v);
+          if (this.n > 1) {
+            const p = (this.n - 2) * 3;
+            this.cutBox.expandByPoint(new THREE.Vector3(pos[p], pos[p + 1], pos[p + 2]));
+          }
+        }
+      }
+      lastKind = kind;
+      lastTool = tool;
+    }
+    this.points += count;
+    const g = this.line.geometry;
+    g.attributes.position.addUpdateRange(start * 3, (this.n - start) * 3);
+    g.attributes.color.addUpdateRange(start * 3, (this.n - start) * 3);
+    g.attributes.position.needsUpdate = true;
+    g.attributes.color.needsUpdate = true;
+    g.setDrawRange(0, this.n);
+    // Frame the first points at once and the whole path when it is complete.
+    const done = dv.getUint32(12, true) === 1;
+    if ((!this.fitted || done) && this.n > 1) this.view(this.lastView || (this.lathe ? 'front' : 'iso'));
+    this.done = done;
+    this.render();
+  }
+
+  put(pos, col, x, y, z, kind, tool) {
+    const i = this.n * 3;
+    pos[i] = x; pos[i + 1] = y; pos[i + 2] = z;
+    const c = this.colour(kind, tool);
+    col[i] = c[0]; col[i + 1] = c[1]; col[i + 2] = c[2];
+    this.kinds[this.n] = kind;
+    this.tools[this.n] = tool;
+    this.n++;
+  }
+
+  recolour() {
+    const col = this.line.geometry.attributes.color.array;
+    for (let i = 0; i < this.n; i++) {
+      const c = this.colour(this.kinds[i], this.tools[i]);
+      col.set(c, i * 3);
+    }
+    this.line.geometry.attributes.color.clearUpdateRanges();
+    this.line.geometry.attributes.color.needsUpdate = true;
+    this.render();
+  }
+
+  /** The newest machine state: the tool's live position. */
+  state(s, shown) {
+    const w = s.position.work;
+    this.tool.position.set(w.X || 0, w.Y || 0, w.Z || 0);
+    if (this.info) {
+      this.info.textContent = `${this.points} PTS${s.path.done ? '' : ' …'}${s.path.note ? ` (${s.path.note})` : ''}  X${(w.X || 0).toFixed(3)} ${this.lathe ? '' : `Y${(w.Y || 0).toFixed(3)} `}Z${(w.Z || 0).toFixed(3)}`;
+    }
+    if (shown) this.render();
+  }
+
+  visible() {
+    this.resize();
+  }
+
+  resize() {
+    const w = this.el.clientWidth || 1, h = this.el.clientHeight || 1;
+    this.renderer.setSize(w, h, false);
+    this.aspect = w / h;
+    this.frameCamera();
+    this.render();
+  }
+
+  frameCamera() {
+    const half = this.half || 100;
+    this.camera.left = -half * this.aspect;
+    this.camera.right = half * this.aspect;
+    this.camera.top = half;
+    this.camera.bottom = -half;
+    this.camera.updateProjectionMatrix();
+  }
+
+  /** top | front | side | iso | fit */
+  view(name) {
+    if (name !== 'fit') this.lastView = name;
+    // Frame the cutting moves (rapids to and from the reference point
+    // would shrink the part to a dot); all moves when nothing cuts.
+    const box = !this.cutBox.isEmpty() ? this.cutBox
+      : !this.box.isEmpty() ? this.box
+        : new THREE.Box3(new THREE.Vector3(-50, -50, -50), new THREE.Vector3(50, 50, 50));
+    const centre = box.getCenter(new THREE.Vector3());
+    const size = box.getSize(new THREE.Vector3());
+    const radius = Math.max(size.length() / 2, 1);
+    const v = this.lastView || 'iso';
+    // Direction from the target to the camera and the screen's up.
+    const dirs = this.lathe
+      ? { front: [[0, 1, 0], [1, 0, 0]], top: [[1, 0, 0], [0, -1, 0]], side: [[0, 0, 1], [1, 0, 0]], iso: [[0.6, 0.6, 0.5], [1, 0, 0]] }
+      : { top: [[0, 0, 1], [0, 1, 0]], front: [[0, -1, 0], [0, 0, 1]], side: [[1, 0, 0], [0, 0, 1]], iso: [[1, -1, 1], [0, 0, 1]] };
+    const [d, up] = dirs[v] || dirs.iso;
+    const dir = new THREE.Vector3(...d).normalize();
+    this.camera.up.set(...up);
+    this.camera.position.copy(centre).addScaledVector(dir, radius * 4);
+    this.half = radius * 1.1;
+    this.camera.zoom = 1;
+    this.frameCamera();
+    this.camera.lookAt(centre);
+    // OrbitControls takes the camera's up when it is made: a new one per
+    // view, so orbiting turns about that view's up axis.
+    if (this.controls) this.controls.dispose();
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.enableDamping = false;
+    this.controls.screenSpacePanning = true;
+    this.controls.target.copy(centre);
+    this.controls.addEventListener('change', () => this.render());
+    this.controls.update();
+    this.axes.scale.setScalar(Math.max(radius / 5, 1) / 20);
+    this.tool.scale.setScalar(Math.max(radius / 40, 0.5));
+    this.fitted = !this.box.isEmpty();
+    this.render();
+  }
+
+  render() {
+    if (this.pending) return;
+    this.pending = true;
+    requestAnimationFrame((t) => {
+      this.pending = false;
+      this.renderer.render(this.scene, this.camera);
+      this.frames++;
+      if (this.n > 1 && this.firstFrameAt === null) this.firstFrameAt = performance.now();
+      this.frameTimes.push(t);
+      if (this.frameTimes.length > 120) this.frameTimes.shift();
+    });
+  }
+}

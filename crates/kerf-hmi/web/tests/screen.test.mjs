@@ -1,0 +1,286 @@
+// The operator screen in a real browser (Debian's chromium through
+// playwright-core) against `kerf serve` running the real runtime:
+// load, cycle start, the position and the current block, single block,
+// feed hold mid-move (the shown position equals the API's), reset, MDI,
+// an offset kept across a restart of the server, an alarm with its line,
+// the GRAPH drawn; click-to-repaint latency; a screenshot of every page.
+//
+//   KERF=target/debug/kerf node --test crates/kerf-hmi/web/tests/
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdtempSync, mkdirSync, writeFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, dirname } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { launch, serve } from './browser.mjs';
+
+const here = dirname(fileURLToPath(import.meta.url));
+const shots = join(here, '..', 'screenshots');
+mkdirSync(shots, { recursive: true });
+const work = mkdtempSync(join(tmpdir(), 'kerf-hmi-test-'));
+const stateDir = join(work, 'state');
+
+// 100 mm at F300 is 20 s: long enough to hold mid-move.
+const LONG = 'O1\nG90 G17 G21 G54\nG00 X0. Y0. Z10.\nG01 Z-1. F600.\nG01 X100. F300.\nG01 Y50.\nG00 Z10.\nM30\n';
+// Line 3 cuts with no F: alarm F_84020 at 3:1.
+const ALARM = 'O2\nG90 G00 X0. Y0.\nG01 X10.\nM30\n';
+writeFileSync(join(work, 'long.nc'), LONG);
+writeFileSync(join(work, 'alarm.nc'), ALARM);
+
+let server, ctx, page;
+
+async function api(path, init) {
+  const r = await fetch(new URL(path, server.url), init);
+  return r.json();
+}
+const cmd = (body) => api('/api/command', { method: 'POST', body: JSON.stringify(body) });
+
+async function until(what, f, ms = 15000) {
+  const t0 = Date.now();
+  for (;;) {
+    const v = await f();
+    if (v) return v;
+    if (Date.now() - t0 > ms) throw new Error(`timed out waiting for ${what}`);
+    await new Promise((r) => setTimeout(r, 50));
+  }
+}
+
+const shown = (id) => page.$eval(`#${id}`, (e) => e.textContent);
+const pageState = () => page.evaluate(() => window.kerf.state);
+const shot = (name) => page.screenshot({ path: join(shots, `${name}.png`) });
+
+async function open(url) {
+  page = await ctx.newPage();
+  page.on('pageerror', (e) => { throw e; });
+  await page.goto(url);
+  await page.waitForFunction(() => window.kerf && window.kerf.state);
+}
+
+before(async () => {
+  server = await serve(['--machine', 'hx-mc', '--state', stateDir]);
+  ctx = await launch();
+  await open(server.url);
+});
+
+after(async () => {
+  if (ctx) await ctx.cleanup();
+  if (server) await server.stop();
+  rmSync(work, { recursive: true, force: true });
+});
+
+test('a program loaded from the PROG page is listed', async () => {
+  await page.click('[data-show=prog]');
+  await page.setInputFiles('#prog-file', join(work, 'long.nc'));
+  await until('the listing', async () => (await page.$$('#prog-list li')).length === 8);
+  assert.equal(await shown('prog-total'), '8 LINES');
+  assert.equal(await page.$eval('#prog-list li[data-n="5"]', (e) => e.textContent), 'G01 X100. F300.');
+  const s = await api('/api/state');
+  assert.equal(s.program.name, 'long.nc');
+});
+
+test('cycle start moves the tool and highlights the block', async () => {
+  await page.click('[data-mode=MEM]');
+  await page.click('[data-show=pos]');
+  await page.click('#cycle-start');
+  await until('ACTIVE', async () => (await pageState()).execution === 'ACTIVE');
+  await until('the long feed', async () => (await pageState()).program.line === 5);
+  const x1 = Number(await shown('pos-work-X'));
+  await page.waitForTimeout(600);
+  const x2 = Number(await shown('pos-work-X'));
+  // F300 is 5 mm/s: 0.6 s moves about 3 mm.
+  assert.ok(x2 > x1 + 1, `X did not move on the screen: ${x1} → ${x2}`);
+  await shot('pos-running');
+  await page.click('[data-show=prog]');
+  await until('the highlighted block', async () => {
+    const cur = await page.$('#prog-list li.current');
+    return cur && (await cur.textContent()) === 'G01 X100. F300.';
+  });
+  assert.equal(await page.$eval('#prog-list li.current', (e) => e.dataset.n), '5');
+  await shot('prog-running');
+});
+
+test('feed hold stops mid-move and the screen shows the API position', async () => {
+  await page.click('#feed-hold');
+  await until('FEED_HOLD', async () => (await api('/api/state')).execution === 'FEED_HOLD');
+  // Stopped: two reads 300 ms apart agree.
+  const a = await api('/api/state');
+  await page.waitForTimeout(300);
+  const b = await api('/api/state');
+  assert.equal(a.position.work.X, b.position.work.X);
+  assert.ok(b.position.work.X > 0 && b.position.work.X < 100, `not mid-move: X${b.position.work.X}`);
+  await page.click('[data-show=pos]');
+  await until('the screen to settle', async () => (await pageState()).execution === 'FEED_HOLD');
+  await page.waitForTimeout(100);
+  for (const ax of ['X', 'Y', 'Z']) {
+    assert.equal(await shown(`pos-work-${ax}`), b.position.work[ax].toFixed(3), `ABSOLUTE ${ax}`);
+    assert.equal(await shown(`pos-machine-${ax}`), b.position.machine[ax].toFixed(3), `MACHINE ${ax}`);
+  }
+  assert.equal(await shown('st-exec'), 'FEED HOLD');
+  await shot('pos-feed-hold');
+  // Resume, then RESET stops everything.
+  await page.click('#cycle-start');
+  await until('ACTIVE again', async () => (await api('/api/state')).execution === 'ACTIVE');
+  const x3 = (await api('/api/state')).position.work.X;
+  await page.waitForTimeout(400);
+  assert.ok((await api('/api/state')).position.work.X > x3, 'resume did not move');
+  await page.click('#reset');
+  await until('READY after reset', async () => (await api('/api/state')).execution === 'READY');
+});
+
+test('single block stops after one block', async () => {
+  await cmd({ cmd: 'override', rapid: 100 });
+  await page.click('[data-switch=single_block]');
+  await until('the switch lit', async () => page.$eval('[data-switch=single_block]', (e) => e.classList.contains('on')));
+  await page.click('#cycle-start');
+  await until('INTERRUPTED', async () => (await api('/api/state')).execution === 'INTERRUPTED', 20000);
+  const s = await api('/api/state');
+  assert.ok(s.program.line >= 1 && s.program.line <= 3, `stopped at line ${s.program.line}`);
+  await page.click('[data-switch=single_block]');
+  await page.click('#reset');
+  await until('READY', async () => (await api('/api/state')).execution === 'READY');
+});
+
+test('MDI runs a block typed on the MDI page', async () => {
+  await page.click('[data-mode=MDI]');
+  await page.click('[data-show=mdi]');
+  const before = (await api('/api/state')).position.work;
+  await page.fill('#mdi-text', 'G91 G00 X5. Y-3.');
+  await page.click('#mdi-run');
+  await until('the MDI move to end', async () => {
+    const s = await api('/api/state');
+    return s.execution !== 'ACTIVE' && Math.abs(s.position.work.X - (before.X + 5)) < 1e-6 ? s : null;
+  });
+  const s = await api('/api/state');
+  assert.ok(Math.abs(s.position.work.Y - (before.Y - 3)) < 1e-6, `Y ${s.position.work.Y}`);
+  assert.ok(s.modal.includes('G91'));
+  await shot('mdi');
+  await cmd({ cmd: 'mdi', block: 'G90' });
+  await until('G90', async () => (await api('/api/state')).modal.includes('G90'));
+});
+
+test('an offset written on the OFFSET page is kept across a restart of the server', async () => {
+  await page.click('[data-mode=EDIT]');
+  await page.click('[data-show=offset]');
+  await page.waitForSelector('#ofs-h-3');
+  await page.fill('#ofs-h-3', '123.456');
+  await page.press('#ofs-h-3', 'Enter');
+  await until('written', async () => (await shown('ofs-status')).includes('written'));
+  assert.equal((await api('/api/offsets')).h['3'], 123.456);
+  await shot('offset');
+  await page.click('[data-tab=work]');
+  await shot('offset-work');
+  await page.click('[data-tab=setting]');
+  await shot('setting');
+  await page.click('[data-tab=tool]');
+  // The same --state folder, a new server process.
+  await server.stop();
+  server = await serve(['--machine', 'hx-mc', '--state', stateDir]);
+  assert.equal((await api('/api/offsets')).h['3'], 123.456);
+  await page.close();
+  await open(server.url);
+  await page.click('[data-show=offset]');
+  await page.waitForSelector('#ofs-h-3');
+  assert.equal(await page.$eval('#ofs-h-3', (e) => e.value), '123.456');
+});
+
+test('an alarm is shown with its code, line and block', async () => {
+  await page.click('[data-mode=EDIT]');
+  await page.click('[data-show=prog]');
+  await page.setInputFiles('#prog-file', join(work, 'alarm.nc'));
+  await until('loaded', async () => (await api('/api/state')).program.name === 'alarm.nc');
+  await page.click('[data-mode=MEM]');
+  await page.click('#cycle-start');
+  await until('the alarm', async () => (await api('/api/state')).alarm);
+  await page.click('[data-show=alarm]');
+  await until('ALARM page', async () => (await shown('alarm-current')).includes('F_84020'));
+  const text = await shown('alarm-current');
+  assert.match(text, /alarm\.nc:3:1/);
+  assert.match(await shown('alarm-block'), /^3: G01 X10\./);
+  await until('the history row', async () => (await page.$$('#alarm-history tbody tr')).length >= 1);
+  assert.match(await page.$eval('#alarm-history tbody', (e) => e.textContent), /F_84020/);
+  assert.match(await shown('st-alarm'), /F_84020/);
+  await shot('alarm');
+  await page.click('#reset');
+  await until('cleared', async () => (await api('/api/state')).alarm === null);
+});
+
+test('GRAPH draws the planned path and the tool', async () => {
+  await page.click('[data-mode=EDIT]');
+  await page.click('[data-show=prog]');
+  await page.setInputFiles('#prog-file', join(work, 'long.nc'));
+  await until('loaded', async () => (await api('/api/state')).path.done);
+  await page.click('[data-show=graph]');
+  const s = await api('/api/state');
+  await until('all points', async () => page.evaluate((n) => window.kerf.graph && window.kerf.graph.points === n, s.path.points));
+  // Start, rapid, three feeds, rapid: 6 points.
+  assert.equal(s.path.points, 6);
+  for (const v of ['iso', 'top', 'front', 'side']) {
+    await page.click(`[data-view=${v}]`);
+    await page.waitForTimeout(150);
+    // Something other than the background is drawn.
+    const lit = await page.evaluate(() => {
+      const c = document.querySelector('#graph-view canvas');
+      const g = document.createElement('canvas');
+      g.width = c.width; g.height = c.height;
+      const x = g.getContext('2d');
+      x.drawImage(c, 0, 0);
+      const d = x.getImageData(0, 0, g.width, g.height).data;
+      let n = 0;
+      for (let i = 0; i < d.length; i += 4) if (d[i] + d[i + 1] + d[i + 2] > 120) n++;
+      return n;
+    });
+    assert.ok(lit > 200, `${v}: only ${lit} lit pixels`);
+    await shot(`graph-${v}`);
+  }
+});
+
+test('click to repaint is under 50 ms at the 99th percentile', async () => {
+  await page.click('[data-show=pos]');
+  const times = await page.evaluate(async () => {
+    const b = document.querySelector('[data-switch=dry_run]');
+    const out = [];
+    for (let i = 0; i < 60; i++) {
+      const was = b.classList.contains('on');
+      const t0 = performance.now();
+      const changed = new Promise((res) => {
+        const mo = new MutationObserver(() => {
+          if (b.classList.contains('on') !== was) { mo.disconnect(); res(); }
+        });
+        mo.observe(b, { attributes: true });
+      });
+      b.click();
+      await changed;
+      await new Promise((r) => requestAnimationFrame(r));
+      out.push(performance.now() - t0);
+    }
+    return out.sort((a, b) => a - b);
+  });
+  const p99 = times[Math.ceil(times.length * 0.99) - 1];
+  console.log(`click→repaint: median ${times[30].toFixed(1)} ms, p99 ${p99.toFixed(1)} ms`);
+  assert.ok(p99 < 50, `p99 ${p99} ms`);
+});
+
+test('every page of the other skins (PUMA, Hurco)', async () => {
+  const repo = join(here, '..', '..', '..', '..');
+  const programs = {
+    'puma-lathe': join(repo, 'examples/puma/g92_thread_m50.nc'),
+    'hurco-lathe': join(repo, 'examples/hurco/g78_straight_od.nc'),
+  };
+  for (const m of ['puma-lathe', 'hurco-lathe']) {
+    const s = await serve([programs[m], '--machine', m, '--rate', '5']);
+    const p2 = await ctx.newPage();
+    await p2.goto(s.url);
+    await p2.waitForFunction(() => window.kerf && window.kerf.state);
+    assert.equal(await p2.evaluate(() => document.body.className), m === 'hurco-lathe' ? 'hurco' : 'fanuc');
+    // Run it a little so the pages show a program under way.
+    await p2.click('#cycle-start');
+    await p2.waitForTimeout(1500);
+    for (const pg of ['pos', 'prog', 'mdi', 'offset', 'alarm', 'graph']) {
+      await p2.click(`[data-show=${pg}]`);
+      await p2.waitForTimeout(150);
+      await p2.screenshot({ path: join(shots, `${m}-${pg}.png`) });
+    }
+    await p2.close();
+    await s.stop();
+  }
+});
