@@ -38,11 +38,8 @@ fn main() -> ExitCode {
         Cmd::Man => manual::man(),
         Cmd::Run { common, outputs } => run(&common, &outputs, false),
         Cmd::Check { common } => run(&common, &Outputs::default(), true),
-<<<<<<< HEAD
         Cmd::Expand { common, to, out } => expand::expand(&common, &to, out.as_deref()),
-=======
         Cmd::Serve(a) => serve::run(a),
->>>>>>> main
     }
 }
 
