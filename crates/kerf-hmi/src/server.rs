@@ -171,7 +171,7 @@ impl Shared {
         self.with(move |c| c.load(&n, &t))??;
         let prog = Arc::new(Program::new(name, text.clone()));
         *lock(&self.program) = Some(prog.clone());
-        let stock = lock(&self.stock).clone();
+        let stock = *lock(&self.stock);
         let t = crate::path::start(
             self.profile.clone(),
             self.libs.clone(),
