@@ -22,7 +22,7 @@ mod common;
 use std::process::{Command, Stdio};
 use std::sync::Mutex;
 
-use common::generate::{lathe_program, program, PROGRAMS};
+use common::generate::{hurco_program, lathe_program, program, PROGRAMS};
 use common::programs::{corpus, examples, expand_programs, records, rs274_programs, scratch, Case};
 use serde_json::Value;
 
@@ -263,10 +263,14 @@ fn rs274_runs_the_generated_programs_to_kerfs_end_points() {
     }
     let (mut compared, mut moves, mut failures) = (0, 0, Vec::new());
     type Make = fn(u64) -> String;
-    let makers: [(&str, Make); 2] = [("hx-mc", program), ("puma-lathe", lathe_program)];
-    // Half the seeds of tests/expand_random.rs per machine: each program
-    // costs three processes here.
-    let seeds = PROGRAMS / 2;
+    let makers: [(&str, Make); 3] = [
+        ("hx-mc", program),
+        ("puma-lathe", lathe_program),
+        ("hurco-lathe", hurco_program),
+    ];
+    // A third of the seeds of tests/expand_random.rs per machine: each
+    // program costs three processes here.
+    let seeds = PROGRAMS / 3;
     for (machine, make) in makers {
         for seed in 0..seeds {
             let path = scratch(&format!("generated-{machine}-{seed}"), "nc");
@@ -287,7 +291,7 @@ fn rs274_runs_the_generated_programs_to_kerfs_end_points() {
     }
     println!(
         "{compared} of {} generated programs, {moves} moves compared with rs274",
-        2 * seeds
+        3 * seeds
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(
