@@ -109,7 +109,8 @@ impl Runtime {
                 _ => {}
             }
             self.note_motion(&e);
-            self.clock.push(e);
+            let off = self.interp.macro_switches().feed_hold_disabled;
+            self.clock.push_flagged(e, off);
         }
         false
     }
