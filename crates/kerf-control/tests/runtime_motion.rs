@@ -476,3 +476,27 @@ fn feed_hold_waits_while_the_program_disables_it() {
     rt.command(Command::CycleStart).unwrap();
     until(&mut rt, Execution::ProgramCompleted, 10.0);
 }
+
+#[test]
+fn the_program_can_switch_the_feed_override_off() {
+    // #3004 bit 1 (Fanuc numbering): 100 % whatever the dial says.
+    for (v3004, want) in [(0, 14.9875), (2, 29.95)] {
+        let mut rt = machine("puma-lathe");
+        rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+        rt.load_program(
+            "o.nc",
+            &format!("#3004 = {v3004}\nG98 G01 W-100. F600\nM30\n"),
+        )
+        .unwrap();
+        rt.command(Command::Override {
+            feed: Some(50.0),
+            rapid: None,
+        })
+        .unwrap();
+        let z0 = rt.profile().start_position()[2];
+        rt.command(Command::CycleStart).unwrap();
+        rt.step(3.0);
+        let z = rt.state().position.machine["z"];
+        assert!((z - (z0 - want)).abs() < 1e-6, "#3004 = {v3004}: {z}");
+    }
+}
