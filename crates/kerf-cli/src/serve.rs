@@ -62,8 +62,6 @@ fn serve(a: Args) -> Result<(), String> {
         (true, None) => Some(kerf_hmi::new_token()?),
     };
     let profile = kerf_control::load_profile(&a.machine).map_err(|e| e.to_string())?;
-    let dynamics = kerf_control::dynamics::dynamics_of(&profile, 100.0, 100.0, false)
-        .map_err(|e| format!("machine {}: {e}", a.machine))?;
     for d in &a.lib {
         if !d.is_dir() {
             return Err(format!("--lib {}: not a folder", d.display()));
@@ -83,9 +81,11 @@ fn serve(a: Args) -> Result<(), String> {
         }
         None => None,
     };
-    let (p2, libs, state) = (profile.clone(), a.lib.clone(), a.state.clone());
+    // Checked here so a bad profile is a usage error before the server starts.
+    Runtime::for_machine(&a.machine)?;
+    let (machine, libs, state) = (a.machine.clone(), a.lib.clone(), a.state.clone());
     let make: kerf_hmi::server::MakeControl = Box::new(move || {
-        let mut rt = Runtime::new(p2, dynamics)?;
+        let mut rt = Runtime::for_machine(&machine)?;
         for d in libs {
             rt.add_lib_dir(d);
         }

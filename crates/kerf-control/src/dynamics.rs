@@ -118,10 +118,28 @@ pub fn dynamics_of(
     d.spindle_accel = req(m, "spindle_accel_rpm_s", "motion.spindle_accel_rpm_s")?;
     d.aux_time_s = req(m, "aux_time_s", "motion.aux_time_s")?;
     d.dry_run_feed = num(m, "dry_run_feed", "motion.dry_run_feed")?.unwrap_or(p.feed.max_cutting);
-    // G62 / PI 131 automatic corner override and the internal circular
-    // cutting feed change (000 §5.3.5-5.3.6); 000 prints no values: the
-    // defaults are documented in docs/formats.md.
-    let c = &mut d.corner;
+    corner_override(m, &mut d.corner)?;
+    d.internal_arc_min = match num(m, "internal_arc_min_pct", "motion.internal_arc_min_pct")? {
+        Some(v) => Some(v / 100.0),
+        // Mills: on with 000's lower limit; lathes (001, 002 describe no
+        // such change, and the nose radius's imaginary tip is not the
+        // tool centre) only when the key is given.
+        None if p.kind == kerf_interp::machine::MachineKind::Mill => Some(0.1),
+        None => None,
+    };
+    d.position_gain = num(m, "position_gain", "motion.position_gain")?.unwrap_or(30.0);
+    d.tool_change_s = p.tools.change_time_s;
+    d.feed_override = feed_override / 100.0;
+    d.rapid_override = rapid_override / 100.0;
+    d.dry_run = dry_run;
+    d.validate()?;
+    Ok(d)
+}
+
+/// G62 / PI 131 automatic corner override and the internal circular
+/// cutting feed change (000 §5.3.5-5.3.6) from the `[motion]` table `m`;
+/// 000 prints no values: the defaults are documented in docs/formats.md.
+fn corner_override(m: &toml::Table, c: &mut kerf_motion::CornerOverride) -> Result<(), String> {
     if let Some(v) = num(
         m,
         "corner_override_angle_deg",
@@ -155,19 +173,5 @@ pub fn dynamics_of(
             )
         }
     }
-    d.internal_arc_min = match num(m, "internal_arc_min_pct", "motion.internal_arc_min_pct")? {
-        Some(v) => Some(v / 100.0),
-        // Mills: on with 000's lower limit; lathes (001, 002 describe no
-        // such change, and the nose radius's imaginary tip is not the
-        // tool centre) only when the key is given.
-        None if p.kind == kerf_interp::machine::MachineKind::Mill => Some(0.1),
-        None => None,
-    };
-    d.position_gain = num(m, "position_gain", "motion.position_gain")?.unwrap_or(30.0);
-    d.tool_change_s = p.tools.change_time_s;
-    d.feed_override = feed_override / 100.0;
-    d.rapid_override = rapid_override / 100.0;
-    d.dry_run = dry_run;
-    d.validate()?;
-    Ok(d)
+    Ok(())
 }

@@ -134,9 +134,9 @@ fn warnings(file: &str, t: &Tally) -> Vec<Warning> {
             let len = format!("{:.*}", digits, v * inc);
             let len = len.trim_end_matches('0').trim_end_matches('.');
             let mut message = format!(
-                "{l}{v} has no decimal point, so it is {len} {unit} (least input increments \
-                 of {inc} {unit} in {g}), while this program writes its other dimensions \
-                 with a point: {l}{v}. meant?"
+                "{l}{v} has no decimal point, so it is {len} {unit} (in least input \
+                 increments, {inc} {unit} in {g}), while this program writes its other \
+                 dimensions with a point: {l}{v}. meant?"
             );
             if i + 1 == n && t.without > n as u64 {
                 message.push_str(&format!(" ({} more like it)", t.without - n as u64));

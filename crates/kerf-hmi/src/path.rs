@@ -127,7 +127,7 @@ fn run(it: &mut Interp, store: &Mutex<PathStore>, stop: &AtomicBool) {
     let mut n = 0u64;
     loop {
         n += 1;
-        if n % 4096 == 0 {
+        if n.is_multiple_of(4096) {
             if stop.load(Ordering::Relaxed) {
                 return;
             }
@@ -314,7 +314,7 @@ fn arc_points(
     let r = (s.0 - cc.0).hypot(s.1 - cc.1);
     let sweep =
         kerf_canon::geom::sweep(s, e, cc, ccw) + std::f64::consts::TAU * turns.min(1000) as f64;
-    if !(r > 1e-9) || !sweep.is_finite() {
+    if r.is_nan() || r <= 1e-9 || !sweep.is_finite() {
         return Vec::new();
     }
     let step = if r > CHORD_TOL {

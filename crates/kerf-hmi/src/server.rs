@@ -31,7 +31,7 @@ impl Program {
     pub fn new(name: &str, text: Arc<str>) -> Program {
         let mut lines = vec![0];
         lines.extend(text.match_indices('\n').map(|(i, _)| i + 1));
-        if lines.last() == Some(&text.len()) && text.len() > 0 {
+        if lines.last() == Some(&text.len()) && !text.is_empty() {
             lines.pop();
         }
         Program {

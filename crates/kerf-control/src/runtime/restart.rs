@@ -327,6 +327,7 @@ impl Runtime {
         );
         self.clock.set_overrides(f, r, d);
         for e in plan.events {
+            self.note_motion(&e);
             self.clock.push(e);
         }
         self.exec = Execution::Active;

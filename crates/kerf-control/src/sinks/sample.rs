@@ -18,7 +18,7 @@ pub struct Sample<W: Write> {
     sampler: Option<Sampler>,
     /// Planned time covered by the pieces received so far, s.
     covered: f64,
-    line: String,
+    line: Vec<u8>,
 }
 
 impl<W: Write> Sample<W> {
@@ -30,7 +30,7 @@ impl<W: Write> Sample<W> {
             axes: Vec::new(),
             sampler: None,
             covered: 0.0,
-            line: String::with_capacity(64),
+            line: Vec::with_capacity(64),
         }
     }
 }
@@ -75,11 +75,11 @@ impl<W: Write> Sink for Sample<W> {
             line.clear();
             num(line, t);
             for a in axes {
-                line.push(',');
+                line.push(b',');
                 num(line, p[*a as usize]);
             }
-            line.push('\n');
-            if let Err(e) = out.write_all(line.as_bytes()) {
+            line.push(b'\n');
+            if let Err(e) = out.write_all(line) {
                 err = Some(e);
             }
         });

@@ -4,7 +4,7 @@
 
 use std::io::{self, Write};
 
-use kerf_canon::{Axis, Canon, Event, Feed, Pos};
+use kerf_canon::{Axis, Canon, Event, Feed, Pos, NAXES};
 
 use crate::sink::{Context, Sink, Timed};
 
@@ -12,33 +12,40 @@ use crate::sink::{Context, Sink, Timed};
 pub struct Toolpath<W: Write> {
     w: W,
     axes: Vec<Axis>,
-    buf: String,
+    /// `,"x":` … per axis (5 bytes each).
+    keys: Vec<[u8; 5]>,
+    /// `{"file":"NAME","line":` per file id, made on first use.
+    heads: Vec<Option<Vec<u8>>>,
+    /// The last value of each axis of `to`, `mto`, `prog`, `center`, and
+    /// of the feed.
+    memo: [[Memo; NAXES]; 4],
+    feed_memo: Memo,
+    buf: Vec<u8>,
 }
 
-/// Appends a number rounded to 1 nm (no `-0`, no exponent).
-pub fn num(out: &mut String, v: f64) {
-    use std::fmt::Write as _;
-    let r = (v * 1e6).round() / 1e6;
-    let r = if r == 0.0 { 0.0 } else { r };
-    if r.fract() == 0.0 && r.abs() < 1e15 {
-        let _ = write!(out, "{}", r as i64);
-        out.push_str(".0");
-    } else {
-        let _ = write!(out, "{r}");
-    }
+pub use super::number::num;
+use super::number::{int, Memo};
+
+/// `{"file":"NAME","line":`
+fn head_of(out: &mut Vec<u8>, file: &str) {
+    out.extend_from_slice(b"{\"file\":");
+    json_str(out, file);
+    out.extend_from_slice(b",\"line\":");
 }
 
-fn json_str(out: &mut String, s: &str) {
-    out.push('"');
+fn json_str(out: &mut Vec<u8>, s: &str) {
+    out.push(b'"');
     for c in s.chars() {
         match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
-            c => out.push(c),
+            '"' => out.extend_from_slice(b"\\\""),
+            '\\' => out.extend_from_slice(b"\\\\"),
+            c if (c as u32) < 0x20 => {
+                out.extend_from_slice(format!("\\u{:04x}", c as u32).as_bytes())
+            }
+            c => out.extend_from_slice(c.encode_utf8(&mut [0; 4]).as_bytes()),
         }
     }
-    out.push('"');
+    out.push(b'"');
 }
 
 impl<W: Write> Toolpath<W> {
@@ -48,24 +55,40 @@ impl<W: Write> Toolpath<W> {
         Toolpath {
             w,
             axes: Vec::new(),
-            buf: String::with_capacity(512),
+            keys: Vec::new(),
+            heads: Vec::new(),
+            memo: [[Memo::default(); NAXES]; 4],
+            feed_memo: Memo::default(),
+            buf: Vec::with_capacity(512),
         }
     }
 
-    fn pos(&mut self, key: &str, p: &Pos) {
-        self.buf.push_str(",\"");
-        self.buf.push_str(key);
-        self.buf.push_str("\":{");
+    /// `,"KEY":{"x":…}`; `slot` picks the memo row (0 to, 1 mto, 2 prog,
+    /// 3 center).
+    fn pos(&mut self, key: &str, slot: usize, p: &Pos) {
+        self.buf.extend_from_slice(b",\"");
+        self.buf.extend_from_slice(key.as_bytes());
+        self.buf.extend_from_slice(b"\":{");
         for (i, a) in self.axes.iter().enumerate() {
-            if i > 0 {
-                self.buf.push(',');
+            let k = &self.keys[i];
+            if i == 0 {
+                // The first key without its comma.
+                self.buf.extend_from_slice(&[k[1], k[2], k[3], k[4]]);
+            } else {
+                self.buf.extend_from_slice(k);
             }
-            self.buf.push('"');
-            self.buf.push_str(a.name());
-            self.buf.push_str("\":");
-            num(&mut self.buf, p[*a as usize]);
+            self.memo[slot][i].put(&mut self.buf, p[*a as usize]);
         }
-        self.buf.push('}');
+        self.buf.push(b'}');
+    }
+
+    fn set_axes(&mut self, axes: Vec<Axis>) {
+        // Axis names are one letter.
+        self.keys = axes
+            .iter()
+            .map(|a| [b',', b'"', a.name().as_bytes()[0], b'"', b':'])
+            .collect();
+        self.axes = axes;
     }
 
     /// Writes the record of one event (non-motion events write nothing).
@@ -74,6 +97,19 @@ impl<W: Write> Toolpath<W> {
         &mut self,
         e: &Event,
         file: &str,
+        here: &Pos,
+        t: f64,
+        feed_mm_min: Option<f64>,
+    ) -> io::Result<()> {
+        let mut head = Vec::new();
+        head_of(&mut head, file);
+        self.record(e, &head, here, t, feed_mm_min)
+    }
+
+    fn record(
+        &mut self,
+        e: &Event,
+        head: &[u8],
         here: &Pos,
         t: f64,
         feed_mm_min: Option<f64>,
@@ -87,23 +123,21 @@ impl<W: Write> Toolpath<W> {
             _ => return Ok(()),
         };
         self.buf.clear();
-        self.buf.push_str("{\"file\":");
-        json_str(&mut self.buf, file);
-        self.buf.push_str(",\"line\":");
-        self.buf.push_str(&e.src.line.to_string());
-        self.buf.push_str(",\"kind\":\"");
-        self.buf.push_str(kind);
-        self.buf.push('"');
+        self.buf.extend_from_slice(head);
+        int(&mut self.buf, u64::from(e.src.line));
+        self.buf.extend_from_slice(b",\"kind\":\"");
+        self.buf.extend_from_slice(kind.as_bytes());
+        self.buf.push(b'"');
         match &e.cmd {
             Canon::Rapid { m, .. }
             | Canon::Feed { m, .. }
             | Canon::Thread { m, .. }
             | Canon::Arc { m, .. } => {
                 let (to, mto) = (m.to, m.mto);
-                self.pos("to", &to);
-                self.pos("mto", &mto);
+                self.pos("to", 0, &to);
+                self.pos("mto", 1, &mto);
                 if let Some(p) = e.prog.as_deref() {
-                    self.pos("prog", p);
+                    self.pos("prog", 2, p);
                 }
             }
             Canon::Dwell {
@@ -111,11 +145,11 @@ impl<W: Write> Toolpath<W> {
                 revolutions,
             } => {
                 let p = *here;
-                self.pos("to", &p);
-                self.buf.push_str(",\"seconds\":");
+                self.pos("to", 0, &p);
+                self.buf.extend_from_slice(b",\"seconds\":");
                 num(&mut self.buf, *seconds);
                 if *revolutions > 0.0 {
-                    self.buf.push_str(",\"revolutions\":");
+                    self.buf.extend_from_slice(b",\"revolutions\":");
                     num(&mut self.buf, *revolutions);
                 }
             }
@@ -123,33 +157,34 @@ impl<W: Write> Toolpath<W> {
         }
         if let Canon::Arc { center, dir, .. } = &e.cmd {
             let c = *center;
-            self.pos("center", &c);
-            self.buf.push_str(",\"dir\":\"");
-            self.buf.push_str(dir.name());
-            self.buf.push('"');
+            self.pos("center", 3, &c);
+            self.buf.extend_from_slice(b",\"dir\":\"");
+            self.buf.extend_from_slice(dir.name().as_bytes());
+            self.buf.push(b'"');
         }
         let feed = match &e.cmd {
             Canon::Feed { feed, m } | Canon::Arc { feed, m, .. } => Some((*feed, m)),
             _ => None,
         };
         if let Some((f, _)) = feed {
-            self.buf.push_str(",\"feed\":");
-            num(&mut self.buf, feed_mm_min.unwrap_or(0.0));
+            self.buf.extend_from_slice(b",\"feed\":");
+            self.feed_memo
+                .put(&mut self.buf, feed_mm_min.unwrap_or(0.0));
             if let Feed::PerRev(v) = f {
-                self.buf.push_str(",\"feed_per_rev\":");
+                self.buf.extend_from_slice(b",\"feed_per_rev\":");
                 num(&mut self.buf, v);
             }
         }
         if let Canon::Thread { lead, .. } = &e.cmd {
-            self.buf.push_str(",\"lead\":");
+            self.buf.extend_from_slice(b",\"lead\":");
             num(&mut self.buf, *lead);
         }
-        self.buf.push_str(",\"tool\":");
-        self.buf.push_str(&e.tool.to_string());
-        self.buf.push_str(",\"t_end\":");
+        self.buf.extend_from_slice(b",\"tool\":");
+        int(&mut self.buf, u64::from(e.tool));
+        self.buf.extend_from_slice(b",\"t_end\":");
         num(&mut self.buf, t);
-        self.buf.push_str("}\n");
-        self.w.write_all(self.buf.as_bytes())
+        self.buf.extend_from_slice(b"}\n");
+        self.w.write_all(&self.buf)
     }
 }
 
@@ -159,31 +194,31 @@ impl<W: Write> Sink for Toolpath<W> {
     }
 
     fn start(&mut self, cx: &Context) -> io::Result<()> {
-        self.axes = super::axes_of(cx.interp.profile());
+        self.set_axes(super::axes_of(cx.interp.profile()));
         Ok(())
     }
 
     fn timed(&mut self, t: &Timed, cx: &Context) -> io::Result<()> {
-        let file = cx.file(t.event.src.file);
-        self.write(t.event, file, &t.to, t.t_end, t.feed_mm_min)
+        let id = t.event.src.file as usize;
+        if self.heads.len() <= id {
+            self.heads.resize(id + 1, None);
+        }
+        // Taken out and put back so that the record can borrow it while
+        // the writer is borrowed mutably.
+        let head = match self.heads[id].take() {
+            Some(h) => h,
+            None => {
+                let mut h = Vec::new();
+                head_of(&mut h, cx.file(t.event.src.file));
+                h
+            }
+        };
+        let r = self.record(t.event, &head, &t.to, t.t_end, t.feed_mm_min);
+        self.heads[id] = Some(head);
+        r
     }
 
     fn finish(&mut self, _cx: &Context, _alarm: Option<&kerf_canon::Alarm>) -> io::Result<()> {
         self.w.flush()
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn numbers_are_plain_decimals() {
-        let mut s = String::new();
-        for v in [1.0, -0.0, 0.1 + 0.2, -12.3456789, 1e-9, 2.5e7] {
-            num(&mut s, v);
-            s.push(' ');
-        }
-        assert_eq!(s, "1.0 0.0 0.3 -12.345679 0.0 25000000.0 ");
     }
 }

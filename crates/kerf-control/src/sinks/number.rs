@@ -1,0 +1,281 @@
+//! Number formatting for the text outputs (toolpath JSON Lines, sample
+//! CSV): fixed precision written with integer arithmetic, no float
+//! formatting on the common path.
+//!
+//! [`num`] writes a value rounded to 1e-6 (1 nm in mm) as the shortest
+//! decimal of that rounded double, which is what Rust's `{}` prints for it:
+//! for |v| < 1e9 the rounded value `x/10^6` has at most 15 significant
+//! digits, so it is the only decimal of that length naming its double, and
+//! its digits are those of the integer `x` with the point six places in.
+//! Larger or non-finite values take the `{}` path.
+
+/// Pairs of digits "00".."99", for writing two digits per division.
+const PAIRS: &[u8; 200] = b"\
+0001020304050607080910111213141516171819\
+2021222324252627282930313233343536373839\
+4041424344454647484950515253545556575859\
+6061626364656667686970717273747576777879\
+8081828384858687888990919293949596979899";
+
+/// Appends `text[..len]`: the whole fixed-size array is copied (a copy of
+/// known size compiles to a few moves, where a short copy of unknown size
+/// is a call) and the tail cut off again.
+#[inline]
+fn put_fixed<const N: usize>(out: &mut Vec<u8>, text: &[u8; N], len: usize) {
+    let at = out.len();
+    out.extend_from_slice(text);
+    out.truncate(at + len);
+}
+
+/// Number of decimal digits of `n`.
+#[inline]
+fn digits(n: u64) -> usize {
+    let mut d = 1;
+    let mut p = 10u64;
+    while d < 20 && n >= p {
+        d += 1;
+        p = p.saturating_mul(10);
+    }
+    d
+}
+
+/// Writes the digits of `n` into `buf[..len]`, `len` = `digits(n)`.
+#[inline]
+fn fill(buf: &mut [u8], mut n: u64, len: usize) {
+    let mut i = len;
+    while n >= 100 {
+        let d = (n % 100) as usize * 2;
+        n /= 100;
+        i -= 2;
+        buf[i] = PAIRS[d];
+        buf[i + 1] = PAIRS[d + 1];
+    }
+    if n >= 10 {
+        let d = n as usize * 2;
+        buf[i - 2] = PAIRS[d];
+        buf[i - 1] = PAIRS[d + 1];
+    } else {
+        buf[i - 1] = b'0' + n as u8;
+    }
+}
+
+/// Appends the decimal digits of `n`.
+pub fn int(out: &mut Vec<u8>, n: u64) {
+    let mut buf = [0u8; 20];
+    let len = digits(n);
+    fill(&mut buf, n, len);
+    put_fixed(out, &buf, len);
+}
+
+/// `x.round()` (half away from zero) for |x| < 2^52, without the libm
+/// call: the truncation and the exact remainder.
+fn round(x: f64) -> i64 {
+    let t = x as i64;
+    let f = x - t as f64;
+    if f >= 0.5 {
+        t + 1
+    } else if f <= -0.5 {
+        t - 1
+    } else {
+        t
+    }
+}
+
+/// Appends `v` rounded to 1e-6: no `-0`, no exponent, at least one digit
+/// after the point (`1.0`, `-12.345679`, `0.0`).
+pub fn num(out: &mut Vec<u8>, v: f64) {
+    let x = v * 1e6;
+    if x.is_nan() || x.abs() >= 1e15 {
+        return slow(out, v);
+    }
+    let n = round(x);
+    if n == 0 {
+        out.extend_from_slice(b"0.0");
+        return;
+    }
+    // Sign, at most 9 integer digits, the point, 6 decimals: 17 bytes.
+    let mut buf = [0u8; 24];
+    let mut i = usize::from(n < 0);
+    buf[0] = b'-';
+    let a = n.unsigned_abs();
+    let whole = a / 1_000_000;
+    let len = digits(whole);
+    fill(&mut buf[i..], whole, len);
+    i += len;
+    buf[i] = b'.';
+    i += 1;
+    let frac = (a % 1_000_000) as usize;
+    if frac == 0 {
+        buf[i] = b'0';
+        return put_fixed(out, &buf, i + 1);
+    }
+    let (p, q, r) = (frac / 10_000 * 2, frac / 100 % 100 * 2, frac % 100 * 2);
+    buf[i..i + 6].copy_from_slice(&[
+        PAIRS[p],
+        PAIRS[p + 1],
+        PAIRS[q],
+        PAIRS[q + 1],
+        PAIRS[r],
+        PAIRS[r + 1],
+    ]);
+    let mut end = i + 6;
+    while buf[end - 1] == b'0' {
+        end -= 1;
+    }
+    put_fixed(out, &buf, end);
+}
+
+/// The last value written in one place of a record (an axis of `to`, the
+/// feed …) with its text: toolpaths repeat most coordinates from one
+/// record to the next, and a repeated value is copied, not formatted.
+#[derive(Clone, Copy, Debug)]
+pub struct Memo {
+    bits: u64,
+    len: u8,
+    text: [u8; 23],
+}
+
+impl Default for Memo {
+    fn default() -> Memo {
+        // NaN bits that `num` never caches (it caches only short texts of
+        // finite values), so the first value is always formatted.
+        Memo {
+            bits: u64::MAX,
+            len: 0,
+            text: [0; 23],
+        }
+    }
+}
+
+impl Memo {
+    /// Appends `v` as [`num`] does.
+    pub fn put(&mut self, out: &mut Vec<u8>, v: f64) {
+        let bits = v.to_bits();
+        if bits == self.bits {
+            put_fixed(out, &self.text, self.len as usize);
+            return;
+        }
+        let at = out.len();
+        num(out, v);
+        let written = &out[at..];
+        if written.len() <= self.text.len() {
+            self.text[..written.len()].copy_from_slice(written);
+            self.len = written.len() as u8;
+            self.bits = bits;
+        }
+    }
+}
+
+/// The reference: `{}` of the rounded value.
+fn slow(out: &mut Vec<u8>, v: f64) {
+    use std::io::Write as _;
+    let r = (v * 1e6).round() / 1e6;
+    let r = if r == 0.0 { 0.0 } else { r };
+    if r.fract() == 0.0 && r.abs() < 1e15 {
+        let _ = write!(out, "{}.0", r as i64);
+    } else {
+        let _ = write!(out, "{r}");
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_plain_decimals() {
+        let mut s = Vec::new();
+        for v in [
+            1.0,
+            -0.0,
+            0.1 + 0.2,
+            -12.3456789,
+            1e-9,
+            2.5e7,
+            -0.0000005,
+            0.0000005,
+        ] {
+            num(&mut s, v);
+            s.push(b' ');
+        }
+        assert_eq!(
+            s,
+            b"1.0 0.0 0.3 -12.345679 0.0 25000000.0 -0.000001 0.000001 "
+        );
+    }
+
+    #[test]
+    fn the_integer_path_writes_what_float_formatting_writes() {
+        // A fixed pseudo-random sequence (xorshift) over many magnitudes,
+        // plus the edges of the fast path.
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut vals = vec![
+            999_999_999.999_999,
+            -999_999_999.999_999,
+            1e9,
+            -1e9,
+            123_456_789.123_456_7,
+            0.000_000_499_999,
+            f64::NAN,
+            f64::INFINITY,
+            1e300,
+        ];
+        for _ in 0..200_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let mant = (x >> 11) as f64 / (1u64 << 53) as f64;
+            let exp = (x % 19) as i32 - 9;
+            let sign = if x & 1 == 0 { 1.0 } else { -1.0 };
+            vals.push(sign * mant * 10f64.powi(exp));
+        }
+        for v in vals {
+            let (mut a, mut b) = (Vec::new(), Vec::new());
+            num(&mut a, v);
+            slow(&mut b, v);
+            assert_eq!(a, b, "{v:e}");
+        }
+    }
+
+    #[test]
+    fn rounding_matches_f64_round() {
+        for x in [
+            0.5,
+            -0.5,
+            1.5,
+            2.5,
+            -2.5,
+            0.499_999_999_999_999_94,
+            -0.499_999_999_999_999_94,
+            4_503_599_627_370_495.5,
+            123.456,
+            -123.5,
+            1e15 - 0.5,
+        ] {
+            assert_eq!(round(x), x.round() as i64, "{x}");
+        }
+    }
+
+    #[test]
+    fn a_memo_writes_what_num_writes() {
+        let mut m = Memo::default();
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        for v in [1.5, 1.5, -0.0, 0.0, 2.25, 2.25, 1e300, 1e300, 1.5] {
+            m.put(&mut a, v);
+            num(&mut b, v);
+            a.push(b' ');
+            b.push(b' ');
+        }
+        assert_eq!(a, b);
+    }
+
+    #[test]
+    fn integers() {
+        let mut s = Vec::new();
+        for n in [0, 7, 10, 99, 100, 1234567890, u64::MAX] {
+            int(&mut s, n);
+            s.push(b',');
+        }
+        assert_eq!(s, b"0,7,10,99,100,1234567890,18446744073709551615,");
+    }
+}
