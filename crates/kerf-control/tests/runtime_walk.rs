@@ -71,7 +71,11 @@ fn command(r: &mut Lcg, axes: &[&str]) -> Command {
             increment: r.pick(&[0.001, 0.01, 0.1, 0.5]),
         },
         _ => Command::RefReturn {
-            axis: if r.next().is_multiple_of(2) { None } else { Some(axis) },
+            axis: if r.next().is_multiple_of(2) {
+                None
+            } else {
+                Some(axis)
+            },
         },
     }
 }
