@@ -128,6 +128,19 @@ pub enum Cmd {
         #[command(flatten)]
         common: Common,
     },
+    /// Write the program as plain G-code for another control: every macro,
+    /// call, cycle, compensation, transform and offset resolved
+    /// (docs/expand.md).
+    Expand {
+        #[command(flatten)]
+        common: Common,
+        /// Target: `fanuc` (the same kind of control) or `linuxcnc`.
+        #[arg(long, default_value = "fanuc")]
+        to: String,
+        /// Output file (default: standard output).
+        #[arg(short = 'o', long = "output", value_name = "OUT.nc")]
+        out: Option<PathBuf>,
+    },
     /// List the built-in machine profiles.
     Machines,
     /// Print a shell completion script (bash, zsh, fish, elvish, powershell).

@@ -1,13 +1,15 @@
-//! The `kerf` command: run or check a part program against a machine
-//! profile, and list the built-in machines. Exit status: 0 the program ran
-//! to its end, 1 it stopped on an alarm, 2 usage or I/O error, 3 it ran to
-//! its end but the simulation (`--stock`) found a collision.
+//! The `kerf` command: run, check or expand a part program against a
+//! machine profile, serve the operator screen, and list the built-in
+//! machines. Exit status: 0 the program ran to its end, 1 it stopped on an
+//! alarm, 2 usage or I/O error, 3 it ran to its end but the simulation
+//! (`--stock`) found a collision.
 //!
 //! Running is kerf-control's: this crate parses the arguments, opens the
 //! output files, shows progress, prints and picks the exit status.
 
 mod args;
 mod diagnostic;
+mod expand;
 mod manual;
 mod outputs;
 mod progress;
@@ -39,6 +41,7 @@ fn main() -> ExitCode {
         Cmd::Man => manual::man(),
         Cmd::Run { common, outputs } => run(&common, &outputs, false),
         Cmd::Check { common } => run(&common, &Outputs::default(), true),
+        Cmd::Expand { common, to, out } => expand::expand(&common, &to, out.as_deref()),
         Cmd::Serve(a) => serve::run(a),
     }
 }

@@ -7,9 +7,12 @@
 //! - [`Log`]: the operator messages, one per line;
 //! - [`SimSink`]: the material-removal simulation (`--stock`), its STL
 //!   and PNG, and the report's `sim` section.
+//! - [`Expand`]: the program as plain G-code for a target control
+//!   (docs/expand.md).
 //!
 //! Each takes any `io::Write`; formats are in docs/formats.md.
 
+pub mod expand;
 pub mod log;
 pub mod number;
 pub mod plot;
@@ -18,6 +21,7 @@ pub mod sample;
 pub mod sim;
 pub mod toolpath;
 
+pub use expand::Expand;
 pub use log::Log;
 pub use plot::Plot;
 pub use report::Report;
