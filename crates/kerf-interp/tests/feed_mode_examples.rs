@@ -7,28 +7,34 @@
 //! to G64 on its third move), G64 cutting mode until G61 (and the reverse
 //! in the G64 example), G63 tapping mode (override and feed hold off).
 //! The expected sequences follow the text: a mode code is reported before
-//! the motion of its block.
+//! the motion of its block. §5.3.5's G62 example runs with cutter
+//! compensation; its D1 value is not printed (kerf takes 5 mm).
 
 mod common;
 use common::{ok, round, run_on};
 use kerf_canon::{Canon, ModeChange};
+use kerf_interp::{Interp, Profile, Run, Settings};
 
 /// What the planner receives, in order: ("mode", line, name) or a motion
 /// ("G00"/"G01", line, "x y z").
 fn seq(text: &str) -> Vec<(&'static str, u32, String)> {
-    let r = run_on("hx-mc", text);
-    ok(&r);
+    events(&run_on("hx-mc", text))
+}
+
+/// [`seq`] of a finished run.
+fn events(r: &Run) -> Vec<(&'static str, u32, String)> {
+    ok(r);
     r.events
         .iter()
         .filter_map(|e| {
             let line = e.src.line;
             match &e.cmd {
                 Canon::Mode(m) => Some(("mode", line, format!("{m:?}"))),
-                Canon::Rapid { .. } | Canon::Feed { .. } => {
-                    let k = if matches!(e.cmd, Canon::Rapid { .. }) {
-                        "G00"
-                    } else {
-                        "G01"
+                Canon::Rapid { .. } | Canon::Feed { .. } | Canon::Arc { .. } => {
+                    let k = match e.cmd {
+                        Canon::Rapid { .. } => "G00",
+                        Canon::Feed { .. } => "G01",
+                        _ => "arc",
                     };
                     let t = e.motion().unwrap().to;
                     Some((
@@ -115,6 +121,42 @@ fn g63_tapping_mode() {
             mode(2, ModeChange::TappingMode),
             mv("G01", 2, "100 0 0"),
             mv("G01", 3, "100 100 0"),
+        ]
+    );
+}
+
+/// §5.3.5 (l.1860): `G41 D1`, `G62 G01 X100.`, `G03 X130. Y30. R30.`,
+/// `G01 X0.`, `Y100.`, with D1 = 5 mm (not printed). By hand, G41 = left
+/// of travel:
+/// - start-up X100 (type A) ends on the arc's start normal: the arc
+///   starts along +X, left normal +Y → (100, 5);
+/// - the CCW arc about (100, 30) has the tool inside: offset radius 25;
+///   its end meets the next block, `X0.` along −X at Y30, whose left
+///   normal is −Y (offset line Y25): a left turn, the inner corner G62
+///   slows down; the circle (x − 100)² + (y − 30)² = 25² meets Y25 at
+///   x = 100 + √(625 − 25) = 124.494897;
+/// - −X then +Y is a right turn, outer 90°: the lines Y25 and X−5 meet
+///   at (−5, 25);
+/// - Y100 ends on its own normal at M30: (−5, 100).
+#[test]
+fn g62_example_with_cutter_compensation() {
+    let mut it = Interp::new(Profile::builtin("hx-mc").unwrap(), Settings::default());
+    it.offsets_mut().d_mut(1).unwrap().geom = 5.0;
+    let r = kerf_interp::run_interp(
+        it,
+        "t.nc",
+        "G54 G00 X0. Y0. Z0.\nG41 D1\nG62 G01 X100. F500.\nG03 X130. Y30. R30.\nG01 X0.\nY100.\nM30\n",
+    );
+    let x = round(100.0 + 600f64.sqrt());
+    assert_eq!(
+        events(&r),
+        vec![
+            mv("G00", 1, "0 0 0"),
+            mode(3, ModeChange::CornerOverride),
+            mv("G01", 3, "100 5 0"),
+            mv("arc", 4, &format!("{x} 25 0")),
+            mv("G01", 5, "-5 25 0"),
+            mv("G01", 6, "-5 100 0"),
         ]
     );
 }
