@@ -135,7 +135,7 @@ pub enum Cmd {
         #[command(flatten)]
         common: Common,
         /// Target: `fanuc` (the same kind of control) or `linuxcnc`.
-        #[arg(long, default_value = "fanuc")]
+        #[arg(long, default_value = "fanuc", value_parser = ["fanuc", "linuxcnc"])]
         to: String,
         /// Output file (default: standard output).
         #[arg(short = 'o', long = "output", value_name = "OUT.nc")]

@@ -168,7 +168,8 @@ fn standard_output_unknown_target_and_unwritable_output() {
         .output()
         .unwrap();
     assert_eq!(bad.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&bad.stderr).contains("unknown target 'haas'"));
+    let err = String::from_utf8_lossy(&bad.stderr);
+    assert!(err.contains("'haas'") && err.contains("linuxcnc"), "{err}");
     let nowhere = kerf()
         .arg("expand")
         .arg(&prog)

@@ -11,7 +11,7 @@
 
 mod common;
 
-use common::generate::{lathe_program, program, PROGRAMS};
+use common::generate::{hurco_program, lathe_program, program, PROGRAMS};
 use common::records::differs;
 use kerf_canon::Alarm;
 use kerf_control::sinks::{Expand, Toolpath};
@@ -104,6 +104,17 @@ fn generated_mill_programs_expand_to_the_same_motions() {
 #[test]
 fn generated_lathe_programs_expand_to_the_same_motions() {
     let (completed, records, failures) = round_trips("puma-lathe", lathe_program);
+    println!("{PROGRAMS} programs, {completed} completed, {records} records compared");
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+    assert!(
+        completed * 2 >= PROGRAMS as usize,
+        "only {completed} programs completed"
+    );
+}
+
+#[test]
+fn generated_hurco_programs_expand_to_the_same_motions() {
+    let (completed, records, failures) = round_trips("hurco-lathe", hurco_program);
     println!("{PROGRAMS} programs, {completed} completed, {records} records compared");
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
     assert!(

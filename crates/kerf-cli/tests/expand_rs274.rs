@@ -20,16 +20,12 @@
 mod common;
 
 use std::process::{Command, Stdio};
-use std::sync::Mutex;
 
-use common::generate::{lathe_program, program, PROGRAMS};
+use common::generate::{hurco_program, lathe_program, program, PROGRAMS};
 use common::programs::{corpus, examples, expand_programs, records, rs274_programs, scratch, Case};
 use serde_json::Value;
 
 const TOL: f64 = 1e-3 + 1e-4;
-
-/// Held while rs274 runs (the two tests run in parallel threads).
-static RS274: Mutex<()> = Mutex::new(());
 
 /// One rs274 move: kind, end point (x y z c), arc centre in the plane and
 /// direction.
@@ -154,13 +150,15 @@ fn check(case: &Case) -> Option<(usize, Vec<String>)> {
     let text = std::fs::read_to_string(&ngc).unwrap();
     let tbl = scratch(&case.label, "tbl");
     std::fs::write(&tbl, tool_table(&text)).unwrap();
-    // rs274 keeps its tool table in shared memory and its parameter file
-    // in the working folder: one run at a time, each in its own folder.
-    let cwd = scratch(&case.label, "rs274");
-    std::fs::create_dir_all(&cwd).unwrap();
-    let one_at_a_time = RS274.lock().unwrap_or_else(|e| e.into_inner());
+    // rs274 shares its tool table through `$HOME/.tool.mmap` (truncated by
+    // every run) and keeps its parameter file in the working folder: each
+    // run gets a folder of its own as both, so runs at the same time (these
+    // tests' threads, anyone else's rs274) never see each other's tables.
+    let home = scratch(&case.label, "rs274");
+    std::fs::create_dir_all(&home).unwrap();
     let rs = Command::new("rs274")
-        .current_dir(&cwd)
+        .current_dir(&home)
+        .env("HOME", &home)
         .arg("-g")
         .arg("-t")
         .arg(&tbl)
@@ -169,7 +167,6 @@ fn check(case: &Case) -> Option<(usize, Vec<String>)> {
         .stdin(Stdio::null())
         .output()
         .unwrap();
-    drop(one_at_a_time);
     let canon =
         String::from_utf8_lossy(&rs.stdout).to_string() + &String::from_utf8_lossy(&rs.stderr);
     let got = match parse_canon(&canon) {
@@ -263,10 +260,14 @@ fn rs274_runs_the_generated_programs_to_kerfs_end_points() {
     }
     let (mut compared, mut moves, mut failures) = (0, 0, Vec::new());
     type Make = fn(u64) -> String;
-    let makers: [(&str, Make); 2] = [("hx-mc", program), ("puma-lathe", lathe_program)];
-    // Half the seeds of tests/expand_random.rs per machine: each program
-    // costs three processes here.
-    let seeds = PROGRAMS / 2;
+    let makers: [(&str, Make); 3] = [
+        ("hx-mc", program),
+        ("puma-lathe", lathe_program),
+        ("hurco-lathe", hurco_program),
+    ];
+    // A third of the seeds of tests/expand_random.rs per machine: each
+    // program costs three processes here.
+    let seeds = PROGRAMS / 3;
     for (machine, make) in makers {
         for seed in 0..seeds {
             let path = scratch(&format!("generated-{machine}-{seed}"), "nc");
@@ -287,7 +288,7 @@ fn rs274_runs_the_generated_programs_to_kerfs_end_points() {
     }
     println!(
         "{compared} of {} generated programs, {moves} moves compared with rs274",
-        2 * seeds
+        3 * seeds
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(

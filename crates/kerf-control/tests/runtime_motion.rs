@@ -450,3 +450,53 @@ fn hold_and_resume_on_an_arc_stay_on_the_circle() {
     let w = on_circle(&rt);
     assert!((w["x"] + 100.0).abs() < 1e-9 && w["y"].abs() < 1e-9);
 }
+
+#[test]
+fn feed_hold_waits_while_the_program_disables_it() {
+    // #3004 bit 0: feed hold does not act (fanuc-semantics §7.8; on the
+    // Fanuc numbering: the PUMA).
+    let mut rt = machine("puma-lathe");
+    rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+    rt.load_program(
+        "h.nc",
+        "#3004 = 1\nG98 G01 W-10. F600\n#3004 = 0\nW-10.\nM30\n",
+    )
+    .unwrap();
+    let z0 = rt.profile().start_position()[2];
+    rt.command(Command::CycleStart).unwrap();
+    rt.step(0.5);
+    rt.command(Command::FeedHold).unwrap();
+    assert_eq!(rt.execution(), Execution::FeedHold);
+    rt.step(3.0);
+    // The hold acts where the move that ran with feed hold disabled ends
+    // (passed at 10 mm/s into the next): v²/2a = 0.05 mm further (the
+    // record's end is half a smoothing delay, 4 µs, after the junction).
+    let z = rt.state().position.machine["z"];
+    assert!((z - (z0 - 10.05)).abs() < 1e-4, "{z}");
+    rt.command(Command::CycleStart).unwrap();
+    until(&mut rt, Execution::ProgramCompleted, 10.0);
+}
+
+#[test]
+fn the_program_can_switch_the_feed_override_off() {
+    // #3004 bit 1 (Fanuc numbering): 100 % whatever the dial says.
+    for (v3004, want) in [(0, 14.9875), (2, 29.95)] {
+        let mut rt = machine("puma-lathe");
+        rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+        rt.load_program(
+            "o.nc",
+            &format!("#3004 = {v3004}\nG98 G01 W-100. F600\nM30\n"),
+        )
+        .unwrap();
+        rt.command(Command::Override {
+            feed: Some(50.0),
+            rapid: None,
+        })
+        .unwrap();
+        let z0 = rt.profile().start_position()[2];
+        rt.command(Command::CycleStart).unwrap();
+        rt.step(3.0);
+        let z = rt.state().position.machine["z"];
+        assert!((z - (z0 - want)).abs() < 1e-6, "#3004 = {v3004}: {z}");
+    }
+}

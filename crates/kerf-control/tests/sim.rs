@@ -175,3 +175,38 @@ fn a_stock_must_suit_the_machine() {
     let e = check_stock(&big, &mill).unwrap_err();
     assert!(e.contains("X 0..500"), "{e}");
 }
+
+#[test]
+fn a_g81_cycle_drills_three_holes_with_their_points() {
+    let prog = "G90 G54 G17\nT1 M06\nG43 H1 Z50.\nS1000 M03\nG00 X10. Y10.\n\
+                G99 G81 X10. Y10. Z-10. R2. F100\nX30.\nX50.\nG80\nG00 Z50.\nM30\n";
+    let runner = Job::text("drill.nc", prog).machine("hx-mc").load().unwrap();
+    let tools = parse_tools(
+        "[tool.1]\nkind=\"drill\"\ndiameter=8\npoint_angle=118\n",
+        false,
+    )
+    .unwrap();
+    let mut sim = SimSink::new(
+        Stock::parse("box:0,0,-20,60,20,0").unwrap(),
+        tools,
+        Some(0.02),
+        None,
+        None,
+    )
+    .unwrap();
+    let outcome = runner.run(&mut [&mut sim as &mut dyn Sink]).unwrap();
+    assert!(outcome.alarm.is_none());
+    let rep = sim.sim().report();
+    // Per hole: the cylinder to the point's shoulder and the point's cone,
+    // h = 4 / tan 59°.
+    let hp = 4.0 / 59f64.to_radians().tan();
+    let want = 3.0 * (PI * 16.0 * (10.0 - hp) + PI * 16.0 * hp / 3.0);
+    // Cells in or out by their centre: perimeter × half diagonal × depth per hole.
+    let bound = 3.0 * (2.0 * PI * 4.0 * 0.02 * std::f64::consts::FRAC_1_SQRT_2 * 10.0);
+    assert!(
+        (rep.removed_mm3 - want).abs() <= bound,
+        "{} vs {want} ± {bound}",
+        rep.removed_mm3
+    );
+    assert!(rep.events.is_empty(), "{:?}", rep.events);
+}

@@ -152,9 +152,19 @@ impl ZMap {
         let h = &mut self.h;
         // Nothing at or below the move's lowest tip height can change (the
         // tool's profile and the holder are above the tip).
-        let zlow = s.p0[2].min(s.p1[2]).max(zmin);
-        let floor = zlow as f32;
+        // On a row at distance dy from the move's Y range every cell is at
+        // least dy from the axis, so the tool reaches no lower than
+        // zlow + f(dy) there (and the holder no lower than zlow + its
+        // lowest offset): cells at or below that cannot change.
+        let zlow = s.p0[2].min(s.p1[2]);
+        let bmin = guards[..ng]
+            .iter()
+            .map(|g| g.1)
+            .fold(f64::INFINITY, f64::min);
+        let (ya, yb) = (s.p0[1].min(s.p1[1]), s.p0[1].max(s.p1[1]));
         grid.for_rows(s, reach, |j, y, a, b| {
+            let dy = (ya - y).max(y - yb).max(0.0).min(tool.radius);
+            let floor = (zlow + tool.profile(dy).min(bmin)).max(zmin) as f32;
             let base = j * grid.nx;
             let row = &mut h[base + a..=base + b];
             if !row.iter().any(|&v| v > floor) {

@@ -174,3 +174,53 @@ pub fn lathe_program(seed: u64) -> String {
     p.push_str("G00 X200. Z50.\nM05\nM30\n");
     p
 }
+
+/// A generated Hurco MAX program (metric, calculator decimals): radius and
+/// diameter programming (G07/G08), absolute and incremental (G90/G91), R
+/// arcs, G33 threads along Z or X (lead K or I), feeds per minute and per
+/// revolution, dwells in seconds and revolutions, CSS, tool offsets.
+pub fn hurco_program(seed: u64) -> String {
+    let mut g = Rng(seed.wrapping_mul(0xA0761D6478BD642F) ^ 0xE7037ED1);
+    let mut p = String::from("G21 G90 G94 G08\nG00 X200 Z50 T0101\nG97 S800 M03\nG00 X120 Z5\n");
+    let dia = |g: &mut Rng| format!("{:.3}", 40.0 + g.below(160_001) as f64 / 1000.0);
+    let z = |g: &mut Rng| format!("{:.3}", -80.0 + g.below(90_001) as f64 / 1000.0);
+    for _ in 0..BLOCKS {
+        let line = match g.below(13) {
+            0 | 1 => format!("G00 X{} Z{}", dia(&mut g), z(&mut g)),
+            2..=4 => format!("G01 X{} Z{} F{}", dia(&mut g), z(&mut g), 50 + g.below(400)),
+            5 | 6 => {
+                let code = if g.below(2) == 0 { "G02" } else { "G03" };
+                format!("{code} X{} Z{} R100 F150", dia(&mut g), z(&mut g))
+            }
+            7 => format!("G91 G01 X{} Z{} F200\nG90", g.coord(10.0), g.coord(10.0)),
+            8 => format!(
+                "G00 X{} Z5\nG33 Z{} K{}",
+                dia(&mut g),
+                z(&mut g),
+                1 + g.below(3)
+            ),
+            9 => format!(
+                "G00 X{} Z5\nG33 X{} I{}",
+                dia(&mut g),
+                20 + g.below(20),
+                1 + g.below(2)
+            ),
+            10 => format!("G07 G00 X{} Z{}\nG08", 30 + g.below(60), z(&mut g)),
+            11 => match g.below(4) {
+                0 => "G95 G01 Z-10 F0.2\nG94".into(),
+                1 => "G95 G04 F2\nG94".into(),
+                2 => "G96 S150 M03".into(),
+                _ => "G97 S900 M03".into(),
+            },
+            _ => format!(
+                "G00 X200 Z50\nT0{}0{}\nG04 F0.5",
+                1 + g.below(3),
+                1 + g.below(3)
+            ),
+        };
+        p.push_str(&line);
+        p.push('\n');
+    }
+    p.push_str("G00 X200 Z50\nM05\nM30\n");
+    p
+}

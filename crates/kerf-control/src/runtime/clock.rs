@@ -88,6 +88,12 @@ impl Clock {
 
     /// Hands an event to the planner.
     pub fn push(&mut self, ev: Event) {
+        self.push_flagged(ev, false);
+    }
+
+    /// Hands an event to the planner; `hold_disabled`: the program has
+    /// switched feed hold off for it (#3004 bit 0).
+    pub fn push_flagged(&mut self, ev: Event, hold_disabled: bool) {
         let kind = match &ev.cmd {
             Canon::Rapid { .. }
             | Canon::Feed { .. }
@@ -106,12 +112,13 @@ impl Clock {
                 _ => {}
             }
         }
-        let no_hold = match &ev.cmd {
-            Canon::Thread { .. } => true,
-            Canon::Feed { .. } | Canon::Arc { .. } => self.tapping,
-            Canon::Dwell { .. } | Canon::Rapid { .. } => false,
-            _ => kind == Kind::Flush,
-        };
+        let no_hold = hold_disabled
+            || match &ev.cmd {
+                Canon::Thread { .. } => true,
+                Canon::Feed { .. } | Canon::Arc { .. } => self.tapping,
+                Canon::Dwell { .. } | Canon::Rapid { .. } => false,
+                _ => kind == Kind::Flush,
+            };
         let modes = self.planner.modes();
         if let Some(m) = ev.motion() {
             self.end_pos = m.mto;

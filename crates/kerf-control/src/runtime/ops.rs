@@ -35,6 +35,10 @@ impl Runtime {
             Command::FeedHold => self.feed_hold(),
             Command::Reset => self.reset(),
             Command::Mode { mode } => {
+                if mode != self.mode {
+                    // The re-entry was computed from where the axes were.
+                    self.drop_restart();
+                }
                 self.mode = mode;
                 if let Some(x) = next {
                     self.exec = x;

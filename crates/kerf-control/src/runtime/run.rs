@@ -109,7 +109,16 @@ impl Runtime {
                 _ => {}
             }
             self.note_motion(&e);
-            self.clock.push(e);
+            let ms = self.interp.macro_switches();
+            if ms.override_disabled {
+                // #3004 bit 1: the feed override does not act (100 %).
+                let (r, d) = (self.overrides.rapid / 100.0, self.switches.dry_run);
+                self.clock.set_overrides(1.0, r, d);
+                self.clock.push_flagged(e, ms.feed_hold_disabled);
+                self.clock.set_overrides(self.overrides.feed / 100.0, r, d);
+            } else {
+                self.clock.push_flagged(e, ms.feed_hold_disabled);
+            }
         }
         false
     }
