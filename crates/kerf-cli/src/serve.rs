@@ -33,6 +33,10 @@ pub struct Args {
     /// Machine seconds per wall-clock second (1 = real time).
     #[arg(long, default_value_t = 1.0)]
     rate: f64,
+    /// Simulate the cut part from this stock and show it in GRAPH
+    /// (box:XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX or bar:DIAMETER,LENGTH[,FACE_Z]).
+    #[arg(long, value_name = "SPEC")]
+    stock: Option<String>,
 }
 
 /// Runs the server until the process is stopped.
@@ -95,7 +99,14 @@ fn serve(a: Args) -> Result<(), String> {
         }
         Ok(Box::new(kerf_hmi::RuntimeControl::new(rt)) as Box<dyn kerf_hmi::Control>)
     });
+    let stock = match &a.stock {
+        Some(spec) => {
+            Some(kerf_sim::Stock::parse(spec).map_err(|e| format!("--stock {spec}: {e}"))?)
+        }
+        None => None,
+    };
     let shared = kerf_hmi::Shared::new(make, profile.clone(), a.lib, token.clone(), a.rate)?;
+    *shared.stock.lock().unwrap_or_else(|p| p.into_inner()) = stock;
     if let Some((name, text)) = program {
         shared
             .load(&name, text)

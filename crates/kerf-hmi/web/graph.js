@@ -208,8 +208,40 @@ export class Graph {
     this.render();
   }
 
+  /** The simulated part (binary STL from the server) as a translucent mesh. */
+  async loadPart(id) {
+    this.partFor = id;
+    const r = await fetch('/api/part.stl');
+    if (!r.ok || this.pathId !== id) return;
+    const dv = new DataView(await r.arrayBuffer());
+    const n = dv.byteLength >= 84 ? dv.getUint32(80, true) : 0;
+    if (84 + n * 50 > dv.byteLength) return;
+    const pos = new Float32Array(n * 9);
+    const nor = new Float32Array(n * 9);
+    for (let i = 0; i < n; i++) {
+      const o = 84 + i * 50;
+      for (let v = 0; v < 3; v++) {
+        for (let k = 0; k < 3; k++) {
+          pos[i * 9 + v * 3 + k] = dv.getFloat32(o + 12 + v * 12 + k * 4, true);
+          nor[i * 9 + v * 3 + k] = dv.getFloat32(o + k * 4, true);
+        }
+      }
+    }
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(pos, 3));
+    g.setAttribute('normal', new THREE.BufferAttribute(nor, 3));
+    if (this.part) { this.scene.remove(this.part); this.part.geometry.dispose(); }
+    this.part = new THREE.Mesh(g, new THREE.MeshNormalMaterial({ transparent: true, opacity: 0.55, side: THREE.DoubleSide, depthWrite: false }));
+    this.part.renderOrder = 1;
+    this.scene.add(this.part);
+    this.partTriangles = n;
+    this.render();
+  }
+
   /** The newest machine state: the tool's live position. */
   state(s, shown) {
+    if (s.path.part && this.partFor !== s.path.id && this.pathId === s.path.id) this.loadPart(s.path.id);
+    if (!s.path.part && this.part) { this.scene.remove(this.part); this.part = null; this.partFor = null; }
     const w = s.position.work;
     this.tool.position.set(w.X || 0, w.Y || 0, w.Z || 0);
     if (this.info) {

@@ -297,3 +297,18 @@ test('every page of the other skins (PUMA, Hurco)', async () => {
     await s.stop();
   }
 });
+
+test('GRAPH shows the simulated part with --stock', async () => {
+  const repo = join(here, '..', '..', '..', '..');
+  const s = await serve([join(repo, 'examples/hx/contour.nc'), '--machine', 'hx-mc', '--stock', 'box:-20,-20,-5,70,70,0']);
+  const p2 = await ctx.newPage();
+  await p2.goto(`${s.url}#graph`);
+  await p2.waitForFunction(() => window.kerf && window.kerf.graph && window.kerf.graph.partTriangles > 0, null, { timeout: 90000 });
+  const n = await p2.evaluate(() => window.kerf.graph.partTriangles);
+  const stl = await (await fetch(new URL('/api/part.stl', s.url))).arrayBuffer();
+  assert.equal(n, new DataView(stl).getUint32(80, true));
+  await p2.waitForTimeout(300);
+  await p2.screenshot({ path: join(shots, 'graph-part.png') });
+  await p2.close();
+  await s.stop();
+});
