@@ -102,11 +102,14 @@ test('cycle start moves the tool and highlights the block', async () => {
 test('feed hold stops mid-move and the screen shows the API position', async () => {
   await page.click('#feed-hold');
   await until('FEED_HOLD', async () => (await api('/api/state')).execution === 'FEED_HOLD');
-  // Stopped: two reads 300 ms apart agree.
-  const a = await api('/api/state');
-  await page.waitForTimeout(300);
-  const b = await api('/api/state');
-  assert.equal(a.position.work.X, b.position.work.X);
+  // FEED_HOLD starts with the deceleration on the path; the axes have
+  // stopped when two reads 300 ms apart agree.
+  const b = await until('the axes to stop', async () => {
+    const a = await api('/api/state');
+    await page.waitForTimeout(300);
+    const b = await api('/api/state');
+    return a.position.work.X === b.position.work.X && b.execution === 'FEED_HOLD' ? b : null;
+  });
   assert.ok(b.position.work.X > 0 && b.position.work.X < 100, `not mid-move: X${b.position.work.X}`);
   await page.click('[data-show=pos]');
   await until('the screen to settle', async () => (await pageState()).execution === 'FEED_HOLD');
