@@ -4,7 +4,7 @@
 
 use kerf_canon::{Axis, NAXES};
 use kerf_interp::Profile;
-use kerf_motion::{AccelType, Dynamics};
+use kerf_motion::{AccelType, CornerOverride, Dynamics};
 
 const AXIS_KEYS: &[&str] = &["accel", "jerk", "rapid_accel", "in_position_mm"];
 const KEYS: &[&str] = &[
@@ -54,13 +54,61 @@ pub fn dynamics_of(
             return Err(format!("unknown profile parameter motion.{k}"));
         }
     }
+    let mut d = Dynamics::uniform([false; NAXES], 0.0, 0.0, 0.0, p.feed.max_cutting);
+    axis_limits(p, m, &mut d)?;
+    d.accel_type = match m.get("accel_type").and_then(|v| v.as_str()) {
+        Some("bell") => AccelType::Bell,
+        Some("linear") => AccelType::Linear,
+        None if m.get("accel_type").is_none() => {
+            return Err("profile parameter motion.accel_type is missing".into())
+        }
+        _ => {
+            return Err("profile parameter motion.accel_type must be \"linear\" or \"bell\"".into())
+        }
+    };
+    let count = |key: &str| -> Result<usize, String> {
+        let name = format!("motion.{key}");
+        let v = req(m, key, &name)?;
+        if v.fract() != 0.0 || !(1.0..=100_000.0).contains(&v) {
+            return Err(format!(
+                "profile parameter {name} must be a whole number of blocks, 1-100000"
+            ));
+        }
+        Ok(v as usize)
+    };
+    d.lookahead = count("lookahead")?;
+    d.lookahead_high_speed = count("lookahead_high_speed")?;
+    d.path_tolerance = req(m, "path_tolerance_mm", "motion.path_tolerance_mm")?;
+    d.spindle_accel = req(m, "spindle_accel_rpm_s", "motion.spindle_accel_rpm_s")?;
+    d.aux_time_s = req(m, "aux_time_s", "motion.aux_time_s")?;
+    d.dry_run_feed = num(m, "dry_run_feed", "motion.dry_run_feed")?.unwrap_or(p.feed.max_cutting);
+    corner_override(m, &mut d.corner)?;
+    d.internal_arc_min = match num(m, "internal_arc_min_pct", "motion.internal_arc_min_pct")? {
+        Some(v) => Some(v / 100.0),
+        // Mills: on with 000's lower limit; lathes (001, 002 describe no
+        // such change, and the nose radius's imaginary tip is not the
+        // tool centre) only when the key is given.
+        None if p.kind == kerf_interp::machine::MachineKind::Mill => Some(0.1),
+        None => None,
+    };
+    d.position_gain = num(m, "position_gain", "motion.position_gain")?.unwrap_or(30.0);
+    d.tool_change_s = p.tools.change_time_s;
+    d.feed_override = feed_override / 100.0;
+    d.rapid_override = rapid_override / 100.0;
+    d.dry_run = dry_run;
+    d.validate()?;
+    Ok(d)
+}
+
+/// The `[motion.axes.*]` tables: per-axis acceleration, jerk, rapid
+/// acceleration and in-position width of every axis the machine has.
+fn axis_limits(p: &Profile, m: &toml::Table, d: &mut Dynamics) -> Result<(), String> {
     let empty = toml::Table::new();
     let axes = match m.get("axes") {
         None => &empty,
         Some(toml::Value::Table(t)) => t,
         Some(_) => return Err("profile parameter motion.axes must be a table".into()),
     };
-    let mut d = Dynamics::uniform([false; NAXES], 0.0, 0.0, 0.0, p.feed.max_cutting);
     for k in axes.keys() {
         match kerf_interp::machine::axis_by_name(k) {
             Some(a) if p.has_axis(a) => {}
@@ -92,36 +140,13 @@ pub fn dynamics_of(
             &format!("motion.axes.{n}.in_position_mm"),
         )?;
     }
-    d.accel_type = match m.get("accel_type").and_then(|v| v.as_str()) {
-        Some("bell") => AccelType::Bell,
-        Some("linear") => AccelType::Linear,
-        None if m.get("accel_type").is_none() => {
-            return Err("profile parameter motion.accel_type is missing".into())
-        }
-        _ => {
-            return Err("profile parameter motion.accel_type must be \"linear\" or \"bell\"".into())
-        }
-    };
-    let count = |key: &str| -> Result<usize, String> {
-        let name = format!("motion.{key}");
-        let v = req(m, key, &name)?;
-        if v.fract() != 0.0 || !(1.0..=100_000.0).contains(&v) {
-            return Err(format!(
-                "profile parameter {name} must be a whole number of blocks, 1-100000"
-            ));
-        }
-        Ok(v as usize)
-    };
-    d.lookahead = count("lookahead")?;
-    d.lookahead_high_speed = count("lookahead_high_speed")?;
-    d.path_tolerance = req(m, "path_tolerance_mm", "motion.path_tolerance_mm")?;
-    d.spindle_accel = req(m, "spindle_accel_rpm_s", "motion.spindle_accel_rpm_s")?;
-    d.aux_time_s = req(m, "aux_time_s", "motion.aux_time_s")?;
-    d.dry_run_feed = num(m, "dry_run_feed", "motion.dry_run_feed")?.unwrap_or(p.feed.max_cutting);
-    // G62 / PI 131 automatic corner override and the internal circular
-    // cutting feed change (000 §5.3.5-5.3.6); 000 prints no values: the
-    // defaults are documented in docs/formats.md.
-    let c = &mut d.corner;
+    Ok(())
+}
+
+/// G62 / PI 131 automatic corner override and the internal circular
+/// cutting feed change (000 §5.3.5-5.3.6); 000 prints no values: the
+/// defaults are documented in docs/formats.md.
+fn corner_override(m: &toml::Table, c: &mut CornerOverride) -> Result<(), String> {
     if let Some(v) = num(
         m,
         "corner_override_angle_deg",
@@ -155,19 +180,5 @@ pub fn dynamics_of(
             )
         }
     }
-    d.internal_arc_min = match num(m, "internal_arc_min_pct", "motion.internal_arc_min_pct")? {
-        Some(v) => Some(v / 100.0),
-        // Mills: on with 000's lower limit; lathes (001, 002 describe no
-        // such change, and the nose radius's imaginary tip is not the
-        // tool centre) only when the key is given.
-        None if p.kind == kerf_interp::machine::MachineKind::Mill => Some(0.1),
-        None => None,
-    };
-    d.position_gain = num(m, "position_gain", "motion.position_gain")?.unwrap_or(30.0);
-    d.tool_change_s = p.tools.change_time_s;
-    d.feed_override = feed_override / 100.0;
-    d.rapid_override = rapid_override / 100.0;
-    d.dry_run = dry_run;
-    d.validate()?;
-    Ok(d)
+    Ok(())
 }
