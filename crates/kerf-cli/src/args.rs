@@ -91,10 +91,29 @@ pub struct Outputs {
     /// per line.
     #[arg(long)]
     pub log: Option<PathBuf>,
+    /// Simulate the cut from this stock: box:XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX
+    /// (machining center), bar:DIAMETER,LENGTH[,FACE_Z] or
+    /// tube:OD,ID,LENGTH[,FACE_Z] (lathes), work coordinates, mm.
+    #[arg(long, value_name = "SPEC")]
+    pub stock: Option<String>,
+    /// Tool geometry for the simulation (TOML, docs/sim.md).
+    #[arg(long, value_name = "FILE.toml")]
+    pub tools: Option<PathBuf>,
+    /// Write the simulated part as binary STL.
+    #[arg(long, value_name = "FILE.stl")]
+    pub stl: Option<PathBuf>,
+    /// Write a picture of the simulated part (PNG).
+    #[arg(long, value_name = "FILE.png")]
+    pub png: Option<PathBuf>,
+    /// Simulation cell size, mm (default: the finest that fits 64 MB on
+    /// the machining center, 0.005 on the lathes).
+    #[arg(long, value_name = "MM")]
+    pub sim_res: Option<String>,
 }
 
-/// The subcommands.
+/// The subcommands (parsed once; the size of `Run` does not matter).
 #[derive(Subcommand)]
+#[allow(clippy::large_enum_variant)]
 pub enum Cmd {
     /// Run a program and write what it does.
     Run {
@@ -108,6 +127,19 @@ pub enum Cmd {
     Check {
         #[command(flatten)]
         common: Common,
+    },
+    /// Write the program as plain G-code for another control: every macro,
+    /// call, cycle, compensation, transform and offset resolved
+    /// (docs/expand.md).
+    Expand {
+        #[command(flatten)]
+        common: Common,
+        /// Target: `fanuc` (the same kind of control) or `linuxcnc`.
+        #[arg(long, default_value = "fanuc", value_parser = ["fanuc", "linuxcnc"])]
+        to: String,
+        /// Output file (default: standard output).
+        #[arg(short = 'o', long = "output", value_name = "OUT.nc")]
+        out: Option<PathBuf>,
     },
     /// List the built-in machine profiles.
     Machines,

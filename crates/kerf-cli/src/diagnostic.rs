@@ -103,6 +103,37 @@ fn source_line(file: &str, line: u32) -> Option<Vec<u8>> {
     None
 }
 
+/// The simulation's events on stderr, one line each
+/// (`FILE:LINE: collision KIND: …` or `FILE:LINE: warning tool_unknown: …`),
+/// and its volumes.
+pub fn print_sim(s: &kerf_control::sinks::sim::SimOut) {
+    let mut err = std::io::stderr().lock();
+    for e in &s.events {
+        let what = if e.kind == "tool_unknown" {
+            "warning"
+        } else {
+            "collision"
+        };
+        let _ = writeln!(
+            err,
+            "{}:{}: {what} {}: tool {} at X{:.3} Y{:.3} Z{:.3}, t {:.3} s, {:.3} mm3",
+            e.file, e.line, e.kind, e.tool, e.at[0], e.at[1], e.at[2], e.t, e.volume_mm3
+        );
+    }
+    if s.events_dropped > 0 {
+        let _ = writeln!(
+            err,
+            "kerf: sim: {} more events not listed",
+            s.events_dropped
+        );
+    }
+    let _ = writeln!(
+        err,
+        "kerf: sim: stock {:.3} mm3, removed {:.3} mm3, remaining {:.3} mm3 at {} mm; {} collision(s)",
+        s.stock_mm3, s.removed_mm3, s.remaining_mm3, s.resolution_mm, s.collisions
+    );
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,12 +1,15 @@
-//! The `kerf` command: run or check a part program against a machine
-//! profile, and list the built-in machines. Exit status: 0 the program ran
-//! to its end, 1 it stopped on an alarm, 2 usage or I/O error.
+//! The `kerf` command: run, check or expand a part program against a
+//! machine profile, serve the operator screen, and list the built-in
+//! machines. Exit status: 0 the program ran to its end, 1 it stopped on an
+//! alarm, 2 usage or I/O error, 3 it ran to its end but the simulation
+//! (`--stock`) found a collision.
 //!
 //! Running is kerf-control's: this crate parses the arguments, opens the
 //! output files, shows progress, prints and picks the exit status.
 
 mod args;
 mod diagnostic;
+mod expand;
 mod manual;
 mod outputs;
 mod progress;
@@ -18,6 +21,7 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use kerf_control::sinks::report::Document;
+use kerf_control::sinks::SimSink;
 use kerf_control::{Outcome, Progress, Sink};
 use kerf_interp::{machine::BUILTIN, Profile};
 
@@ -37,6 +41,7 @@ fn main() -> ExitCode {
         Cmd::Man => manual::man(),
         Cmd::Run { common, outputs } => run(&common, &outputs, false),
         Cmd::Check { common } => run(&common, &Outputs::default(), true),
+        Cmd::Expand { common, to, out } => expand::expand(&common, &to, out.as_deref()),
         Cmd::Serve(a) => serve::run(a),
     }
 }
@@ -57,11 +62,24 @@ fn run(c: &Common, outputs: &Outputs, check: bool) -> ExitCode {
         Ok(r) => r,
         Err(e) => return usage_error(e),
     };
-    let (mut report, mut sinks) = match outputs.report().and_then(|r| Ok((r, outputs.open()?))) {
+    let opened = outputs.report().and_then(|r| {
+        let sim = outputs.sim(runner.interp().profile())?;
+        Ok((r, outputs.open()?, sim))
+    });
+    let (mut report, mut sinks, mut sim) = match opened {
         Ok(s) => s,
         Err(e) => return usage_error(e),
     };
-    let mut refs: Vec<&mut dyn Sink> = vec![&mut report];
+    let handle = sim.as_ref().map(SimSink::handle);
+    if let Some(h) = &handle {
+        report = report.with_sim(h.clone());
+    }
+    // The simulation finishes before the report, which carries its section.
+    let mut refs: Vec<&mut dyn Sink> = Vec::new();
+    if let Some(s) = sim.as_mut() {
+        refs.push(s);
+    }
+    refs.push(&mut report);
     refs.extend(sinks.iter_mut().map(|s| s.as_mut() as &mut dyn Sink));
     let mut bar = progress::Progress::new(c.quiet);
     let stepped = loop {
@@ -78,7 +96,15 @@ fn run(c: &Common, outputs: &Outputs, check: bool) -> ExitCode {
     };
     drop(refs);
     let doc = report.document().expect("the report is made at finish");
-    print_outcome(c, &job.program_name(), &outcome, doc, check)
+    let code = print_outcome(c, &job.program_name(), &outcome, doc, check);
+    let collided = handle.and_then(|h| h.borrow().clone()).is_some_and(|s| {
+        diagnostic::print_sim(&s);
+        s.collisions > 0
+    });
+    if outcome.alarm.is_none() && collided {
+        return ExitCode::from(3);
+    }
+    code
 }
 
 fn print_outcome(c: &Common, name: &str, o: &Outcome, doc: &Document, check: bool) -> ExitCode {

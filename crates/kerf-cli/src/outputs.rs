@@ -4,8 +4,12 @@ use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
-use kerf_control::sinks::{Log, Plot, Report, Sample, Toolpath};
+use kerf_control::sinks::sim::check_stock;
+use kerf_control::sinks::{Log, Plot, Report, Sample, SimSink, Toolpath};
 use kerf_control::Sink;
+use kerf_interp::machine::MachineKind;
+use kerf_interp::Profile;
+use kerf_sim::Stock;
 
 use crate::args::Outputs;
 
@@ -34,7 +38,58 @@ fn sample_arg(sample: &[String]) -> Result<Option<(f64, PathBuf)>, String> {
 impl Outputs {
     /// Checks the arguments (before anything is loaded).
     pub fn validate(&self) -> Result<(), String> {
-        sample_arg(&self.sample).map(|_| ())
+        sample_arg(&self.sample)?;
+        if self.stock.is_none() {
+            for (set, name) in [
+                (self.tools.is_some(), "--tools"),
+                (self.stl.is_some(), "--stl"),
+                (self.png.is_some(), "--png"),
+                (self.sim_res.is_some(), "--sim-res"),
+            ] {
+                if set {
+                    return Err(format!("{name} needs --stock (the simulation's raw stock)"));
+                }
+            }
+            return Ok(());
+        }
+        self.sim_res().map(|_| ())
+    }
+
+    fn sim_res(&self) -> Result<Option<f64>, String> {
+        match &self.sim_res {
+            None => Ok(None),
+            Some(s) => match s.trim().parse::<f64>() {
+                Ok(v) if v.is_finite() && (0.001..=10.0).contains(&v) => Ok(Some(v)),
+                _ => Err(format!("--sim-res {s}: the cell size must be 0.001-10 mm")),
+            },
+        }
+    }
+
+    /// The simulation sink of `--stock`, checked against the machine (it
+    /// runs before the report, which carries its section).
+    pub fn sim(&self, profile: &Profile) -> Result<Option<SimSink>, String> {
+        let Some(spec) = &self.stock else {
+            return Ok(None);
+        };
+        let stock = Stock::parse(spec).map_err(|e| e.to_string())?;
+        check_stock(&stock, profile)?;
+        let tools = match &self.tools {
+            Some(p) => {
+                let text =
+                    std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))?;
+                kerf_sim::parse_tools(&text, profile.kind == MachineKind::Lathe)
+                    .map_err(|e| format!("{}: {e}", p.display()))?
+            }
+            None => kerf_sim::ToolTable::default(),
+        };
+        let boxed = |p: &Option<PathBuf>| -> Result<Option<Box<dyn std::io::Write>>, String> {
+            p.as_ref()
+                .map(|p| create(p).map(|w| Box::new(w) as Box<dyn std::io::Write>))
+                .transpose()
+        };
+        let res = self.sim_res()?;
+        let sink = SimSink::new(stock, tools, res, boxed(&self.stl)?, boxed(&self.png)?)?;
+        Ok(Some(sink))
     }
 
     /// The report sink: onto the `--report` file, or kept in memory only

@@ -33,6 +33,10 @@ pub struct Args {
     /// Machine seconds per wall-clock second (1 = real time).
     #[arg(long, default_value_t = 1.0)]
     rate: f64,
+    /// Simulate the cut part from this stock and show it in GRAPH
+    /// (box:XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX or bar:DIAMETER,LENGTH[,FACE_Z]).
+    #[arg(long, value_name = "SPEC")]
+    stock: Option<String>,
 }
 
 /// Runs the server until the process is stopped.
@@ -62,8 +66,6 @@ fn serve(a: Args) -> Result<(), String> {
         (true, None) => Some(kerf_hmi::new_token()?),
     };
     let profile = kerf_control::load_profile(&a.machine).map_err(|e| e.to_string())?;
-    let dynamics = kerf_control::dynamics::dynamics_of(&profile, 100.0, 100.0, false)
-        .map_err(|e| format!("machine {}: {e}", a.machine))?;
     for d in &a.lib {
         if !d.is_dir() {
             return Err(format!("--lib {}: not a folder", d.display()));
@@ -83,9 +85,11 @@ fn serve(a: Args) -> Result<(), String> {
         }
         None => None,
     };
-    let (p2, libs, state) = (profile.clone(), a.lib.clone(), a.state.clone());
+    // Checked here so a bad profile is a usage error before the server starts.
+    Runtime::for_machine(&a.machine)?;
+    let (machine, libs, state) = (a.machine.clone(), a.lib.clone(), a.state.clone());
     let make: kerf_hmi::server::MakeControl = Box::new(move || {
-        let mut rt = Runtime::new(p2, dynamics)?;
+        let mut rt = Runtime::for_machine(&machine)?;
         for d in libs {
             rt.add_lib_dir(d);
         }
@@ -95,7 +99,14 @@ fn serve(a: Args) -> Result<(), String> {
         }
         Ok(Box::new(kerf_hmi::RuntimeControl::new(rt)) as Box<dyn kerf_hmi::Control>)
     });
+    let stock = match &a.stock {
+        Some(spec) => {
+            Some(kerf_sim::Stock::parse(spec).map_err(|e| format!("--stock {spec}: {e}"))?)
+        }
+        None => None,
+    };
     let shared = kerf_hmi::Shared::new(make, profile.clone(), a.lib, token.clone(), a.rate)?;
+    *shared.stock.lock().unwrap_or_else(|p| p.into_inner()) = stock;
     if let Some((name, text)) = program {
         shared
             .load(&name, text)

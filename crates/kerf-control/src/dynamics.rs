@@ -4,7 +4,7 @@
 
 use kerf_canon::{Axis, NAXES};
 use kerf_interp::Profile;
-use kerf_motion::{AccelType, CornerOverride, Dynamics};
+use kerf_motion::{AccelType, Dynamics};
 
 const AXIS_KEYS: &[&str] = &["accel", "jerk", "rapid_accel", "in_position_mm"];
 const KEYS: &[&str] = &[
@@ -54,8 +54,44 @@ pub fn dynamics_of(
             return Err(format!("unknown profile parameter motion.{k}"));
         }
     }
+    let empty = toml::Table::new();
+    let axes = match m.get("axes") {
+        None => &empty,
+        Some(toml::Value::Table(t)) => t,
+        Some(_) => return Err("profile parameter motion.axes must be a table".into()),
+    };
     let mut d = Dynamics::uniform([false; NAXES], 0.0, 0.0, 0.0, p.feed.max_cutting);
-    axis_limits(p, m, &mut d)?;
+    for k in axes.keys() {
+        match kerf_interp::machine::axis_by_name(k) {
+            Some(a) if p.has_axis(a) => {}
+            _ => return Err(format!("motion.axes.{k}: the machine has no axis '{k}'")),
+        }
+    }
+    for a in Axis::ALL {
+        let Some(ad) = p.axis(a) else { continue };
+        let i = a as usize;
+        let n = a.name();
+        d.present[i] = true;
+        d.rapid[i] = ad.rapid;
+        let t = match axes.get(n) {
+            Some(toml::Value::Table(t)) => t,
+            Some(_) => return Err(format!("profile parameter motion.axes.{n} must be a table")),
+            None => return Err(format!("profile parameter motion.axes.{n} is missing")),
+        };
+        for k in t.keys() {
+            if !AXIS_KEYS.contains(&k.as_str()) {
+                return Err(format!("unknown profile parameter motion.axes.{n}.{k}"));
+            }
+        }
+        d.accel[i] = req(t, "accel", &format!("motion.axes.{n}.accel"))?;
+        d.jerk[i] = req(t, "jerk", &format!("motion.axes.{n}.jerk"))?;
+        d.rapid_accel[i] = req(t, "rapid_accel", &format!("motion.axes.{n}.rapid_accel"))?;
+        d.in_position[i] = req(
+            t,
+            "in_position_mm",
+            &format!("motion.axes.{n}.in_position_mm"),
+        )?;
+    }
     d.accel_type = match m.get("accel_type").and_then(|v| v.as_str()) {
         Some("bell") => AccelType::Bell,
         Some("linear") => AccelType::Linear,
@@ -100,53 +136,10 @@ pub fn dynamics_of(
     Ok(d)
 }
 
-/// The `[motion.axes.*]` tables: per-axis acceleration, jerk, rapid
-/// acceleration and in-position width of every axis the machine has.
-fn axis_limits(p: &Profile, m: &toml::Table, d: &mut Dynamics) -> Result<(), String> {
-    let empty = toml::Table::new();
-    let axes = match m.get("axes") {
-        None => &empty,
-        Some(toml::Value::Table(t)) => t,
-        Some(_) => return Err("profile parameter motion.axes must be a table".into()),
-    };
-    for k in axes.keys() {
-        match kerf_interp::machine::axis_by_name(k) {
-            Some(a) if p.has_axis(a) => {}
-            _ => return Err(format!("motion.axes.{k}: the machine has no axis '{k}'")),
-        }
-    }
-    for a in Axis::ALL {
-        let Some(ad) = p.axis(a) else { continue };
-        let i = a as usize;
-        let n = a.name();
-        d.present[i] = true;
-        d.rapid[i] = ad.rapid;
-        let t = match axes.get(n) {
-            Some(toml::Value::Table(t)) => t,
-            Some(_) => return Err(format!("profile parameter motion.axes.{n} must be a table")),
-            None => return Err(format!("profile parameter motion.axes.{n} is missing")),
-        };
-        for k in t.keys() {
-            if !AXIS_KEYS.contains(&k.as_str()) {
-                return Err(format!("unknown profile parameter motion.axes.{n}.{k}"));
-            }
-        }
-        d.accel[i] = req(t, "accel", &format!("motion.axes.{n}.accel"))?;
-        d.jerk[i] = req(t, "jerk", &format!("motion.axes.{n}.jerk"))?;
-        d.rapid_accel[i] = req(t, "rapid_accel", &format!("motion.axes.{n}.rapid_accel"))?;
-        d.in_position[i] = req(
-            t,
-            "in_position_mm",
-            &format!("motion.axes.{n}.in_position_mm"),
-        )?;
-    }
-    Ok(())
-}
-
 /// G62 / PI 131 automatic corner override and the internal circular
-/// cutting feed change (000 §5.3.5-5.3.6); 000 prints no values: the
-/// defaults are documented in docs/formats.md.
-fn corner_override(m: &toml::Table, c: &mut CornerOverride) -> Result<(), String> {
+/// cutting feed change (000 §5.3.5-5.3.6) from the `[motion]` table `m`;
+/// 000 prints no values: the defaults are documented in docs/formats.md.
+fn corner_override(m: &toml::Table, c: &mut kerf_motion::CornerOverride) -> Result<(), String> {
     if let Some(v) = num(
         m,
         "corner_override_angle_deg",

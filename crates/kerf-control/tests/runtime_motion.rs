@@ -400,3 +400,103 @@ fn hold_in_a_rapid_stops_on_its_trapezoid() {
         x0 - stop
     );
 }
+
+#[test]
+fn the_toolpath_as_it_is_made_has_each_motion_once() {
+    let mut rt = mem("G91 G00 X-5.\nG01 X-100. F600\nM30\n");
+    let x0 = start(&mut rt);
+    rt.step(2.0);
+    rt.command(Command::FeedHold).unwrap();
+    rt.step(1.0);
+    rt.command(Command::CycleStart).unwrap();
+    until(&mut rt, Execution::ProgramCompleted, 30.0);
+    let m = rt.motions_since(0);
+    let got: Vec<(u64, u32, &str)> = m.iter().map(|r| (r.seq, r.line, r.kind.as_str())).collect();
+    assert_eq!(got, [(1, 1, "rapid"), (2, 2, "feed")]);
+    assert!((m[1].mto["x"] - (x0 - 105.0)).abs() < 1e-9);
+    assert_eq!(rt.motions_since(1).len(), 1);
+}
+
+#[test]
+fn hold_and_resume_on_an_arc_stay_on_the_circle() {
+    // Half circle R50 about (-50, 0) from X0 to X-100 at F600 (10 mm/s).
+    let mut rt = mem("G90 G54 G00 X0. Y0.\nG17 G02 X-100. Y0. R50. F600\nM30\n");
+    rt.command(Command::CycleStart).unwrap();
+    let mut guard = 0;
+    while rt.state().program.line != 2 {
+        rt.step(0.01);
+        guard += 1;
+        assert!(guard < 10_000);
+    }
+    let on_circle = |rt: &kerf_control::runtime::Runtime| {
+        let w = rt.state().position.work;
+        let r = ((w["x"] + 50.0).powi(2) + w["y"].powi(2)).sqrt();
+        assert!((r - 50.0).abs() < 1e-6, "off the circle: r = {r} at {w:?}");
+        w
+    };
+    rt.step(4.0);
+    on_circle(&rt);
+    rt.command(Command::FeedHold).unwrap();
+    rt.step(0.5);
+    let held = on_circle(&rt);
+    rt.step(1.0);
+    assert_eq!(rt.state().position.work, held);
+    rt.command(Command::CycleStart).unwrap();
+    for _ in 0..5 {
+        rt.step(1.0);
+        on_circle(&rt);
+    }
+    until(&mut rt, Execution::ProgramCompleted, 30.0);
+    let w = on_circle(&rt);
+    assert!((w["x"] + 100.0).abs() < 1e-9 && w["y"].abs() < 1e-9);
+}
+
+#[test]
+fn feed_hold_waits_while_the_program_disables_it() {
+    // #3004 bit 0: feed hold does not act (fanuc-semantics §7.8; on the
+    // Fanuc numbering: the PUMA).
+    let mut rt = machine("puma-lathe");
+    rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+    rt.load_program(
+        "h.nc",
+        "#3004 = 1\nG98 G01 W-10. F600\n#3004 = 0\nW-10.\nM30\n",
+    )
+    .unwrap();
+    let z0 = rt.profile().start_position()[2];
+    rt.command(Command::CycleStart).unwrap();
+    rt.step(0.5);
+    rt.command(Command::FeedHold).unwrap();
+    assert_eq!(rt.execution(), Execution::FeedHold);
+    rt.step(3.0);
+    // The hold acts where the move that ran with feed hold disabled ends
+    // (passed at 10 mm/s into the next): v²/2a = 0.05 mm further (the
+    // record's end is half a smoothing delay, 4 µs, after the junction).
+    let z = rt.state().position.machine["z"];
+    assert!((z - (z0 - 10.05)).abs() < 1e-4, "{z}");
+    rt.command(Command::CycleStart).unwrap();
+    until(&mut rt, Execution::ProgramCompleted, 10.0);
+}
+
+#[test]
+fn the_program_can_switch_the_feed_override_off() {
+    // #3004 bit 1 (Fanuc numbering): 100 % whatever the dial says.
+    for (v3004, want) in [(0, 14.9875), (2, 29.95)] {
+        let mut rt = machine("puma-lathe");
+        rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+        rt.load_program(
+            "o.nc",
+            &format!("#3004 = {v3004}\nG98 G01 W-100. F600\nM30\n"),
+        )
+        .unwrap();
+        rt.command(Command::Override {
+            feed: Some(50.0),
+            rapid: None,
+        })
+        .unwrap();
+        let z0 = rt.profile().start_position()[2];
+        rt.command(Command::CycleStart).unwrap();
+        rt.step(3.0);
+        let z = rt.state().position.machine["z"];
+        assert!((z - (z0 - want)).abs() < 1e-6, "#3004 = {v3004}: {z}");
+    }
+}

@@ -325,3 +325,84 @@ fn state_dir_keeps_offsets_across_machines() {
     assert!(err.contains("hx-mc.work:1"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn feed_hold_stops_a_jog_on_its_trapezoid() {
+    let mut rt = machine("hx-mc");
+    rt.command(Command::Mode { mode: Mode::Jog }).unwrap();
+    rt.command(Command::Jog {
+        axis: "x".into(),
+        distance: -20.0,
+    })
+    .unwrap();
+    // 33.33 mm/s after 0.0333 s (0.5556 mm): 9.4444 mm at 0.3 s, and
+    // v²/2a = 0.5556 mm to stop: 10.000 mm.
+    rt.step(0.3);
+    rt.command(Command::FeedHold).unwrap();
+    assert_eq!(rt.execution(), Execution::Ready);
+    rt.step(1.0);
+    assert!((mx(&rt) + 10.0).abs() < 1e-9, "{}", mx(&rt));
+    assert!((rt.interp().machine_position()[0] + 10.0).abs() < 1e-9);
+}
+
+#[test]
+fn reset_plane_and_distance_modes_follow_pi_145_146() {
+    for (p145, p146, plane, dist) in [
+        (0.0, 0.0, "G17", "G90"),
+        (1.0, 1.0, "G18", "G91"),
+        (2.0, 0.0, "G19", "G90"),
+    ] {
+        let mut rt = machine("hx-mc");
+        rt.write_parameter("PI 145", p145).unwrap();
+        rt.write_parameter("PI 146", p146).unwrap();
+        rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+        rt.load_program("r.nc", "G17 G90 G00 X-1.\nM30\n").unwrap();
+        rt.command(Command::CycleStart).unwrap();
+        until(&mut rt, Execution::ProgramCompleted, 10.0);
+        rt.command(Command::Reset).unwrap();
+        let m = rt.state().modal;
+        assert!(
+            m.contains(&plane.to_string()) && m.contains(&dist.to_string()),
+            "PI 145 {p145} PI 146 {p146}: {m:?}"
+        );
+    }
+}
+
+#[test]
+fn single_block_stops_at_macro_statements_only_as_the_parameter_says() {
+    for (param, first_stop_line, moved) in [(0.0, 2, true), (1.0, 1, false)] {
+        let mut rt = machine("hx-mc");
+        rt.write_parameter("single_block_macro", param).unwrap();
+        rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+        rt.load_program("s.nc", "#100 = 1\nG91 G01 X-1. F600\nM30\n")
+            .unwrap();
+        rt.command(Command::Switch {
+            single_block: Some(true),
+            optional_stop: None,
+            dry_run: None,
+            block_skip: None,
+        })
+        .unwrap();
+        rt.command(Command::CycleStart).unwrap();
+        until(&mut rt, Execution::Interrupted, 10.0);
+        assert_eq!(
+            rt.interp().block_at().0.line,
+            first_stop_line,
+            "param {param}"
+        );
+        assert_eq!(mx(&rt) != 0.0, moved, "param {param}");
+    }
+}
+
+#[test]
+fn the_m00_comment_goes_to_the_history() {
+    let mut rt = mem("G91 G01 X-1. F600\nM00 (TURN THE PART OVER)\nM30\n");
+    rt.command(Command::CycleStart).unwrap();
+    until(&mut rt, Execution::ProgramStopped, 10.0);
+    let log = rt.alarms(0);
+    let last = log.last().expect("a record");
+    assert_eq!(
+        (last.kind, last.message.as_str(), last.line),
+        (RecordKind::Message, "TURN THE PART OVER", 2)
+    );
+}

@@ -356,3 +356,26 @@ fn restart_inside_cutter_compensation_is_refused() {
     })
     .unwrap();
 }
+
+#[test]
+fn a_mode_change_drops_a_prepared_restart() {
+    let text = "G90 G54 G00 X-10. Y-10. Z10.\nG01 Z-1. F300\nX-20.\nM30\n";
+    let mut rt = mem(text);
+    rt.command(Command::Restart {
+        line: Some(3),
+        sequence: None,
+    })
+    .unwrap();
+    assert!(rt.pending_restart().is_some());
+    rt.command(Command::Mode { mode: Mode::Jog }).unwrap();
+    assert!(rt.pending_restart().is_none());
+    rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+    // Cycle start now runs the program from its start.
+    rt.command(Command::CycleStart).unwrap();
+    until(&mut rt, Execution::ProgramCompleted, 60.0);
+    let w = rt.state().position.work;
+    assert!(
+        (w["x"] + 20.0).abs() < 1e-9 && (w["z"] + 1.0).abs() < 1e-9,
+        "{w:?}"
+    );
+}

@@ -558,6 +558,28 @@ pub fn g71_type2(
         }
         k += 1.0;
     }
+    g71_pockets(a, (sx, sz), r.escape, &levels, &ivs, out)?;
+    push(out, infeed(first))?;
+    for s in &segs {
+        push(out, s.mv())?;
+    }
+    push(out, Mv::Rapid(a))
+}
+
+/// G71 type II, the pockets (fanuc-semantics §1.2): the intervals of each
+/// level (`ivs`, per entry of `levels`) not connected to the start side
+/// whose parent, one level up, is; each is entered at its parent level's
+/// escape height and cut depth first, then the tool returns to `a`.
+/// `signs`: the infeed (X) and cutting (Z) directions.
+fn g71_pockets(
+    a: P,
+    signs: (f64, f64),
+    escape: f64,
+    levels: &[f64],
+    ivs: &[(Vec<(f64, f64)>, bool)],
+    out: &mut Vec<Mv>,
+) -> Result<(), CycleError> {
+    let (sx, sz) = signs;
     // 2. Pockets: intervals not connected to the start side whose parent
     // (the interval one level up that holds them) is connected.
     let within = |inner: (f64, f64), outer: (f64, f64)| {
@@ -585,7 +607,7 @@ pub fn g71_type2(
     let level_of = |i: usize| if i == 0 { a.x } else { levels[i - 1] };
     let mut travel: Option<f64> = None;
     for root in &roots {
-        let lp = level_of(root.0) - sx * r.escape;
+        let lp = level_of(root.0) - sx * escape;
         // Travel at the shallower of this and the last pocket's heights.
         let h = match travel {
             Some(t) if sx * (t - lp) < 0.0 => t,
@@ -601,13 +623,13 @@ pub fn g71_type2(
             let l = levels[i];
             if !first_child {
                 let cur = out.last().map(|m| m.to()).unwrap_or(a);
-                let hp = level_of(i) - sx * r.escape;
+                let hp = level_of(i) - sx * escape;
                 push(out, Mv::Rapid(p(hp, cur.z)))?;
                 push(out, Mv::Rapid(p(hp, z0)))?;
             }
             push(out, Mv::Feed(p(l, z0)))?;
             push(out, Mv::Feed(p(l, z1)))?;
-            push(out, Mv::Rapid(p(l - sx * r.escape, z1 - sz * r.escape)))?;
+            push(out, Mv::Rapid(p(l - sx * escape, z1 - sz * escape)))?;
             if i + 1 < levels.len() {
                 let kids: Vec<(f64, f64)> = ivs[i + 1]
                     .0
@@ -626,11 +648,7 @@ pub fn g71_type2(
         push(out, Mv::Rapid(p(a.x, cur.z)))?;
         push(out, Mv::Rapid(p(a.x, a.z)))?;
     }
-    push(out, infeed(first))?;
-    for s in &segs {
-        push(out, s.mv())?;
-    }
-    push(out, Mv::Rapid(a))
+    Ok(())
 }
 
 /// G72: G71 with X and Z exchanged (levels in Z by Δd, cuts parallel to

@@ -43,6 +43,7 @@ pub fn router(shared: Arc<Shared>) -> Router {
         .route("/api/parameters", get(parameters).put(put_parameters))
         .route("/api/alarms", get(alarms))
         .route("/api/toolpath", get(toolpath))
+        .route("/api/part.stl", get(part))
         .route("/api/stream", get(crate::stream::upgrade))
         .fallback(not_found)
         .with_state(shared)
@@ -368,4 +369,26 @@ async fn toolpath(
         body,
     )
         .into_response())
+}
+
+/// The simulated part of the loaded program (binary STL), when the server
+/// has a stock (`--stock`) and the trace is done.
+async fn part(AxState(s): S) -> Answer {
+    let p = s
+        .path
+        .lock()
+        .unwrap_or_else(|p| p.into_inner())
+        .part
+        .clone();
+    match p {
+        Some(stl) => Ok((
+            StatusCode::OK,
+            [(header::CONTENT_TYPE, "model/stl")],
+            stl.as_ref().clone(),
+        )
+            .into_response()),
+        None => Err(ApiError::not_found(
+            "no simulated part (kerf serve --stock SPEC, and the trace done)",
+        )),
+    }
 }

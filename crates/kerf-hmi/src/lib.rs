@@ -11,7 +11,6 @@ pub mod assets;
 pub mod command;
 pub mod control;
 pub mod error;
-pub mod offsets_json;
 pub mod path;
 pub mod runtime_control;
 pub mod server;

@@ -52,6 +52,9 @@ pub struct PathStore {
     pub min_step: f64,
     /// Why the trace ended early, if it did (an alarm, a limit).
     pub note: Option<String>,
+    /// The simulated part as binary STL (work coordinates, mm), when the
+    /// server was given a stock and the trace is done.
+    pub part: Option<Arc<Vec<u8>>>,
 }
 
 impl PathStore {
@@ -84,6 +87,7 @@ impl Drop for Trace {
 pub fn start(
     profile: Profile,
     libs: Vec<std::path::PathBuf>,
+    stock: Option<kerf_sim::Stock>,
     name: &str,
     text: Arc<str>,
     store: Arc<Mutex<PathStore>>,
@@ -96,6 +100,7 @@ pub fn start(
         s.done = false;
         s.min_step = 0.0;
         s.note = None;
+        s.part = None;
     }
     let flag = stop.clone();
     let name = name.to_string();
@@ -110,7 +115,26 @@ pub fn start(
         }
         let bytes: Vec<u8> = text.as_bytes().to_vec();
         it.load_main(&name, Box::new(Cursor::new(bytes)));
-        run(&mut it, &store, &flag);
+        // The cut part: every event through the simulator on its stock.
+        let mut sim = stock.and_then(|st| {
+            let mut sim = kerf_sim::Sim::new(
+                st,
+                kerf_sim::ToolTable::default(),
+                Some(view_resolution(&st)),
+            )
+            .ok()?;
+            sim.set_offsets(kerf_control::sinks::sim::offset_data(&it));
+            Some(sim)
+        });
+        run(&mut it, &store, &flag, sim.as_mut());
+        if let Some(sim) = sim {
+            if !flag.load(Ordering::Relaxed) {
+                let mut stl = Vec::new();
+                if kerf_sim::stl::write(&sim, &mut stl).is_ok() {
+                    lock(&store).part = Some(Arc::new(stl));
+                }
+            }
+        }
     });
     Trace { stop }
 }
@@ -119,15 +143,35 @@ fn lock(s: &Mutex<PathStore>) -> std::sync::MutexGuard<'_, PathStore> {
     s.lock().unwrap_or_else(|p| p.into_inner())
 }
 
+/// The simulation's cell size for the view: the stock's largest extent in
+/// 300 cells (a part of some 10^5 triangles, light for the browser).
+fn view_resolution(st: &kerf_sim::Stock) -> f64 {
+    let extent = match st {
+        kerf_sim::Stock::Box { min, max } => (0..3).map(|i| max[i] - min[i]).fold(0.0, f64::max),
+        kerf_sim::Stock::Turn {
+            r_out,
+            z_face,
+            z_end,
+            ..
+        } => (2.0 * r_out).max(z_face - z_end),
+    };
+    (extent / 300.0).max(0.01)
+}
+
 /// Points are made in batches and published under the lock.
-fn run(it: &mut Interp, store: &Mutex<PathStore>, stop: &AtomicBool) {
+fn run(
+    it: &mut Interp,
+    store: &Mutex<PathStore>,
+    stop: &AtomicBool,
+    mut sim: Option<&mut kerf_sim::Sim>,
+) {
     let began = Instant::now();
     let mut b = Builder::new(it.work_position());
     let mut note = None;
     let mut n = 0u64;
     loop {
         n += 1;
-        if n % 4096 == 0 {
+        if n.is_multiple_of(4096) || (sim.is_some() && n.is_multiple_of(64)) {
             if stop.load(Ordering::Relaxed) {
                 return;
             }
@@ -138,7 +182,12 @@ fn run(it: &mut Interp, store: &Mutex<PathStore>, stop: &AtomicBool) {
             b.publish(store);
         }
         match it.step() {
-            Step::Event(e) => b.event(&e),
+            Step::Event(e) => {
+                if let Some(sim) = sim.as_deref_mut() {
+                    sim.event(&e, &b.at, 0.0);
+                }
+                b.event(&e);
+            }
             Step::End => break,
             Step::Alarm(a) => {
                 note = Some(format!(
@@ -314,7 +363,7 @@ fn arc_points(
     let r = (s.0 - cc.0).hypot(s.1 - cc.1);
     let sweep =
         kerf_canon::geom::sweep(s, e, cc, ccw) + std::f64::consts::TAU * turns.min(1000) as f64;
-    if !(r > 1e-9) || !sweep.is_finite() {
+    if r.is_nan() || r <= 1e-9 || !sweep.is_finite() {
         return Vec::new();
     }
     let step = if r > CHORD_TOL {
@@ -348,7 +397,7 @@ mod tests {
     fn trace(machine: &str, text: &str) -> PathStore {
         let store = Arc::new(Mutex::new(PathStore::default()));
         let p = Profile::builtin(machine).unwrap();
-        let _t = start(p, vec![], "t.nc", text.into(), store.clone());
+        let _t = start(p, vec![], None, "t.nc", text.into(), store.clone());
         let began = Instant::now();
         while !lock(&store).done {
             assert!(began.elapsed() < Duration::from_secs(20), "trace hangs");

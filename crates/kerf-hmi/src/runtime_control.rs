@@ -1,13 +1,12 @@
 //! The server's [`Control`] on kerf-control's controller runtime: the
 //! runtime's state and pages turned into the API's shapes (axis names
-//! upper case in the machine's order, the offsets in the `--offsets`
-//! format, the alarm history with its sequence numbers), and the API's
+//! upper case in the machine's order, the alarm history with its
+//! sequence numbers; the offsets document is the runtime's), and the API's
 //! checked commands turned into the runtime's.
 
 use kerf_control::runtime::{
     self as rt, decide, Command as RtCommand, Op, Runtime, VarWrite, Verdict,
 };
-use kerf_interp::machine::MachineKind;
 use serde_json::{json, Map, Value};
 
 use crate::command::{Command, RestartAt};
@@ -110,10 +109,6 @@ impl RuntimeControl {
         let r = self.rt.command(cmd);
         self.sync_history();
         r.map_err(|e| self.refusal(op, before, e))
-    }
-
-    fn lathe(&self) -> bool {
-        self.rt.profile().kind == MachineKind::Lathe
     }
 }
 
@@ -303,20 +298,13 @@ impl Control for RuntimeControl {
     }
 
     fn offsets(&self) -> Value {
-        crate::offsets_json::read(&self.rt, self.lathe())
+        self.rt.offsets_document()
     }
 
     fn put_offsets(&mut self, v: &Value) -> Result<(), Refusal> {
-        let diameter = self.rt.interp().diameter_programming();
-        let writes = crate::offsets_json::writes(v, self.lathe(), diameter, &self.axes)
-            .map_err(Refusal::Invalid)?;
-        for w in writes {
-            let before = (self.rt.mode(), self.rt.execution());
-            self.rt
-                .write_offset(w)
-                .map_err(|e| self.refusal(Op::WriteOffset, before, e))?;
-        }
-        Ok(())
+        let before = (self.rt.mode(), self.rt.execution());
+        let r = self.rt.put_offsets_document(v);
+        r.map_err(|e| self.refusal(Op::WriteOffset, before, e))
     }
 
     fn variables(&self) -> Value {

@@ -31,7 +31,7 @@ impl Program {
     pub fn new(name: &str, text: Arc<str>) -> Program {
         let mut lines = vec![0];
         lines.extend(text.match_indices('\n').map(|(i, _)| i + 1));
-        if lines.last() == Some(&text.len()) && text.len() > 0 {
+        if lines.last() == Some(&text.len()) && !text.is_empty() {
             lines.pop();
         }
         Program {
@@ -79,6 +79,8 @@ pub struct Shared {
     pub profile: Profile,
     /// Library folders.
     pub libs: Vec<PathBuf>,
+    /// The stock the cut part is simulated from (`--stock`), if any.
+    pub stock: Mutex<Option<kerf_sim::Stock>>,
     /// The loaded program.
     pub program: Mutex<Option<Arc<Program>>>,
     /// The backplot.
@@ -133,6 +135,7 @@ impl Shared {
             jobs: Mutex::new(jobs),
             profile,
             libs,
+            stock: Mutex::new(None),
             program: Mutex::new(None),
             path: Arc::new(Mutex::new(PathStore::default())),
             trace: Mutex::new(None),
@@ -168,9 +171,11 @@ impl Shared {
         self.with(move |c| c.load(&n, &t))??;
         let prog = Arc::new(Program::new(name, text.clone()));
         *lock(&self.program) = Some(prog.clone());
+        let stock = *lock(&self.stock);
         let t = crate::path::start(
             self.profile.clone(),
             self.libs.clone(),
+            stock,
             name,
             text,
             self.path.clone(),
@@ -232,6 +237,7 @@ fn make_frame(mut state: State, path: &PathStore) -> Frame {
         points: path.points() as u32,
         done: path.done,
         note: path.note.clone(),
+        part: path.part.is_some(),
     };
     let mut v = serde_json::to_value(&state).unwrap_or_default();
     if let Some(o) = v.as_object_mut() {

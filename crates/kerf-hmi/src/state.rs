@@ -244,4 +244,6 @@ pub struct PathInfo {
     pub done: bool,
     /// Why the trace ended before the program's end (an alarm, a limit).
     pub note: Option<String>,
+    /// The simulated part is ready at `GET /api/part.stl`.
+    pub part: bool,
 }

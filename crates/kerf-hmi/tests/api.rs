@@ -204,3 +204,45 @@ fn binding_off_loopback_needs_the_flag() {
     assert_eq!(t.len(), 32);
     assert_ne!(t, kerf_hmi::new_token().unwrap());
 }
+
+#[tokio::test]
+async fn with_a_stock_the_simulated_part_is_served_as_stl() {
+    let profile = kerf_interp::Profile::builtin("hx-mc").unwrap();
+    let make: kerf_hmi::server::MakeControl =
+        Box::new(|| Ok(Box::new(Double::new()) as Box<dyn kerf_hmi::Control>));
+    let shared = kerf_hmi::Shared::new(make, profile, vec![], None, 1.0).unwrap();
+    *shared.stock.lock().unwrap() = Some(kerf_sim::Stock::parse("box:0,0,-10,20,20,0").unwrap());
+    let l = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let at = l.local_addr().unwrap();
+    tokio::spawn(kerf_hmi::run(l, shared));
+    assert_eq!(get(at, "/api/part.stl").await.status, 404);
+    // Rapids above the block only: nothing is cut.
+    let r = request(
+        at,
+        "POST",
+        "/api/program?name=p.nc",
+        &[],
+        b"G90 G00 X30. Y30. Z50.\nX-5.\nM30\n",
+    )
+    .await;
+    assert_eq!(r.status, 200);
+    let t0 = std::time::Instant::now();
+    while !get(at, "/api/state").await.json()["path"]["part"]
+        .as_bool()
+        .unwrap()
+    {
+        assert!(t0.elapsed().as_secs() < 60, "no part");
+        tokio::time::sleep(std::time::Duration::from_millis(50)).await;
+    }
+    let r = get(at, "/api/part.stl").await;
+    assert_eq!(r.status, 200);
+    assert_eq!(r.header("content-type"), Some("model/stl"));
+    let c = kerf_sim::stl::check(&r.body).expect("a binary STL");
+    // The whole block, 20 x 20 x 10 mm, closed.
+    assert_eq!(c.bad_edges, 0);
+    assert!(
+        (c.volume - 4000.0).abs() < 1e-6 * 4000.0,
+        "volume {}",
+        c.volume
+    );
+}

@@ -19,6 +19,16 @@ const TOOL_PALETTE = [
   [0xd0, 0x80, 0xff], [0x50, 0xff, 0xe0], [0xff, 0x90, 0x30], [0xff, 0x70, 0xd0],
 ];
 
+/** Box3.expandByPoint without making a Vector3. */
+function grow(b, x, y, z) {
+  if (x < b.min.x) b.min.x = x;
+  if (y < b.min.y) b.min.y = y;
+  if (z < b.min.z) b.min.z = z;
+  if (x > b.max.x) b.max.x = x;
+  if (y > b.max.y) b.max.y = y;
+  if (z > b.max.z) b.max.z = z;
+}
+
 export class Graph {
   constructor(el, machine, info) {
     this.el = el;
@@ -69,7 +79,8 @@ export class Graph {
     g.translate(0, 4, 0);
     if (this.lathe) g.rotateZ(Math.PI / 2);
     else g.rotateX(Math.PI / 2);
-    const m = new THREE.Mesh(g, new THREE.MeshBasicMaterial({ color: 0xffffff, transparent: true, opacity: 0.85 }));
+    const colour = this.machine.style === 'hurco' ? 0x202830 : 0xffffff;
+    const m = new THREE.Mesh(g, new THREE.MeshBasicMaterial({ color: colour, transparent: true, opacity: 0.85 }));
     m.renderOrder = 2;
     return m;
   }
@@ -104,7 +115,9 @@ export class Graph {
   }
 
   colour(kind, tool) {
-    return this.byTool ? TOOL_PALETTE[tool % TOOL_PALETTE.length] : (KIND_COLOURS[kind] || KIND_COLOURS[1]);
+    const c = this.byTool ? TOOL_PALETTE[tool % TOOL_PALETTE.length] : (KIND_COLOURS[kind] || KIND_COLOURS[1]);
+    // The light (Hurco) screen: the same hues, darker.
+    return this.machine.style === 'hurco' ? c.map((v) => Math.round(v * 0.6)) : c;
   }
 
   clear(id) {
@@ -141,14 +154,13 @@ export class Graph {
       }
       this.put(pos, col, x, y, z, kind, tool);
       if (kind !== 255) {
-        const v = new THREE.Vector3(x, y, z);
-        this.box.expandByPoint(v);
+        grow(this.box, x, y, z);
         if (kind !== 0) {
           // A cut runs from the point before it.
-          this.cutBox.expandByPoint(v);
+          grow(this.cutBox, x, y, z);
           if (this.n > 1) {
             const p = (this.n - 2) * 3;
-            this.cutBox.expandByPoint(new THREE.Vector3(pos[p], pos[p + 1], pos[p + 2]));
+            grow(this.cutBox, pos[p], pos[p + 1], pos[p + 2]);
           }
         }
       }
@@ -166,7 +178,13 @@ export class Graph {
     const done = dv.getUint32(12, true) === 1;
     if ((!this.fitted || done) && this.n > 1) this.view(this.lastView || (this.lathe ? 'front' : 'iso'));
     this.done = done;
-    this.render();
+    // While the path streams in, draw at most once a second (a frame
+    // of a million segments costs more than a message).
+    const now = performance.now();
+    if (done || !this.lastStreamDraw || now - this.lastStreamDraw > 1000) {
+      this.lastStreamDraw = now;
+      this.render();
+    }
   }
 
   put(pos, col, x, y, z, kind, tool) {
@@ -190,8 +208,40 @@ export class Graph {
     this.render();
   }
 
+  /** The simulated part (binary STL from the server) as a translucent mesh. */
+  async loadPart(id) {
+    this.partFor = id;
+    const r = await fetch('/api/part.stl');
+    if (!r.ok || this.pathId !== id) return;
+    const dv = new DataView(await r.arrayBuffer());
+    const n = dv.byteLength >= 84 ? dv.getUint32(80, true) : 0;
+    if (84 + n * 50 > dv.byteLength) return;
+    const pos = new Float32Array(n * 9);
+    const nor = new Float32Array(n * 9);
+    for (let i = 0; i < n; i++) {
+      const o = 84 + i * 50;
+      for (let v = 0; v < 3; v++) {
+        for (let k = 0; k < 3; k++) {
+          pos[i * 9 + v * 3 + k] = dv.getFloat32(o + 12 + v * 12 + k * 4, true);
+          nor[i * 9 + v * 3 + k] = dv.getFloat32(o + k * 4, true);
+        }
+      }
+    }
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(pos, 3));
+    g.setAttribute('normal', new THREE.BufferAttribute(nor, 3));
+    if (this.part) { this.scene.remove(this.part); this.part.geometry.dispose(); }
+    this.part = new THREE.Mesh(g, new THREE.MeshNormalMaterial({ transparent: true, opacity: 0.55, side: THREE.DoubleSide, depthWrite: false }));
+    this.part.renderOrder = 1;
+    this.scene.add(this.part);
+    this.partTriangles = n;
+    this.render();
+  }
+
   /** The newest machine state: the tool's live position. */
   state(s, shown) {
+    if (s.path.part && this.partFor !== s.path.id && this.pathId === s.path.id) this.loadPart(s.path.id);
+    if (!s.path.part && this.part) { this.scene.remove(this.part); this.part = null; this.partFor = null; }
     const w = s.position.work;
     this.tool.position.set(w.X || 0, w.Y || 0, w.Z || 0);
     if (this.info) {

@@ -64,7 +64,8 @@ export class Screens {
       $(`pos-dtg-${a}`).textContent = fmt(p.distance_to_go[a]);
     }
     $('feed-actual').textContent = fmt(s.feed.actual, 0);
-    $('feed-prog').textContent = fmt(s.feed.programmed, 0);
+    // mm/min, or mm/rev in G95/G99 (a small number: shown to 0.001).
+    $('feed-prog').textContent = fmt(s.feed.programmed, s.feed.programmed < 10 ? 3 : 0);
     $('spindle-actual').textContent = fmt(s.spindle.rpm, 0);
     $('spindle-prog').textContent = fmt(s.spindle.programmed, 0);
     $('spindle-dir').textContent = s.spindle.direction.toUpperCase();
@@ -298,8 +299,14 @@ export class Screens {
       ['FEED OVERRIDE', `${s.overrides.feed} %`],
       ['RAPID OVERRIDE', `${s.overrides.rapid} %`],
     ];
-    for (const [k, v] of Object.entries(m.params || {})) rows.push([k, v]);
-    $('ofs-setting').innerHTML = `<table>${rows.map(([k, v]) => `<tr><th style="text-align:left">${k}</th><td style="text-align:left">${v}</td></tr>`).join('')}</table>`;
+    const html = (list) => `<table>${list.map(([k, v]) => `<tr><th style="text-align:left">${k}</th><td style="text-align:left">${v}</td></tr>`).join('')}</table>`;
+    $('ofs-setting').innerHTML = html(rows);
+    // The control parameters follow (read from the runtime).
+    this.io.api('GET', '/api/parameters').then((r) => {
+      if (!r.ok) return;
+      const params = Object.entries(r.body).map(([k, v]) => [`PARAM ${k}`, v]);
+      $('ofs-setting').innerHTML = html([...rows, ...params]);
+    });
   }
 
   // ---- ALARM ----

@@ -37,6 +37,7 @@ mod lathe_shape;
 mod motion;
 mod mover;
 mod offset_data;
+mod phases;
 mod polar_interp;
 mod probe;
 mod puma_words;
@@ -45,8 +46,10 @@ mod runtime_hooks;
 mod skip;
 mod system_b;
 mod sysvars;
+mod thread_plan;
 mod tool_offset;
 mod transforms;
+mod work_offsets;
 
 pub use runtime_hooks::{BlockStep, InterpSnapshot};
 pub use sysvars::MacroSwitches;
@@ -118,10 +121,9 @@ struct State {
     /// Current position, machine coordinates: set only by the move seam
     /// (interp/mover.rs).
     mover: mover::Mover,
-    /// Work offsets G54…G59 (machine coordinates of each work zero).
-    wcs: [Pos; 6],
-    /// Active work system index.
-    wcs_idx: usize,
+    /// The work offset table (G54-G59, Hurco E1-E9999) and the active
+    /// system (interp/work_offsets.rs).
+    work: work_offsets::WorkOffsets,
     /// G92 / G50 shift (the HX "work shift" of 000 §7.2.4, also set by
     /// `G10 L2 P0`).
     shift: Pos,
@@ -181,20 +183,6 @@ const MAX_LOOP_DEPTH: usize = 3;
 
 /// A remembered loop scan: file, loop head offset, labels open around it.
 type LoopKey = (u32, u64, [u32; MAX_LOOP_DEPTH]);
-
-/// The one-shot (group 0) G codes of a block that change how it runs.
-#[derive(Clone, Copy, Default)]
-struct OneShots {
-    g53: bool,
-    dwell: bool,
-    g09: bool,
-    g60: Option<u32>,
-    setting: bool,
-    refret: Option<(u16, u32)>,
-    skip: Option<(u16, u32)>,
-    g45: Option<(u16, u32)>,
-    mrc: Option<(u16, u32)>,
-}
 
 /// The interpreter.
 pub struct Interp {
@@ -298,7 +286,7 @@ impl Interp {
         let hx = dialect.id == DialectId::Hx;
         let offsets = OffsetTable::new(profile.tools.offsets as usize);
         let st = Self::power_on_state(&profile, dialect);
-        let hurco = Self::hurco_state(&st);
+        let hurco = Self::hurco_state();
         let arc_tol = profile.param("arc_tolerance_mm", 0.02);
         let repeat_budget = profile.param("max_repeat_blocks", 100_000_000.0) as u64;
         let max_jumps = profile.param("max_jumps", 10_000_000.0) as u64;
@@ -409,8 +397,7 @@ impl Interp {
         let mut st = State {
             modal,
             mover: mover::Mover::new(profile.start_position()),
-            wcs,
-            wcs_idx: 0,
+            work: work_offsets::WorkOffsets::new(wcs),
             shift: [0.0; NAXES],
             local: [0.0; NAXES],
             xf: Default::default(),
@@ -488,12 +475,10 @@ impl Interp {
     /// Sets the work offset of G54+`idx` (machine coordinates of its zero),
     /// as loaded with `--offsets`.
     pub fn set_work_offset(&mut self, idx: usize, origin: Pos) {
-        if idx < 6 {
-            self.st.wcs[idx] = origin;
-        }
+        self.st.work.set(work_offsets::WorkId::G5x(idx), origin);
         if idx == 0 && self.dialect.id == DialectId::Hurco {
             // The Hurco's part zero is fixture offset E1.
-            self.hurco.fixtures.insert(1, origin);
+            self.st.work.set(work_offsets::WorkId::Fixture(1), origin);
         }
     }
 
@@ -590,7 +575,7 @@ impl Interp {
     }
 
     fn origin(&self) -> Pos {
-        let w = &self.st.wcs[self.st.wcs_idx];
+        let w = self.st.work.origin();
         let mut o = [0.0; NAXES];
         for i in 0..NAXES {
             o[i] = w[i] + self.st.shift[i];
@@ -1115,323 +1100,6 @@ impl Interp {
         self.execute_block()
     }
 
-    fn execute_block(&mut self) -> R<bool> {
-        let d = self.dialect;
-        // Classify G codes.
-        let mut motion: Option<(u16, u32)> = None;
-        let mut one_shot: [(u16, u32); MAX_CODES] = [(0, 0); MAX_CODES];
-        let mut n_one = 0;
-        for i in 0..self.words.ng {
-            let (c, at) = self.words.g[i];
-            let Some(g) = self.gcode(c) else {
-                return Err(self.alarm(
-                    AlarmKind::UnknownG,
-                    at,
-                    format!("G{} is not a G code of this control", fmt_code(c)),
-                ));
-            };
-            if let Support::Later(which) = g.support {
-                return Err(self.alarm(
-                    AlarmKind::NotYetSupported,
-                    at,
-                    format!(
-                        "G{} ({}) is not yet supported: {which}",
-                        fmt_code(c),
-                        g.name
-                    ),
-                ));
-            }
-            if c == 650 || c == 660 {
-                return self.g65(c, at).map(|_| true);
-            }
-            if g.group == 1 {
-                motion = Some((c, at));
-            } else if g.group == 0 {
-                one_shot[n_one] = (c, at);
-                n_one += 1;
-            }
-        }
-        let transfer = self.classify_m()?;
-        // A held ,C/,R move, or one in this block, cannot be followed by a
-        // block that moves otherwise or leaves the program.
-        if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
-            self.corner_gate(&one_shot[..n_one], transfer.map(|t| t.0))?;
-        }
-        let hurco = d.hurco_order;
-        let hurco_macro = if hurco {
-            self.hurco_block_checks(&one_shot[..n_one])?
-        } else {
-            None
-        };
-        // Hurco: job-sync M codes first.
-        if hurco {
-            self.run_m(|m| (100..=199).contains(&m.0) && m.1 != MWhen::After)?;
-        }
-        let hx = d.id == DialectId::Hx;
-        let was_cycle = hx && self.st.modal[cycles::CYCLE_GROUP] != 800;
-        let plane_before = self.st.plane;
-        // Modal (and specific) G codes.
-        for i in 0..self.words.ng {
-            let (c, _) = self.words.g[i];
-            let g = self.gcode(c).expect("checked");
-            if g.group != 0 && g.group != 1 {
-                self.st.modal[g.group as usize] = c;
-                Self::apply_modal(&mut self.st, d.id, c);
-                self.mode_event(c);
-                if c == 670 {
-                    self.g67();
-                }
-            }
-        }
-        if let Some((c, _)) = motion {
-            self.st.modal[1] = c;
-        }
-        let cycle = hx && self.cycle_mode(was_cycle, self.st.plane != plane_before, motion)?;
-        let hurco_cycle = hurco && self.hurco_cycle_mode(motion)?;
-        if let Some((c, at, face_m)) = hurco_macro {
-            return self.hurco_macro_block(c, at, face_m);
-        }
-        let rdata = self.rotary_interp_codes()?;
-        let xdata = self.transform_codes(&one_shot[..n_one])? || rdata;
-        if let Some(dw) = self.words.get(b'D') {
-            self.sys.d = dw.v;
-        }
-        if self.words.has(b'H')
-            || self
-                .words
-                .gs()
-                .iter()
-                .any(|g| matches!(g.0, 430 | 440 | 490))
-        {
-            self.tool_length()?;
-        }
-        let g39 = self.block_comp(&one_shot[..n_one], cycle)?;
-        // Coordinate-setting one-shots (G92 / G50 / G59) act before motion.
-        let os = self.one_shots(&one_shot[..n_one])?;
-        let OneShots {
-            dwell,
-            g09,
-            setting,
-            refret,
-            ..
-        } = os;
-        self.before_motion(hurco, dwell)?;
-        if d.id == DialectId::Puma && self.words.nm > 0 {
-            self.lathe_m_codes();
-        }
-        if g09 && !hurco {
-            self.emit(Canon::Mode(ModeChange::ExactStopBlock));
-        }
-        // A dwell or a coordinate-setting block does not move: its axis
-        // words are the time or the new coordinates.
-        let no_motion = dwell || setting || xdata || g39;
-        self.block_motion(&os, no_motion, (cycle, was_cycle, hurco_cycle))?;
-        if hurco && !no_motion && self.has_axis_word() {
-            self.hurco_moved();
-        }
-        if g09 && hurco {
-            // Table 1: exact stop after the motion.
-            self.emit(Canon::Mode(ModeChange::ExactStopBlock));
-        }
-        self.end_of_block(transfer, refret.is_some() || !no_motion)
-    }
-
-    /// Cutter / tool nose radius compensation codes, before the one-shots
-    /// (a G92 or G28 ends a held move first). True for a G39 block.
-    fn block_comp(&mut self, one_shot: &[(u16, u32)], cycle: bool) -> R<bool> {
-        let comp_words = self.words.has(b'D')
-            || self
-                .words
-                .gs()
-                .iter()
-                .any(|g| matches!(g.0, 170 | 180 | 190 | 390 | 400 | 410 | 420));
-        if comp_words || (self.comp.is_some() && (!one_shot.is_empty() || cycle)) {
-            let special = cycle
-                || one_shot.iter().any(|g| {
-                    matches!(g.0, 270 | 280 | 290 | 300 | 530 | 310..=314 | 370..=374 | 450..=480 | 700..=760)
-                });
-            let setting = one_shot
-                .iter()
-                .any(|g| is_coordinate_setting(self.dialect.id, g.0));
-            self.comp_codes(one_shot, special, setting)
-        } else {
-            Ok(false)
-        }
-    }
-
-    /// The block's M codes checked; the M98/M99 it carries (one at most).
-    fn classify_m(&self) -> R<Option<(MAction, u32)>> {
-        let mut transfer: Option<(MAction, u32)> = None;
-        for i in 0..self.words.nm {
-            let (m, at) = self.words.m[i];
-            if self.mcode(m).is_none() {
-                // Fanuc programs ask for rigid tapping with M29 before G84;
-                // the HX has G84.2/G84.3 instead (000 §12.3.5-12.3.6).
-                let hint = if m == 29 && self.dialect.id == DialectId::Hx {
-                    ": rigid tapping on this control is G84.2 (G84.3 left-hand), without M29"
-                } else {
-                    ""
-                };
-                return Err(self.alarm(
-                    AlarmKind::UnknownM,
-                    at,
-                    format!("M{m:02} is not an M code of this control{hint}"),
-                ));
-            }
-            if let Some(mc) = self.mcode(m) {
-                if matches!(mc.action, MAction::SubCall | MAction::SubReturn) {
-                    if transfer.is_some() {
-                        return Err(self.alarm(
-                            AlarmKind::MCodeConflict,
-                            at,
-                            "M98 and M99 in one block",
-                        ));
-                    }
-                    transfer = Some((mc.action, at));
-                }
-            }
-        }
-        Ok(transfer)
-    }
-
-    /// Runs the block's one-shot codes that act before motion (G10 on
-    /// the PUMA, coordinate setting, G59 on the Hurco) and notes the rest.
-    fn one_shots(&mut self, one_shot: &[(u16, u32)]) -> R<OneShots> {
-        let d = self.dialect;
-        let hurco = d.hurco_order;
-        let mut os = OneShots::default();
-        for &(c, at) in one_shot {
-            match (d.id, c) {
-                (_, 40) => os.dwell = true,
-                (_, 270 | 280 | 290 | 300) => os.refret = Some((c, at)),
-                (_, 90) => os.g09 = true,
-                (DialectId::Hx, 600) => os.g60 = Some(at),
-                (_, 530) => {
-                    if hurco {
-                        self.g53_checks(at)?;
-                    }
-                    os.g53 = true
-                }
-                (DialectId::Hx, 310..=314 | 370..=374) => os.skip = Some((c, at)),
-                (DialectId::Hx, 450 | 460 | 470 | 480) => os.g45 = Some((c, at)),
-                (DialectId::Puma, 100) => {
-                    os.setting = true;
-                    self.g10(at)?
-                }
-                (DialectId::Puma, 700..=760) => os.mrc = Some((c, at)),
-                _ if is_coordinate_setting(d.id, c) => {
-                    os.setting = true;
-                    self.coordinate_setting(at)?
-                }
-                (DialectId::Hurco, 590) => self.st.shift = [0.0; NAXES],
-                _ => {}
-            }
-        }
-        Ok(os)
-    }
-
-    /// The machine functions before motion in the control's order: F, T,
-    /// S, the before-motion M codes and the dwell (Hurco: 002 Table 1).
-    fn before_motion(&mut self, hurco: bool, dwell: bool) -> R<()> {
-        if hurco {
-            self.g96_r()?;
-        }
-        if hurco {
-            self.run_m(|m| matches!(m.0, 48 | 49))?;
-            self.run_m(|m| matches!(m.0, 7 | 8))?;
-            self.hurco_t_e()?;
-            self.spindle_words()?;
-            // Other before-motion machine functions, after the spindle.
-            self.run_m(|m| m.1 == MWhen::Before && !matches!(m.0, 7 | 8 | 48 | 49 | 100..=199))?;
-            if dwell {
-                self.dwell()?;
-            }
-            self.f_word(dwell)?;
-        } else {
-            self.f_word(dwell)?;
-            self.t_word()?;
-            self.spindle_words()?;
-            self.run_m(|m| {
-                m.1 == MWhen::Before && !matches!(m.2, MAction::SpindleCw | MAction::SpindleCcw)
-            })?;
-            if dwell {
-                self.dwell()?;
-            }
-        }
-        Ok(())
-    }
-
-    /// The block's motion: a reference return, a skip, a lathe cycle, or
-    /// (when the block's axis words are a move) G53, a canned cycle, G60,
-    /// G45-G48 or the modal motion. `cycles`: (HX cycle mode, entered
-    /// before this block, Hurco cycle mode).
-    fn block_motion(
-        &mut self,
-        os: &OneShots,
-        no_motion: bool,
-        cycles: (bool, bool, bool),
-    ) -> R<()> {
-        let (cycle, was_cycle, hurco_cycle) = cycles;
-        if let Some((c, at)) = os.refret {
-            self.reference_return(c, at)?;
-        } else if let Some((c, at)) = os.skip {
-            self.skip_block(c, at)?;
-        } else if let Some((c, at)) = os.mrc {
-            self.mrc(c, at)?;
-        } else if !no_motion {
-            if os.g53 {
-                self.g53()?;
-            } else if cycle {
-                self.canned_cycle(!was_cycle, os.g60.is_some())?;
-            } else if hurco_cycle {
-                if self.words.has(b'X') || self.words.has(b'Z') || self.words.has(b'R') {
-                    self.hurco_drill()?;
-                }
-            } else if let Some(at) = os.g60 {
-                self.g60(at)?;
-            } else if let Some((c, at)) = os.g45 {
-                self.tool_offset_motion(c, at)?;
-            } else {
-                self.motion()?;
-            }
-        }
-        Ok(())
-    }
-
-    /// After the motion: the after-motion M codes, the end-of-block
-    /// system codes, compensation's block end, then the subprogram call or
-    /// return (or the G66 modal call when the block `moved`).
-    fn end_of_block(&mut self, transfer: Option<(MAction, u32)>, moved: bool) -> R<bool> {
-        let d = self.dialect;
-        // After-motion M codes, then the end-of-block system codes.
-        self.run_m(|m| {
-            m.1 == MWhen::After
-                && !matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End)
-        })?;
-        if d.id == DialectId::Puma && self.words.nm > 0 {
-            self.lathe_m_after();
-        }
-        self.run_m(|m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End))?;
-        if self.comp.is_some() {
-            self.comp_block_end()?;
-        }
-        if self.finished_by_end() {
-            return Ok(false);
-        }
-        // Subprogram call / return last, after everything else of the block.
-        match transfer {
-            Some((MAction::SubCall, at)) => self.m98(at)?,
-            Some((_, at)) => self.m99(at)?,
-            None => {
-                // G66 in force: a block with an axis move calls the macro.
-                if !self.calls.modal.is_empty() && moved && self.has_axis_word() {
-                    self.modal_call(self.motion_at())?;
-                }
-            }
-        }
-        Ok(true)
-    }
-
     /// The block names an axis of the machine (or its incremental address).
     fn has_axis_word(&self) -> bool {
         Axis::ALL.iter().any(|&ax| {
@@ -1459,14 +1127,6 @@ impl Interp {
         }
         if let Some(mc) = self.dialect.mcode(m.min(65535) as u16) {
             return Some(*mc);
-        }
-        if self.dialect.id == DialectId::Hurco && (100..=199).contains(&m) {
-            return Some(crate::dialect::MCode {
-                code: m as u16,
-                name: "job syncing",
-                when: MWhen::Before,
-                action: MAction::Aux,
-            });
         }
         None
     }
@@ -1559,7 +1219,11 @@ impl Interp {
             190 => st.plane = Plane::YZ,
             200 => st.metric = false,
             210 => st.metric = true,
-            540..=590 if d != DialectId::Hurco => st.wcs_idx = ((c - 540) / 10) as usize,
+            540 | 550 | 560 | 570 | 580 | 590 if d != DialectId::Hurco => {
+                if let Some(id) = work_offsets::WorkId::of_code(c) {
+                    st.work.select(id);
+                }
+            }
             900 if d != DialectId::Puma => st.absolute = true,
             system_b::ABS if d == DialectId::Puma => st.absolute = true,
             system_b::INC if d == DialectId::Puma => st.absolute = false,

@@ -50,6 +50,9 @@ pub(crate) struct Clock {
     rest: Pos,
     /// G63 / tapping cycle in force in the event stream.
     tapping: bool,
+    /// Index in `sched` from which the next timed event without its end
+    /// time is searched (the planner reports ends in order).
+    unresolved: usize,
     /// Machine time now, s.
     pub t: f64,
 }
@@ -69,6 +72,7 @@ impl Clock {
             end_pos: pos,
             rest: pos,
             tapping: false,
+            unresolved: 0,
             t,
         }
     }
@@ -84,6 +88,12 @@ impl Clock {
 
     /// Hands an event to the planner.
     pub fn push(&mut self, ev: Event) {
+        self.push_flagged(ev, false);
+    }
+
+    /// Hands an event to the planner; `hold_disabled`: the program has
+    /// switched feed hold off for it (#3004 bit 0).
+    pub fn push_flagged(&mut self, ev: Event, hold_disabled: bool) {
         let kind = match &ev.cmd {
             Canon::Rapid { .. }
             | Canon::Feed { .. }
@@ -102,12 +112,13 @@ impl Clock {
                 _ => {}
             }
         }
-        let no_hold = match &ev.cmd {
-            Canon::Thread { .. } => true,
-            Canon::Feed { .. } | Canon::Arc { .. } => self.tapping,
-            Canon::Dwell { .. } | Canon::Rapid { .. } => false,
-            _ => kind == Kind::Flush,
-        };
+        let no_hold = hold_disabled
+            || match &ev.cmd {
+                Canon::Thread { .. } => true,
+                Canon::Feed { .. } | Canon::Arc { .. } => self.tapping,
+                Canon::Dwell { .. } | Canon::Rapid { .. } => false,
+                _ => kind == Kind::Flush,
+            };
         let modes = self.planner.modes();
         if let Some(m) = ev.motion() {
             self.end_pos = m.mto;
@@ -141,11 +152,15 @@ impl Clock {
     fn collect(&mut self) {
         while let Some(d) = self.planner.next_done() {
             let t = self.base + d.t_end;
+            let from = self.unresolved.min(self.sched.len());
             if let Some(i) = self
                 .sched
                 .iter()
+                .skip(from)
                 .position(|s| s.kind == Kind::Timed && s.t_end.is_none())
+                .map(|k| k + from)
             {
+                self.unresolved = i + 1;
                 self.sched[i].t_end = Some(t);
                 let mut j = i + 1;
                 while j < self.sched.len()
@@ -180,10 +195,12 @@ impl Clock {
                 Some(te) if te <= t && self.sched.len() > 1 => {
                     done(s);
                     self.sched.pop_front();
+                    self.unresolved = self.unresolved.saturating_sub(1);
                 }
                 Some(te) if te <= t && te <= self.planned_until() && !self.queued() => {
                     done(s);
                     self.sched.pop_front();
+                    self.unresolved = self.unresolved.saturating_sub(1);
                 }
                 _ => break,
             }
@@ -302,6 +319,7 @@ impl Clock {
             .drain(..)
             .filter(|s| s.t_end.is_none_or(|te| te > t_stop))
             .collect();
+        self.unresolved = 0;
         let modes = left
             .first()
             .map(|s| s.modes)
@@ -332,6 +350,7 @@ impl Clock {
         let stop = self.hold(t);
         let keep_modes = self.planner.modes();
         self.sched.clear();
+        self.unresolved = 0;
         self.planner = Planner::resume(self.dynamics.clone(), stop.at, &keep_modes, true);
         self.base = stop.t_stop;
         self.end_pos = stop.at;
@@ -359,6 +378,7 @@ impl Clock {
         self.base = now;
         self.pieces.clear();
         self.sched.clear();
+        self.unresolved = 0;
         self.end_pos = pos;
         self.rest = pos;
         self.tapping = false;

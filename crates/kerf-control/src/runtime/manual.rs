@@ -138,6 +138,7 @@ impl Runtime {
         };
         self.restart_clock();
         if let Some(e) = e {
+            self.note_motion(&e);
             self.clock.push(e);
         }
         self.clock.finish();

@@ -39,6 +39,7 @@
 mod alarms;
 mod clock;
 mod command;
+mod display;
 mod hold;
 mod manual;
 mod mdi;
@@ -54,6 +55,7 @@ mod run;
 mod snapshot;
 mod switches;
 mod table;
+mod trail;
 
 use std::path::PathBuf;
 
@@ -69,6 +71,7 @@ pub use restart::{RestartAt, RestartPlan};
 pub use snapshot::{AlarmInfo, AxisValues, Positions, ProgramAt, Spindle, State};
 pub use switches::{Overrides, Switches};
 pub use table::{decide, markdown as mode_table_markdown, reachable, Verdict};
+pub use trail::{MotionRecord, TRAIL_CAP};
 
 use clock::Clock;
 use program::Program;
@@ -83,6 +86,7 @@ enum Pause {
     SingleBlock,
     Stop {
         optional: bool,
+        src: kerf_canon::SrcRef,
     },
     End,
     Alarm(kerf_canon::Alarm),
@@ -137,6 +141,8 @@ pub struct Runtime {
     /// back until cycle start.
     sb_block: Option<(u32, u32)>,
     stash: Option<kerf_canon::Event>,
+    /// The toolpath as it is made.
+    trail: trail::Trail,
     /// A jog, handle or reference move under way.
     manual: Option<manual::ManualMove>,
     /// Commands the interpreter keeps read ahead of the axes (the
@@ -184,6 +190,7 @@ impl Runtime {
             restart: None,
             referenced: [false; NAXES],
             manual: None,
+            trail: Default::default(),
             sb_block: None,
             stash: None,
             last_line: 0,
@@ -291,6 +298,23 @@ impl Runtime {
 
     /// The program restart prepared by [`Command::Restart`], with its
     /// re-entry path, until cycle start runs it.
+    ///
+    /// ```
+    /// use kerf_control::runtime::{Command, Execution, Mode, Runtime};
+    ///
+    /// let mut rt = Runtime::for_machine("hx-mc").unwrap();
+    /// rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
+    /// rt.load_program("p.nc", "G90 G54 G00 X-50. Y-50. Z20.\nM03 S800\nG01 Z-2. F200\nX-80.\nM30\n").unwrap();
+    /// rt.command(Command::Restart { line: Some(4), sequence: None }).unwrap();
+    /// let plan = rt.pending_restart().unwrap();
+    /// assert_eq!((plan.spindle_direction.as_str(), plan.spindle_rpm), ("cw", 800.0));
+    /// assert_eq!(plan.feed, Some(200.0));
+    /// assert_eq!(plan.path.last().unwrap().kind, "feed");
+    /// rt.command(Command::CycleStart).unwrap();
+    /// rt.run_until_stopped(120.0);
+    /// assert_eq!(rt.execution(), Execution::ProgramCompleted);
+    /// assert_eq!(rt.state().position.work["x"], -80.0);
+    /// ```
     pub fn pending_restart(&self) -> Option<&RestartPlan> {
         self.restart.as_ref()
     }

@@ -11,6 +11,22 @@ use super::Runtime;
 impl Runtime {
     /// Carries out an operator command, or refuses it with the reason
     /// (nothing of a refused command is done).
+    ///
+    /// ```
+    /// use kerf_control::runtime::{Command, Execution, Mode, Runtime};
+    ///
+    /// let mut rt = Runtime::for_machine("hx-mc").unwrap();
+    /// // Power-on: EDIT mode; cycle start runs programs in MEM or MDI.
+    /// let r = rt.command(Command::CycleStart).unwrap_err();
+    /// assert_eq!(r.reason, "cycle start runs programs in MEM or MDI mode");
+    /// // The contract's JSON bodies deserialise to commands.
+    /// let c: Command = serde_json::from_str(r#"{"cmd":"mode","mode":"MDI"}"#).unwrap();
+    /// rt.command(c).unwrap();
+    /// rt.command(Command::Mdi { block: "G91 G00 X-10.".into() }).unwrap();
+    /// rt.run_until_stopped(10.0);
+    /// assert_eq!(rt.execution(), Execution::Ready);
+    /// assert_eq!(rt.state().position.machine["x"], -10.0);
+    /// ```
     pub fn command(&mut self, cmd: Command) -> Result<(), Refusal> {
         let op = cmd.op();
         let next = self.check(op)?;
@@ -19,6 +35,10 @@ impl Runtime {
             Command::FeedHold => self.feed_hold(),
             Command::Reset => self.reset(),
             Command::Mode { mode } => {
+                if mode != self.mode {
+                    // The re-entry was computed from where the axes were.
+                    self.drop_restart();
+                }
                 self.mode = mode;
                 if let Some(x) = next {
                     self.exec = x;
@@ -185,14 +205,18 @@ impl Runtime {
     fn feed_hold(&mut self) {
         if matches!(self.mode, Mode::Jog | Mode::Ref) {
             let t = self.clock.t;
-            self.clock.abort(t);
+            let stop = self.clock.abort(t);
             self.manual_done();
+            self.interp.set_machine_position(stop.at);
             return;
         }
         let t = self.clock.t;
         let at = self.clock.hold_point(t);
         self.exec = Execution::FeedHold;
         if at > t {
+            // The thread or tap goes on: its pieces all planned now (the
+            // interpreter reads no further until cycle start).
+            self.clock.finish();
             self.hold_at = Some(at);
         } else {
             self.hold_now(t);

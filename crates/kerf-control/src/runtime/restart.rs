@@ -106,6 +106,17 @@ impl Runtime {
         }
     }
 
+    /// Forgets a prepared restart: the program is back at its start and
+    /// the interpreter where the axes are.
+    pub(super) fn drop_restart(&mut self) {
+        if self.restart.take().is_some() {
+            self.interp.reset();
+            self.load_main_program();
+            let pos = self.clock.position(self.clock.t);
+            self.interp.set_machine_position(pos);
+        }
+    }
+
     fn load_main_program(&mut self) {
         if let Some(p) = &self.program {
             let (n, t) = (p.name.clone(), p.text.clone());
@@ -327,6 +338,7 @@ impl Runtime {
         );
         self.clock.set_overrides(f, r, d);
         for e in plan.events {
+            self.note_motion(&e);
             self.clock.push(e);
         }
         self.exec = Execution::Active;

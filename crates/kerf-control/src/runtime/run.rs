@@ -4,13 +4,13 @@
 //! axes reach it; the machine's spindle, tool and coolant change as the
 //! axes reach each command.
 
-use kerf_canon::{Axis, Canon, NAXES};
+use kerf_canon::Canon;
 use kerf_interp::BlockStep;
 
 use super::alarms::{Record, RecordKind};
 use super::clock::Sched;
 use super::mode::Execution;
-use super::snapshot::{AlarmInfo, AxisValues, Positions, ProgramAt, Spindle, State};
+use super::snapshot::AlarmInfo;
 use super::{Pause, Runtime};
 
 /// How far ahead of the axes the interpreter is kept, s of machine time
@@ -97,6 +97,7 @@ impl Runtime {
                 Canon::Stop { optional } => {
                     self.pause = Some(Pause::Stop {
                         optional: *optional,
+                        src: e.src,
                     })
                 }
                 Canon::End { .. } => self.pause = Some(Pause::End),
@@ -107,7 +108,17 @@ impl Runtime {
                 }
                 _ => {}
             }
-            self.clock.push(e);
+            self.note_motion(&e);
+            let ms = self.interp.macro_switches();
+            if ms.override_disabled {
+                // #3004 bit 1: the feed override does not act (100 %).
+                let (r, d) = (self.overrides.rapid / 100.0, self.switches.dry_run);
+                self.clock.set_overrides(1.0, r, d);
+                self.clock.push_flagged(e, ms.feed_hold_disabled);
+                self.clock.set_overrides(self.overrides.feed / 100.0, r, d);
+            } else {
+                self.clock.push_flagged(e, ms.feed_hold_disabled);
+            }
         }
         false
     }
@@ -242,8 +253,9 @@ impl Runtime {
                 self.sb_block = None;
                 self.exec = Execution::Interrupted;
             }
-            Pause::Stop { optional } => {
+            Pause::Stop { optional, src } => {
                 self.pause = None;
+                self.stop_message(src);
                 self.exec = if optional {
                     Execution::OptionalStop
                 } else {
@@ -279,6 +291,22 @@ impl Runtime {
         }
     }
 
+    /// The comment of the block that stopped (M00 / M01 `(CHECK PART)`)
+    /// goes to the history as a message, for the operator.
+    fn stop_message(&mut self, src: kerf_canon::SrcRef) {
+        let text = self
+            .program
+            .as_ref()
+            .filter(|_| !self.in_mdi)
+            .and_then(|p| p.line(src.line))
+            .map(comments)
+            .unwrap_or_default();
+        if !text.is_empty() {
+            let r = self.record(RecordKind::Message, "", &text, Some(src));
+            self.log.push(r);
+        }
+    }
+
     fn hurco(&self) -> bool {
         self.profile.dialect == kerf_interp::DialectId::Hurco
     }
@@ -292,123 +320,20 @@ impl Runtime {
             t_stop: stop.t_stop,
         });
     }
+}
 
-    /// The state at the current machine time.
-    pub fn state(&self) -> State {
-        let t = self.clock.t;
-        let mpos = self.clock.position(t);
-        let t_eff = match &self.held {
-            Some(h) => t.min(h.t_stop),
-            None => t,
-        };
-        let moving = self.exec == Execution::Active && self.held.is_none();
-        // Running: the command under way; in a feed hold: the one
-        // interrupted; stopped: the last one finished.
-        let cur = if moving {
-            self.clock
-                .current()
-                .filter(|s| s.t_end.is_none_or(|te| te >= t))
-        } else if self.held.is_some() {
-            self.clock
-                .sched
-                .iter()
-                .find(|s| s.t_end.is_none_or(|te| te > t_eff))
-        } else {
-            self.clock
-                .sched
-                .iter()
-                .rev()
-                .find(|s| s.t_end.is_some_and(|te| te <= t_eff + 1e-12))
-        };
-        // Work = machine − (the current motion's machine − work offset).
-        let (shift, end) = match cur.and_then(|s| s.ev.motion().map(|m| (s, m))) {
-            Some((_, m)) => {
-                let mut d = [0.0; NAXES];
-                for i in 0..NAXES {
-                    d[i] = m.mto[i] - m.to[i];
-                }
-                (d, m.mto)
-            }
-            None => {
-                let w = self.interp.work_position();
-                let m = self.interp.machine_position();
-                let mut d = [0.0; NAXES];
-                for i in 0..NAXES {
-                    d[i] = m[i] - w[i];
-                }
-                (d, mpos)
-            }
-        };
-        let held_or_idle = self.exec != Execution::Active || self.held.is_some();
-        let mut work = AxisValues::new();
-        let mut machine = AxisValues::new();
-        let mut togo = AxisValues::new();
-        for a in Axis::ALL {
-            if !self.profile.has_axis(a) {
-                continue;
-            }
-            let i = a as usize;
-            work.insert(a.name().into(), mpos[i] - shift[i]);
-            machine.insert(a.name().into(), mpos[i]);
-            let g = if cur.is_some() { end[i] - mpos[i] } else { 0.0 };
-            togo.insert(a.name().into(), g);
+/// The text of a block's comments `(…)`, joined by spaces.
+fn comments(line: &str) -> String {
+    let mut out = Vec::new();
+    let mut rest = line;
+    while let Some(a) = rest.find('(') {
+        let after = &rest[a + 1..];
+        let Some(b) = after.find(')') else { break };
+        let c = after[..b].trim();
+        if !c.is_empty() {
+            out.push(c.to_string());
         }
-        let (line, name) = match cur {
-            Some(s) => (
-                s.ev.src.line,
-                self.interp.file_name(s.ev.src.file).to_string(),
-            ),
-            None => (
-                self.last_line,
-                self.program
-                    .as_ref()
-                    .map(|p| p.name.clone())
-                    .unwrap_or_default(),
-            ),
-        };
-        let block = if self.in_mdi {
-            String::new()
-        } else {
-            self.program
-                .as_ref()
-                .filter(|p| p.name == name)
-                .and_then(|p| p.line(line))
-                .unwrap_or("")
-                .to_string()
-        };
-        let direction = match self.phys.spindle {
-            kerf_canon::SpindleDir::Cw => "cw",
-            kerf_canon::SpindleDir::Ccw => "ccw",
-            kerf_canon::SpindleDir::Stop => "stop",
-        };
-        State {
-            mode: self.mode,
-            execution: self.exec,
-            program: ProgramAt {
-                name: if self.in_mdi { "MDI".into() } else { name },
-                line,
-                block,
-            },
-            position: Positions {
-                work,
-                machine,
-                distance_to_go: togo,
-            },
-            modal: self.interp.modal_codes(),
-            feed: if held_or_idle && self.held.is_none() {
-                0.0
-            } else {
-                self.clock.speed(t) * 60.0
-            },
-            spindle: Spindle {
-                rpm: self.phys.rpm,
-                direction: direction.into(),
-            },
-            tool: self.phys.tool,
-            switches: self.switches.clone(),
-            overrides: self.overrides,
-            alarm: self.alarm.clone(),
-            t,
-        }
+        rest = &after[b + 1..];
     }
+    out.join(" ")
 }

@@ -13,7 +13,8 @@ pub struct Switches {
     pub optional_stop: bool,
     /// Cutting moves at the dry-run feed.
     pub dry_run: bool,
-    /// Block delete levels switched on (1-9; `/` alone is level 1).
+    /// Block delete levels switched on (0-10, as `--set block_skip`; `/`
+    /// alone is level 1).
     pub block_skip: Vec<u8>,
 }
 
@@ -25,11 +26,12 @@ impl Switches {
             .fold(0u16, |m, &l| m | (1u16 << l.min(15)))
     }
 
-    /// Checks the levels: 1-9 (000 §2.3.3 `/1`-`/9`, 002 the same).
+    /// Checks the levels: 0-10 (000 §2.3.3 "/0 ~ /10" on the HX, 002
+    /// `/0`-`/9` on the Hurco).
     pub fn validate(&self) -> Result<(), String> {
         for &l in &self.block_skip {
-            if !(1..=9).contains(&l) {
-                return Err(format!("block skip level {l}: levels are 1-9"));
+            if l > 10 {
+                return Err(format!("block skip level {l}: levels are 0-10"));
             }
         }
         Ok(())
@@ -84,9 +86,15 @@ mod tests {
             ..Default::default()
         };
         assert_eq!(s.skip_mask(), 0b1010);
+        let zero = Switches {
+            block_skip: vec![0, 10],
+            ..Default::default()
+        };
+        assert_eq!(zero.skip_mask(), 0b100_0000_0001);
+        assert!(zero.validate().is_ok());
         assert!(s.validate().is_ok());
         let bad = Switches {
-            block_skip: vec![0],
+            block_skip: vec![11],
             ..Default::default()
         };
         assert!(bad.validate().is_err());

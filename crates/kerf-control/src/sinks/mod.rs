@@ -4,21 +4,29 @@
 //! - [`Report`]: the JSON summary of the run;
 //! - [`Plot`]: an SVG drawing of the path;
 //! - [`Sample`]: the smoothed axis setpoints at a fixed period (CSV);
-//! - [`Log`]: the operator messages, one per line.
+//! - [`Log`]: the operator messages, one per line;
+//! - [`SimSink`]: the material-removal simulation (`--stock`), its STL
+//!   and PNG, and the report's `sim` section.
+//! - [`Expand`]: the program as plain G-code for a target control
+//!   (docs/expand.md).
 //!
 //! Each takes any `io::Write`; formats are in docs/formats.md.
 
+pub mod expand;
 pub mod log;
 pub mod number;
 pub mod plot;
 pub mod report;
 pub mod sample;
+pub mod sim;
 pub mod toolpath;
 
+pub use expand::Expand;
 pub use log::Log;
 pub use plot::Plot;
 pub use report::Report;
 pub use sample::Sample;
+pub use sim::{SimHandle, SimSink};
 pub use toolpath::Toolpath;
 
 use kerf_canon::Axis;

@@ -19,6 +19,7 @@ pub struct Report<W: Write> {
     out: W,
     summary: Summary,
     doc: Option<Document>,
+    sim: Option<super::SimHandle>,
 }
 
 impl<W: Write> Report<W> {
@@ -29,7 +30,15 @@ impl<W: Write> Report<W> {
             out,
             summary: Summary::new(&[]),
             doc: None,
+            sim: None,
         }
+    }
+
+    /// Adds the `sim` section that a [`super::SimSink`] finishing before
+    /// this sink leaves in `h`.
+    pub fn with_sim(mut self, h: super::SimHandle) -> Report<W> {
+        self.sim = Some(h);
+        self
     }
 
     /// The report, once the run has finished.
@@ -61,6 +70,7 @@ impl<W: Write> Sink for Report<W> {
     fn finish(&mut self, cx: &Context, alarm: Option<&Alarm>) -> io::Result<()> {
         let mut doc = self.summary.finish(cx.interp, cx.planner, alarm);
         doc.warnings = cx.warnings.iter().map(WarningOut::from).collect();
+        doc.sim = self.sim.as_ref().and_then(|h| h.borrow().clone());
         let text = serde_json::to_string_pretty(&doc).map_err(io::Error::other)?;
         self.doc = Some(doc);
         self.out.write_all(text.as_bytes())?;
@@ -209,6 +219,9 @@ pub struct Document {
     pub cycle_time_s: f64,
     /// The cycle time by category.
     pub time_s: TimeOut,
+    /// The simulation (`--stock` only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sim: Option<super::sim::SimOut>,
 }
 
 fn r6(v: f64) -> f64 {
@@ -367,6 +380,7 @@ impl Summary {
                 tool_change: r6(est.time.tool_change),
                 other: r6(est.time.other),
             },
+            sim: None,
         }
     }
 }

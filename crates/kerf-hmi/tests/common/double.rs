@@ -16,8 +16,10 @@ pub struct Double {
 
 impl Double {
     pub fn new() -> Double {
-        let mut d = Double::default();
-        d.offsets = serde_json::json!({"h": {}});
+        let mut d = Double {
+            offsets: serde_json::json!({"h": {}}),
+            ..Default::default()
+        };
         d.set_x(0.0);
         d
     }

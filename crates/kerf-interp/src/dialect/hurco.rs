@@ -94,7 +94,7 @@ const fn hurco_mcodes() -> [MCode; M_LOW.len() + N_SYNC + M_HIGH.len()] {
     }
     let mut k = 0;
     while k < N_SYNC {
-        out[M_LOW.len() + k] = m(100 + k as u16, "job syncing", Before, Aux);
+        out[M_LOW.len() + k] = m(100 + k as u16, "job syncing", JobSync, Aux);
         k += 1;
     }
     let mut j = 0;
@@ -184,5 +184,5 @@ pub static DIALECT: Dialect = Dialect {
     diameter_default: true,
     uvw_incremental: false,
     hurco_syntax: true,
-    hurco_order: true,
+    order: super::HURCO_TABLE_1,
 };

@@ -144,5 +144,5 @@ pub static DIALECT: Dialect = Dialect {
     diameter_default: false,
     uvw_incremental: false,
     hurco_syntax: false,
-    hurco_order: false,
+    order: super::FANUC_MILL,
 };

@@ -47,6 +47,9 @@ pub struct GCode {
 pub enum MWhen {
     /// Before the block's motion (spindle start, coolant on, …).
     Before,
+    /// Hurco job syncing (M100-M199): before everything else of the
+    /// block (002 Table 1, first row).
+    JobSync,
     /// After the block's motion (spindle stop, program stop, end, …).
     After,
 }
@@ -101,9 +104,154 @@ pub struct Dialect {
     pub uvw_incremental: bool,
     /// Hurco: loop commands in comments, `\` continuation.
     pub hurco_syntax: bool,
-    /// Execute a block's codes in the order of 002 Table 1.
-    pub hurco_order: bool,
+    /// The order in which a block's codes execute: [`FANUC_MILL`] on the
+    /// HX, [`FANUC_LATHE`] on the PUMA, [`HURCO_TABLE_1`] on the Hurco.
+    pub order: &'static [Phase],
 }
+
+/// One step of executing a block. A dialect lists its steps in the
+/// control's order ([`Dialect::order`]) and executing a block is a walk
+/// over that list (interp/phases.rs); the block's G and M codes are
+/// checked before the first step.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Phase {
+    /// Hurco: the G78/G38 block and mode checks of 002.
+    HurcoChecks,
+    /// Hurco: the job-synchronisation M codes M100-M199 (002 Table 1, first).
+    JobSyncM,
+    /// The modal G codes (every group but 0 and 1) and the motion mode.
+    ModalG,
+    /// HX: the canned cycle mode (group 10) entered, kept or left.
+    HxCycleMode,
+    /// Hurco: the drill cycle mode.
+    HurcoCycleMode,
+    /// Hurco: a G78 or G38 block runs as its cycle, which ends the block.
+    HurcoMacro,
+    /// G112/G113/G107 and the coordinate frame codes (G15/G16, G50/G51,
+    /// G68/G69, G52, G10 L2).
+    Frames,
+    /// D, and G43/G44/G49 with H.
+    ToolLength,
+    /// Cutter / nose radius compensation codes (G39-G42, D).
+    Comp,
+    /// The one-shot codes that act before motion (G10 on the PUMA,
+    /// G92/G50, Hurco G59); the others are noted for the motion.
+    OneShots,
+    /// Hurco: the G96 R radius.
+    CssRadius,
+    /// Hurco: M48/M49 (feed and speed overrides).
+    OverrideM,
+    /// Hurco: M07/M08 coolant.
+    CoolantM,
+    /// Hurco: the T and E codes (tool and fixture offsets).
+    ToolAndFixture,
+    /// F.
+    Feed,
+    /// T (Fanuc).
+    Tool,
+    /// S and the spindle M codes.
+    Spindle,
+    /// Fanuc: the before-motion M codes other than spindle start.
+    MBefore,
+    /// Hurco: the before-motion M codes not run in the phases above.
+    HurcoMBefore,
+    /// G04.
+    Dwell,
+    /// PUMA: the coolant part of M63-M65 and M76/M77 chamfering.
+    PumaM,
+    /// Fanuc: G09 exact stop, before the motion.
+    ExactStopBefore,
+    /// The block's motion.
+    Motion,
+    /// Hurco: the block moved (offsets waiting for a move, Table 16).
+    Moved,
+    /// Hurco: G09 exact stop, after the motion (Table 1).
+    ExactStopAfter,
+    /// The after-motion M codes other than M00/M01/M02/M30.
+    MAfter,
+    /// PUMA: the after-motion part of M76/M77.
+    PumaMAfter,
+    /// M00, M01, M02, M30.
+    Stop,
+    /// Compensation's end of block (look-ahead count).
+    CompEnd,
+    /// M98 / M99 (or the G66 modal call) last; nothing after the end.
+    Transfer,
+}
+
+/// The Fanuc order on the HX (000; fanuc-semantics §2).
+pub static FANUC_MILL: &[Phase] = &[
+    Phase::ModalG,
+    Phase::HxCycleMode,
+    Phase::Frames,
+    Phase::ToolLength,
+    Phase::Comp,
+    Phase::OneShots,
+    Phase::Feed,
+    Phase::Tool,
+    Phase::Spindle,
+    Phase::MBefore,
+    Phase::Dwell,
+    Phase::ExactStopBefore,
+    Phase::Motion,
+    Phase::MAfter,
+    Phase::Stop,
+    Phase::CompEnd,
+    Phase::Transfer,
+];
+
+/// The Fanuc order on the PUMA (Fanuc 0-T), with its compound M codes.
+pub static FANUC_LATHE: &[Phase] = &[
+    Phase::ModalG,
+    Phase::Frames,
+    Phase::ToolLength,
+    Phase::Comp,
+    Phase::OneShots,
+    Phase::Feed,
+    Phase::Tool,
+    Phase::Spindle,
+    Phase::MBefore,
+    Phase::Dwell,
+    Phase::PumaM,
+    Phase::ExactStopBefore,
+    Phase::Motion,
+    Phase::MAfter,
+    Phase::PumaMAfter,
+    Phase::Stop,
+    Phase::CompEnd,
+    Phase::Transfer,
+];
+
+/// 002 Table 1, row by row: job-sync M codes first, the modal and
+/// one-shot codes, G96 R, M48/M49, M07/M08, T and E, S, the other
+/// before-motion M codes, G04, F, the motion, G09 after it, the
+/// after-motion M codes, M00/M01/M02/M30, then M98/M99.
+pub static HURCO_TABLE_1: &[Phase] = &[
+    Phase::HurcoChecks,
+    Phase::JobSyncM,
+    Phase::ModalG,
+    Phase::HurcoCycleMode,
+    Phase::HurcoMacro,
+    Phase::Frames,
+    Phase::ToolLength,
+    Phase::Comp,
+    Phase::OneShots,
+    Phase::CssRadius,
+    Phase::OverrideM,
+    Phase::CoolantM,
+    Phase::ToolAndFixture,
+    Phase::Spindle,
+    Phase::HurcoMBefore,
+    Phase::Dwell,
+    Phase::Feed,
+    Phase::Motion,
+    Phase::Moved,
+    Phase::ExactStopAfter,
+    Phase::MAfter,
+    Phase::Stop,
+    Phase::CompEnd,
+    Phase::Transfer,
+];
 
 impl Dialect {
     /// The dialect for an id.
@@ -193,5 +341,35 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Each control's order: every phase once, the motion once, the
+    /// transfer (M98/M99) last; Fanuc G09 before the motion, 002 Table 1
+    /// G09 after it, its job-sync M codes before the modal codes and F
+    /// after G04.
+    #[test]
+    fn block_orders() {
+        let pos = |o: &[Phase], p: Phase| o.iter().position(|&q| q == p);
+        for d in [DialectId::Hx, DialectId::Puma, DialectId::Hurco] {
+            let o = Dialect::get(d).order;
+            for (i, p) in o.iter().enumerate() {
+                assert!(!o[i + 1..].contains(p), "{d:?}: {p:?} twice");
+            }
+            assert!(pos(o, Phase::Motion).is_some(), "{d:?}");
+            assert_eq!(o.last(), Some(&Phase::Transfer), "{d:?}");
+        }
+        let before = |o: &[Phase], a: Phase, b: Phase| pos(o, a).unwrap() < pos(o, b).unwrap();
+        for o in [FANUC_MILL, FANUC_LATHE] {
+            assert!(before(o, Phase::Feed, Phase::Dwell));
+            assert!(before(o, Phase::ExactStopBefore, Phase::Motion));
+            assert!(pos(o, Phase::ExactStopAfter).is_none());
+        }
+        let h = HURCO_TABLE_1;
+        assert!(before(h, Phase::JobSyncM, Phase::ModalG));
+        assert!(before(h, Phase::Dwell, Phase::Feed));
+        assert!(before(h, Phase::Motion, Phase::ExactStopAfter));
+        assert!(before(h, Phase::ExactStopAfter, Phase::MAfter));
+        assert!(before(h, Phase::MAfter, Phase::Stop));
+        assert!(pos(h, Phase::ExactStopBefore).is_none());
     }
 }

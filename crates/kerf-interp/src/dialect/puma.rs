@@ -186,5 +186,5 @@ pub static DIALECT: Dialect = Dialect {
     diameter_default: true,
     uvw_incremental: true,
     hurco_syntax: false,
-    hurco_order: false,
+    order: super::FANUC_LATHE,
 };

@@ -361,7 +361,7 @@ impl Interp {
                 let i = ax as usize;
                 self.st.local[i] = 0.0;
                 self.st.shift[i] =
-                    self.st.mover.pos()[i] - self.st.wcs[self.st.wcs_idx][i] - self.st.tlo[i] - t;
+                    self.st.mover.pos()[i] - self.st.work.origin()[i] - self.st.tlo[i] - t;
             }
         }
         let _ = (any, at);

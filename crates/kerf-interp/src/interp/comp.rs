@@ -557,6 +557,44 @@ impl Interp {
         })
     }
 
+    /// The offset value is read for every move: a D word, a lathe T code
+    /// or G10 changing the value in offset mode takes effect at the end of
+    /// the next compensated move (000 §13.2.2: that block runs slanted
+    /// from the old vector to the new one). Marks the block as moved.
+    fn comp_refresh(&mut self) {
+        let (value, vtip) = self.comp_value();
+        let c = self.comp.as_deref_mut().expect("comp");
+        if c.on {
+            c.r = c.side * value;
+            c.tip = if value < 0.0 { (0.0, 0.0) } else { vtip };
+        }
+        c.moved = true;
+        c.idle = 0;
+    }
+
+    /// G40: the held move `h` emitted up to its cancel vector, toward the
+    /// cancel move `seg` (or the G40 block's I/J/K direction `ij`); returns
+    /// where the uncompensated move starts.
+    fn comp_cancel_held(&mut self, mut h: Held, ij: Option<P>, seg: &Seg, type_b: bool) -> R<P> {
+        let k = h.seg.end();
+        let j = if h.startup {
+            Join::at(self.comp_geom(comp::perp_end(&h.seg, h.r), h.motion)?)
+        } else {
+            let e = match ij {
+                Some(d) => Seg::Line {
+                    a: k,
+                    b: padd(k, d),
+                },
+                None => *seg,
+            };
+            let j = comp::cancel(&h.seg, &e, h.r, type_b, ij.is_some());
+            self.comp_geom(j, h.motion)?
+        };
+        let htip = h.tip;
+        self.comp_flush(&mut h, &j)?;
+        Ok(padd(j.start2(), htip))
+    }
+
     /// A move in the plane in compensation: `p.seg` (transformed) is
     /// joined to the held move (or starts up, or cancels) and held in
     /// turn. Used by [`Self::comp_motion`] for a block's move and by the
@@ -580,18 +618,8 @@ impl Interp {
         let (a1, a2, _) = plane.axes();
         let arc = matches!(mode, 20 | 30);
         let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
-        // The offset value is read for every move: a D word, a lathe T
-        // code or G10 changing the value in offset mode takes effect at
-        // the end of the next compensated move (000 §13.2.2: that block
-        // runs slanted from the old vector to the new one).
-        let (value, vtip) = self.comp_value();
+        self.comp_refresh();
         let c = self.comp.as_deref_mut().expect("comp");
-        if c.on {
-            c.r = c.side * value;
-            c.tip = if value < 0.0 { (0.0, 0.0) } else { vtip };
-        }
-        c.moved = true;
-        c.idle = 0;
         let (on, r, tip, vec, startup, type_b) = (c.on, c.r, c.tip, c.vec, c.startup, c.type_b);
         // A mirror image on one axis of the plane reverses the path's
         // turning sense: the offset goes to the other side of travel
@@ -623,26 +651,9 @@ impl Interp {
                     "cutter compensation cancelled (G40) in a G02/G03 block: cancel in G00/G01",
                 ));
             }
-            let base = if let Some(mut h) = held {
-                let k = h.seg.end();
-                let j = if h.startup {
-                    Join::at(self.comp_geom(comp::perp_end(&h.seg, h.r), h.motion)?)
-                } else {
-                    let e = match ij {
-                        Some(d) => Seg::Line {
-                            a: k,
-                            b: padd(k, d),
-                        },
-                        None => seg,
-                    };
-                    let j = comp::cancel(&h.seg, &e, h.r, type_b, ij.is_some());
-                    self.comp_geom(j, h.motion)?
-                };
-                let htip = h.tip;
-                self.comp_flush(&mut h, &j)?;
-                padd(j.start2(), htip)
-            } else {
-                padd(s, vec)
+            let base = match held {
+                Some(h) => self.comp_cancel_held(h, ij, &seg, type_b)?,
+                None => padd(s, vec),
             };
             if let Some(cap) = self.comp_capture.as_mut() {
                 if comp::dist(base, e) >= comp::EPS {

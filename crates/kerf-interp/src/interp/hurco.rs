@@ -4,20 +4,14 @@
 //! and G92 S. The cycles are in `hurco_thread.rs` (G78),
 //! `hurco_cycles.rs` (G73/G74/G80-G84) and `probe.rs` (G38).
 
-use std::collections::BTreeMap;
-
+use super::work_offsets::WorkId;
 use super::*;
 
-/// Highest fixture offset number (002 Table 3: E 0-9999).
-pub(super) const MAX_FIXTURE: u32 = 9999;
+pub(super) use super::work_offsets::MAX_FIXTURE;
 
 /// Hurco-only state.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct HurcoState {
-    /// Fixture offset table (machine coordinates of each part zero, mm, X
-    /// as a radius); entries never written read as the E1 default for E1
-    /// and zero for the others.
-    pub fixtures: BTreeMap<u32, Pos>,
     /// Active fixture offset number (E1 at power-on: the profile's part
     /// zero).
     pub fixture: u32,
@@ -37,33 +31,25 @@ pub(crate) struct HurcoState {
 }
 
 impl Interp {
-    /// The Hurco state, created with E1 = the profile's part zero.
-    pub(super) fn hurco_state(st: &State) -> Box<HurcoState> {
-        let mut h = HurcoState {
+    /// The Hurco state (E1 active: the profile's part zero, which the
+    /// work offset table holds).
+    pub(super) fn hurco_state() -> Box<HurcoState> {
+        Box::new(HurcoState {
             fixture: 1,
             ..Default::default()
-        };
-        h.fixtures.insert(1, st.wcs[0]);
-        Box::new(h)
+        })
     }
 
     /// Fixture offset `n` (machine coordinates of its part zero, mm).
     pub fn fixture_offset(&self, n: u32) -> Pos {
-        if n == 0 {
-            return [0.0; NAXES];
-        }
-        self.hurco.fixtures.get(&n).copied().unwrap_or([0.0; NAXES])
+        self.st.work.get(WorkId::Fixture(n))
     }
 
     /// Sets fixture offset `n` (1-9999; mm, X as a radius) as an offsets
     /// file or a probe cycle writes it. Takes effect when E`n` is next
     /// programmed. False when `n` is not a fixture number.
     pub fn set_fixture_offset(&mut self, n: u32, origin: Pos) -> bool {
-        if n == 0 || n > MAX_FIXTURE {
-            return false;
-        }
-        self.hurco.fixtures.insert(n, origin);
-        true
+        self.st.work.set(WorkId::Fixture(n), origin)
     }
 
     /// Remembers the program position before an offset change, once per
@@ -91,8 +77,7 @@ impl Interp {
             let n = e.v as u32;
             self.hold_position();
             self.hurco.fixture = n;
-            self.st.wcs[0] = self.fixture_offset(n);
-            self.st.wcs_idx = 0;
+            self.st.work.select(WorkId::Fixture(n));
         }
         Ok(())
     }
@@ -388,7 +373,7 @@ impl Interp {
     /// A G78 or G38 block after its modal G codes: the block's
     /// before-motion M codes, the cycle, the after-motion M codes.
     pub(super) fn hurco_macro_block(&mut self, c: u16, at: u32, face: Option<WVal>) -> R<bool> {
-        self.run_m(|m| m.1 == MWhen::Before && !matches!(m.0, 100..=199))?;
+        self.run_m(|m| m.1 == MWhen::Before)?;
         if c == 780 {
             self.g78(at, face)?;
             self.hurco_moved();

@@ -100,7 +100,26 @@ impl Interp {
                 "chamfer or corner R on a block that does not move",
             ));
         }
-        // The next block, read ahead.
+        let (s, c) = self.ddi_next_move(tw, along_z, (l, w), len)?;
+        self.ddi_corner((cur, tw), along_z, (len, s, c), l == b'R', at)?;
+        self.lathe.ddi_base = Some(tw);
+        Ok(())
+    }
+
+    /// The next block of a chamfer / corner R block, read ahead and
+    /// checked (001 p.10): G01 along the other axis, toward the side the
+    /// word's sign (C: the move's) gives, not shorter than the corner.
+    /// Returns that side (±1) and the corner's size.
+    fn ddi_next_move(
+        &mut self,
+        tw: Pos,
+        along_z: bool,
+        word: (u8, WVal),
+        len: f64,
+    ) -> R<(f64, f64)> {
+        let (xi, zi) = (Axis::X as usize, Axis::Z as usize);
+        let (l, w) = word;
+        let amount = self.linear(w);
         let next = self.peek_next()?;
         let Some(next) = next else {
             return Err(self.alarm(
@@ -187,6 +206,24 @@ impl Interp {
                 self.alarm(AlarmKind::CornerTooLarge, w.at, msg)
             });
         }
+        Ok((s, c))
+    }
+
+    /// The shortened move to the pre-corner point and the chamfer (or, with
+    /// `round`, the corner arc) to C′, for the block from `ends.0` to
+    /// `ends.1`; `sizes`: (the block's move along its axis, the side of
+    /// the next move, the corner's size).
+    fn ddi_corner(
+        &mut self,
+        ends: (Pos, Pos),
+        along_z: bool,
+        sizes: (f64, f64, f64),
+        round: bool,
+        at: u32,
+    ) -> R<()> {
+        let (xi, zi) = (Axis::X as usize, Axis::Z as usize);
+        let (cur, tw) = ends;
+        let (len, s, c) = sizes;
         // Pre-corner point, C′, and the moves.
         let (a1, a2) = if along_z { (zi, xi) } else { (xi, zi) };
         let d1 = len.signum();
@@ -195,7 +232,7 @@ impl Interp {
         let mut post = tw;
         post[a2] += s * c;
         let feed = self.feed(at)?;
-        let arc = (l == b'R').then(|| {
+        let arc = round.then(|| {
             // Centre: c from both the block's line and the next one.
             let mut cen = pre;
             cen[a2] += s * c;
@@ -232,7 +269,6 @@ impl Interp {
         } else {
             self.line_to(post, motion::Speed::Feed(feed), at)?;
         }
-        self.lathe.ddi_base = Some(tw);
         Ok(())
     }
 

@@ -186,28 +186,7 @@ impl Interp {
                     _ => turning::g72(a, start, &segs, r, shape.ns_rapid, type2, &mut out),
                 }
             }
-            _ => {
-                let (i, k) = self.lathe.mrc.relief.unwrap_or((None, None));
-                let relief = turning::p(
-                    i.unwrap_or_else(|| self.mrc_param(5135, 0.0)),
-                    k.unwrap_or_else(|| self.mrc_param(5136, 0.0)),
-                );
-                let d = self
-                    .lathe
-                    .mrc
-                    .divisions
-                    .unwrap_or_else(|| self.mrc_param(5137, 1.0) as u32);
-                turning::g73(
-                    a,
-                    start,
-                    &segs,
-                    relief,
-                    turning::p(du, dw),
-                    d,
-                    shape.ns_rapid,
-                    &mut out,
-                )
-            }
+            _ => self.g73_passes(a, (start, &segs), (du, dw), shape.ns_rapid, &mut out),
         };
         match res {
             Ok(()) => {}
@@ -220,6 +199,31 @@ impl Interp {
             Err(e) => return Err(self.alarm(AlarmKind::MrcValue, at, super::lathe::cycle_msg(&e))),
         }
         self.emit_moves(&out, None, at)
+    }
+
+    /// G73's passes: the relief Δi/Δk and the divisions d (modal, else
+    /// parameters 5135-5137), the allowances `allow` (Δu radius, Δw).
+    fn g73_passes(
+        &self,
+        a: turning::P,
+        shape: (turning::P, &[turning::Seg]),
+        allow: (f64, f64),
+        ns_rapid: bool,
+        out: &mut Vec<turning::Mv>,
+    ) -> Result<(), turning::CycleError> {
+        let (start, segs) = shape;
+        let (du, dw) = allow;
+        let (i, k) = self.lathe.mrc.relief.unwrap_or((None, None));
+        let relief = turning::p(
+            i.unwrap_or_else(|| self.mrc_param(5135, 0.0)),
+            k.unwrap_or_else(|| self.mrc_param(5136, 0.0)),
+        );
+        let d = self
+            .lathe
+            .mrc
+            .divisions
+            .unwrap_or_else(|| self.mrc_param(5137, 1.0) as u32);
+        turning::g73(a, start, segs, relief, turning::p(du, dw), d, ns_rapid, out)
     }
 
     /// The one-block words of a G71/G72/G73 P Q block (Fanuc 10/11 tape

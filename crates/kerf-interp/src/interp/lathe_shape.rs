@@ -69,6 +69,28 @@ pub(super) enum ShapeErr {
     AtCycle(AlarmKind, u8, String),
 }
 
+impl Shape {
+    /// A shape with no segment yet, starting at `start`.
+    fn empty(start: P, ns_src: SrcRef) -> Shape {
+        Shape {
+            start,
+            ns_x: false,
+            ns_z: false,
+            ns_rapid: false,
+            segs: Vec::new(),
+            modes: Vec::new(),
+            speeds: Vec::new(),
+            ns_feed: None,
+            ns_speed: None,
+            ns_comp: None,
+            comps: Vec::new(),
+            comp_on: false,
+            ns_src,
+            srcs: Vec::new(),
+        }
+    }
+}
+
 impl Interp {
     /// Reads the shape N(ns)..N(nf) (see the module documentation).
     pub(super) fn read_shape(&mut self, ns: u32, nf: u32) -> Result<Shape, ShapeErr> {
@@ -95,57 +117,13 @@ impl Interp {
         let mut mode: Option<u16> = None;
         let mut feed: Option<f64> = None;
         let mut speed: Option<f64> = None;
-        let mut shape = Shape {
-            start: a,
-            ns_x: false,
-            ns_z: false,
-            ns_rapid: false,
-            segs: Vec::new(),
-            modes: Vec::new(),
-            speeds: Vec::new(),
-            ns_feed: None,
-            ns_speed: None,
-            ns_comp: None,
-            comps: Vec::new(),
-            comp_on: false,
-            ns_src: self.cur,
-            srcs: Vec::new(),
-        };
+        let mut shape = Shape::empty(a, self.cur);
         let mut comp_pending: Option<u16> = None;
         let mut count = 0usize;
         let mut corners: Vec<ShapeCorner> = Vec::new();
         let mut seg_blocks: Vec<(usize, u32)> = Vec::new();
         loop {
-            let src = self.src.as_mut().expect("loaded");
-            match src.next_block(&mut self.raw) {
-                Ok(true) => {}
-                _ => {
-                    return Err(ShapeErr::AtCycle(
-                        AlarmKind::MrcSeqNotFound,
-                        b'Q',
-                        format!("sequence number N{nf} (Q) not found after N{ns}"),
-                    ))
-                }
-            }
-            self.parse_raw().map_err(ShapeErr::Here)?;
-            if self.block.percent || self.block.program.is_some() {
-                return Err(ShapeErr::AtCycle(
-                    AlarmKind::MrcSeqNotFound,
-                    b'Q',
-                    format!("sequence number N{nf} (Q) not found after N{ns} in this program"),
-                ));
-            }
-            let mut nwords = self.block.words.len();
-            let mut skip = false;
-            for &(idx, mask) in &self.block.deletes {
-                if mask & self.settings.block_skip != 0 {
-                    if idx == 0 {
-                        skip = true;
-                    }
-                    nwords = nwords.min(idx as usize);
-                    break;
-                }
-            }
+            let (nwords, skip) = self.shape_read_block(ns, nf)?;
             let is_last = self.block.n == Some(nf);
             if skip {
                 if is_last {
@@ -170,38 +148,7 @@ impl Interp {
             }
             self.collect(nwords).map_err(ShapeErr::Here)?;
             let first = mode.is_none();
-            let mut blk_mode = None;
-            for &(g, gat) in self.words.gs() {
-                match g {
-                    0 | 10 | 20 | 30 => blk_mode = Some(g),
-                    40 | 200 | 210 | 960 | 970 | 980 | 990 => {}
-                    // Nose radius compensation: G70 runs the shape with
-                    // it, G71-G73 offset the shape (interp/lathe_mrc.rs).
-                    400 | 410 | 420 => {
-                        comp_pending = Some(g);
-                        shape.comp_on |= g != 400;
-                    }
-                    _ => {
-                        return Err(ShapeErr::Here(self.alarm(
-                            AlarmKind::MrcIllegal,
-                            gat,
-                            format!(
-                                "G{} is not allowed inside the finishing shape ns-nf",
-                                fmt_code(g)
-                            ),
-                        )))
-                    }
-                }
-            }
-            for &(m, mat) in self.words.ms() {
-                if matches!(m, 98 | 99) {
-                    return Err(ShapeErr::Here(self.alarm(
-                        AlarmKind::MrcIllegal,
-                        mat,
-                        format!("M{m} is not allowed inside the finishing shape ns-nf"),
-                    )));
-                }
-            }
+            let blk_mode = self.shape_block_codes(&mut comp_pending, &mut shape.comp_on)?;
             if first {
                 match blk_mode {
                     Some(0 | 10) => {}
@@ -226,83 +173,12 @@ impl Interp {
             if let Some(w) = self.words.get(b'S') {
                 speed = Some(w.v);
             }
-            // End point.
-            let mut t = cur;
-            let (mut hx, mut hz) = (false, false);
-            let half = if self.st.diameter { 0.5 } else { 1.0 };
-            if let Some(w) = self.words.get(b'X') {
-                t.x = self.linear(w) * half;
-                hx = true;
-            } else if let Some(w) = self.words.get(b'U') {
-                t.x = cur.x + self.linear(w) * half;
-                hx = true;
-            }
-            if let Some(w) = self.words.get(b'Z') {
-                t.z = self.linear(w);
-                hz = true;
-            } else if let Some(w) = self.words.get(b'W') {
-                t.z = cur.z + self.linear(w);
-                hz = true;
-            }
-            if self.words.has(b'X') && self.words.has(b'U')
-                || self.words.has(b'Z') && self.words.has(b'W')
-            {
-                let w = self
-                    .words
-                    .get(b'U')
-                    .or(self.words.get(b'W'))
-                    .expect("present");
-                return Err(ShapeErr::Here(self.alarm(
-                    AlarmKind::DuplicateAddress,
-                    w.at,
-                    "an axis and its incremental address in one block",
-                )));
-            }
-            // Chamfer / corner R words on a G01 (direct drawing input).
-            let corner_word = if m == 10 {
-                [b'C', b'R', b'I', b'K']
-                    .iter()
-                    .find_map(|&l| self.words.get(l))
-            } else {
-                None
-            };
-            if let Some(w) = corner_word {
-                if is_last {
-                    return Err(ShapeErr::Here(self.alarm(
-                        AlarmKind::MrcEndCorner,
-                        w.at,
-                        format!("the last block N{nf} of the finishing shape ends with a chamfer or corner R"),
-                    )));
+            let (t, hx, hz) = self.shape_end_point(cur)?;
+            if m == 10 {
+                let here = (is_last, first, shape.segs.len(), count);
+                if let Some(c) = self.shape_corner_word(nf, here)? {
+                    corners.push(c);
                 }
-                if first {
-                    return Err(ShapeErr::Here(self.alarm(
-                        AlarmKind::NotYetSupported,
-                        w.at,
-                        "chamfer / corner R on the first block ns of a finishing shape is not yet supported",
-                    )));
-                }
-                let n = [b'C', b'R', b'I', b'K']
-                    .iter()
-                    .filter(|&&l| self.words.has(l))
-                    .count();
-                if n > 1 {
-                    return Err(ShapeErr::Here(self.alarm(
-                        AlarmKind::CornerConflict,
-                        w.at,
-                        "two of I, K, R, C in one block (001 p.10 note 3)",
-                    )));
-                }
-                let letter = [b'C', b'R', b'I', b'K']
-                    .into_iter()
-                    .find(|&l| self.words.has(l))
-                    .expect("one");
-                corners.push(ShapeCorner {
-                    seg: shape.segs.len(),
-                    letter,
-                    amount: self.linear(w),
-                    word: self.alarm(AlarmKind::CornerConflict, w.at, "").src,
-                    block: count,
-                });
             }
             let blk_at = [b'X', b'U', b'Z', b'W']
                 .iter()
@@ -354,6 +230,179 @@ impl Interp {
                 .map_err(ShapeErr::Here)?;
         }
         Ok(shape)
+    }
+
+    /// Reads and parses the next block of the shape (an alarm at the
+    /// cycle when the text ends before N(nf)); returns its word count
+    /// after block delete and whether block delete skips it whole.
+    fn shape_read_block(&mut self, ns: u32, nf: u32) -> Result<(usize, bool), ShapeErr> {
+        let src = self.src.as_mut().expect("loaded");
+        match src.next_block(&mut self.raw) {
+            Ok(true) => {}
+            _ => {
+                return Err(ShapeErr::AtCycle(
+                    AlarmKind::MrcSeqNotFound,
+                    b'Q',
+                    format!("sequence number N{nf} (Q) not found after N{ns}"),
+                ))
+            }
+        }
+        self.parse_raw().map_err(ShapeErr::Here)?;
+        if self.block.percent || self.block.program.is_some() {
+            return Err(ShapeErr::AtCycle(
+                AlarmKind::MrcSeqNotFound,
+                b'Q',
+                format!("sequence number N{nf} (Q) not found after N{ns} in this program"),
+            ));
+        }
+        let mut nwords = self.block.words.len();
+        let mut skip = false;
+        for &(idx, mask) in &self.block.deletes {
+            if mask & self.settings.block_skip != 0 {
+                if idx == 0 {
+                    skip = true;
+                }
+                nwords = nwords.min(idx as usize);
+                break;
+            }
+        }
+        Ok((nwords, skip))
+    }
+
+    /// The G and M codes a shape block may carry; its motion code. A
+    /// G40-G42 is kept for the segment (`comp_pending`; `comp_on` when one
+    /// switches compensation on).
+    fn shape_block_codes(
+        &self,
+        comp_pending: &mut Option<u16>,
+        comp_on: &mut bool,
+    ) -> Result<Option<u16>, ShapeErr> {
+        let mut blk_mode = None;
+        for &(g, gat) in self.words.gs() {
+            match g {
+                0 | 10 | 20 | 30 => blk_mode = Some(g),
+                40 | 200 | 210 | 960 | 970 | 980 | 990 => {}
+                // Nose radius compensation: G70 runs the shape with
+                // it, G71-G73 offset the shape (interp/lathe_mrc.rs).
+                400 | 410 | 420 => {
+                    *comp_pending = Some(g);
+                    *comp_on |= g != 400;
+                }
+                _ => {
+                    return Err(ShapeErr::Here(self.alarm(
+                        AlarmKind::MrcIllegal,
+                        gat,
+                        format!(
+                            "G{} is not allowed inside the finishing shape ns-nf",
+                            fmt_code(g)
+                        ),
+                    )))
+                }
+            }
+        }
+        for &(m, mat) in self.words.ms() {
+            if matches!(m, 98 | 99) {
+                return Err(ShapeErr::Here(self.alarm(
+                    AlarmKind::MrcIllegal,
+                    mat,
+                    format!("M{m} is not allowed inside the finishing shape ns-nf"),
+                )));
+            }
+        }
+        Ok(blk_mode)
+    }
+
+    /// A shape block's end point from `cur` (X a diameter in G08, U/W
+    /// incremental), and whether it names X and Z.
+    fn shape_end_point(&self, cur: P) -> Result<(P, bool, bool), ShapeErr> {
+        // End point.
+        let mut t = cur;
+        let (mut hx, mut hz) = (false, false);
+        let half = if self.st.diameter { 0.5 } else { 1.0 };
+        if let Some(w) = self.words.get(b'X') {
+            t.x = self.linear(w) * half;
+            hx = true;
+        } else if let Some(w) = self.words.get(b'U') {
+            t.x = cur.x + self.linear(w) * half;
+            hx = true;
+        }
+        if let Some(w) = self.words.get(b'Z') {
+            t.z = self.linear(w);
+            hz = true;
+        } else if let Some(w) = self.words.get(b'W') {
+            t.z = cur.z + self.linear(w);
+            hz = true;
+        }
+        if self.words.has(b'X') && self.words.has(b'U')
+            || self.words.has(b'Z') && self.words.has(b'W')
+        {
+            let w = self
+                .words
+                .get(b'U')
+                .or(self.words.get(b'W'))
+                .expect("present");
+            return Err(ShapeErr::Here(self.alarm(
+                AlarmKind::DuplicateAddress,
+                w.at,
+                "an axis and its incremental address in one block",
+            )));
+        }
+        Ok((t, hx, hz))
+    }
+
+    /// The chamfer / corner R word of a shape G01 (direct drawing input,
+    /// 001 p.10), as a corner to cut once the shape is read. `here`: (the
+    /// block is N(nf), is N(ns), the segment it ends, its block count).
+    fn shape_corner_word(
+        &self,
+        nf: u32,
+        here: (bool, bool, usize, usize),
+    ) -> Result<Option<ShapeCorner>, ShapeErr> {
+        let (is_last, first, seg, count) = here;
+        let Some(w) = [b'C', b'R', b'I', b'K']
+            .iter()
+            .find_map(|&l| self.words.get(l))
+        else {
+            return Ok(None);
+        };
+        if is_last {
+            return Err(ShapeErr::Here(self.alarm(
+                AlarmKind::MrcEndCorner,
+                w.at,
+                format!(
+                    "the last block N{nf} of the finishing shape ends with a chamfer or corner R"
+                ),
+            )));
+        }
+        if first {
+            return Err(ShapeErr::Here(self.alarm(
+                AlarmKind::NotYetSupported,
+                w.at,
+                "chamfer / corner R on the first block ns of a finishing shape is not yet supported",
+            )));
+        }
+        let n = [b'C', b'R', b'I', b'K']
+            .iter()
+            .filter(|&&l| self.words.has(l))
+            .count();
+        if n > 1 {
+            return Err(ShapeErr::Here(self.alarm(
+                AlarmKind::CornerConflict,
+                w.at,
+                "two of I, K, R, C in one block (001 p.10 note 3)",
+            )));
+        }
+        let letter = [b'C', b'R', b'I', b'K']
+            .into_iter()
+            .find(|&l| self.words.has(l))
+            .expect("one");
+        Ok(Some(ShapeCorner {
+            seg,
+            letter,
+            amount: self.linear(w),
+            word: self.alarm(AlarmKind::CornerConflict, w.at, "").src,
+            block: count,
+        }))
     }
 
     /// A chamfer or corner R on shape segment `c.seg` (001 p.10, the same

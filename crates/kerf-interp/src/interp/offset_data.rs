@@ -78,7 +78,10 @@ impl Interp {
             let slot = if p == 0 {
                 &mut self.st.shift[i]
             } else {
-                &mut self.st.wcs[p - 1][i]
+                match self.st.work.g5x_mut(p - 1) {
+                    Some(w) => &mut w[i],
+                    None => continue,
+                }
             };
             *slot = if add { *slot + v } else { v };
         }

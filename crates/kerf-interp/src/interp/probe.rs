@@ -12,12 +12,26 @@
 //! after those moves. The recorded data are `Canon::Message` lines in
 //! 002's formats, stamped with the run's clock (`--set probe.time=`).
 
+use super::hurco_thread::MacroParams;
 use super::*;
 
 /// Which datum slot: -X, +X, -Z, +Z.
 fn datum_slot(ax: Axis, dir: f64) -> usize {
     let base = if ax == Axis::X { 0 } else { 2 };
     base + usize::from(dir > 0.0)
+}
+
+/// What G38 S1 and S3 need besides the contact.
+#[derive(Clone, Copy)]
+struct ProbeNumbers {
+    /// S1: the fixture offset E.
+    e_no: u32,
+    /// S3: the tool offset H.
+    h_no: usize,
+    /// S1 Q1: the offset changes by the error.
+    incremental: bool,
+    /// S1: I/K, added to the measured position.
+    adj: f64,
 }
 
 impl Interp {
@@ -39,6 +53,78 @@ impl Interp {
     /// A G38 block.
     pub(super) fn g38(&mut self, at: u32) -> R<()> {
         let p = self.macro_params()?;
+        let (cycle, ax, ew) = self.probe_cycle_axis(&p, at)?;
+        self.check_range_hurco(ax_letter(ax), ew)?;
+        let i = ax as usize;
+        let expected = self.axis_value(ax, ew);
+        let (a, f, tol, v) = self.probe_feeds(&p, at)?;
+        let probe_no = p
+            .get(b'P')
+            .map(|w| w.v)
+            .unwrap_or_else(|| self.profile.param("probe_number", -1.0));
+        let nums = self.probe_numbers(&p, cycle, ax, at)?;
+        // Direction from the start towards the expected contact.
+        let start = self.prog_pos();
+        let dir = (expected - start[i]).signum();
+        if (expected - start[i]).abs() < 1e-9 {
+            return Err(self.alarm(
+                AlarmKind::ProbeCycle,
+                ew.at,
+                "G38: the probing axis is already at the expected contact point",
+            ));
+        }
+        let slot = datum_slot(ax, dir);
+        let dname = format!(
+            "{}{}",
+            if dir < 0.0 { '-' } else { '+' },
+            ax_letter(ax) as char
+        );
+        if cycle != 0
+            && self.hurco.datum[slot].is_none()
+            && self.profile.param("probe_require_datum", 1.0) != 0.0
+        {
+            return Err(self.alarm(
+                AlarmKind::ProbeCycle,
+                at,
+                format!("G38 S{cycle}: the probe is not datumed in {dname} (run G38 S0 first)"),
+            ));
+        }
+        // The simulated surface.
+        let surface = self.settings.probe[i].map(|sv| {
+            self.axis_value(
+                ax,
+                WVal {
+                    v: sv,
+                    point: true,
+                    at: 0,
+                },
+            )
+        });
+        let levels = (expected - dir * a, expected, expected + dir * tol);
+        let (contact, fault, stamp_pos) =
+            self.probe_path(i, dir, levels, surface, (v, f, tol), at)?;
+        let Some(c) = contact else {
+            let msg = fault.unwrap_or_default();
+            self.after_block =
+                Some(self.alarm(AlarmKind::NoContact, at, format!("G38 S{cycle}: {msg}")));
+            return Ok(());
+        };
+        let line = self.probe_record(
+            cycle,
+            ax,
+            (c, expected, slot),
+            &dname,
+            &nums,
+            stamp_pos,
+            probe_no,
+        );
+        self.emit(Canon::Message(line));
+        Ok(())
+    }
+
+    /// G38's S (the cycle 0-3) and its one probing axis with the expected
+    /// contact's word.
+    fn probe_cycle_axis(&self, p: &MacroParams, at: u32) -> R<(u8, Axis, WVal)> {
         let sw = p
             .get(b'S')
             .ok_or_else(|| self.alarm(AlarmKind::MissingArgument, at, "G38 needs S (cycle 0-3)"))?;
@@ -68,11 +154,12 @@ impl Interp {
                 ))
             }
         };
-        self.check_range_hurco(ax_letter(ax), ew)?;
-        let i = ax as usize;
-        let expected = self.axis_value(ax, ew);
-        // A, F, T, V: the block's or the tune file's (profile params, mm
-        // and mm/min).
+        Ok((cycle, ax, ew))
+    }
+
+    /// A (approach), F (probing feed), T (tolerance), V (approach feed):
+    /// the block's or the profile's, mm and mm/min.
+    fn probe_feeds(&self, p: &MacroParams, at: u32) -> R<(f64, f64, f64, f64)> {
         let param = |l: u8, key: &str, what: &str| -> R<f64> {
             if let Some(w) = p.get(l) {
                 if w.v <= 0.0 {
@@ -100,11 +187,12 @@ impl Interp {
         let f = param(b'F', "probe_feed", "probing feedrate")?;
         let tol = param(b'T', "probe_tolerance", "tolerance")?;
         let v = param(b'V', "probe_approach_feed", "approach feedrate")?;
-        let probe_no = p
-            .get(b'P')
-            .map(|w| w.v)
-            .unwrap_or_else(|| self.profile.param("probe_number", -1.0));
-        // Cycle-specific required numbers.
+        Ok((a, f, tol, v))
+    }
+
+    /// The numbers a cycle needs: S1 the fixture offset E (and I/K, Q1
+    /// incremental), S3 the tool offset H.
+    fn probe_numbers(&self, p: &MacroParams, cycle: u8, ax: Axis, at: u32) -> R<ProbeNumbers> {
         let e_no = if cycle == 1 {
             let w = p.get(b'E').ok_or_else(|| {
                 self.alarm(
@@ -166,45 +254,33 @@ impl Interp {
         } else {
             0.0
         };
-        // Direction from the start towards the expected contact.
+        Ok(ProbeNumbers {
+            e_no,
+            h_no,
+            incremental,
+            adj,
+        })
+    }
+
+    /// The probe's moves on axis `i` toward the contact (`dir`): at V to
+    /// the approach point, at F toward the far end of the tolerance,
+    /// stopping at the `surface`; back to the start at V. `levels`:
+    /// (approach, expected, far). Returns the contact (None with a fault)
+    /// and the position at the contact, for the record.
+    #[allow(clippy::type_complexity)]
+    fn probe_path(
+        &mut self,
+        i: usize,
+        dir: f64,
+        levels: (f64, f64, f64),
+        surface: Option<f64>,
+        feeds: (f64, f64, f64),
+        at: u32,
+    ) -> R<(Option<f64>, Option<String>, Pos)> {
+        let (approach, expected, far) = levels;
+        let (v, f, tol) = feeds;
+        let ax = Axis::ALL[i];
         let start = self.prog_pos();
-        let dir = (expected - start[i]).signum();
-        if (expected - start[i]).abs() < 1e-9 {
-            return Err(self.alarm(
-                AlarmKind::ProbeCycle,
-                ew.at,
-                "G38: the probing axis is already at the expected contact point",
-            ));
-        }
-        let slot = datum_slot(ax, dir);
-        let dname = format!(
-            "{}{}",
-            if dir < 0.0 { '-' } else { '+' },
-            ax_letter(ax) as char
-        );
-        if cycle != 0
-            && self.hurco.datum[slot].is_none()
-            && self.profile.param("probe_require_datum", 1.0) != 0.0
-        {
-            return Err(self.alarm(
-                AlarmKind::ProbeCycle,
-                at,
-                format!("G38 S{cycle}: the probe is not datumed in {dname} (run G38 S0 first)"),
-            ));
-        }
-        // The simulated surface.
-        let surface = self.settings.probe[i].map(|sv| {
-            self.axis_value(
-                ax,
-                WVal {
-                    v: sv,
-                    point: true,
-                    at: 0,
-                },
-            )
-        });
-        let approach = expected - dir * a;
-        let far = expected + dir * tol;
         let mut fault: Option<String> = None;
         let mut contact = None;
         // Approach at V (when the start is not already inside it).
@@ -246,16 +322,34 @@ impl Interp {
         // Back to the start at V.
         let stamp_pos = self.prog_pos();
         self.probe_move(i, start[i], v, at)?;
-        let Some(c) = contact else {
-            let msg = fault.unwrap_or_default();
-            self.after_block =
-                Some(self.alarm(AlarmKind::NoContact, at, format!("G38 S{cycle}: {msg}")));
-            return Ok(());
-        };
+        Ok((contact, fault, stamp_pos))
+    }
+
+    /// The data a cycle records (002's log formats) and the offsets it
+    /// sets, for the contact `c` against `expected` in datum `slot`.
+    #[allow(clippy::too_many_arguments)]
+    fn probe_record(
+        &mut self,
+        cycle: u8,
+        ax: Axis,
+        contact: (f64, f64, usize),
+        dname: &str,
+        nums: &ProbeNumbers,
+        stamp_pos: Pos,
+        probe_no: f64,
+    ) -> String {
+        let (c, expected, slot) = contact;
+        let i = ax as usize;
+        let ProbeNumbers {
+            e_no,
+            h_no,
+            incremental,
+            adj,
+        } = *nums;
         let pu = |s: &Self, mm: f64| s.probe_units(ax, mm);
         let letter = ax_letter(ax) as char;
         let stamp = self.stamp();
-        let line = match cycle {
+        match cycle {
             0 => {
                 let off = expected - c;
                 self.hurco.datum[slot] = Some(off);
@@ -318,9 +412,7 @@ impl Interp {
                     }
                 }
             }
-        };
-        self.emit(Canon::Message(line));
-        Ok(())
+        }
     }
 
     /// Feeds the probing axis alone to `v` (program coordinates, mm) at

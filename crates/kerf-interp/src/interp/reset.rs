@@ -55,7 +55,7 @@ impl Interp {
         let old = std::mem::replace(&mut self.st, fresh);
         let st = &mut self.st;
         st.mover = old.mover;
-        st.wcs = old.wcs;
+        st.work.keep_entries_of(&old.work);
         st.shift = old.shift;
         st.stroke_area = old.stroke_area;
         st.g28_mid = old.g28_mid;

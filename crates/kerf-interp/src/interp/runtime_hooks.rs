@@ -153,7 +153,7 @@ impl Interp {
 
     /// The work offset of G54+`idx` (machine coordinates of its zero).
     pub fn work_offset(&self, idx: usize) -> Option<Pos> {
-        self.st.wcs.get(idx).copied()
+        (idx < 6).then(|| self.st.work.get(work_offsets::WorkId::G5x(idx)))
     }
 
     /// Writes common (#100-#199) or retained macro variable `#n` from the

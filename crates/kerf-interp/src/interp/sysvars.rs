@@ -9,6 +9,7 @@ use std::time::Instant;
 
 use kerf_canon::NAXES;
 
+use super::work_offsets::WorkId;
 use super::Interp;
 use crate::alarms::AlarmKind;
 use crate::dialect::DialectId;
@@ -311,7 +312,10 @@ impl Interp {
             D(n) => self.offsets.d_entry(n).map_or(0.0, |e| e.geom) / u,
             H(n) => self.offsets.h_entry(n).map_or(0.0, |e| e.geom) / u,
             Shift(k) => return Ok(self.axis_value_of(k, &self.st.shift).or(Some(0.0))),
-            Wcs(w, k) => return Ok(self.axis_value_of(k, &self.st.wcs[w]).or(Some(0.0))),
+            Wcs(w, k) => {
+                let o = self.st.work.get(WorkId::G5x(w));
+                return Ok(self.axis_value_of(k, &o).or(Some(0.0)));
+            }
             SingleBlock => self.sys.single_block,
             Param(n) => self.profile.param(&format!("PI {n}"), 0.0),
             Tpg => (self.profile.param("tpg", 0.0) != 0.0) as u8 as f64,
@@ -435,7 +439,11 @@ impl Interp {
                 let mm = self.prog_units_to_mm(slot, x);
                 match s {
                     Shift(_) => self.st.shift[slot] = mm,
-                    Wcs(w, _) => self.st.wcs[w][slot] = mm,
+                    Wcs(w, _) => {
+                        if let Some(o) = self.st.work.g5x_mut(w) {
+                            o[slot] = mm;
+                        }
+                    }
                     _ => unreachable!(),
                 }
             }

@@ -1,0 +1,4 @@
+//! Shared by the expansion tests.
+pub mod generate;
+pub mod programs;
+pub mod records;

@@ -1,0 +1,180 @@
+//! `kerf expand --to fanuc` round trip: for every example, corpus program
+//! and rs274 reference program, `kerf run` of the expanded output gives
+//! the same motions as `kerf run` of the original, record for record:
+//! the kind, the end point `to` and `mto` (the output sets the original's
+//! frame where it changes) on every axis and the arc centre to 1 µm, the
+//! arc direction, the feed (mm/min), the thread lead, the dwell time and
+//! the tool. The source lines differ (the output has its own) and so may
+//! `t_end` (the output's blocks are not the original's).
+//!
+//! A program that stops on an alarm must expand up to the alarm: `kerf
+//! expand` exits 1 with the same alarm line as `kerf run`, and the
+//! output runs to its end with the records the original made before the
+//! alarm.
+
+mod common;
+
+use std::path::Path;
+
+use common::programs::{corpus, examples, expand_programs, records, rs274_programs, scratch, Case};
+use common::records::differs;
+use serde_json::Value;
+
+/// `kerf run` with a toolpath: (exit code, first stderr line, records).
+fn run(case: &Case, program: &Path, tag: &str) -> (Option<i32>, String, Vec<Value>) {
+    let tp = scratch(&format!("{}-{tag}", case.label), "jsonl");
+    let _ = std::fs::remove_file(&tp);
+    let out = case
+        .kerf("run", program, &["--toolpath", tp.to_str().unwrap()])
+        .output()
+        .expect("kerf runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    let first = err
+        .lines()
+        .find(|l| l.contains(": alarm "))
+        .unwrap_or("")
+        .to_string();
+    (out.status.code(), first, records(&tp))
+}
+
+/// Runs one case; returns its problems (empty when the round trip holds)
+/// and whether it was compared.
+fn round_trip(case: &Case) -> (Vec<String>, bool) {
+    let (code, alarm, want) = run(case, &case.program, "orig");
+    if !matches!(code, Some(0) | Some(1)) {
+        return (Vec::new(), false);
+    }
+    let nc = scratch(&case.label, "expanded.nc");
+    let out = case
+        .kerf("expand", &case.program, &["-o", nc.to_str().unwrap()])
+        .output()
+        .expect("kerf expands");
+    let err = String::from_utf8_lossy(&out.stderr);
+    let mut problems = Vec::new();
+    if out.status.code() != code {
+        problems.push(format!(
+            "expand exit {:?}, run exit {code:?}: {}",
+            out.status.code(),
+            err.trim()
+        ));
+        return (problems, true);
+    }
+    let expand_alarm = err.lines().find(|l| l.contains(": alarm ")).unwrap_or("");
+    if expand_alarm != alarm {
+        problems.push(format!(
+            "expand alarm '{expand_alarm}', run alarm '{alarm}'"
+        ));
+    }
+    let (code2, alarm2, got) = run(case, &nc, "expanded");
+    if code2 != Some(0) {
+        problems.push(format!(
+            "the expanded program ({}) exits {code2:?}: {alarm2}",
+            nc.display()
+        ));
+        return (problems, true);
+    }
+    if want.len() != got.len() {
+        problems.push(format!(
+            "{} records from the original, {} from the expanded program",
+            want.len(),
+            got.len()
+        ));
+    }
+    for (i, (a, b)) in want.iter().zip(&got).enumerate() {
+        if let Some(d) = differs(a, b) {
+            problems.push(format!(
+                "record {i} (original line {}, expanded line {}): {d}",
+                a["line"], b["line"]
+            ));
+            break;
+        }
+    }
+    (problems, true)
+}
+
+fn check_all(cases: &[Case]) -> usize {
+    let mut failures = Vec::new();
+    let mut compared = 0;
+    for case in cases {
+        let (problems, done) = round_trip(case);
+        compared += done as usize;
+        for p in problems {
+            failures.push(format!("{}: {p}", case.label));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {} programs differ:\n{}",
+        failures.len(),
+        cases.len(),
+        failures.join("\n")
+    );
+    compared
+}
+
+#[test]
+fn examples_expand_to_the_same_motions() {
+    let cases = examples();
+    let n = check_all(&cases);
+    // Every example either completes or stops on an alarm.
+    assert_eq!(n, cases.len());
+    assert!(n > 50, "only {n} examples found");
+}
+
+#[test]
+fn corpus_and_reference_programs_expand_to_the_same_motions() {
+    let mut cases = corpus();
+    cases.extend(rs274_programs());
+    let n = check_all(&cases);
+    println!("{n} of {} programs compared", cases.len());
+    assert!(n >= rs274_programs().len());
+}
+
+#[test]
+fn macro_cycle_transform_programs_expand_to_the_same_motions() {
+    let cases = expand_programs();
+    assert!(cases.len() >= 4);
+    // Each of them completes (they are written to), so each is compared.
+    assert_eq!(check_all(&cases), cases.len());
+}
+
+#[test]
+fn standard_output_unknown_target_and_unwritable_output() {
+    let prog = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/hx/contour.nc");
+    let kerf = || std::process::Command::new(env!("CARGO_BIN_EXE_kerf"));
+    // Without -o the program goes to stdout, the same text as -o writes.
+    let out = kerf().arg("expand").arg(&prog).output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let file = scratch("stdout-vs-file", "nc");
+    let o2 = kerf()
+        .arg("expand")
+        .arg(&prog)
+        .arg("-o")
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert_eq!(o2.status.code(), Some(0));
+    assert_eq!(out.stdout, std::fs::read(&file).unwrap());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.starts_with("%\nO0001 (KERF EXPAND OF contour.nc TO fanuc)\n"));
+    assert!(
+        text.contains("\nG17 G03 X50. Y10. I0. J10. (contour.nc:10)\n"),
+        "{text}"
+    );
+    // A target kerf does not write, and a folder that is not there: exit 2.
+    let bad = kerf()
+        .args(["expand", "--to", "haas"])
+        .arg(&prog)
+        .output()
+        .unwrap();
+    assert_eq!(bad.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&bad.stderr);
+    assert!(err.contains("'haas'") && err.contains("linuxcnc"), "{err}");
+    let nowhere = kerf()
+        .arg("expand")
+        .arg(&prog)
+        .args(["-o", "/nonexistent-folder/out.nc"])
+        .output()
+        .unwrap();
+    assert_eq!(nowhere.status.code(), Some(2));
+}

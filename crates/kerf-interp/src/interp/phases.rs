@@ -1,0 +1,422 @@
+//! Executing a block: the block's codes are checked, then the control's
+//! phases run in the order its dialect lists (`Dialect::order`: the Fanuc
+//! order on the HX and the PUMA, 002 Table 1 on the Hurco). Each
+//! [`Phase`] is one small step; what one phase finds that a later one
+//! needs (the motion code, the one-shots, the cycle modes) travels in the
+//! block's [`BlockRun`].
+
+use super::*;
+use crate::dialect::Phase;
+
+/// What a phase tells the walk.
+enum Flow {
+    /// Go on with the next phase.
+    Next,
+    /// The block is done: Ok(this) from `execute_block` (false = the
+    /// program ended).
+    Done(bool),
+}
+
+/// The one-shot (group 0) G codes of a block that change how it runs.
+#[derive(Clone, Copy, Default)]
+pub(super) struct OneShots {
+    g53: bool,
+    dwell: bool,
+    g09: bool,
+    g60: Option<u32>,
+    setting: bool,
+    refret: Option<(u16, u32)>,
+    skip: Option<(u16, u32)>,
+    g45: Option<(u16, u32)>,
+    mrc: Option<(u16, u32)>,
+}
+
+/// The state of one block's execution, passed from phase to phase.
+pub(super) struct BlockRun {
+    /// The group 1 code of the block, with its byte.
+    motion: Option<(u16, u32)>,
+    /// The group 0 codes, in block order.
+    one_shot: [(u16, u32); MAX_CODES],
+    n_one: usize,
+    /// M98 / M99.
+    transfer: Option<(MAction, u32)>,
+    /// Hurco: the block is a G78 / G38 macro cycle (code, byte, face M).
+    hurco_macro: Option<(u16, u32, Option<WVal>)>,
+    /// HX: a canned cycle mode was in force before the block.
+    was_cycle: bool,
+    plane_before: Plane,
+    /// HX canned cycle / Hurco drill cycle mode after the modal codes.
+    cycle: bool,
+    hurco_cycle: bool,
+    /// The axis words were data (G107 C, G51, G68, G10 L2 …).
+    xdata: bool,
+    /// A G39 block (no move of its own).
+    g39: bool,
+    os: OneShots,
+}
+
+impl BlockRun {
+    fn one_shot(&self) -> &[(u16, u32)] {
+        &self.one_shot[..self.n_one]
+    }
+
+    /// A dwell or a coordinate-setting block does not move: its axis words
+    /// are the time or the new coordinates.
+    fn no_motion(&self) -> bool {
+        self.os.dwell || self.os.setting || self.xdata || self.g39
+    }
+}
+
+impl Interp {
+    /// Executes the block in `self.words`: its codes checked, then the
+    /// dialect's phases in order. Ok(false) when the program ended.
+    pub(super) fn execute_block(&mut self) -> R<bool> {
+        let Some(mut b) = self.classify_block()? else {
+            return Ok(true);
+        };
+        for &p in self.dialect.order {
+            if let Flow::Done(r) = self.run_phase(p, &mut b)? {
+                return Ok(r);
+            }
+        }
+        Ok(true)
+    }
+
+    /// Checks the block's G and M codes and sorts them; None when the
+    /// block was a G65 / G66 call (executed here).
+    fn classify_block(&mut self) -> R<Option<BlockRun>> {
+        // Classify G codes.
+        let mut motion: Option<(u16, u32)> = None;
+        let mut one_shot: [(u16, u32); MAX_CODES] = [(0, 0); MAX_CODES];
+        let mut n_one = 0;
+        for i in 0..self.words.ng {
+            let (c, at) = self.words.g[i];
+            let Some(g) = self.gcode(c) else {
+                return Err(self.alarm(
+                    AlarmKind::UnknownG,
+                    at,
+                    format!("G{} is not a G code of this control", fmt_code(c)),
+                ));
+            };
+            if let Support::Later(which) = g.support {
+                return Err(self.alarm(
+                    AlarmKind::NotYetSupported,
+                    at,
+                    format!(
+                        "G{} ({}) is not yet supported: {which}",
+                        fmt_code(c),
+                        g.name
+                    ),
+                ));
+            }
+            if c == 650 || c == 660 {
+                self.g65(c, at)?;
+                return Ok(None);
+            }
+            if g.group == 1 {
+                motion = Some((c, at));
+            } else if g.group == 0 {
+                one_shot[n_one] = (c, at);
+                n_one += 1;
+            }
+        }
+        let transfer = self.classify_m()?;
+        // A held ,C/,R move, or one in this block, cannot be followed by a
+        // block that moves otherwise or leaves the program.
+        if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
+            self.corner_gate(&one_shot[..n_one], transfer.map(|t| t.0))?;
+        }
+        Ok(Some(BlockRun {
+            motion,
+            one_shot,
+            n_one,
+            transfer,
+            hurco_macro: None,
+            was_cycle: false,
+            plane_before: self.st.plane,
+            cycle: false,
+            hurco_cycle: false,
+            xdata: false,
+            g39: false,
+            os: OneShots::default(),
+        }))
+    }
+
+    /// One phase of the block (see [`Phase`]). Inlined into the walk:
+    /// a call per phase of a function this size costs more than the
+    /// phase itself on a plain block.
+    #[inline(always)]
+    fn run_phase(&mut self, p: Phase, b: &mut BlockRun) -> R<Flow> {
+        match p {
+            Phase::HurcoChecks => b.hurco_macro = self.hurco_block_checks(b.one_shot())?,
+            Phase::JobSyncM => self.run_m(|m| m.1 == MWhen::JobSync)?,
+            Phase::ModalG => self.apply_modal_codes(b),
+            Phase::HxCycleMode => {
+                let plane_changed = self.st.plane != b.plane_before;
+                b.cycle = self.cycle_mode(b.was_cycle, plane_changed, b.motion)?;
+            }
+            Phase::HurcoCycleMode => b.hurco_cycle = self.hurco_cycle_mode(b.motion)?,
+            Phase::HurcoMacro => {
+                if let Some((c, at, face_m)) = b.hurco_macro {
+                    return self.hurco_macro_block(c, at, face_m).map(Flow::Done);
+                }
+            }
+            Phase::Frames => {
+                let rdata = self.rotary_interp_codes()?;
+                b.xdata = self.transform_codes(b.one_shot())? || rdata;
+            }
+            Phase::ToolLength => self.tool_length_codes()?,
+            Phase::Comp => b.g39 = self.block_comp(b.one_shot(), b.cycle)?,
+            Phase::OneShots => b.os = self.one_shots(b.one_shot())?,
+            Phase::CssRadius => self.g96_r()?,
+            Phase::OverrideM => self.run_m(|m| matches!(m.0, 48 | 49))?,
+            Phase::CoolantM => self.run_m(|m| matches!(m.0, 7 | 8))?,
+            Phase::ToolAndFixture => self.hurco_t_e()?,
+            Phase::Feed => self.f_word(b.os.dwell)?,
+            Phase::Tool => self.t_word()?,
+            Phase::Spindle => self.spindle_words()?,
+            Phase::MBefore => self.run_m(|m| {
+                m.1 == MWhen::Before && !matches!(m.2, MAction::SpindleCw | MAction::SpindleCcw)
+            })?,
+            // Other before-motion machine functions, after the spindle.
+            Phase::HurcoMBefore => {
+                self.run_m(|m| m.1 == MWhen::Before && !matches!(m.0, 7 | 8 | 48 | 49))?
+            }
+            Phase::Dwell => {
+                if b.os.dwell {
+                    self.dwell()?;
+                }
+            }
+            Phase::PumaM => {
+                if self.words.nm > 0 {
+                    self.lathe_m_codes();
+                }
+            }
+            Phase::ExactStopBefore | Phase::ExactStopAfter => {
+                if b.os.g09 {
+                    self.emit(Canon::Mode(ModeChange::ExactStopBlock));
+                }
+            }
+            Phase::Motion => {
+                let cycles = (b.cycle, b.was_cycle, b.hurco_cycle);
+                self.block_motion(&b.os, b.no_motion(), cycles)?;
+            }
+            Phase::Moved => {
+                if !b.no_motion() && self.has_axis_word() {
+                    self.hurco_moved();
+                }
+            }
+            Phase::MAfter => self.run_m(|m| {
+                m.1 == MWhen::After
+                    && !matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End)
+            })?,
+            Phase::PumaMAfter => {
+                if self.words.nm > 0 {
+                    self.lathe_m_after();
+                }
+            }
+            Phase::Stop => {
+                self.run_m(|m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End))?
+            }
+            Phase::CompEnd => {
+                if self.comp.is_some() {
+                    self.comp_block_end()?;
+                }
+            }
+            Phase::Transfer => {
+                if self.finished_by_end() {
+                    return Ok(Flow::Done(false));
+                }
+                self.transfer(b)?;
+            }
+        }
+        Ok(Flow::Next)
+    }
+
+    /// The modal G codes (every group but 0 and 1) and the motion mode.
+    fn apply_modal_codes(&mut self, b: &mut BlockRun) {
+        let d = self.dialect;
+        b.was_cycle = self.st.modal[cycles::CYCLE_GROUP] != 800;
+        b.plane_before = self.st.plane;
+        for i in 0..self.words.ng {
+            let (c, _) = self.words.g[i];
+            let Some(g) = self.gcode(c) else { continue };
+            if g.group != 0 && g.group != 1 {
+                self.st.modal[g.group as usize] = c;
+                Self::apply_modal(&mut self.st, d.id, c);
+                self.mode_event(c);
+                if c == 670 {
+                    self.g67();
+                }
+            }
+        }
+        if let Some((c, _)) = b.motion {
+            self.st.modal[1] = c;
+        }
+    }
+
+    /// D, and G43/G44/G49 or H: the tool length offset.
+    fn tool_length_codes(&mut self) -> R<()> {
+        if let Some(dw) = self.words.get(b'D') {
+            self.sys.d = dw.v;
+        }
+        if self.words.has(b'H')
+            || self
+                .words
+                .gs()
+                .iter()
+                .any(|g| matches!(g.0, 430 | 440 | 490))
+        {
+            self.tool_length()?;
+        }
+        Ok(())
+    }
+
+    /// Subprogram call / return last, after everything else of the block;
+    /// without one, G66 in force calls the macro after a block with an
+    /// axis move.
+    fn transfer(&mut self, b: &BlockRun) -> R<()> {
+        match b.transfer {
+            Some((MAction::SubCall, at)) => self.m98(at)?,
+            Some((_, at)) => self.m99(at)?,
+            None => {
+                let moved = b.os.refret.is_some() || !b.no_motion();
+                if !self.calls.modal.is_empty() && moved && self.has_axis_word() {
+                    self.modal_call(self.motion_at())?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Cutter / tool nose radius compensation codes, before the one-shots
+    /// (a G92 or G28 ends a held move first). True for a G39 block.
+    fn block_comp(&mut self, one_shot: &[(u16, u32)], cycle: bool) -> R<bool> {
+        let comp_words = self.words.has(b'D')
+            || self
+                .words
+                .gs()
+                .iter()
+                .any(|g| matches!(g.0, 170 | 180 | 190 | 390 | 400 | 410 | 420));
+        if comp_words || (self.comp.is_some() && (!one_shot.is_empty() || cycle)) {
+            let special = cycle
+                || one_shot.iter().any(|g| {
+                    matches!(g.0, 270 | 280 | 290 | 300 | 530 | 310..=314 | 370..=374 | 450..=480 | 700..=760)
+                });
+            let setting = one_shot
+                .iter()
+                .any(|g| is_coordinate_setting(self.dialect.id, g.0));
+            self.comp_codes(one_shot, special, setting)
+        } else {
+            Ok(false)
+        }
+    }
+
+    /// The block's M codes checked; the M98/M99 it carries (one at most).
+    fn classify_m(&self) -> R<Option<(MAction, u32)>> {
+        let mut transfer: Option<(MAction, u32)> = None;
+        for i in 0..self.words.nm {
+            let (m, at) = self.words.m[i];
+            if self.mcode(m).is_none() {
+                // Fanuc programs ask for rigid tapping with M29 before G84;
+                // the HX has G84.2/G84.3 instead (000 §12.3.5-12.3.6).
+                let hint = if m == 29 && self.dialect.id == DialectId::Hx {
+                    ": rigid tapping on this control is G84.2 (G84.3 left-hand), without M29"
+                } else {
+                    ""
+                };
+                return Err(self.alarm(
+                    AlarmKind::UnknownM,
+                    at,
+                    format!("M{m:02} is not an M code of this control{hint}"),
+                ));
+            }
+            if let Some(mc) = self.mcode(m) {
+                if matches!(mc.action, MAction::SubCall | MAction::SubReturn) {
+                    if transfer.is_some() {
+                        return Err(self.alarm(
+                            AlarmKind::MCodeConflict,
+                            at,
+                            "M98 and M99 in one block",
+                        ));
+                    }
+                    transfer = Some((mc.action, at));
+                }
+            }
+        }
+        Ok(transfer)
+    }
+
+    /// Runs the block's one-shot codes that act before motion (G10 on
+    /// the PUMA, coordinate setting, G59 on the Hurco) and notes the rest.
+    fn one_shots(&mut self, one_shot: &[(u16, u32)]) -> R<OneShots> {
+        let d = self.dialect;
+        let hurco = d.id == DialectId::Hurco;
+        let mut os = OneShots::default();
+        for &(c, at) in one_shot {
+            match (d.id, c) {
+                (_, 40) => os.dwell = true,
+                (_, 270 | 280 | 290 | 300) => os.refret = Some((c, at)),
+                (_, 90) => os.g09 = true,
+                (DialectId::Hx, 600) => os.g60 = Some(at),
+                (_, 530) => {
+                    if hurco {
+                        self.g53_checks(at)?;
+                    }
+                    os.g53 = true
+                }
+                (DialectId::Hx, 310..=314 | 370..=374) => os.skip = Some((c, at)),
+                (DialectId::Hx, 450 | 460 | 470 | 480) => os.g45 = Some((c, at)),
+                (DialectId::Puma, 100) => {
+                    os.setting = true;
+                    self.g10(at)?
+                }
+                (DialectId::Puma, 700..=760) => os.mrc = Some((c, at)),
+                _ if is_coordinate_setting(d.id, c) => {
+                    os.setting = true;
+                    self.coordinate_setting(at)?
+                }
+                (DialectId::Hurco, 590) => self.st.shift = [0.0; NAXES],
+                _ => {}
+            }
+        }
+        Ok(os)
+    }
+
+    /// The block's motion: a reference return, a skip, a lathe cycle, or
+    /// (when the block's axis words are a move) G53, a canned cycle, G60,
+    /// G45-G48 or the modal motion. `cycles`: (HX cycle mode, entered
+    /// before this block, Hurco cycle mode).
+    fn block_motion(
+        &mut self,
+        os: &OneShots,
+        no_motion: bool,
+        cycles: (bool, bool, bool),
+    ) -> R<()> {
+        let (cycle, was_cycle, hurco_cycle) = cycles;
+        if let Some((c, at)) = os.refret {
+            self.reference_return(c, at)?;
+        } else if let Some((c, at)) = os.skip {
+            self.skip_block(c, at)?;
+        } else if let Some((c, at)) = os.mrc {
+            self.mrc(c, at)?;
+        } else if !no_motion {
+            if os.g53 {
+                self.g53()?;
+            } else if cycle {
+                self.canned_cycle(!was_cycle, os.g60.is_some())?;
+            } else if hurco_cycle {
+                if self.words.has(b'X') || self.words.has(b'Z') || self.words.has(b'R') {
+                    self.hurco_drill()?;
+                }
+            } else if let Some(at) = os.g60 {
+                self.g60(at)?;
+            } else if let Some((c, at)) = os.g45 {
+                self.tool_offset_motion(c, at)?;
+            } else {
+                self.motion()?;
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,260 @@
+//! Closed triangle meshes of the cut part, handed out one triangle at a
+//! time (the STL writer counts them in a first pass, writes them in a
+//! second; nothing holds the whole mesh).
+//!
+//! - Mill: the height field averaged over square blocks of cells, one
+//!   vertex per block centre, a border ring on the stock's edge at the
+//!   border blocks' heights, two triangles per quad, a vertical skirt
+//!   round the edge and a fan bottom. The piecewise-linear top encloses
+//!   exactly Σ height × area of the blocks, i.e. the remaining volume.
+//! - Lathe: the half section's outline (column centres joined by lines,
+//!   steps where the columns' intervals change), revolved in N facets with
+//!   N chosen for a chord error of at most 1 µm; radii are scaled by the
+//!   facet factor so that the faceted solid's volume is the round one's.
+//!   Between column centres joined by a line the volume differs from the
+//!   columns' by at most π dz (4 dz)² / 6 per column.
+
+use std::f64::consts::PI;
+
+use crate::lathe::Section;
+use crate::zmap::{ZMap, BLOCK};
+
+/// A triangle, counter-clockwise seen from outside.
+pub type Tri = [[f32; 3]; 3];
+
+/// Most block-centre vertices of the mill's top surface.
+pub const MAX_TOP_VERTICES: usize = 2 << 20;
+/// Height a cut-through cell keeps in the mesh above the stock bottom,
+/// so that the top never touches the skirt's bottom edge, mm.
+pub const THROUGH_GAP: f64 = 1e-4;
+/// Chord error of the lathe part's facets, mm.
+pub const REVOLVE_TOL: f64 = 1e-3;
+
+/// The block size (cells) the mill mesh uses.
+pub fn mill_block(z: &ZMap) -> usize {
+    let mut k = 1;
+    while k < BLOCK
+        && (z.nx / k) * (z.ny / k) > MAX_TOP_VERTICES
+        && z.nx.is_multiple_of(2 * k)
+        && z.ny.is_multiple_of(2 * k)
+    {
+        k *= 2;
+    }
+    k
+}
+
+/// Triangles of the mill part.
+pub fn mill(z: &ZMap, emit: &mut dyn FnMut(Tri)) {
+    let k = mill_block(z);
+    let (mx, my) = (z.nx / k, z.ny / k);
+    let (bx, by) = (k as f64 * z.dx, k as f64 * z.dy);
+    let x1 = z.x0 + z.nx as f64 * z.dx;
+    let y1 = z.y0 + z.ny as f64 * z.dy;
+    let floor = z.zmin + THROUGH_GAP;
+    let height = |bi: usize, bj: usize| -> f64 {
+        let mut s = 0.0;
+        for j in bj * k..(bj + 1) * k {
+            for i in bi * k..(bi + 1) * k {
+                s += z.at(i, j);
+            }
+        }
+        (s / (k * k) as f64).max(floor)
+    };
+    // Vertex (i, j), i in 0..=mx+1: 0 and mx+1 on the edge, else block centres.
+    let vx = |i: usize| match i {
+        0 => z.x0,
+        i if i == mx + 1 => x1,
+        i => z.x0 + (i as f64 - 0.5) * bx,
+    };
+    let vy = |j: usize| match j {
+        0 => z.y0,
+        j if j == my + 1 => y1,
+        j => z.y0 + (j as f64 - 0.5) * by,
+    };
+    let clampi = |i: usize, m: usize| i.saturating_sub(1).min(m - 1);
+    let mut row0: Vec<f64> = (0..mx + 2).map(|i| height(clampi(i, mx), 0)).collect();
+    let mut row1 = vec![0.0; mx + 2];
+    let p = |i: usize, j: usize, h: f64| [vx(i) as f32, vy(j) as f32, h as f32];
+    for j in 0..=my {
+        let bj = clampi(j + 1, my);
+        for (i, v) in row1.iter_mut().enumerate() {
+            *v = height(clampi(i, mx), bj);
+        }
+        for i in 0..=mx {
+            let (a, b) = (p(i, j, row0[i]), p(i + 1, j, row0[i + 1]));
+            let (c, d) = (p(i + 1, j + 1, row1[i + 1]), p(i, j + 1, row1[i]));
+            emit([a, b, c]);
+            emit([a, c, d]);
+        }
+        std::mem::swap(&mut row0, &mut row1);
+    }
+    // The border ring, counter-clockwise from above, with its heights.
+    let mut ring: Vec<(usize, usize)> = Vec::with_capacity(2 * (mx + my) + 8);
+    ring.extend((0..=mx).map(|i| (i, 0)));
+    ring.extend((0..=my).map(|j| (mx + 1, j)));
+    ring.extend((1..=mx + 1).rev().map(|i| (i, my + 1)));
+    ring.extend((1..=my + 1).rev().map(|j| (0, j)));
+    let hr = |(i, j): (usize, usize)| height(clampi(i, mx), clampi(j, my));
+    let centre = [
+        ((z.x0 + x1) / 2.0) as f32,
+        ((z.y0 + y1) / 2.0) as f32,
+        z.zmin as f32,
+    ];
+    for n in 0..ring.len() {
+        let (a, b) = (ring[n], ring[(n + 1) % ring.len()]);
+        let (at, bt) = (p(a.0, a.1, hr(a)), p(b.0, b.1, hr(b)));
+        let (ab, bb) = (p(a.0, a.1, z.zmin), p(b.0, b.1, z.zmin));
+        emit([ab, bb, bt]);
+        emit([ab, bt, at]);
+        emit([centre, bb, ab]);
+    }
+}
+
+/// A point of the outline (z, r) and the outline's edges, each with the
+/// material on its left walking from the first point to the second.
+type Edge = ((f64, f64), (f64, f64));
+
+/// The half section's outline as directed edges.
+pub fn outline(s: &Section, out: &mut Vec<Edge>) {
+    out.clear();
+    let n = s.cols.len();
+    let edge_z = |k: usize| s.z0 + k as f64 * s.dz;
+    let empty: Vec<(f64, f64)> = Vec::new();
+    let mut k = 0;
+    while k < n {
+        // A run: columns whose intervals pair up and overlap.
+        let mut e = k;
+        while e + 1 < n && joins(&s.cols[e], &s.cols[e + 1], 4.0 * s.dz) {
+            e += 1;
+        }
+        let (zl, zr) = (edge_z(k), edge_z(e + 1));
+        for i in 0..s.cols[k].len() {
+            // Upper curve right to left (material below, on the left going -z).
+            let mut prev = (zr, s.cols[e][i].1);
+            for c in (k..=e).rev() {
+                let q = (s.zc(c), s.cols[c][i].1);
+                push_edge(out, prev, q);
+                prev = q;
+            }
+            push_edge(out, prev, (zl, s.cols[k][i].1));
+            let mut prev = (zl, s.cols[k][i].0);
+            for c in k..=e {
+                let q = (s.zc(c), s.cols[c][i].0);
+                push_edge(out, prev, q);
+                prev = q;
+            }
+            push_edge(out, prev, (zr, s.cols[e][i].0));
+        }
+        // The step at the run's right edge, against the next column.
+        let right = if e + 1 < n { &s.cols[e + 1] } else { &empty };
+        step(out, zr, &s.cols[e], right);
+        if k == 0 {
+            step(out, zl, &empty, &s.cols[0]);
+        }
+        k = e + 1;
+    }
+}
+
+fn push_edge(out: &mut Vec<Edge>, a: (f64, f64), b: (f64, f64)) {
+    if a != b {
+        out.push((a, b));
+    }
+}
+
+/// Whether the columns' intervals pair up one to one and change by at
+/// most `jump`: then the outline joins their centres by lines. Steeper
+/// changes are steps at the column edge, so that the outline's volume
+/// stays the columns' (a line across a step of Δr would lose π dz Δr² / 6).
+fn joins(a: &[(f64, f64)], b: &[(f64, f64)], jump: f64) -> bool {
+    a.len() == b.len()
+        && a.iter()
+            .zip(b)
+            .all(|(p, q)| (p.0 - q.0).abs() <= jump && (p.1 - q.1).abs() <= jump)
+}
+
+/// Faces at z between the material on the left (`l`) and on the right.
+fn step(out: &mut Vec<Edge>, z: f64, l: &[(f64, f64)], r: &[(f64, f64)]) {
+    let mut cuts: Vec<f64> = l.iter().chain(r).flat_map(|p| [p.0, p.1]).collect();
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    let inside = |s: &[(f64, f64)], m: f64| s.iter().any(|p| p.0 < m && m < p.1);
+    for w in cuts.windows(2) {
+        let m = 0.5 * (w[0] + w[1]);
+        match (inside(l, m), inside(r, m)) {
+            // Material on the left only: the face looks to +z; walking
+            // up in r has the material on the left.
+            (true, false) => out.push(((z, w[0]), (z, w[1]))),
+            (false, true) => out.push(((z, w[1]), (z, w[0]))),
+            _ => {}
+        }
+    }
+}
+
+/// Merges consecutive collinear edges (within 1e-9 mm).
+fn simplify(edges: &[Edge], out: &mut Vec<Edge>) {
+    out.clear();
+    for &(a, b) in edges {
+        if let Some(last) = out.last_mut() {
+            if last.1 == a {
+                let (p, q) = (last.0, b);
+                let cr = (a.0 - p.0) * (q.1 - p.1) - (a.1 - p.1) * (q.0 - p.0);
+                let len = (q.0 - p.0).hypot(q.1 - p.1);
+                let along = (a.0 - p.0) * (q.0 - p.0) + (a.1 - p.1) * (q.1 - p.1);
+                if len > 0.0 && (cr / len).abs() < 1e-9 && along > 0.0 {
+                    last.1 = q;
+                    continue;
+                }
+            }
+        }
+        out.push((a, b));
+    }
+}
+
+/// Facets round the axis for a chord error of [`REVOLVE_TOL`] at radius `r`.
+pub fn facets(r: f64) -> usize {
+    if r <= REVOLVE_TOL {
+        return 8;
+    }
+    let n = (PI / (1.0 - REVOLVE_TOL / r).acos()).ceil() as usize;
+    n.clamp(8, 4096)
+}
+
+/// Triangles of the lathe part. The spindle axis is Z; the part lies in
+/// work coordinates (X, Y about the axis).
+pub fn lathe(s: &Section, emit: &mut dyn FnMut(Tri)) {
+    let mut raw = Vec::new();
+    outline(s, &mut raw);
+    let mut edges = Vec::new();
+    simplify(&raw, &mut edges);
+    let rmax = edges.iter().map(|e| e.0 .1.max(e.1 .1)).fold(0.0, f64::max);
+    let n = facets(rmax);
+    // Facet factor: the N-gon of radius r has area (N/2) sin(2π/N) r².
+    let f = (n as f64 / 2.0 * (2.0 * PI / n as f64).sin() / PI).sqrt();
+    let (cs, sn): (Vec<f64>, Vec<f64>) = (0..n)
+        .map(|i| {
+            let a = 2.0 * PI * i as f64 / n as f64;
+            (a.cos() / f, a.sin() / f)
+        })
+        .unzip();
+    let v = |p: (f64, f64), i: usize| -> [f32; 3] {
+        if p.1 == 0.0 {
+            return [0.0, 0.0, p.0 as f32];
+        }
+        let i = i % n;
+        [(p.1 * cs[i]) as f32, (p.1 * sn[i]) as f32, p.0 as f32]
+    };
+    for &(a, b) in &edges {
+        if a.1 == 0.0 && b.1 == 0.0 {
+            continue;
+        }
+        for i in 0..n {
+            let (a0, a1, b0, b1) = (v(a, i), v(a, i + 1), v(b, i), v(b, i + 1));
+            if a.1 != 0.0 {
+                emit([a0, b0, a1]);
+            }
+            if b.1 != 0.0 {
+                emit([a1, b0, b1]);
+            }
+        }
+    }
+}

@@ -1,0 +1,461 @@
+//! The simulation: canonical events in, the stock model updated move by
+//! move, crash events and volumes out.
+
+use std::collections::BTreeSet;
+
+use kerf_canon::{Canon, Event, Pos, SpindleDir, SrcRef};
+
+use crate::envelope::Sweep;
+use crate::events::{EventKind, SimEvent, SimReport};
+use crate::hull::{Hull, Pt};
+use crate::lathe::{swept, Section};
+use crate::lathe_tool::cutting_outline;
+use crate::path::chords;
+use crate::stock::Stock;
+use crate::tool::{LatheTool, MillTool, Tool, ToolTable};
+use crate::zmap::ZMap;
+
+/// Events kept in the report; later ones are counted only.
+pub const MAX_EVENTS: usize = 1000;
+/// Radius of the flat end mill used for a tool whose D offset is 0, mm.
+pub const FALLBACK_RADIUS: f64 = 5.0;
+/// Default column width of the lathe model, mm.
+pub const LATHE_RES: f64 = 0.005;
+/// Chord tolerance of arcs on the lathe, mm.
+pub const ARC_TOL_LATHE: f64 = 0.5e-3;
+/// Travel between holder checks on the lathe, mm.
+const HOLDER_STEP: f64 = 0.5;
+/// Bisection steps locating a first contact (2^-30 of the move).
+const BISECT: usize = 30;
+
+/// The stock model.
+pub enum Model {
+    /// Machining center height field.
+    Mill(ZMap),
+    /// Lathe half section.
+    Lathe(Section),
+}
+
+/// The tool in use, with its derived geometry.
+enum Current {
+    Mill(MillTool),
+    Lathe { outline: Vec<Pt>, holder: Vec<Pt> },
+}
+
+/// The simulation of one run.
+pub struct Sim {
+    stock: Stock,
+    model: Model,
+    tools: ToolTable,
+    spindle_on: bool,
+    offset: u32,
+    current: Option<(u32, u32, Current)>,
+    unknown: BTreeSet<u32>,
+    events: Vec<SimEvent>,
+    dropped: u64,
+    collisions: u64,
+    removed: f64,
+    t_prev: f64,
+    chords: Vec<[f64; 3]>,
+    undo: Vec<(u32, f32)>,
+    hull: Hull,
+    scratch: Vec<Pt>,
+    res: f64,
+    rapid_rates: Option<[f64; 3]>,
+}
+
+impl Sim {
+    /// A simulation of `stock` with `tools`; `res` the cell size (mill) or
+    /// column width (lathe), mm, or None for the default.
+    pub fn new(stock: Stock, tools: ToolTable, res: Option<f64>) -> Result<Sim, String> {
+        if let Some(r) = res {
+            if !(r.is_finite() && (0.001..=10.0).contains(&r)) {
+                return Err(format!("--sim-res {r}: the cell size must be 0.001-10 mm"));
+            }
+        }
+        let (model, res) = match stock {
+            Stock::Box { min, max } => {
+                let r = res.unwrap_or_else(|| ZMap::default_res(max[0] - min[0], max[1] - min[1]));
+                let z = ZMap::new(min, max, r)?;
+                let res = z.dx.max(z.dy);
+                (Model::Mill(z), res)
+            }
+            Stock::Turn {
+                r_out,
+                r_in,
+                z_face,
+                z_end,
+            } => {
+                let s = Section::new(r_in, r_out, z_end, z_face, res.unwrap_or(LATHE_RES))?;
+                let res = s.dz;
+                (Model::Lathe(s), res)
+            }
+        };
+        Ok(Sim {
+            stock,
+            model,
+            tools,
+            spindle_on: false,
+            offset: 0,
+            current: None,
+            unknown: BTreeSet::new(),
+            events: Vec::new(),
+            dropped: 0,
+            collisions: 0,
+            removed: 0.0,
+            t_prev: 0.0,
+            chords: Vec::new(),
+            undo: Vec::new(),
+            hull: Hull::default(),
+            scratch: Vec::new(),
+            res,
+            rapid_rates: None,
+        })
+    }
+
+    /// The X Y Z rapid rates (mm/min): a non-linear rapid is then
+    /// simulated along its dog-leg, each axis at its own rate.
+    pub fn set_rapid_rates(&mut self, rates: [f64; 3]) {
+        self.rapid_rates = Some(rates);
+    }
+
+    /// Replaces the offsets the tools without geometry are simulated from.
+    pub fn set_offsets(&mut self, o: crate::tool::OffsetData) {
+        self.tools.offsets = o;
+        self.current = None;
+    }
+
+    /// The stock model (for the STL and the picture).
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
+    /// The stock.
+    pub fn stock(&self) -> &Stock {
+        &self.stock
+    }
+
+    /// One canonical event. `start` is the work position before it; `t`
+    /// the machine time at its end (for a motion or dwell), s.
+    pub fn event(&mut self, e: &Event, start: &Pos, t: f64) {
+        match &e.cmd {
+            Canon::Spindle { dir, .. } => self.spindle_on = *dir != SpindleDir::Stop,
+            Canon::Tool { offset, .. } => self.offset = *offset,
+            Canon::Dwell { .. } => self.t_prev = self.t_prev.max(t),
+            _ => {}
+        }
+        if e.motion().is_none() {
+            return;
+        }
+        let rapid = matches!(e.cmd, Canon::Rapid { .. });
+        // Chord tolerance: 0.5 µm on the lathe (its profile is exact),
+        // a quarter cell (at most 1 µm) on the height field.
+        let tol = match self.model {
+            Model::Lathe(_) => ARC_TOL_LATHE,
+            Model::Mill(_) => (self.res / 4.0).min(1e-3),
+        };
+        let mut pts = std::mem::take(&mut self.chords);
+        match (&e.cmd, self.rapid_rates) {
+            (Canon::Rapid { m, linear: false }, Some(rates)) => {
+                pts.clear();
+                let corners = kerf_geom::stroke::dogleg(start, &m.to, rates);
+                pts.extend(corners.iter().skip(1).map(|p| [p[0], p[1], p[2]]));
+            }
+            _ => chords(&e.cmd, start, tol, &mut pts),
+        }
+        let mut p = [start[0], start[1], start[2]];
+        let total: f64 = {
+            let mut q = p;
+            pts.iter()
+                .map(|n| {
+                    let d = dist(&q, n);
+                    q = *n;
+                    d
+                })
+                .sum()
+        };
+        let (t0, t1) = (self.t_prev, t.max(self.t_prev));
+        let mut done = 0.0;
+        for &n in &pts {
+            let d = dist(&p, &n);
+            let f = |x: f64| {
+                if total > 0.0 {
+                    t0 + (t1 - t0) * x / total
+                } else {
+                    t1
+                }
+            };
+            let span = (f(done), f(done + d));
+            self.segment(e, p, n, rapid, span);
+            done += d;
+            p = n;
+        }
+        self.chords = pts;
+        self.t_prev = t1;
+    }
+
+    fn segment(&mut self, e: &Event, p0: [f64; 3], p1: [f64; 3], rapid: bool, t: (f64, f64)) {
+        self.prepare_tool(e, p0, t.0);
+        match &self.model {
+            Model::Mill(_) => self.mill_segment(e.src, e.tool, p0, p1, rapid, t),
+            Model::Lathe(_) => self.lathe_segment(e.src, e.tool, p0, p1, rapid, t),
+        }
+    }
+
+    /// Makes `current` the tool of `e`, reporting a tool without geometry.
+    fn prepare_tool(&mut self, e: &Event, at: [f64; 3], t: f64) {
+        let key = (e.tool, self.offset);
+        if matches!(&self.current, Some((n, o, _)) if (*n, *o) == key) {
+            return;
+        }
+        let lathe = matches!(self.model, Model::Lathe(_));
+        let known = self.tools.tools.get(&e.tool).cloned();
+        let cur = match (known, lathe) {
+            (Some(Tool::Mill(m)), false) => Current::Mill(m),
+            (Some(Tool::Lathe(l)), true) => lathe_current(&l),
+            (_, false) => {
+                self.report_unknown(e, at, t);
+                let r = self
+                    .tools
+                    .offsets
+                    .radius
+                    .get(&e.tool)
+                    .copied()
+                    .unwrap_or(0.0);
+                Current::Mill(MillTool::flat(if r > 0.0 { r } else { FALLBACK_RADIUS }))
+            }
+            (_, true) => {
+                self.report_unknown(e, at, t);
+                let (r, tip) = self
+                    .tools
+                    .offsets
+                    .nose
+                    .get(&self.offset)
+                    .copied()
+                    .unwrap_or((0.0, 3));
+                lathe_current(&LatheTool::from_offset(r.max(0.0), tip))
+            }
+        };
+        self.current = Some((key.0, key.1, cur));
+    }
+
+    fn report_unknown(&mut self, e: &Event, at: [f64; 3], t: f64) {
+        if self.unknown.insert(e.tool) {
+            self.push(EventKind::ToolUnknown, e.src, e.tool, t, at, 0.0);
+        }
+    }
+
+    fn push(&mut self, kind: EventKind, src: SrcRef, tool: u32, t: f64, at: [f64; 3], vol: f64) {
+        if kind.is_collision() {
+            if let Some(last) = self.events.last_mut() {
+                if last.kind == kind && last.file == src.file && last.line == src.line {
+                    last.volume_mm3 += vol;
+                    return;
+                }
+            }
+            self.collisions += 1;
+        }
+        if self.events.len() >= MAX_EVENTS {
+            self.dropped += 1;
+            return;
+        }
+        self.events.push(SimEvent {
+            kind,
+            file: src.file,
+            line: src.line,
+            t,
+            at,
+            volume_mm3: vol,
+            tool,
+        });
+    }
+
+    fn mill_segment(
+        &mut self,
+        src: SrcRef,
+        tool_no: u32,
+        p0: [f64; 3],
+        p1: [f64; 3],
+        rapid: bool,
+        t: (f64, f64),
+    ) {
+        let (Model::Mill(z), Some((_, _, Current::Mill(tool)))) = (&mut self.model, &self.current)
+        else {
+            return;
+        };
+        let s = Sweep::new(p0, p1);
+        let centre_before = z.height_at(p1[0], p1[1]);
+        self.undo.clear();
+        let cut = z.cut(tool, &s, true, &mut self.undo);
+        let mut found: Vec<(EventKind, f64)> = Vec::new();
+        if cut.removed > 0.0 {
+            if rapid {
+                found.push((EventKind::RapidIntoStock, cut.removed));
+            } else if !self.spindle_on {
+                found.push((EventKind::SpindleOffCut, cut.removed));
+            }
+            let plunge = p1[2] < p0[2] - crate::zmap::EPS
+                && centre_before.is_some_and(|h| h > p1[2] + crate::zmap::EPS);
+            if !tool.centre_cutting && plunge {
+                found.push((EventKind::PlungeNonCentreCutting, cut.removed));
+            }
+        }
+        if cut.holder > 0.0 {
+            found.push((EventKind::HolderCollision, cut.holder));
+        }
+        self.removed += cut.removed;
+        if found.is_empty() {
+            return;
+        }
+        // Locate the first contact on the stock as it was before the move.
+        z.restore(&mut self.undo);
+        let mut scratch = Vec::new();
+        let mut located = Vec::new();
+        for (kind, vol) in found {
+            let holder = kind == EventKind::HolderCollision;
+            let f = first_contact(|f| {
+                let c = z.cut(
+                    tool,
+                    &Sweep::new(p0, lerp(&p0, &p1, f)),
+                    false,
+                    &mut scratch,
+                );
+                if holder {
+                    c.holder > 0.0
+                } else {
+                    c.removed > 0.0
+                }
+            });
+            located.push((kind, vol, f));
+        }
+        z.cut(tool, &s, true, &mut self.undo);
+        for (kind, vol, f) in located {
+            let at = lerp(&p0, &p1, f);
+            self.push(kind, src, tool_no, t.0 + (t.1 - t.0) * f, at, vol);
+        }
+    }
+
+    fn lathe_segment(
+        &mut self,
+        src: SrcRef,
+        tool_no: u32,
+        p0: [f64; 3],
+        p1: [f64; 3],
+        rapid: bool,
+        t: (f64, f64),
+    ) {
+        let has_holder = matches!(&self.current, Some((_, _, Current::Lathe { holder, .. })) if !holder.is_empty());
+        let len = dist(&p0, &p1);
+        let steps = if has_holder {
+            ((len / HOLDER_STEP).ceil() as usize).clamp(1, 100_000)
+        } else {
+            1
+        };
+        for i in 0..steps {
+            let (fa, fb) = (i as f64 / steps as f64, (i + 1) as f64 / steps as f64);
+            let (a, b) = (lerp(&p0, &p1, fa), lerp(&p0, &p1, fb));
+            let ts = (t.0 + (t.1 - t.0) * fa, t.0 + (t.1 - t.0) * fb);
+            self.lathe_step(src, tool_no, a, b, rapid, ts);
+        }
+    }
+
+    fn lathe_step(
+        &mut self,
+        src: SrcRef,
+        tool_no: u32,
+        p0: [f64; 3],
+        p1: [f64; 3],
+        rapid: bool,
+        t: (f64, f64),
+    ) {
+        let (Model::Lathe(sec), Some((_, _, Current::Lathe { outline, holder }))) =
+            (&mut self.model, &self.current)
+        else {
+            return;
+        };
+        let (a, b) = ((p0[2], p0[0]), (p1[2], p1[0]));
+        let mut found: Vec<(EventKind, f64, f64)> = Vec::new();
+        let (hull, scratch) = (&mut self.hull, &mut self.scratch);
+        let mut sweep_of = |sec: &mut Section, shape: &[Pt], f: f64, write: bool| {
+            let e = (a.0 + (b.0 - a.0) * f, a.1 + (b.1 - a.1) * f);
+            swept(shape, a, e, scratch, hull);
+            sec.sweep(hull, write)
+        };
+        if rapid || !self.spindle_on {
+            let v = sweep_of(sec, outline, 1.0, false);
+            if v > 0.0 {
+                let kind = if rapid {
+                    EventKind::RapidIntoStock
+                } else {
+                    EventKind::SpindleOffCut
+                };
+                let f = first_contact(|f| sweep_of(sec, outline, f, false) > 0.0);
+                found.push((kind, v, f));
+            }
+        }
+        self.removed += sweep_of(sec, outline, 1.0, true);
+        if !holder.is_empty() {
+            let v = sweep_of(sec, holder, 1.0, false);
+            if v > 0.0 {
+                let f = first_contact(|f| sweep_of(sec, holder, f, false) > 0.0);
+                found.push((EventKind::HolderCollision, v, f));
+                self.removed += sweep_of(sec, holder, 1.0, true);
+            }
+        }
+        for (kind, vol, f) in found {
+            let at = lerp(&p0, &p1, f);
+            self.push(kind, src, tool_no, t.0 + (t.1 - t.0) * f, at, vol);
+        }
+    }
+
+    /// Volumes and events so far.
+    pub fn report(&self) -> SimReport {
+        let remaining = match &self.model {
+            Model::Mill(z) => z.volume(),
+            Model::Lathe(s) => s.volume(),
+        };
+        SimReport {
+            stock_mm3: self.stock.volume(),
+            removed_mm3: self.removed,
+            remaining_mm3: remaining,
+            resolution_mm: self.res,
+            events: self.events.clone(),
+            events_dropped: self.dropped,
+            collisions: self.collisions,
+        }
+    }
+}
+
+fn lathe_current(t: &LatheTool) -> Current {
+    Current::Lathe {
+        outline: cutting_outline(t),
+        holder: t.holder.clone(),
+    }
+}
+
+fn dist(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2) + (b[2] - a[2]).powi(2)).sqrt()
+}
+
+fn lerp(a: &[f64; 3], b: &[f64; 3], f: f64) -> [f64; 3] {
+    [
+        a[0] + (b[0] - a[0]) * f,
+        a[1] + (b[1] - a[1]) * f,
+        a[2] + (b[2] - a[2]) * f,
+    ]
+}
+
+/// The least fraction of a move at which `touches` (monotone: once true,
+/// true for every longer part of the move) becomes true.
+fn first_contact(mut touches: impl FnMut(f64) -> bool) -> f64 {
+    let (mut lo, mut hi) = (0.0, 1.0);
+    for _ in 0..BISECT {
+        let m = 0.5 * (lo + hi);
+        if touches(m) {
+            hi = m;
+        } else {
+            lo = m;
+        }
+    }
+    hi
+}

@@ -1,0 +1,197 @@
+//! Lathe: removed volumes of revolution against their formulas, the
+//! profile left, and the crash checks.
+
+mod common;
+
+use std::f64::consts::PI;
+
+use common::Run;
+use kerf_sim::{parse_tools, EventKind, Model, ToolTable};
+
+/// A sharp 80° insert (tip 3, OD) as tool 1, a sharp boring insert
+/// (tip 2) as tool 2, a 3 mm grooving blade as tool 3.
+fn tools() -> ToolTable {
+    parse_tools(
+        "[tool.1]\nnose_radius=0\ntip=3\n[tool.2]\nnose_radius=0\ntip=2\n\
+         [tool.3]\nkind=\"groove\"\nwidth=3\ntip=3\n[tool.4]\nnose_radius=0.8\ntip=3\n",
+        true,
+    )
+    .unwrap()
+}
+
+fn run(stock: &str) -> Run {
+    let mut r = Run::new(stock, tools(), None).at(40.0, 0.0, 10.0);
+    r.tool(1, 1);
+    r.spindle(true);
+    r
+}
+
+fn close(got: f64, want: f64, tol: f64) {
+    assert!((got - want).abs() <= tol, "{got} vs {want} ± {tol}");
+}
+
+/// The material's outer radius at z (from the column there).
+fn outer(r: &Run, z: f64) -> f64 {
+    let Model::Lathe(s) = r.sim.model() else {
+        panic!()
+    };
+    let k = ((z - s.z0) / s.dz).floor() as usize;
+    s.cols[k].last().map_or(0.0, |iv| iv.1)
+}
+
+#[test]
+fn facing_a_tube_removes_pi_r2_minus_r2_times_the_depth() {
+    let mut r = run("tube:50,20,100");
+    r.lrapid(1, 27.0, -2.0);
+    r.lfeed(2, 5.0, -2.0);
+    // pi (25² - 10²) * 2; the face at Z-2 falls on a column edge (100 / 0.005).
+    let rep = r.sim.report();
+    close(rep.removed_mm3, PI * (625.0 - 100.0) * 2.0, 1e-6);
+    assert!(rep.events.is_empty(), "{:?}", rep.events);
+    assert_eq!(rep.resolution_mm, 0.005);
+}
+
+#[test]
+fn a_turned_step_and_a_taper() {
+    let mut r = run("bar:50,100");
+    r.lrapid(1, 20.0, 2.0);
+    r.lfeed(2, 20.0, -30.0);
+    r.lfeed(3, 26.0, -30.0);
+    close(
+        r.sim.report().removed_mm3,
+        PI * (625.0 - 400.0) * 30.0,
+        1e-6,
+    );
+    close(outer(&r, -15.0), 20.0, 1e-9);
+    close(outer(&r, -30.01), 25.0, 1e-9);
+    // Taper from r 20 at Z-40 to r 25 at Z-60 (fresh material from -30):
+    let mut r = run("bar:50,100");
+    r.lrapid(1, 20.0, -40.0 + 0.0);
+    let mut r2 = run("bar:50,100");
+    r2.lrapid(1, 26.0, 2.0);
+    r2.lfeed(2, 20.0, 0.0);
+    r2.lfeed(3, 25.0, -20.0);
+    r2.lfeed(4, 26.0, -20.0);
+    // pi ∫ (25² - r²) dz with r linear 20..25 over 20: 20 (400+500+625)/3.
+    let want = PI * (625.0 * 20.0 - 20.0 * 1525.0 / 3.0);
+    // The midpoint rule on r² is exact to dz² r'² L: below 1e-3 mm³.
+    close(r2.sim.report().removed_mm3, want, 1e-3);
+    // The profile: r = 20 + 5 (-z) / 20 within 1 µm at any column centre.
+    for z in [-1.0025, -7.5025, -13.3375, -19.9975] {
+        close(outer(&r2, z), 20.0 - z / 4.0, 1e-6);
+    }
+    drop(r);
+}
+
+#[test]
+fn a_bore_in_a_tube() {
+    let mut r = run("tube:60,20,100");
+    r.tool(2, 2);
+    r.lrapid(1, 15.0, 2.0);
+    r.lfeed(2, 15.0, -25.0);
+    r.lfeed(3, 10.0, -25.0);
+    r.lrapid(4, 10.0, 2.0);
+    let rep = r.sim.report();
+    close(rep.removed_mm3, PI * (225.0 - 100.0) * 25.0, 1e-6);
+    assert!(rep.events.is_empty(), "{:?}", rep.events);
+}
+
+#[test]
+fn a_groove_is_its_width_by_its_depth() {
+    let mut r = run("bar:50,100");
+    r.tool(3, 3);
+    r.lrapid(1, 27.0, -10.0);
+    r.lfeed(2, 20.0, -10.0);
+    r.lfeed(3, 27.0, -10.0);
+    close(r.sim.report().removed_mm3, PI * (625.0 - 400.0) * 3.0, 1e-6);
+    close(outer(&r, -8.5), 20.0, 1e-9);
+    close(outer(&r, -10.01), 25.0, 1e-9);
+}
+
+#[test]
+fn a_nose_radius_leaves_its_corner_radius() {
+    // OD pass at tip radius 20 to a shoulder at Z-20 with a 0.8 nose: the
+    // corner left is a quarter circle of 0.8 centred at (z -19.2, r 20.8).
+    let mut r = run("bar:50,100");
+    r.tool(4, 4);
+    r.lrapid(1, 20.0, 2.0);
+    r.lfeed(2, 20.0, -20.0);
+    r.lfeed(3, 26.0, -20.0);
+    // The nose is chorded within 0.5 µm: the profile's distance from the
+    // corner's centre is 0.8 less at most that.
+    for z in [-19.2025, -19.5025, -19.9025] {
+        let d = (z + 19.2f64).hypot(outer(&r, z) - 20.8);
+        assert!((0.8 - 0.5e-3..=0.8).contains(&d), "{z}: {d}");
+    }
+    close(outer(&r, -10.0025), 20.0, 1e-9);
+}
+
+#[test]
+fn a_rapid_into_the_bar_is_reported_at_its_line_and_contact() {
+    let mut r = run("bar:50,100");
+    // Z-10.0025 is a column centre (columns of 0.005 from Z-100).
+    r.lrapid(1, 30.0, -10.0025);
+    r.lrapid(5, 20.0, -10.0025);
+    let rep = r.sim.report();
+    assert_eq!(rep.events.len(), 1, "{:?}", rep.events);
+    let e = &rep.events[0];
+    assert_eq!((e.kind, e.line), (EventKind::RapidIntoStock, 5));
+    // The sharp tip touches the OD (r 25) half way; Z is the move's.
+    close(e.at[0], 25.0, 1e-6);
+    close(e.at[2], -10.0025, 1e-12);
+    close(e.t, 1.5, 1e-6);
+    assert!(rep.collided());
+}
+
+#[test]
+fn cutting_with_the_spindle_stopped_and_a_holder_that_hits() {
+    let mut r = run("bar:50,100");
+    r.spindle(false);
+    r.lrapid(1, 26.0, -10.0);
+    r.lfeed(7, 24.0, -10.0);
+    let rep = r.sim.report();
+    assert_eq!(rep.events.len(), 1);
+    assert_eq!(
+        (rep.events[0].kind, rep.events[0].line),
+        (EventKind::SpindleOffCut, 7)
+    );
+
+    // A 4 mm deep blade with a holder 7 mm wide (Z-2..5 from the tip) from
+    // 5 mm above the tip: the holder meets the OD (r 25) beside the groove
+    // once the tip is at r 20.
+    let tt = parse_tools(
+        "[tool.9]\nkind=\"groove\"\nwidth=3\ndepth=4\ntip=3\n\
+         holder=[[-2,5],[5,5],[5,30],[-2,30]]\n",
+        true,
+    )
+    .unwrap();
+    let mut r = Run::new("bar:50,100", tt, None).at(40.0, 0.0, 10.0);
+    r.tool(9, 9);
+    r.spindle(true);
+    r.lrapid(1, 27.0, -10.0);
+    r.lfeed(2, 21.0, -10.0);
+    assert!(r.sim.report().events.is_empty());
+    r.lfeed(3, 19.0, -10.0);
+    let rep = r.sim.report();
+    assert_eq!(rep.events.len(), 1, "{:?}", rep.events);
+    assert_eq!(
+        (rep.events[0].kind, rep.events[0].line),
+        (EventKind::HolderCollision, 3)
+    );
+    close(rep.events[0].at[0], 20.0, 1e-6);
+}
+
+#[test]
+fn a_tool_without_geometry_is_its_offset_and_a_warning() {
+    let mut r = Run::new("bar:50,100", ToolTable::default(), None).at(40.0, 0.0, 10.0);
+    r.tool(6, 6);
+    r.spindle(true);
+    r.lrapid(1, 20.0, 2.0);
+    r.lfeed(2, 20.0, -30.0);
+    r.lfeed(3, 26.0, -30.0);
+    let rep = r.sim.report();
+    assert_eq!(rep.events.len(), 1);
+    assert_eq!(rep.events[0].kind, EventKind::ToolUnknown);
+    assert!(!rep.collided());
+    close(rep.removed_mm3, PI * (625.0 - 400.0) * 30.0, 1e-6);
+}
