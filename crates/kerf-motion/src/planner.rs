@@ -1239,7 +1239,7 @@ mod tests {
     /// A gentle zig-zag (±0.5°) that never needs a stop.
     fn zigzag(pl: &mut Planner, n: usize) {
         for k in 1..=n {
-            let y = if k % 2 == 0 { 0.0 } else { 0.05 };
+            let y = if k.is_multiple_of(2) { 0.0 } else { 0.05 };
             pl.push(&feed_to(k as f64 * 5.0, y));
         }
     }
@@ -1281,19 +1281,19 @@ mod tests {
     fn window_bounds_the_queue_and_g10_3_widens_it() {
         let mut pl = Planner::new(dynm(), [0.0; NAXES], 0.0);
         let mut most = 0;
-        for k in 1..=200 {
+        for k in 1..=200u32 {
             pl.push(&feed_to(
                 k as f64 * 5.0,
-                if k % 2 == 0 { 0.0 } else { 0.05 },
+                if k.is_multiple_of(2) { 0.0 } else { 0.05 },
             ));
             most = most.max(pl.queued());
         }
         assert_eq!(most, 8);
         pl.push(&ev(Canon::Mode(ModeChange::HighSpeed(true))));
-        for k in 201..=400 {
+        for k in 201..=400u32 {
             pl.push(&feed_to(
                 k as f64 * 5.0,
-                if k % 2 == 0 { 0.0 } else { 0.05 },
+                if k.is_multiple_of(2) { 0.0 } else { 0.05 },
             ));
             most = most.max(pl.queued());
         }

@@ -582,7 +582,7 @@ mod tests {
             for row in 0..rows {
                 let y = row as f64 * gap;
                 for k in 0..1000 {
-                    let x = if row % 2 == 0 {
+                    let x = if row.is_multiple_of(2) {
                         k as f64 * 0.1
                     } else {
                         100.0 - k as f64 * 0.1
