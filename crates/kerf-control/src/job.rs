@@ -239,24 +239,6 @@ pub fn load_profile(name: &str) -> Result<Profile, LoadError> {
 }
 
 /// The `--set` keys (not the profile parameters), for suggestions.
-const SET_KEYS: &[&str] = &[
-    "block_skip",
-    "immediate_offsets",
-    "optional_stop",
-    "single_block",
-    "dry_run",
-    "max_blocks",
-    "probe.time",
-    "probe.x",
-    "probe.z",
-    "arc_tolerance_mm",
-    "max_jumps",
-    "max_repeat_blocks",
-    "peck_clearance_mm",
-    "optional_format",
-    "feed_override",
-    "rapid_override",
-];
 
 /// Adds "did you mean" to an unknown `--set` key error.
 fn suggest_key(err: String, profile: &Profile) -> String {
@@ -267,7 +249,14 @@ fn suggest_key(err: String, profile: &Profile) -> String {
         return err;
     };
     let params = profile.params.keys().map(String::as_str);
-    match crate::suggest::closest(key, SET_KEYS.iter().copied().chain(params)) {
+    match crate::suggest::closest(
+        key,
+        crate::settings::KEYS
+            .iter()
+            .copied()
+            .chain(["feed_override", "rapid_override"])
+            .chain(params),
+    ) {
         Some(k) => format!("--set {key}: unknown key; did you mean '{k}'? (see docs/formats.md)"),
         None => err,
     }

@@ -10,6 +10,28 @@ fn on_off(key: &str, v: &str) -> Result<bool, String> {
     }
 }
 
+/// The `--set` keys that are names, not families (`in.N`, `skip.AXIS`,
+/// `probe.AXIS`, `PI n`, profile parameters): what "did you mean" offers.
+/// A test checks that `parse` accepts every one of them.
+pub const KEYS: &[&str] = &[
+    "block_skip",
+    "immediate_offsets",
+    "optional_stop",
+    "single_block",
+    "dry_run",
+    "main_passes",
+    "calculator_decimal",
+    "max_blocks",
+    "probe.time",
+    "probe.x",
+    "probe.z",
+    "arc_tolerance_mm",
+    "max_jumps",
+    "max_repeat_blocks",
+    "peck_clearance_mm",
+    "optional_format",
+];
+
 /// Parses the `--set` list; parameters are written into the profile.
 pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String> {
     let mut s = Settings {
@@ -205,6 +227,23 @@ fn normalise_param(k: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_listed_key_is_accepted() {
+        for key in KEYS {
+            let value = match *key {
+                "block_skip" => "1",
+                "probe.time" => "12:00:00",
+                "main_passes" | "max_blocks" | "max_jumps" | "max_repeat_blocks" => "2",
+                "probe.x" | "probe.z" | "arc_tolerance_mm" | "peck_clearance_mm" => "0.5",
+                "optional_format" => "1",
+                _ => "on",
+            };
+            let mut p = Profile::builtin("hx-mc").unwrap();
+            let r = parse(&[format!("{key}={value}")], &mut p);
+            assert!(r.is_ok(), "{key}={value}: {:?}", r.err());
+        }
+    }
 
     #[test]
     fn switches_and_params() {
