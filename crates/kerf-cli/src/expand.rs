@@ -7,7 +7,7 @@ use std::io::{BufWriter, Write};
 use std::path::Path;
 use std::process::ExitCode;
 
-use kerf_control::{sinks::Expand, Progress, Sink};
+use kerf_control::{sinks::Expand, Sink};
 use kerf_expand::Target;
 
 use crate::args::Common;
@@ -40,16 +40,7 @@ pub fn expand(c: &Common, to: &str, out: Option<&Path>) -> ExitCode {
     };
     let mut sink = Expand::new(BufWriter::with_capacity(1 << 16, w), target);
     let mut refs: [&mut dyn Sink; 1] = [&mut sink];
-    let mut bar = progress::Progress::new(c.quiet);
-    let stepped = loop {
-        match runner.step(&mut refs) {
-            Ok(Progress::Running) => bar.tick(&runner),
-            Ok(Progress::Ended) => break Ok(()),
-            Err(e) => break Err(e),
-        }
-    };
-    bar.done();
-    let outcome = match stepped.and_then(|_| runner.finish(&mut refs)) {
+    let outcome = match progress::run_to_end(runner, &mut refs, c.quiet) {
         Ok(o) => o,
         Err(e) => return usage_error(e),
     };

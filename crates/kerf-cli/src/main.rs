@@ -22,7 +22,7 @@ use std::process::ExitCode;
 use clap::Parser;
 use kerf_control::sinks::report::Document;
 use kerf_control::sinks::SimSink;
-use kerf_control::{Outcome, Progress, Sink};
+use kerf_control::{Outcome, Sink};
 use kerf_interp::{machine::BUILTIN, Profile};
 
 use args::{Cli, Cmd, Common, Outputs};
@@ -58,7 +58,7 @@ fn run(c: &Common, outputs: &Outputs, check: bool) -> ExitCode {
         return usage_error(e);
     }
     let job = c.job(check);
-    let mut runner = match job.load() {
+    let runner = match job.load() {
         Ok(r) => r,
         Err(e) => return usage_error(e),
     };
@@ -81,16 +81,7 @@ fn run(c: &Common, outputs: &Outputs, check: bool) -> ExitCode {
     }
     refs.push(&mut report);
     refs.extend(sinks.iter_mut().map(|s| s.as_mut() as &mut dyn Sink));
-    let mut bar = progress::Progress::new(c.quiet);
-    let stepped = loop {
-        match runner.step(&mut refs) {
-            Ok(Progress::Running) => bar.tick(&runner),
-            Ok(Progress::Ended) => break Ok(()),
-            Err(e) => break Err(e),
-        }
-    };
-    bar.done();
-    let outcome = match stepped.and_then(|_| runner.finish(&mut refs)) {
+    let outcome = match progress::run_to_end(runner, &mut refs, c.quiet) {
         Ok(o) => o,
         Err(e) => return usage_error(e),
     };

@@ -6,7 +6,26 @@ use std::io::IsTerminal;
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
-use kerf_control::Runner;
+use kerf_control::{Outcome, RunError, Runner, Sink};
+
+/// Runs `runner` to its end through `sinks`, with the bar on stderr, and
+/// finishes it.
+pub fn run_to_end(
+    mut runner: Runner,
+    sinks: &mut [&mut dyn Sink],
+    quiet: bool,
+) -> Result<Outcome, RunError> {
+    let mut bar = Progress::new(quiet);
+    let stepped = loop {
+        match runner.step(sinks) {
+            Ok(kerf_control::Progress::Running) => bar.tick(&runner),
+            Ok(kerf_control::Progress::Ended) => break Ok(()),
+            Err(e) => break Err(e),
+        }
+    };
+    bar.done();
+    stepped.and_then(|_| runner.finish(sinks))
+}
 
 /// After how long a run shows the bar.
 const DELAY: Duration = Duration::from_secs(1);

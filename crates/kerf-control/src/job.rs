@@ -238,8 +238,6 @@ pub fn load_profile(name: &str) -> Result<Profile, LoadError> {
     .into())
 }
 
-/// The `--set` keys (not the profile parameters), for suggestions.
-
 /// Adds "did you mean" to an unknown `--set` key error.
 fn suggest_key(err: String, profile: &Profile) -> String {
     let Some(key) = err

@@ -190,8 +190,10 @@ pub fn save_offsets(dir: &Path, it: &Interp) -> io::Result<()> {
     write_atomic(dir, &path, &text)
 }
 
-/// Replaces `path` (in `dir`) with `text`: a temporary file, fsync, rename.
-fn write_atomic(dir: &Path, path: &Path, text: &str) -> io::Result<()> {
+/// Replaces `path` (in `dir`) with `text`: a temporary file `.NAME.tmpPID`
+/// in the same folder, fsync, rename, folder fsync. A reader sees the old
+/// file or the new one, never a torn one.
+pub fn write_atomic(dir: &Path, path: &Path, text: &str) -> io::Result<()> {
     let tmp = dir.join(format!(
         ".{}.tmp{}",
         path.file_name().and_then(|n| n.to_str()).unwrap_or("state"),

@@ -10,8 +10,8 @@
 //! 0 -400 -250 -250 0 0 0
 //! ```
 
-use std::fs::{self, File};
-use std::io::{self, Write};
+use std::fs;
+use std::io;
 use std::path::{Path, PathBuf};
 
 use kerf_canon::NAXES;
@@ -91,30 +91,7 @@ pub(super) fn save(dir: &Path, it: &Interp, part: Part) -> Result<(), String> {
         }
         text.push('\n');
     }
-    write_atomic(dir, &work_file(dir, it), &text).map_err(err)
-}
-
-/// Replaces `path` with `text`: temporary file `.NAME.tmpPID` in the same
-/// folder, fsync, rename, folder fsync (as kerf_interp::state does).
-fn write_atomic(dir: &Path, path: &Path, text: &str) -> io::Result<()> {
-    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("state");
-    let tmp = dir.join(format!(".{name}.tmp{}", std::process::id()));
-    let write = || -> io::Result<()> {
-        let mut f = File::create(&tmp)?;
-        f.write_all(text.as_bytes())?;
-        f.sync_all()?;
-        drop(f);
-        fs::rename(&tmp, path)?;
-        if let Ok(d) = File::open(dir) {
-            let _ = d.sync_all();
-        }
-        Ok(())
-    };
-    let r = write();
-    if r.is_err() {
-        let _ = fs::remove_file(&tmp);
-    }
-    r
+    kerf_interp::state::write_atomic(dir, &work_file(dir, it), &text).map_err(err)
 }
 
 impl Runtime {
