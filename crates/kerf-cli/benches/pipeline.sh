@@ -18,6 +18,10 @@ runs=${1:-3}
 [ $# -gt 0 ] || set -- bench-inputs/surface_1m.nc bench-inputs/drill_grid.nc
 KERF=${KERF:-target/release/kerf}
 command -v rs274 >/dev/null || { echo "rs274 not installed (apt-get install linuxcnc-uspace)" >&2; exit 2; }
+# rs274 keeps its tool table in $HOME/.tool.mmap and truncates it on every
+# run: a HOME of this script's own keeps other rs274 runs out of it.
+HOME=$(mktemp -d)
+export HOME
 [ -x "$KERF" ] || { echo "build first: cargo build --release -p kerf-cli" >&2; exit 2; }
 tmp=$(mktemp -d)
 echo "T1 P1 Z1.9685 D0.3937" > "$tmp/tools"

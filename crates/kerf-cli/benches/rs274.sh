@@ -7,6 +7,10 @@ set -eu
 f=${1:-bench-inputs/surface_1m.nc}
 runs=${2:-3}
 command -v rs274 >/dev/null || { echo "rs274 not installed (apt-get install linuxcnc-uspace)" >&2; exit 2; }
+# rs274 keeps its tool table in $HOME/.tool.mmap and truncates it on every
+# run: a HOME of this script's own keeps other rs274 runs out of it.
+HOME=$(mktemp -d)
+export HOME
 tbl=$(mktemp)
 echo "T1 P1 Z1.9685 D0.3937" > "$tbl"
 lines=$(wc -l < "$f")

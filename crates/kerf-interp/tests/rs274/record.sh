@@ -5,6 +5,10 @@
 set -eu
 cd "$(dirname "$0")"
 command -v rs274 >/dev/null || { echo "rs274 not installed" >&2; exit 2; }
+# rs274 keeps its tool table in $HOME/.tool.mmap and truncates it on every
+# run: a HOME of this script's own keeps other rs274 runs out of it.
+HOME=$(mktemp -d)
+export HOME
 ver=$(dpkg-query -W -f '${Version}' linuxcnc-uspace 2>/dev/null || echo unknown)
 for f in *.rs274.nc; do
     n=${f%.rs274.nc}
