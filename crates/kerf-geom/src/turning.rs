@@ -257,20 +257,15 @@ fn cutting_direction(segs: &[Seg]) -> f64 {
         .unwrap_or(0.0)
 }
 
-/// G71 type I (fanuc-semantics §1.2, A.1): the roughing levels in X from
-/// the start point `a`, each cut parallel to Z until the shape shifted by
-/// the allowances, the 45° escape and the return in Z, then the
-/// semi-finish pass along the shifted shape and the rapid back to `a`.
-/// `start` is A′ (the end of block ns), `shape` the segments A′ → B.
-/// `ns_rapid`: block ns is G00 (infeeds rapid) rather than G01.
-pub fn g71(
+/// What G71 types I and II check and prepare alike: Δd > 0 and e ≥ 0, the
+/// shape shifted by the allowances, its first point, the infeed sign in X
+/// (from the start point toward the shape) and the cutting direction in Z.
+fn rough_setup(
     a: P,
     start: P,
     shape: &[Seg],
-    r: Rough,
-    ns_rapid: bool,
-    out: &mut Vec<Mv>,
-) -> Result<(), CycleError> {
+    r: &Rough,
+) -> Result<(P, Vec<Seg>, f64, f64), CycleError> {
     if r.depth <= 0.0 {
         return Err(CycleError::Value(format!(
             "depth of cut Δd = {} must be positive",
@@ -293,15 +288,41 @@ pub fn g71(
     if sz == 0.0 {
         return Err(CycleError::Value(NO_LENGTH_Z.into()));
     }
+    Ok((first, segs, sx, sz))
+}
+
+/// Segment `i` goes the cutting direction `sz` in Z (flat allowed) and an
+/// arc stays within its end points' Z range.
+fn check_monotonic_z(i: usize, s: &Seg, sz: f64) -> Result<(), CycleError> {
+    let (_, z0, _, z1) = s.bounds();
+    let (zlo, zhi) = (s.from.z.min(s.to.z), s.from.z.max(s.to.z));
+    if sz * (s.to.z - s.from.z) < -1e-6 || z0 < zlo - 1e-6 || z1 > zhi + 1e-6 {
+        return Err(CycleError::NotMonotonic(i, 'Z'));
+    }
+    Ok(())
+}
+
+/// G71 type I (fanuc-semantics §1.2, A.1): the roughing levels in X from
+/// the start point `a`, each cut parallel to Z until the shape shifted by
+/// the allowances, the 45° escape and the return in Z, then the
+/// semi-finish pass along the shifted shape and the rapid back to `a`.
+/// `start` is A′ (the end of block ns), `shape` the segments A′ → B.
+/// `ns_rapid`: block ns is G00 (infeeds rapid) rather than G01.
+pub fn g71(
+    a: P,
+    start: P,
+    shape: &[Seg],
+    r: Rough,
+    ns_rapid: bool,
+    out: &mut Vec<Mv>,
+) -> Result<(), CycleError> {
+    let (first, segs, sx, sz) = rough_setup(a, start, shape, &r)?;
     // Type I: monotonic in both axes (flat allowed); X goes back toward
     // the start point's side.
     for (i, s) in segs.iter().enumerate() {
-        let (x0, z0, x1, z1) = s.bounds();
+        check_monotonic_z(i, s, sz)?;
+        let (x0, _, x1, _) = s.bounds();
         let (xlo, xhi) = (s.from.x.min(s.to.x), s.from.x.max(s.to.x));
-        let (zlo, zhi) = (s.from.z.min(s.to.z), s.from.z.max(s.to.z));
-        if sz * (s.to.z - s.from.z) < -1e-6 || z0 < zlo - 1e-6 || z1 > zhi + 1e-6 {
-            return Err(CycleError::NotMonotonic(i, 'Z'));
-        }
         if sx * (s.to.x - s.from.x) > 1e-6 || x0 < xlo - 1e-6 || x1 > xhi + 1e-6 {
             return Err(CycleError::NotMonotonic(i, 'X'));
         }
@@ -478,35 +499,10 @@ pub fn g71_type2(
     ns_rapid: bool,
     out: &mut Vec<Mv>,
 ) -> Result<(), CycleError> {
-    if r.depth <= 0.0 {
-        return Err(CycleError::Value(format!(
-            "depth of cut Δd = {} must be positive",
-            r.depth
-        )));
-    }
-    if r.escape < 0.0 {
-        return Err(CycleError::Value("escape e must not be negative".into()));
-    }
-    let shift = p(r.allow_x, r.allow_z);
-    let first = start.add(shift);
-    let segs: Vec<Seg> = shape.iter().map(|s| s.shifted(shift)).collect();
-    let sx = sign(first.x - a.x);
-    let sz = cutting_direction(&segs);
-    if sx == 0.0 {
-        return Err(CycleError::Value(
-            "the start point is level with the shape's first point in X: nothing to rough".into(),
-        ));
-    }
-    if sz == 0.0 {
-        return Err(CycleError::Value(NO_LENGTH_Z.into()));
-    }
+    let (first, segs, sx, sz) = rough_setup(a, start, shape, &r)?;
     // Z monotonic (flat allowed); X free.
     for (i, s) in segs.iter().enumerate() {
-        let (_, z0, _, z1) = s.bounds();
-        let (zlo, zhi) = (s.from.z.min(s.to.z), s.from.z.max(s.to.z));
-        if sz * (s.to.z - s.from.z) < -1e-6 || z0 < zlo - 1e-6 || z1 > zhi + 1e-6 {
-            return Err(CycleError::NotMonotonic(i, 'Z'));
-        }
+        check_monotonic_z(i, s, sz)?;
     }
     // The deepest point of the shape in the infeed direction.
     let mut deep = first.x;
