@@ -12,28 +12,11 @@
 //! holds blocks is in `interp/comp.rs`.
 
 pub use crate::corner::{Seg, P};
+use crate::vec2::{add, cross, dot, len, mul, sub};
 
 /// Distances below this (mm) are zero.
 pub const EPS: f64 = 1e-6;
 
-fn sub(a: P, b: P) -> P {
-    (a.0 - b.0, a.1 - b.1)
-}
-fn add(a: P, b: P) -> P {
-    (a.0 + b.0, a.1 + b.1)
-}
-fn mul(a: P, k: f64) -> P {
-    (a.0 * k, a.1 * k)
-}
-fn dot(a: P, b: P) -> f64 {
-    a.0 * b.0 + a.1 * b.1
-}
-fn cross(a: P, b: P) -> f64 {
-    a.0 * b.1 - a.1 * b.0
-}
-fn len(a: P) -> f64 {
-    a.0.hypot(a.1)
-}
 fn unit(a: P) -> P {
     let l = len(a);
     if l < 1e-300 {
@@ -43,9 +26,7 @@ fn unit(a: P) -> P {
     }
 }
 /// The left normal of a direction.
-pub fn left(u: P) -> P {
-    (-u.1, u.0)
-}
+pub use crate::vec2::left;
 /// Distance between two points.
 pub fn dist(a: P, b: P) -> f64 {
     len(sub(a, b))

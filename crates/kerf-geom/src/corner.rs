@@ -11,8 +11,8 @@
 
 use std::f64::consts::TAU;
 
-/// A point in the plane.
-pub type P = (f64, f64);
+pub use crate::vec2::P;
+use crate::vec2::{add, cross, dot, left, len, mul, sub};
 
 /// Distances below this (mm) are zero: the slack of the fit checks.
 pub const EPS: f64 = 1e-6;
@@ -89,31 +89,9 @@ pub enum CornerError {
     TooLarge,
 }
 
-fn sub(a: P, b: P) -> P {
-    (a.0 - b.0, a.1 - b.1)
-}
-fn add(a: P, b: P) -> P {
-    (a.0 + b.0, a.1 + b.1)
-}
-fn mul(a: P, k: f64) -> P {
-    (a.0 * k, a.1 * k)
-}
-fn dot(a: P, b: P) -> f64 {
-    a.0 * b.0 + a.1 * b.1
-}
-fn cross(a: P, b: P) -> f64 {
-    a.0 * b.1 - a.1 * b.0
-}
-fn len(a: P) -> f64 {
-    a.0.hypot(a.1)
-}
 fn unit(a: P) -> P {
     let l = len(a);
     (a.0 / l, a.1 / l)
-}
-/// The left normal of a direction.
-fn left(u: P) -> P {
-    (-u.1, u.0)
 }
 
 impl Seg {

@@ -15,7 +15,8 @@
 //! - [`xform`]: scaling, mirror image and coordinate rotation;
 //! - [`rotary`]: polar (G112) and cylindrical (G107) interpolation;
 //! - [`stroke`]: stored stroke check areas (G22/G23);
-//! - [`turning`]: the passes of the lathe turning cycles.
+//! - [`turning`]: the passes of the lathe turning cycles;
+//! - [`vec2`]: the plane point type and its arithmetic, shared by all.
 
 // Axis arithmetic indexes several parallel position arrays by slot.
 #![allow(clippy::needless_range_loop)]
@@ -26,4 +27,5 @@ pub mod corner;
 pub mod rotary;
 pub mod stroke;
 pub mod turning;
+pub mod vec2;
 pub mod xform;
