@@ -68,8 +68,13 @@ pub enum MotionMode {
     ArcCw,
     /// G03.
     ArcCcw,
-    /// HX and Hurco G33, PUMA G32: thread cutting along a line.
-    Thread,
+    /// HX G33: thread cutting along a line, F the lead (000 §4.8).
+    ThreadF,
+    /// Hurco G33: thread cutting along a line, the lead in K (along Z)
+    /// or I (along X), P the start angle (002).
+    ThreadKI,
+    /// PUMA G32: lathe thread cutting, F or E the lead (001).
+    ThreadLathe,
     /// PUMA G90: the turning cycle.
     TurnCycle,
     /// PUMA G92: the thread cutting cycle.
