@@ -29,6 +29,7 @@ pub mod stl;
 pub mod stock;
 pub mod tool;
 pub mod tool_file;
+pub mod trapezoids;
 pub mod zmap;
 
 pub use events::{EventKind, SimEvent, SimReport};

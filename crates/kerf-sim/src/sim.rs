@@ -19,8 +19,6 @@ use crate::zmap::ZMap;
 pub const MAX_EVENTS: usize = 1000;
 /// Radius of the flat end mill used for a tool whose D offset is 0, mm.
 pub const FALLBACK_RADIUS: f64 = 5.0;
-/// Default column width of the lathe model, mm.
-pub const LATHE_RES: f64 = 0.005;
 /// Chord tolerance of arcs on the lathe, mm.
 pub const ARC_TOL_LATHE: f64 = 0.5e-3;
 /// Travel between holder checks on the lathe, mm.
@@ -86,9 +84,10 @@ impl Sim {
                 z_face,
                 z_end,
             } => {
-                let s = Section::new(r_in, r_out, z_end, z_face, res.unwrap_or(LATHE_RES))?;
-                let res = s.dz;
-                (Model::Lathe(s), res)
+                // The section is exact; its resolution is the arcs' chord
+                // tolerance, whatever --sim-res says.
+                let s = Section::new(r_in, r_out, z_end, z_face)?;
+                (Model::Lathe(s), ARC_TOL_LATHE)
             }
         };
         Ok(Sim {
