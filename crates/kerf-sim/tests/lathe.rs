@@ -6,6 +6,7 @@ mod common;
 use std::f64::consts::PI;
 
 use common::Run;
+use kerf_canon::Plane;
 use kerf_sim::{parse_tools, EventKind, Model, ToolTable};
 
 /// A sharp 80° insert (tip 3, OD) as tool 1, a sharp boring insert
@@ -194,4 +195,42 @@ fn a_tool_without_geometry_is_its_offset_and_a_warning() {
     assert_eq!(rep.events[0].kind, EventKind::ToolUnknown);
     assert!(!rep.collided());
     close(rep.removed_mm3, PI * (625.0 - 400.0) * 30.0, 1e-6);
+}
+
+#[test]
+fn a_hemispherical_end_is_within_half_a_micrometre_and_its_pappus_volume() {
+    // A sharp insert with 30 mm edges (its body reaches the bar's corner,
+    // 20 (√2 - 1) = 8.3 mm from the sphere) turns a hemisphere R 20 centred
+    // on the axis at Z-20 from the pole (r 0, Z0) to the equator, on a
+    // bar r 20 with its face at Z0.
+    let tt = parse_tools("[tool.5]\nnose_radius=0\ntip=3\nedge_length=30\n", true).unwrap();
+    let mut r = Run::new("bar:40,100", tt, None).at(40.0, 0.0, 10.0);
+    r.tool(5, 5);
+    r.spindle(true);
+    r.lrapid(1, 0.0, 1.0);
+    r.lfeed(2, 0.0, 0.0);
+    r.arc(3, [20.0, 0.0, -20.0], [0.0, 0.0, -20.0], true, Plane::ZX, 0);
+    r.lfeed(4, 21.0, -20.0);
+    assert!(r.sim.report().events.is_empty());
+    // The profile's distance from the centre, every degree from the pole
+    // to the equator: the chords (0.5 µm) lie inside the sphere.
+    for deg in 1..90 {
+        let a = (deg as f64).to_radians();
+        let z = -20.0 + 20.0 * a.cos();
+        let d = (z + 20.0).hypot(outer(&r, z));
+        assert!(
+            (20.0 - 0.5e-3 - 1e-6..=20.0 + 1e-6).contains(&d),
+            "{deg}°: {d}"
+        );
+    }
+    close(outer(&r, -20.5), 20.0, 1e-9);
+    // Pappus: the hemisphere 2/3 π R³ and the 80 mm of bar below it; the
+    // chords take at most 0.5 µm off its 31.4 mm arc at radii up to 20.
+    let want = 2.0 / 3.0 * PI * 8000.0 + PI * 400.0 * 80.0;
+    let chords = 0.5e-3 * (PI * 10.0) * 2.0 * PI * 20.0;
+    let got = r.sim.report().remaining_mm3;
+    assert!(
+        (want - chords..=want).contains(&got),
+        "{got} vs {want} - {chords}"
+    );
 }
