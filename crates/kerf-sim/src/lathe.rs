@@ -73,7 +73,6 @@ pub struct Section {
     /// Grid: `scale` integer steps per mm, a power of two.
     scale: f64,
     tiles: Vec<Tile>,
-    scratch: Vec<Pt>,
 }
 
 impl Section {
@@ -107,7 +106,6 @@ impl Section {
             rr,
             scale,
             tiles,
-            scratch: Vec::new(),
         })
     }
 
@@ -141,36 +139,51 @@ impl Section {
     /// its mirror about the axis (a sweep that reaches below r = 0 cuts
     /// the other side of the part too), and returns the volume it holds.
     pub fn sweep(&mut self, h: &Hull, write: bool) -> f64 {
-        let Some((za, zb)) = h.z_range() else {
+        let poly = ccw(h);
+        self.sweep_regions(std::slice::from_ref(&poly), write)
+    }
+
+    /// [`Self::sweep`] for any region: closed contours, counter-clockwise
+    /// ones filled and clockwise ones holes (as i_overlay returns them).
+    pub fn sweep_regions(&mut self, region: &[Contour], write: bool) -> f64 {
+        let pts = || region.iter().flatten();
+        let za = pts().map(|p| p[0]).fold(f64::INFINITY, f64::min);
+        let zb = pts().map(|p| p[0]).fold(f64::NEG_INFINITY, f64::max);
+        if za > zb {
             return 0.0;
-        };
+        }
         let k0 = ((za - self.z0) / TILE).floor().max(0.0) as usize;
         let k1 = ((zb - self.z0) / TILE).floor();
         if k1 < 0.0 || k0 >= self.tiles.len() {
             return 0.0;
         }
         let k1 = (k1 as usize).min(self.tiles.len() - 1);
-        let poly = self.ccw(h);
         let mut total = 0.0;
         let half_step = 0.5 / self.scale;
         let rmax = self.rr - MARGIN;
+        let mut clips: Vec<Contour> = Vec::new();
         for k in k0..=k1 {
             let t = &self.tiles[k];
             if t.shapes.is_empty() {
                 continue;
             }
             let (ta, tb) = (t.za, t.za + TILE);
-            let mut clips: [Contour; 2] = [Vec::new(), Vec::new()];
+            clips.clear();
             let mut reach = (f64::INFINITY, f64::NEG_INFINITY);
-            for (m, c) in clips.iter_mut().enumerate() {
-                let sign = if m == 0 { 1.0 } else { -1.0 };
-                clip_box(&poly, sign, (ta, tb), (0.0, rmax), c);
-                for p in c.iter() {
-                    reach = (reach.0.min(p[1]), reach.1.max(p[1]));
+            for poly in region {
+                for sign in [1.0, -1.0] {
+                    let mut c = Vec::new();
+                    clip_box(poly, sign, (ta, tb), (0.0, rmax), &mut c);
+                    for p in c.iter() {
+                        reach = (reach.0.min(p[1]), reach.1.max(p[1]));
+                    }
+                    if c.len() >= 3 {
+                        clips.push(c);
+                    }
                 }
             }
-            // Neither the hull nor its mirror reaches the tile's material.
-            if reach.0 > t.hi - half_step || reach.1 < t.lo + half_step {
+            // Neither the region nor its mirror reaches the tile's material.
+            if clips.is_empty() || reach.0 > t.hi - half_step || reach.1 < t.lo + half_step {
                 continue;
             }
             let shapes = self.difference(t, &clips);
@@ -189,20 +202,6 @@ impl Section {
         total
     }
 
-    /// The hull as one counter-clockwise polygon.
-    fn ccw(&mut self, h: &Hull) -> Vec<Pt> {
-        let mut p = std::mem::take(&mut self.scratch);
-        p.clear();
-        p.extend(h.lower.iter().copied());
-        let n = h.upper.len();
-        if n >= 2 {
-            p.extend(h.upper[1..n - 1].iter().rev().copied());
-        }
-        let out = p.clone();
-        self.scratch = p;
-        out
-    }
-
     /// The tile's integer frame.
     fn adapter<I: i_overlay::core::integer::OverlayInt>(
         &self,
@@ -214,14 +213,14 @@ impl Section {
         FloatPointAdapter::with_scale(rect, self.scale)
     }
 
-    fn difference(&self, t: &Tile, clips: &[Contour; 2]) -> Shapes {
+    fn difference(&self, t: &Tile, clips: &[Contour]) -> Shapes {
         let n: usize = t.shapes.iter().flatten().map(Vec::len).sum::<usize>()
             + clips.iter().map(Vec::len).sum::<usize>();
         let mut ov = FloatOverlay::<[f64; 2]>::with_adapter(self.adapter(t.za, t.za + TILE), n);
         for c in t.shapes.iter().flatten() {
             ov = ov.unsafe_add_contour(c, ShapeType::Subject);
         }
-        for c in clips.iter().filter(|c| c.len() >= 3) {
+        for c in clips {
             ov = ov.unsafe_add_contour(c, ShapeType::Clip);
         }
         ov.overlay(OverlayRule::Difference, FillRule::NonZero)
@@ -258,6 +257,16 @@ impl Section {
     }
 }
 
+/// A convex hull as one counter-clockwise contour.
+pub fn ccw(h: &Hull) -> Contour {
+    let mut p: Contour = h.lower.iter().map(|q| [q.0, q.1]).collect();
+    let n = h.upper.len();
+    if n >= 2 {
+        p.extend(h.upper[1..n - 1].iter().rev().map(|q| [q.0, q.1]));
+    }
+    p
+}
+
 /// The r where the closed contour `c` crosses z (edges half open in z,
 /// so a vertex on the line counts once).
 fn crossings(c: &[[f64; 2]], z: f64, out: &mut Vec<f64>) {
@@ -284,15 +293,16 @@ pub fn volume(shapes: &Shapes) -> f64 {
     -PI / 3.0 * s
 }
 
-/// The counter-clockwise convex polygon `poly` (r multiplied by `sign`:
-/// -1 mirrors it about the axis, keeping it counter-clockwise) clipped to
-/// z in `zs` and r in `rs`, into `out`.
-fn clip_box(poly: &[Pt], sign: f64, zs: (f64, f64), rs: (f64, f64), out: &mut Contour) {
+/// The contour `poly` (r multiplied by `sign`: -1 mirrors it about the
+/// axis, keeping its orientation) clipped to z in `zs` and r in `rs`,
+/// into `out` (Sutherland–Hodgman: the box is convex, the contour need
+/// not be).
+fn clip_box(poly: &[[f64; 2]], sign: f64, zs: (f64, f64), rs: (f64, f64), out: &mut Contour) {
     out.clear();
     if sign > 0.0 {
-        out.extend(poly.iter().map(|p| [p.0, p.1]));
+        out.extend(poly.iter().copied());
     } else {
-        out.extend(poly.iter().rev().map(|p| [p.0, -p.1]));
+        out.extend(poly.iter().rev().map(|p| [p[0], -p[1]]));
     }
     let mut tmp = Vec::with_capacity(out.len() + 4);
     for (axis, v, keep_above) in [

@@ -18,6 +18,7 @@
 
 pub mod envelope;
 pub mod events;
+pub mod holder;
 pub mod hull;
 pub mod lathe;
 pub mod lathe_tool;

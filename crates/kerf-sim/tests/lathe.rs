@@ -234,3 +234,53 @@ fn a_hemispherical_end_is_within_half_a_micrometre_and_its_pappus_volume() {
         "{got} vs {want} - {chords}"
     );
 }
+
+#[test]
+fn a_holder_just_ahead_of_the_insert_is_caught_along_the_whole_move() {
+    // A holder block 0.05-0.3 mm ahead (-Z) of a sharp insert's tip, r
+    // 0.2-3 above it: on an OD pass at r 24 along -Z it ploughs the bar
+    // (r 25, face Z0) before the insert cuts there. The contact: its
+    // front reaches the face when the tip is at Z0.3, 1.7 of the move's
+    // 12 mm; it meets z -10.3..0, r 24.2..25 (the insert's sweep ahead
+    // of its start counts: the holder gets there first).
+    let tt = parse_tools(
+        "[tool.1]\nnose_radius=0\ntip=3\n\
+         holder=[[-0.3,0.2],[-0.05,0.2],[-0.05,3],[-0.3,3]]\n",
+        true,
+    )
+    .unwrap();
+    let mut r = Run::new("bar:50,100", tt, None).at(40.0, 0.0, 10.0);
+    r.tool(1, 1);
+    r.spindle(true);
+    r.lrapid(1, 24.0, 2.0);
+    r.lfeed(2, 24.0, -10.0);
+    let rep = r.sim.report();
+    assert_eq!(rep.events.len(), 1, "{:?}", rep.events);
+    let e = &rep.events[0];
+    assert_eq!((e.kind, e.line), (EventKind::HolderCollision, 2));
+    close(e.at[2], 0.3, 1e-6);
+    close(e.at[0], 24.0, 1e-9);
+    close(e.volume_mm3, PI * (625.0 - 24.2 * 24.2) * 10.3, 1e-3);
+    // The block on the tip's +Z side instead, plunged at Z-10 and then
+    // run along +Z: on every line of either move the insert's front is
+    // ahead of the block's (the insert's edges at 5° and 85° reach past
+    // it: at 0.2 above the tip the 85° edge is 0.017 from it in z and the
+    // 5° edge 2.3 beyond it), so the block only passes through the
+    // insert's own cut: no event, and the insert's volume alone.
+    let tt = parse_tools(
+        "[tool.1]\nnose_radius=0\ntip=3\n\
+         holder=[[0.05,0.2],[0.3,0.2],[0.3,3],[0.05,3]]\n",
+        true,
+    )
+    .unwrap();
+    let mut r = Run::new("bar:50,100", tt, None).at(40.0, 0.0, 10.0);
+    r.tool(1, 1);
+    r.spindle(true);
+    r.lrapid(1, 26.0, -10.0);
+    r.lfeed(2, 24.0, -10.0);
+    r.lfeed(3, 24.0, 2.0);
+    let rep = r.sim.report();
+    assert!(rep.events.is_empty(), "{:?}", rep.events);
+    // The plunge's sharp tip leaves r 24 from Z-10 on.
+    close(rep.removed_mm3, PI * (625.0 - 576.0) * 10.0, 1e-3);
+}
