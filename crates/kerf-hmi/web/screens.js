@@ -17,6 +17,7 @@ export class Screens {
     this.alarmSeq = -1;
     this.offsets = null;
     this.buildPos();
+    this.wireRelative();
     this.wireProg();
     this.wireMdi();
     this.wireOffsets();
@@ -49,10 +50,43 @@ export class Screens {
       t.innerHTML = '';
       for (const a of axes) {
         const tr = document.createElement('tr');
-        tr.innerHTML = `<td class="ax">${a}</td><td class="v" id="${id}-${a}">0.000</td>`;
+        // The lathe's relative counters are U and W, as on its POS page.
+        const label = id === 'pos-relative' && this.app.machine.kind === 'lathe' ? ({ X: 'U', Z: 'W' }[a] || a) : a;
+        tr.innerHTML = `<td class="ax">${label}</td><td class="v" id="${id}-${a}">0.000</td>`;
         t.append(tr);
       }
     }
+  }
+
+  /**
+   * ORIGIN and PRESET of the RELATIVE counters, as on the control: an
+   * axis typed then ORIGIN zeroes it (nothing typed: every axis); an axis
+   * and a value then PRESET sets it. On a lathe U and W name X and Z.
+   */
+  wireRelative() {
+    const lathe = this.app.machine.kind === 'lathe';
+    const parse = () => {
+      const t = $('rel-entry').value.trim().toUpperCase();
+      if (!t) return { axis: null, value: null };
+      const m = /^([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))?$/.exec(t);
+      if (!m) return null;
+      let axis = m[1];
+      if (lathe) axis = { U: 'X', W: 'Z' }[axis] || axis;
+      return { axis, value: m[2] === undefined ? null : +m[2] };
+    };
+    const send = (preset) => {
+      const e = parse();
+      if (!e || (preset && (e.axis === null || e.value === null))) {
+        this.io.say(preset ? 'PRESET: type an axis and a value (X12.5)' : 'ORIGIN: type an axis or nothing', true);
+        return;
+      }
+      const body = { cmd: 'origin' };
+      if (e.axis) body.axis = e.axis;
+      if (preset) body.value = e.value;
+      this.io.command(body).then((r) => { if (r.ok) $('rel-entry').value = ''; });
+    };
+    $('rel-origin').onclick = () => send(false);
+    $('rel-preset').onclick = () => send(true);
   }
 
   drawPos(s) {
