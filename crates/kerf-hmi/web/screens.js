@@ -14,6 +14,8 @@ export class Screens {
     this.chunks = new Map(); // chunk index -> lines
     this.progKey = null; // name + total of the program the chunks are of
     this.progTop = -1;
+    this.selected = 0; // the line selected (GRAPH pick or a click here)
+    this.focusSelected = false; // PROG shows the selection until the program runs
     this.alarmSeq = -1;
     this.offsets = null;
     this.buildPos();
@@ -129,6 +131,15 @@ export class Screens {
     $('prog-save').onclick = () => this.load($('prog-edit-name').value || 'program.nc', $('prog-text').value);
   }
 
+  /** Shows `line` selected; PROG moves to it and RESTART is set to it. */
+  select(line) {
+    this.selected = line;
+    this.focusSelected = true;
+    this.progTop = -1;
+    $('restart-line').value = line;
+    if (this.app.page === 'prog' && this.app.state) this.drawProg(this.app.state);
+  }
+
   async load(name, text) {
     const r = await this.io.api('POST', `/api/program?name=${encodeURIComponent(name)}`, text, 'text/plain');
     if (r.ok) this.io.say(`loaded ${r.body.name}: ${r.body.lines} lines`);
@@ -177,7 +188,8 @@ export class Screens {
       for (let i = 1; i * CHUNK < Math.min(first.total, 20000); i++) all.push(...(await this.chunk(i)).lines);
       $('prog-text').value = all.join('\n') + '\n';
     }
-    const line = Math.max(1, s.program.line);
+    if (s.execution === 'ACTIVE') this.focusSelected = false;
+    const line = Math.max(1, this.focusSelected && this.selected ? this.selected : s.program.line);
     const top = Math.max(1, line - 6);
     if (top !== this.progTop) {
       this.progTop = top;
@@ -196,6 +208,7 @@ export class Screens {
         const li = document.createElement('li');
         li.dataset.n = top + i;
         li.textContent = text || ' ';
+        li.onclick = () => this.app.select(top + i, 'prog');
         ol.append(li);
       });
     }
@@ -203,6 +216,7 @@ export class Screens {
       const n = +li.dataset.n;
       li.classList.toggle('current', n === s.program.line);
       li.classList.toggle('next', n > s.program.line && n <= s.program.line + 3);
+      li.classList.toggle('selected', n === this.selected);
     }
   }
 
