@@ -1,6 +1,7 @@
 //! Code rules checked mechanically over the workspace's source (every
-//! `crates/*/src/**.rs`, test code left out: `#[cfg(test)]` modules and
-//! `#[test]` functions), read as syntax trees:
+//! `crates/*/src/**.rs`, test code left out: `#[cfg(test)]` modules, in
+//! line or in their own file, and `#[test]` functions), read as syntax
+//! trees:
 //!
 //! - a motion command (`Canon::Rapid`, `Feed`, `Arc`, `Thread`) is built
 //!   only in the move seam, kerf-interp/src/interp/mover.rs: nothing else
@@ -286,12 +287,46 @@ fn table_codes() -> Vec<u16> {
     v
 }
 
+/// The files of the test modules a file declares out of line
+/// (`#[cfg(test)] mod tests;` in `a/b.rs` is `a/b/tests.rs` or
+/// `a/b/tests/mod.rs`).
+fn test_module_files(path: &str, file: &syn::File) -> Vec<String> {
+    let (dir, stem) = path.rsplit_once('/').unwrap_or(("", path));
+    let stem = stem.trim_end_matches(".rs");
+    let base = if matches!(stem, "mod" | "lib" | "main") {
+        dir.to_string()
+    } else {
+        format!("{dir}/{stem}")
+    };
+    let mut out = Vec::new();
+    for item in &file.items {
+        if let syn::Item::Mod(m) = item {
+            if m.content.is_none() && is_test(&m.attrs) {
+                out.push(format!("{base}/{}.rs", m.ident));
+                out.push(format!("{base}/{}/mod.rs", m.ident));
+            }
+        }
+    }
+    out
+}
+
 fn findings() -> Vec<(String, Findings)> {
     let codes = table_codes();
-    sources()
+    let parsed: Vec<(String, syn::File)> = sources()
         .into_iter()
         .map(|(path, text)| {
             let file = syn::parse_file(&text).unwrap_or_else(|e| panic!("{path}: {e}"));
+            (path, file)
+        })
+        .collect();
+    let tests: Vec<String> = parsed
+        .iter()
+        .flat_map(|(path, file)| test_module_files(path, file))
+        .collect();
+    parsed
+        .into_iter()
+        .filter(|(path, _)| !tests.contains(path))
+        .map(|(path, file)| {
             let mut f = Findings {
                 codes: codes.clone(),
                 ..Findings::default()
@@ -396,6 +431,19 @@ fn the_rules_see_what_they_should() {
     );
     // One build (the pattern is not one), on the last line.
     assert_eq!(f.motion_builds, vec![text.lines().count()]);
+    // A test module in its own file is test code; another module is not.
+    let decl = syn::parse_file("#[cfg(test)]\nmod tests;\nmod real;\n").unwrap();
+    assert_eq!(
+        test_module_files("crates/a/src/sinks/plot.rs", &decl),
+        [
+            "crates/a/src/sinks/plot/tests.rs",
+            "crates/a/src/sinks/plot/tests/mod.rs"
+        ]
+    );
+    assert_eq!(
+        test_module_files("crates/a/src/lib.rs", &decl),
+        ["crates/a/src/tests.rs", "crates/a/src/tests/mod.rs"]
+    );
 }
 
 /// The dialect rule on text whose answer is known: ids in expressions
