@@ -1079,6 +1079,13 @@ impl Interp {
     }
 
     #[inline]
+    /// G92 (HX, Hurco) / G50 (PUMA, G-code system A): coordinate setting.
+    fn is_coordinate_setting(&self, code10: u16) -> bool {
+        self.gcode(code10).is_some_and(|g| {
+            g.means == Means::OneShot(crate::dialect::meaning::OneShot::CoordinateSetting)
+        })
+    }
+
     fn gcode(&self, code10: u16) -> Option<&'static crate::dialect::GCode> {
         match self.g_index.get(code10 as usize) {
             Some(g) => *g,
@@ -1208,14 +1215,6 @@ impl Interp {
         };
         self.emit(Canon::Mode(m));
     }
-}
-
-/// G92 (HX, Hurco) / G50 (PUMA, G-code system A): coordinate setting.
-fn is_coordinate_setting(d: DialectId, code10: u16) -> bool {
-    matches!(
-        (d, code10),
-        (DialectId::Hx | DialectId::Hurco, 920) | (DialectId::Puma, 500)
-    )
 }
 
 fn ax_letter(a: Axis) -> u8 {

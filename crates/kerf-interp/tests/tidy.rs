@@ -53,14 +53,14 @@ const DIALECT_DEBT: &[(&str, usize, usize)] = &[
     ("interp/lathe_mrc.rs", 0, 29),
     ("interp/lathe_shape.rs", 0, 11),
     ("interp/motion.rs", 1, 6),
-    ("interp/phases.rs", 8, 45),
+    ("interp/phases.rs", 1, 25),
     ("interp/polar_interp.rs", 0, 26),
     ("interp/puma_words.rs", 0, 4),
     ("interp/reset.rs", 1, 0),
     ("interp/system_b.rs", 0, 18),
     ("interp/tool_offset.rs", 0, 3),
     ("interp/transforms.rs", 0, 19),
-    ("interp.rs", 3, 4),
+    ("interp.rs", 0, 2),
 ];
 
 fn workspace() -> PathBuf {

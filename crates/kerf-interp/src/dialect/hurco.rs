@@ -26,7 +26,16 @@ const fn g(code10: u16, group: u8, default: bool, name: &'static str, support: S
 const fn means(code10: u16, group: u8) -> Means {
     use super::meaning::*;
     if group == 0 {
-        return Means::OneShot;
+        return Means::OneShot(match code10 {
+            380 => OneShot::Probe,
+            590 => OneShot::CancelWorkShift,
+            780 => OneShot::ThreadCycle,
+            920 => OneShot::CoordinateSetting,
+            c => match common_one_shot(c) {
+                Some(o) => o,
+                None => panic!("Hurco one-shot G code without a meaning"),
+            },
+        });
     }
     if let Some(m) = common(code10) {
         return m;
@@ -216,6 +225,7 @@ pub static DIALECT: Dialect = Dialect {
     caps: Caps {
         bracket_nesting: 5,
         power_on_params: false,
+        g53_checks: true,
         comma_corners: false,
         frame_codes: false,
         rotary_interp: false,

@@ -24,7 +24,18 @@ const fn g(code10: u16, group: u8, default: bool, name: &'static str, support: S
 const fn means(code10: u16, group: u8) -> Means {
     use super::meaning::*;
     if group == 0 {
-        return Means::OneShot;
+        return Means::OneShot(match code10 {
+            100 | 520 => OneShot::Frame,
+            310..=314 | 370..=374 => OneShot::Skip,
+            390 => OneShot::CompCorner,
+            450 | 460 | 470 | 480 => OneShot::ToolOffset,
+            600 => OneShot::SingleDirection,
+            920 => OneShot::CoordinateSetting,
+            c => match common_one_shot(c) {
+                Some(o) => o,
+                None => panic!("HX one-shot G code without a meaning"),
+            },
+        });
     }
     if let Some(m) = common(code10) {
         return m;
@@ -195,6 +206,7 @@ pub static DIALECT: Dialect = Dialect {
     caps: Caps {
         bracket_nesting: 10,
         power_on_params: true,
+        g53_checks: false,
         comma_corners: true,
         frame_codes: true,
         rotary_interp: true,

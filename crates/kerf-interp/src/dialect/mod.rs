@@ -43,8 +43,8 @@ pub struct GCode {
     /// The manual's name for it.
     pub name: &'static str,
     pub support: Support,
-    /// What it means: the modal state it sets ([`Means::OneShot`] for
-    /// group 0).
+    /// What it means: the modal state it sets, or what a one-shot
+    /// (group 0) code does.
     pub means: Means,
 }
 
@@ -127,6 +127,8 @@ pub struct Caps {
     /// The HX power-on parameters PI 144-147 (000 §3.2) set the motion,
     /// plane, distance and unit defaults.
     pub power_on_params: bool,
+    /// 002: a G53 block's own checks (interp/hurco.rs).
+    pub g53_checks: bool,
     /// The HX `,C` / `,R` chamfer and corner R words.
     pub comma_corners: bool,
     /// The HX frame codes G15/G16, G50/G51, G68/G69, G52.

@@ -32,7 +32,16 @@ const fn g(code10: u16, group: u8, default: bool, name: &'static str, support: S
 const fn means(code10: u16, group: u8) -> Means {
     use super::meaning::*;
     if group == 0 {
-        return Means::OneShot;
+        return Means::OneShot(match code10 {
+            100 => OneShot::DataSetting,
+            310 => OneShot::Skip,
+            500 => OneShot::CoordinateSetting,
+            700..=760 => OneShot::Mrc,
+            c => match common_one_shot(c) {
+                Some(o) => o,
+                None => panic!("PUMA one-shot G code without a meaning"),
+            },
+        });
     }
     match code10 {
         320 => return Means::Motion(MotionMode::ThreadLathe),
@@ -226,6 +235,7 @@ pub static DIALECT: Dialect = Dialect {
     caps: Caps {
         bracket_nesting: 5,
         power_on_params: false,
+        g53_checks: false,
         comma_corners: false,
         frame_codes: false,
         rotary_interp: false,
