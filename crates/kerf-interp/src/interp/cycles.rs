@@ -120,7 +120,11 @@ impl Interp {
                     ),
                 ));
             }
-            self.st.modal.set_meaning(self.dialect, Means::Cycle(false));
+            // A motion code cancels the cycle mode (a table search, so
+            // only when one is in force: this runs for every G01 block).
+            if self.st.modal.cycle.means {
+                self.st.modal.set_meaning(self.dialect, Means::Cycle(false));
+            }
         }
         if !self.st.modal.cycle.means {
             if was_cycle {

@@ -174,7 +174,9 @@ impl Modal {
     }
 
     /// Puts the code of dialect `d` that means `means` in force, if the
-    /// dialect has one (the HX power-on parameters, the PUMA system B).
+    /// dialect has one (the HX power-on parameters, G66/G67 calls, a
+    /// cycle cancelled by a motion code). It searches the table: not for
+    /// every block.
     pub(crate) fn set_meaning(&mut self, d: &Dialect, means: Means) {
         if let Some(g) = d.gcodes.iter().find(|g| g.means == means) {
             self.set(g);

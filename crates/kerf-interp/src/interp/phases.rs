@@ -248,8 +248,11 @@ impl Interp {
             }
         }
         if let Some((c, _)) = b.motion {
-            if let Some(g) = self.gcode(c) {
-                self.st.modal.set(g);
+            // The same code again (a G01 on every line) changes nothing.
+            if c != self.st.modal.motion.code10 {
+                if let Some(g) = self.gcode(c) {
+                    self.st.modal.set(g);
+                }
             }
         }
     }
