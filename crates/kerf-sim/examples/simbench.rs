@@ -32,7 +32,7 @@ fn main() {
     let which = args.get(1).map(String::as_str).unwrap_or("mill25");
     let n: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(200_000);
     let (stock, tools, lathe) = match which {
-        "lathe" => ("bar:60,150", "[tool.1]\nnose_radius=0.8\ntip=3\n", true),
+        "lathe" | "g71" => ("bar:60,150", "[tool.1]\nnose_radius=0.8\ntip=3\n", true),
         "mill3d" => (
             "box:-150,-100,-30,150,100,0",
             "[tool.1]\nkind=\"ball\"\ndiameter=6\n",
@@ -61,7 +61,28 @@ fn main() {
         0.0,
     );
     let mut pts = Vec::with_capacity(n);
-    if lathe {
+    if which == "g71" {
+        // G71-shaped: whole passes (feed along -Z to the shape, 45° lift,
+        // rapid back) at 1 mm depth from r 29 to r 11 over Z-100, then a
+        // finishing pass; repeated on the part already cut.
+        while pts.len() < n {
+            for k in 0..19 {
+                let r = 29.0 - k as f64;
+                pts.push([r, 0.0, 1.0]);
+                pts.push([r, 0.0, -100.0]);
+                pts.push([r + 0.5, 0.0, -99.5]);
+                pts.push([r + 0.5, 0.0, 1.0]);
+            }
+            pts.extend([
+                [10.0, 0.0, 1.0],
+                [10.0, 0.0, -60.0],
+                [20.0, 0.0, -70.0],
+                [20.0, 0.0, -100.0],
+                [31.0, 0.0, -100.0],
+            ]);
+        }
+        pts.truncate(n);
+    } else if lathe {
         // G71-style roughing: 1 mm depth per pass along Z, 0.05 mm feed
         // steps, then back out; passes from r 30 down to r 10.
         let mut r = 29.0;
