@@ -67,6 +67,7 @@ pub use alarms::{AlarmLog, Record, RecordKind};
 pub use command::{Command, Op, Refusal};
 pub use mode::{Execution, Mode};
 pub use pages::{OffsetWrite, VarWrite};
+pub use persist::PersistError;
 pub use restart::{RestartAt, RestartPlan};
 pub use snapshot::{AlarmInfo, AxisValues, Positions, ProgramAt, Spindle, State};
 pub use switches::{Overrides, Switches};
@@ -321,7 +322,7 @@ impl Runtime {
 
     /// Keeps offsets, work offsets and retained variables in `dir` (loaded
     /// now, each write saved atomically).
-    pub fn set_state_dir(&mut self, dir: PathBuf) -> Result<(), String> {
+    pub fn set_state_dir(&mut self, dir: PathBuf) -> Result<(), PersistError> {
         persist::load(&dir, &mut self.interp)?;
         self.state_dir = Some(dir);
         Ok(())

@@ -264,7 +264,10 @@ mod tests {
         );
         assert_eq!(v, ((0.0, 0.0), (125.0, 75.0)));
         // Without cuts, everything.
-        assert_eq!(view_extent(((1.0, 2.0), (3.0, 4.0)), None), ((1.0, 2.0), (3.0, 4.0)));
+        assert_eq!(
+            view_extent(((1.0, 2.0), (3.0, 4.0)), None),
+            ((1.0, 2.0), (3.0, 4.0))
+        );
     }
 
     #[test]
