@@ -31,6 +31,7 @@ pub static ASSETS: &[Asset] = &[
     asset!("app.js", JS),
     asset!("screens.js", JS),
     asset!("graph.js", JS),
+    asset!("lines.js", JS),
     asset!("vendor/three.module.js", JS),
     asset!("vendor/three.core.js", JS),
     asset!("vendor/OrbitControls.js", JS),

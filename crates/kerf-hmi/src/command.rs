@@ -11,6 +11,9 @@ use crate::state::Mode;
 /// Longest MDI entry accepted, characters.
 pub const MAX_MDI_CHARS: usize = 1024;
 
+/// Largest relative preset, mm (the counters' eight digits).
+pub const MAX_PRESET: f64 = 99_999.999;
+
 /// A checked operator command.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Command {
@@ -47,8 +50,14 @@ pub enum Command {
     },
     /// Reference return of one axis or all (REF mode).
     RefReturn(Option<String>),
-    /// ORIGIN: the relative position counters set to zero here.
-    Origin,
+    /// ORIGIN / PRESET: the relative counters of one axis (every axis
+    /// when `axis` is `None`) set to `value` (0 for ORIGIN) here.
+    Origin {
+        /// Axis letter, or every axis.
+        axis: Option<String>,
+        /// The value the counter reads here, mm (lathe X a radius).
+        value: f64,
+    },
     /// Overrides: each field that is `Some` is set, percent.
     Override {
         /// Feed override, 0-200 %.
@@ -109,7 +118,10 @@ enum Raw {
     RefReturn {
         axis: Option<String>,
     },
-    Origin {},
+    Origin {
+        axis: Option<String>,
+        value: Option<f64>,
+    },
     Switch {
         single_block: Option<bool>,
         optional_stop: Option<bool>,
@@ -165,7 +177,16 @@ pub fn parse(body: &[u8]) -> Result<Command, ApiError> {
             increment,
         },
         Raw::RefReturn { axis } => Command::RefReturn(axis.as_deref().map(axis_name).transpose()?),
-        Raw::Origin {} => Command::Origin,
+        Raw::Origin { axis, value } => {
+            let value = value.unwrap_or(0.0);
+            if !value.is_finite() || value.abs() > MAX_PRESET {
+                return bad(format!("origin: value {value} is not within ±{MAX_PRESET}"));
+            }
+            Command::Origin {
+                axis: axis.as_deref().map(axis_name).transpose()?,
+                value,
+            }
+        }
         Raw::Switch {
             single_block,
             optional_stop,
@@ -259,7 +280,20 @@ mod tests {
             }
         );
         assert_eq!(ok(r#"{"cmd":"ref_return"}"#), Command::RefReturn(None));
-        assert_eq!(ok(r#"{"cmd":"origin"}"#), Command::Origin);
+        assert_eq!(
+            ok(r#"{"cmd":"origin"}"#),
+            Command::Origin {
+                axis: None,
+                value: 0.0
+            }
+        );
+        assert_eq!(
+            ok(r#"{"cmd":"origin","axis":"z","value":-12.5}"#),
+            Command::Origin {
+                axis: Some("Z".into()),
+                value: -12.5
+            }
+        );
         assert_eq!(
             ok(r#"{"cmd":"switch","block_skip":[1,2]}"#),
             Command::Switch(SwitchChange {
@@ -291,6 +325,8 @@ mod tests {
         assert!(err(r#"{"cmd":"override","feed":250}"#).contains("0-200"));
         assert!(err(r#"{"cmd":"override","rapid":101}"#).contains("0-100"));
         assert!(err(r#"{"cmd":"mdi","block":"  "}"#).contains("empty"));
+        assert!(err(r#"{"cmd":"origin","value":1e6}"#).contains("±99999.999"));
+        assert!(err(r#"{"cmd":"origin","axis":"W"}"#).contains("axis 'W'"));
         assert!(err("{\"cmd\":").contains("line 1"));
         assert!(err("[1,2]").contains("expected"));
     }

@@ -12,6 +12,7 @@ pub mod command;
 pub mod control;
 pub mod error;
 pub mod path;
+pub mod relative;
 pub mod runtime_control;
 pub mod server;
 pub mod state;

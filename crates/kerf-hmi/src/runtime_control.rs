@@ -11,6 +11,7 @@ use serde_json::{json, Map, Value};
 
 use crate::command::{Command, RestartAt};
 use crate::control::{Control, Refusal};
+use crate::relative::Relative;
 use crate::state::{self as st, AlarmInfo, Axes, State};
 
 /// The runtime behind the server.
@@ -18,8 +19,8 @@ pub struct RuntimeControl {
     rt: Runtime,
     /// Axis names: (runtime key `x`, display name `X`), machine order.
     axes: Vec<(String, String)>,
-    /// Where ORIGIN set the relative counters to zero (work coordinates).
-    origin: Vec<f64>,
+    /// The RELATIVE counters (ORIGIN, PRESET).
+    relative: Relative,
     /// The history read so far.
     history: Vec<AlarmInfo>,
 }
@@ -32,11 +33,11 @@ impl RuntimeControl {
             .iter()
             .map(|a| (a.name().to_string(), a.name().to_ascii_uppercase()))
             .collect();
-        let origin = vec![0.0; axes.len()];
+        let machine = machine_of(&axes, &rt.state().position.machine);
         let mut c = RuntimeControl {
             rt,
+            relative: Relative::new(&machine),
             axes,
-            origin,
             history: Vec::new(),
         };
         c.sync_history();
@@ -189,7 +190,7 @@ fn rt_command(c: &Command) -> RtCommand {
         Command::RefReturn(a) => RtCommand::RefReturn {
             axis: a.as_ref().map(|a| a.to_ascii_lowercase()),
         },
-        Command::Origin => RtCommand::Reset, // not reached: handled before
+        Command::Origin { .. } => RtCommand::Reset, // not reached: handled before
     }
 }
 
@@ -201,13 +202,15 @@ impl Control for RuntimeControl {
     }
 
     fn command(&mut self, cmd: &Command) -> Result<(), Refusal> {
-        if *cmd == Command::Origin {
-            let s = self.rt.state();
-            self.origin = self
-                .axes
-                .iter()
-                .map(|(k, _)| s.position.work.get(k).copied().unwrap_or(0.0))
-                .collect();
+        if let Command::Origin { axis, value } = cmd {
+            let i = match axis {
+                Some(a) => Some(self.axes.iter().position(|(_, n)| n == a).ok_or_else(|| {
+                    Refusal::Invalid(format!("origin: this machine has no axis {a}"))
+                })?),
+                None => None,
+            };
+            let machine = machine_of(&self.axes, &self.rt.state().position.machine);
+            self.relative.set(i, *value, &machine);
             return Ok(());
         }
         self.run(rt_command(cmd))
@@ -221,11 +224,14 @@ impl Control for RuntimeControl {
     fn state(&self) -> State {
         let s = self.rt.state();
         let work = self.axes_of(&s.position.work);
+        let counters = self
+            .relative
+            .at(&machine_of(&self.axes, &s.position.machine));
         let relative = Axes(
-            work.0
+            self.axes
                 .iter()
-                .zip(&self.origin)
-                .map(|((n, v), o)| (n.clone(), v - o))
+                .zip(counters)
+                .map(|((_, n), v)| (n.clone(), v))
                 .collect(),
         );
         let it = self.rt.interp();
@@ -380,5 +386,71 @@ impl Control for RuntimeControl {
 
     fn alarms(&self) -> Vec<AlarmInfo> {
         self.history.clone()
+    }
+}
+
+/// The machine position of each axis, in the server's axis order.
+fn machine_of(axes: &[(String, String)], v: &rt::AxisValues) -> Vec<f64> {
+    axes.iter()
+        .map(|(k, _)| v.get(k).copied().unwrap_or(0.0))
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::state::Mode;
+
+    fn jog(c: &mut RuntimeControl, axis: &str, distance: f64) {
+        c.command(&Command::Jog {
+            axis: axis.into(),
+            distance,
+        })
+        .unwrap();
+        for _ in 0..2000 {
+            c.advance(0.05);
+        }
+    }
+
+    fn rel(c: &RuntimeControl, a: &str) -> f64 {
+        c.state().position.relative.get(a).unwrap()
+    }
+
+    #[test]
+    fn relative_counts_motion_per_axis_and_ignores_a_work_offset_change() {
+        let mut c = RuntimeControl::new(Runtime::for_machine("hx-mc").unwrap());
+        c.command(&Command::Mode(Mode::JOG)).unwrap();
+        jog(&mut c, "X", -10.0);
+        // ORIGIN of X only: X reads 0, Z still holds what it read.
+        let z_before = rel(&c, "Z");
+        c.command(&Command::Origin {
+            axis: Some("X".into()),
+            value: 0.0,
+        })
+        .unwrap();
+        assert_eq!(rel(&c, "X"), 0.0);
+        jog(&mut c, "X", -2.5);
+        assert!((rel(&c, "X") + 2.5).abs() < 1e-6, "{}", rel(&c, "X"));
+        assert_eq!(rel(&c, "Z"), z_before);
+        // PRESET Y to 100, then move Y by -4: 96.
+        c.command(&Command::Origin {
+            axis: Some("Y".into()),
+            value: 100.0,
+        })
+        .unwrap();
+        jog(&mut c, "Y", -4.0);
+        assert!((rel(&c, "Y") - 96.0).abs() < 1e-6, "{}", rel(&c, "Y"));
+        // A new G54 moves the ABSOLUTE position, not the relative one.
+        let (work_x, rel_x) = (c.state().position.work.get("X").unwrap(), rel(&c, "X"));
+        c.put_offsets(&json!({"g54": {"x": 55.0}})).unwrap();
+        let s = c.state();
+        assert!((s.position.work.get("X").unwrap() - work_x).abs() > 1.0);
+        assert_eq!(rel(&c, "X"), rel_x);
+        // An axis the machine does not have is a 400.
+        let r = c.command(&Command::Origin {
+            axis: Some("A".into()),
+            value: 0.0,
+        });
+        assert!(matches!(r, Err(Refusal::Invalid(_))), "{r:?}");
     }
 }

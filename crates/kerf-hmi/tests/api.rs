@@ -29,6 +29,7 @@ async fn the_page_and_its_scripts_are_served_from_the_binary() {
         "/assets/app.js",
         "/assets/screens.js",
         "/assets/graph.js",
+        "/assets/lines.js",
         "/assets/vendor/three.module.js",
         "/assets/vendor/three.core.js",
         "/assets/vendor/OrbitControls.js",

@@ -102,12 +102,27 @@ async function openGraph() {
   if (!app.graph) {
     const { Graph } = await import('./graph.js');
     app.graph = new Graph($('graph-view'), app.machine, $('graph-info'));
+    app.graph.onPick = (line) => select(line, 'graph');
+    if (app.selected) app.graph.select(app.selected);
     if (app.pendingPath) for (const m of app.pendingPath.splice(0)) app.graph.records(m);
     app.pendingPath = null;
     if (app.state) app.graph.state(app.state, true);
   }
   app.graph.visible();
 }
+
+/**
+ * Selects a line of the program, from a click on the path in GRAPH or on
+ * a line of PROG: PROG shows it (until the program runs) with RESTART
+ * set to it, GRAPH draws its segments.
+ */
+export function select(line, from) {
+  app.selected = line;
+  app.screens.select(line);
+  if (app.graph && from !== 'graph') app.graph.select(line);
+  say(`line ${line} selected`);
+}
+app.select = select;
 
 function connect() {
   const proto = location.protocol === 'https:' ? 'wss' : 'ws';

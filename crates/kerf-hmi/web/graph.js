@@ -5,6 +5,7 @@
 // OrbitControls: orbit, pan, zoom; TOP/FRONT/SIDE/ISO views per machine.
 import * as THREE from 'three';
 import { OrbitControls } from './vendor/OrbitControls.js';
+import { pick, LineIndex } from './lines.js';
 
 const RECORD = 20;
 const KIND_COLOURS = {
@@ -18,6 +19,9 @@ const TOOL_PALETTE = [
   [0xff, 0x70, 0x70], [0x70, 0xc0, 0xff], [0x90, 0xff, 0x70], [0xff, 0xd0, 0x50],
   [0xd0, 0x80, 0xff], [0x50, 0xff, 0xe0], [0xff, 0x90, 0x30], [0xff, 0x70, 0xd0],
 ];
+
+/** Most segments one highlighted line draws. */
+const HIGHLIGHT_MAX = 200000;
 
 /** Box3.expandByPoint without making a Vector3. */
 function grow(b, x, y, z) {
@@ -42,6 +46,12 @@ export class Graph {
     this.cap = 0;
     this.kinds = null; // kind per vertex (for recolouring)
     this.tools = null;
+    this.lines = null; // program line per vertex
+    this.index = new LineIndex();
+    this.indexAt = 0;
+    this.selected = 0; // the line picked (or chosen on PROG), 0: none
+    this.current = 0; // the executing line shown
+    this.onPick = null; // called with the line picked
     this.box = new THREE.Box3(); // every point but the start
     this.cutBox = new THREE.Box3(); // feeds, arcs, threads
     this.frames = 0;
@@ -64,6 +74,11 @@ export class Graph {
     this.scene.add(this.axes);
     this.tool = this.makeTool();
     this.scene.add(this.tool);
+    const dark = machine.style === 'hurco';
+    this.hlCurrent = this.makeHighlight(dark ? 0x000000 : 0xffffff);
+    this.hlSelected = this.makeHighlight(0xff30ff);
+    this.hlCurrent.renderOrder = 4; // the executing block over a selection
+    this.wirePick();
 
     new ResizeObserver(() => this.resize()).observe(el);
     for (const b of document.querySelectorAll('[data-view]')) b.onclick = () => this.view(b.dataset.view);
@@ -85,6 +100,83 @@ export class Graph {
     return m;
   }
 
+  /** A line drawn over the path (depth test off) for one program line. */
+  makeHighlight(colour) {
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(6), 3));
+    g.setDrawRange(0, 0);
+    const l = new THREE.LineSegments(g, new THREE.LineBasicMaterial({ color: colour, depthTest: false, transparent: true }));
+    l.frustumCulled = false;
+    l.renderOrder = 3;
+    this.scene.add(l);
+    return l;
+  }
+
+  /** The index by line, brought up to the path (at most once a second while it streams in). */
+  lineIndex() {
+    const now = performance.now();
+    if (this.index.n !== this.n && (this.done || now - this.indexAt > 1000)) {
+      this.index.update(this.lines, this.n);
+      this.indexAt = now;
+    }
+    return this.index;
+  }
+
+  /** Draws the segments of program line `line` with `hl` (none for 0). */
+  showLine(hl, line) {
+    const v = line > 0 ? this.lineIndex().of(line) : new Uint32Array(0);
+    const src = this.line.geometry.attributes.position.array;
+    const count = Math.min(v.length, HIGHLIGHT_MAX);
+    let a = hl.geometry.attributes.position;
+    if (a.array.length < count * 6) {
+      a = new THREE.BufferAttribute(new Float32Array(count * 6), 3);
+      hl.geometry.setAttribute('position', a);
+    }
+    let k = 0;
+    for (let j = 0; j < count; j++) {
+      const i = v[j];
+      if (i === 0) continue;
+      a.array.set(src.subarray((i - 1) * 3, i * 3 + 3), k * 6);
+      k++;
+    }
+    a.needsUpdate = true;
+    hl.geometry.setDrawRange(0, k * 2);
+    hl.shownLine = line;
+    hl.shownN = this.n;
+    return k;
+  }
+
+  /** Selects a program line (from a pick or from PROG): drawn in magenta. */
+  select(line) {
+    this.selected = line;
+    this.showLine(this.hlSelected, line);
+    this.render();
+  }
+
+  /** A click (not a drag) on the view picks the nearest segment's line. */
+  wirePick() {
+    const el = this.renderer.domElement;
+    let down = null;
+    el.addEventListener('pointerdown', (e) => { down = e.button === 0 ? [e.clientX, e.clientY] : null; });
+    el.addEventListener('pointerup', (e) => {
+      if (!down || Math.hypot(e.clientX - down[0], e.clientY - down[1]) > 4) return;
+      const r = el.getBoundingClientRect();
+      const line = this.pickAt(e.clientX - r.left, e.clientY - r.top, r.width, r.height);
+      if (line > 0) {
+        this.select(line);
+        if (this.onPick) this.onPick(line);
+      }
+    });
+  }
+
+  /** The program line of the segment nearest pixel (x, y) of a w×h view; 0 when none. */
+  pickAt(x, y, w, h) {
+    this.camera.updateMatrixWorld();
+    const m = new THREE.Matrix4().multiplyMatrices(this.camera.projectionMatrix, this.camera.matrixWorldInverse);
+    const i = pick(this.line.geometry.attributes.position.array, this.n, m.elements, w, h, x, y);
+    return i > 0 ? this.lines[i] : 0;
+  }
+
   /** Makes room for `need` vertices (keeping those drawn). */
   grow(need) {
     if (need <= this.cap) return;
@@ -94,11 +186,13 @@ export class Graph {
     const col = new Uint8Array(cap * 3);
     const kinds = new Uint8Array(cap);
     const tools = new Uint8Array(cap);
+    const lines = new Uint32Array(cap);
     if (this.line) {
       pos.set(this.line.geometry.attributes.position.array.subarray(0, this.n * 3));
       col.set(this.line.geometry.attributes.color.array.subarray(0, this.n * 3));
       kinds.set(this.kinds.subarray(0, this.n));
       tools.set(this.tools.subarray(0, this.n));
+      lines.set(this.lines.subarray(0, this.n));
       this.scene.remove(this.line);
       this.line.geometry.dispose();
     }
@@ -112,6 +206,7 @@ export class Graph {
     this.cap = cap;
     this.kinds = kinds;
     this.tools = tools;
+    this.lines = lines;
   }
 
   colour(kind, tool) {
@@ -128,6 +223,8 @@ export class Graph {
     this.cutBox.makeEmpty();
     this.fitted = false;
     this.line.geometry.setDrawRange(0, 0);
+    this.index = new LineIndex();
+    for (const hl of [this.hlCurrent, this.hlSelected]) { hl.geometry.setDrawRange(0, 0); hl.shownLine = 0; }
   }
 
   /** One binary message: 16-byte header, then records. */
@@ -145,14 +242,14 @@ export class Graph {
     for (let i = 0; i < count; i++) {
       const o = 16 + i * RECORD;
       const x = dv.getFloat32(o, true), y = dv.getFloat32(o + 4, true), z = dv.getFloat32(o + 8, true);
-      const kind = dv.getUint8(o + 16), tool = dv.getUint8(o + 17);
+      const kind = dv.getUint8(o + 16), tool = dv.getUint8(o + 17), ln = dv.getUint32(o + 12, true);
       if (this.n > 0 && (kind !== lastKind || tool !== lastTool)) {
         // Repeat the previous point in the new colour: the segment to
         // this point is drawn in one colour.
         const p = (this.n - 1) * 3;
-        this.put(pos, col, pos[p], pos[p + 1], pos[p + 2], kind, tool);
+        this.put(pos, col, pos[p], pos[p + 1], pos[p + 2], kind, tool, ln);
       }
-      this.put(pos, col, x, y, z, kind, tool);
+      this.put(pos, col, x, y, z, kind, tool, ln);
       if (kind !== 255) {
         grow(this.box, x, y, z);
         if (kind !== 0) {
@@ -187,13 +284,14 @@ export class Graph {
     }
   }
 
-  put(pos, col, x, y, z, kind, tool) {
+  put(pos, col, x, y, z, kind, tool, line) {
     const i = this.n * 3;
     pos[i] = x; pos[i + 1] = y; pos[i + 2] = z;
     const c = this.colour(kind, tool);
     col[i] = c[0]; col[i + 1] = c[1]; col[i + 2] = c[2];
     this.kinds[this.n] = kind;
     this.tools[this.n] = tool;
+    this.lines[this.n] = line;
     this.n++;
   }
 
@@ -242,10 +340,14 @@ export class Graph {
   state(s, shown) {
     if (s.path.part && this.partFor !== s.path.id && this.pathId === s.path.id) this.loadPart(s.path.id);
     if (!s.path.part && this.part) { this.scene.remove(this.part); this.part = null; this.partFor = null; }
+    // The executing block on the path (blocks of the main program).
+    const cur = s.program.file === s.program.name ? s.program.line : 0;
+    if (cur !== this.hlCurrent.shownLine || (cur && this.hlCurrent.shownN !== this.n && this.done)) this.showLine(this.hlCurrent, cur);
+    if (this.selected && this.hlSelected.shownN !== this.n && this.done) this.showLine(this.hlSelected, this.selected);
     const w = s.position.work;
     this.tool.position.set(w.X || 0, w.Y || 0, w.Z || 0);
     if (this.info) {
-      this.info.textContent = `${this.points} PTS${s.path.done ? '' : ' …'}${s.path.note ? ` (${s.path.note})` : ''}  X${(w.X || 0).toFixed(3)} ${this.lathe ? '' : `Y${(w.Y || 0).toFixed(3)} `}Z${(w.Z || 0).toFixed(3)}`;
+      this.info.textContent = `${this.points} PTS${s.path.done ? '' : ' …'}${s.path.note ? ` (${s.path.note})` : ''}${this.selected ? `  SEL LINE ${this.selected}` : ''}  X${(w.X || 0).toFixed(3)} ${this.lathe ? '' : `Y${(w.Y || 0).toFixed(3)} `}Z${(w.Z || 0).toFixed(3)}`;
     }
     if (shown) this.render();
   }

@@ -14,9 +14,12 @@ export class Screens {
     this.chunks = new Map(); // chunk index -> lines
     this.progKey = null; // name + total of the program the chunks are of
     this.progTop = -1;
+    this.selected = 0; // the line selected (GRAPH pick or a click here)
+    this.focusSelected = false; // PROG shows the selection until the program runs
     this.alarmSeq = -1;
     this.offsets = null;
     this.buildPos();
+    this.wireRelative();
     this.wireProg();
     this.wireMdi();
     this.wireOffsets();
@@ -49,10 +52,43 @@ export class Screens {
       t.innerHTML = '';
       for (const a of axes) {
         const tr = document.createElement('tr');
-        tr.innerHTML = `<td class="ax">${a}</td><td class="v" id="${id}-${a}">0.000</td>`;
+        // The lathe's relative counters are U and W, as on its POS page.
+        const label = id === 'pos-relative' && this.app.machine.kind === 'lathe' ? ({ X: 'U', Z: 'W' }[a] || a) : a;
+        tr.innerHTML = `<td class="ax">${label}</td><td class="v" id="${id}-${a}">0.000</td>`;
         t.append(tr);
       }
     }
+  }
+
+  /**
+   * ORIGIN and PRESET of the RELATIVE counters, as on the control: an
+   * axis typed then ORIGIN zeroes it (nothing typed: every axis); an axis
+   * and a value then PRESET sets it. On a lathe U and W name X and Z.
+   */
+  wireRelative() {
+    const lathe = this.app.machine.kind === 'lathe';
+    const parse = () => {
+      const t = $('rel-entry').value.trim().toUpperCase();
+      if (!t) return { axis: null, value: null };
+      const m = /^([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))?$/.exec(t);
+      if (!m) return null;
+      let axis = m[1];
+      if (lathe) axis = { U: 'X', W: 'Z' }[axis] || axis;
+      return { axis, value: m[2] === undefined ? null : +m[2] };
+    };
+    const send = (preset) => {
+      const e = parse();
+      if (!e || (preset && (e.axis === null || e.value === null))) {
+        this.io.say(preset ? 'PRESET: type an axis and a value (X12.5)' : 'ORIGIN: type an axis or nothing', true);
+        return;
+      }
+      const body = { cmd: 'origin' };
+      if (e.axis) body.axis = e.axis;
+      if (preset) body.value = e.value;
+      this.io.command(body).then((r) => { if (r.ok) $('rel-entry').value = ''; });
+    };
+    $('rel-origin').onclick = () => send(false);
+    $('rel-preset').onclick = () => send(true);
   }
 
   drawPos(s) {
@@ -93,6 +129,15 @@ export class Screens {
       this.io.command({ cmd: 'restart', line: n });
     };
     $('prog-save').onclick = () => this.load($('prog-edit-name').value || 'program.nc', $('prog-text').value);
+  }
+
+  /** Shows `line` selected; PROG moves to it and RESTART is set to it. */
+  select(line) {
+    this.selected = line;
+    this.focusSelected = true;
+    this.progTop = -1;
+    $('restart-line').value = line;
+    if (this.app.page === 'prog' && this.app.state) this.drawProg(this.app.state);
   }
 
   async load(name, text) {
@@ -143,7 +188,8 @@ export class Screens {
       for (let i = 1; i * CHUNK < Math.min(first.total, 20000); i++) all.push(...(await this.chunk(i)).lines);
       $('prog-text').value = all.join('\n') + '\n';
     }
-    const line = Math.max(1, s.program.line);
+    if (s.execution === 'ACTIVE') this.focusSelected = false;
+    const line = Math.max(1, this.focusSelected && this.selected ? this.selected : s.program.line);
     const top = Math.max(1, line - 6);
     if (top !== this.progTop) {
       this.progTop = top;
@@ -162,6 +208,7 @@ export class Screens {
         const li = document.createElement('li');
         li.dataset.n = top + i;
         li.textContent = text || ' ';
+        li.onclick = () => this.app.select(top + i, 'prog');
         ol.append(li);
       });
     }
@@ -169,6 +216,7 @@ export class Screens {
       const n = +li.dataset.n;
       li.classList.toggle('current', n === s.program.line);
       li.classList.toggle('next', n > s.program.line && n <= s.program.line + 3);
+      li.classList.toggle('selected', n === this.selected);
     }
   }
 

@@ -1,6 +1,6 @@
 //! Code rules checked mechanically over the workspace's source (every
-//! `crates/*/src/**.rs`, test code left out: `#[cfg(test)]` modules and
-//! `#[test]` functions), read as syntax trees:
+//! `crates/*/src/**.rs`, test code left out: `#[cfg(test)]` modules, inline
+//! or in a file of their own, and `#[test]` functions), read as syntax trees:
 //!
 //! - a motion command (`Canon::Rapid`, `Feed`, `Arc`, `Thread`) is built
 //!   only in the move seam, kerf-interp/src/interp/mover.rs: nothing else
@@ -93,12 +93,17 @@ struct Findings {
     long_fns: Vec<(String, usize, usize)>,
     /// Lines where a motion `Canon` is built.
     motion_builds: Vec<usize>,
+    /// `#[cfg(test)] mod NAME;` declarations: test modules in files of
+    /// their own, left out like inline ones.
+    test_mod_files: Vec<String>,
 }
 
 impl<'ast> Visit<'ast> for Findings {
     fn visit_item_mod(&mut self, m: &'ast syn::ItemMod) {
         if !is_test(&m.attrs) {
             visit::visit_item_mod(self, m);
+        } else if m.content.is_none() {
+            self.test_mod_files.push(m.ident.to_string());
         }
     }
 
@@ -152,8 +157,18 @@ impl Findings {
     }
 }
 
+/// The files a `#[cfg(test)] mod NAME;` in `path` may live in.
+fn module_files(path: &str, name: &str) -> [String; 2] {
+    let (dir, file) = path.rsplit_once('/').expect("a path under crates/");
+    let base = match file {
+        "lib.rs" | "main.rs" | "mod.rs" => dir.to_string(),
+        _ => format!("{dir}/{}", file.trim_end_matches(".rs")),
+    };
+    [format!("{base}/{name}.rs"), format!("{base}/{name}/mod.rs")]
+}
+
 fn findings() -> Vec<(String, Findings)> {
-    sources()
+    let all: Vec<(String, Findings)> = sources()
         .into_iter()
         .map(|(path, text)| {
             let file = syn::parse_file(&text).unwrap_or_else(|e| panic!("{path}: {e}"));
@@ -161,6 +176,13 @@ fn findings() -> Vec<(String, Findings)> {
             f.visit_file(&file);
             (path, f)
         })
+        .collect();
+    let test_files: Vec<String> = all
+        .iter()
+        .flat_map(|(path, f)| f.test_mod_files.iter().flat_map(|m| module_files(path, m)))
+        .collect();
+    all.into_iter()
+        .filter(|(path, _)| !test_files.contains(path))
         .collect()
 }
 
@@ -217,4 +239,23 @@ fn the_rules_see_what_they_should() {
     );
     // One build (the pattern is not one), on the last line.
     assert_eq!(f.motion_builds, vec![text.lines().count()]);
+}
+
+#[test]
+fn out_of_line_test_modules_are_found_beside_their_parent() {
+    assert_eq!(
+        module_files("crates/a/src/sinks/plot.rs", "tests"),
+        [
+            "crates/a/src/sinks/plot/tests.rs".to_string(),
+            "crates/a/src/sinks/plot/tests/mod.rs".to_string()
+        ]
+    );
+    assert_eq!(
+        module_files("crates/a/src/lib.rs", "tests")[0],
+        "crates/a/src/tests.rs"
+    );
+    let file = syn::parse_file("#[cfg(test)]\nmod tests;\nmod real;\n").unwrap();
+    let mut f = Findings::default();
+    f.visit_file(&file);
+    assert_eq!(f.test_mod_files, ["tests"]);
 }

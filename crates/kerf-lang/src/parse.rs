@@ -564,15 +564,32 @@ impl<'a> P<'a> {
         while i < t.len() {
             let c = t[i];
             if c.is_ascii_digit() {
-                digits += 1;
-                if c != b'0' || mant != 0 || point {
-                    counted += 1;
+                // A run of digits at once: the mantissa wraps instead of
+                // overflowing, which only happens past the digit limit,
+                // where the run is an error anyway.
+                let s = i;
+                let mut m = mant;
+                while let Some(d) = t.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d < 10) {
+                    m = m.wrapping_mul(10).wrapping_add(d as u64);
+                    i += 1;
                 }
+                let n = (i - s) as u32;
+                // Leading zeros of the integer part do not count.
+                let lead = if point || mant != 0 {
+                    0
+                } else {
+                    t[s..i].iter().take_while(|c| **c == b'0').count() as u32
+                };
+                digits += n;
+                counted += n - lead;
                 if counted > max {
                     return err(LexErrorKind::TooManyDigits, at);
                 }
-                mant = mant * 10 + (c - b'0') as u64;
-                frac += point as i32;
+                mant = m;
+                if point {
+                    frac += n as i32;
+                }
+                continue;
             } else if c == b'.' && !point {
                 point = true;
             } else if !is_blank(c) {

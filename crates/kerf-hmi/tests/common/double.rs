@@ -80,7 +80,7 @@ impl Control for Double {
             | Command::Jog { .. }
             | Command::Handle { .. }
             | Command::RefReturn(_)
-            | Command::Origin => {}
+            | Command::Origin { .. } => {}
             Command::Switch(c) => {
                 if let Some(v) = c.single_block {
                     self.state.switches.single_block = v;

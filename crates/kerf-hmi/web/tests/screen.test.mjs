@@ -243,6 +243,47 @@ test('GRAPH draws the planned path and the tool', async () => {
   }
 });
 
+test('a click on the path selects its block in PROG; the executing block is drawn on the path', async () => {
+  await page.click('[data-show=graph]');
+  await page.click('[data-view=top]');
+  await page.waitForTimeout(150);
+  // The pixel of a work point in the view, from the page's own camera.
+  const pixel = (x, y, z) => page.evaluate(([x, y, z]) => {
+    const g = window.kerf.graph;
+    const v = g.camera.position.clone().set(x, y, z).project(g.camera);
+    const r = g.renderer.domElement.getBoundingClientRect();
+    return [r.left + (v.x + 1) / 2 * r.width, r.top + (1 - v.y) / 2 * r.height];
+  }, [x, y, z]);
+  // Line 5 is the feed X0 → X100 at Y0; line 6 the feed Y0 → Y50 at X100.
+  const [x5, y5] = await pixel(50, 0, -1);
+  await page.mouse.click(x5, y5 + 2);
+  assert.equal(await page.evaluate(() => window.kerf.graph.selected), 5);
+  const [x6, y6] = await pixel(100, 25, -1);
+  await page.mouse.click(x6 - 2, y6);
+  assert.equal(await page.evaluate(() => window.kerf.graph.selected), 6);
+  // One segment drawn for the selection: two vertices.
+  assert.equal(await page.evaluate(() => window.kerf.graph.hlSelected.geometry.drawRange.count), 2);
+  await shot('graph-selected');
+  await page.click('[data-mode=MEM]');
+  await page.click('[data-show=prog]');
+  await until('the selected line', async () => (await page.$eval('#prog-list li.selected', (e) => e.dataset.n).catch(() => null)) === '6');
+  assert.equal(await page.$eval('#restart-line', (e) => e.value), '6');
+  await shot('prog-selected');
+  // The reverse: a line clicked on PROG is drawn on the path.
+  await page.click('#prog-list li[data-n="5"]');
+  assert.equal(await page.evaluate(() => window.kerf.graph.selected), 5);
+  // Running: the executing block (line 5, one segment) is drawn over the path.
+  await page.click('#cycle-start');
+  await until('line 5', async () => (await pageState()).program.line === 5);
+  await page.click('[data-show=graph]');
+  await until('the current block drawn', async () => page.evaluate(() => window.kerf.graph.hlCurrent.shownLine === 5
+    && window.kerf.graph.hlCurrent.geometry.drawRange.count === 2));
+  await page.waitForTimeout(300);
+  await shot('graph-running');
+  await page.click('#reset');
+  await until('reset', async () => (await pageState()).execution !== 'ACTIVE');
+});
+
 test('click to repaint is under 50 ms at the 99th percentile', async (t) => {
   await page.click('[data-show=pos]');
   const times = await page.evaluate(async () => {

@@ -16,6 +16,34 @@ use super::*;
 /// Table 1 also names G58, G201 and G202, which 002 never defines; they are
 /// not in the table (see docs/dialects.md), nor are G85-G89, which 002
 /// mentions only as "G81-G89 drill cycles".
+/// A table row with its meaning ([`means`]).
+const fn g(code10: u16, group: u8, default: bool, name: &'static str, support: Support) -> GCode {
+    super::g(code10, group, default, name, support, means(code10, group))
+}
+
+/// What a Hurco modal code means (002); a code without one is a
+/// compile-time error in [`GCODES`].
+const fn means(code10: u16, group: u8) -> Means {
+    use super::meaning::*;
+    if group == 0 {
+        return Means::OneShot;
+    }
+    if let Some(m) = common(code10) {
+        return m;
+    }
+    match code10 {
+        70 => Means::Diameter(false),
+        80 => Means::Diameter(true),
+        330 => Means::Motion(MotionMode::Thread),
+        700 => Means::Units(Units::Inch),
+        800 => Means::Cycle(false),
+        730 | 740 | 810..=840 => Means::Cycle(true),
+        980 => Means::CycleReturn(CycleReturn::Initial),
+        990 => Means::CycleReturn(CycleReturn::RPoint),
+        _ => panic!("Hurco modal G code without a meaning"),
+    }
+}
+
 #[rustfmt::skip]
 pub static GCODES: &[GCode] = &[
     g(0, 1, true, "linear motion at rapid", Yes),

@@ -4,7 +4,10 @@
 
 pub mod hurco;
 pub mod hx;
+pub mod meaning;
 pub mod puma;
+
+pub use meaning::Means;
 
 /// Which control's language a profile speaks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Deserialize, serde::Serialize)]
@@ -40,6 +43,9 @@ pub struct GCode {
     /// The manual's name for it.
     pub name: &'static str,
     pub support: Support,
+    /// What it means: the modal state it sets ([`Means::OneShot`] for
+    /// group 0).
+    pub means: Means,
 }
 
 /// When an M code acts relative to the motion of its block.
@@ -281,6 +287,7 @@ pub(crate) const fn g(
     default: bool,
     name: &'static str,
     support: Support,
+    means: Means,
 ) -> GCode {
     GCode {
         code10,
@@ -288,6 +295,7 @@ pub(crate) const fn g(
         default,
         name,
         support,
+        means,
     }
 }
 

@@ -20,6 +20,42 @@ const LATER_LATHE: Support =
 /// 001 either (001 is silent on work coordinate systems); they are the
 /// Fanuc 0-T/16T/18T standard codes real lathe programs start with
 /// (`G18 G21 G40 G80 G99`, `G54`), docs/dialects.md §3.
+/// A table row with its meaning ([`means`]).
+const fn g(code10: u16, group: u8, default: bool, name: &'static str, support: Support) -> GCode {
+    super::g(code10, group, default, name, support, means(code10, group))
+}
+
+/// What a PUMA modal code means (001); a code without one is a
+/// compile-time error in [`GCODES`]. G90/G92/G94 are group-01 cycles
+/// here, G98/G99 the feed mode; the system B G90/G91 are 900/901 shifted
+/// (interp/system_b.rs).
+const fn means(code10: u16, group: u8) -> Means {
+    use super::meaning::*;
+    if group == 0 {
+        return Means::OneShot;
+    }
+    match code10 {
+        320 => return Means::Motion(MotionMode::Thread),
+        900 => return Means::Motion(MotionMode::TurnCycle),
+        920 => return Means::Motion(MotionMode::ThreadCycle),
+        940 => return Means::Motion(MotionMode::FaceCycle),
+        _ => {}
+    }
+    if let Some(m) = common(code10) {
+        return m;
+    }
+    match code10 {
+        220 => Means::Stroke(true),
+        230 => Means::Stroke(false),
+        800 => Means::Cycle(false),
+        9000 => Means::Distance(Distance::Absolute),
+        9010 => Means::Distance(Distance::Incremental),
+        980 => Means::FeedMode(FeedMode::PerMin),
+        990 => Means::FeedMode(FeedMode::PerRev),
+        _ => panic!("PUMA modal G code without a meaning"),
+    }
+}
+
 #[rustfmt::skip]
 pub static GCODES: &[GCode] = &[
     g(0, 1, true, "positioning (rapid feed)", Yes), // # in 001

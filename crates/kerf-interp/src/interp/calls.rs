@@ -17,7 +17,7 @@ use kerf_lang::{parse_block, Addr, Block, LineSource, Mark, RawBlock, Val};
 
 use super::{fmt_num, Interp, R};
 use crate::alarms::AlarmKind;
-use crate::dialect::DialectId;
+use crate::dialect::{DialectId, Means};
 
 /// Most N-numbered blocks a program may have for its sequence index.
 const SEQ_INDEX_MAX: usize = 65_536;
@@ -863,7 +863,9 @@ impl Interp {
                 count,
                 args: Box::new(args),
             });
-            self.st.modal[12] = 660;
+            self.st
+                .modal
+                .set_meaning(self.dialect, Means::ModalCall(true));
             return Ok(());
         }
         if count == 0 {
@@ -977,11 +979,10 @@ impl Interp {
     /// G67: cancels the most recent G66.
     pub(super) fn g67(&mut self) {
         self.calls.modal.pop();
-        self.st.modal[12] = if self.calls.modal.is_empty() {
-            670
-        } else {
-            660
-        };
+        let on = !self.calls.modal.is_empty();
+        self.st
+            .modal
+            .set_meaning(self.dialect, Means::ModalCall(on));
     }
 
     /// After a block with an axis move while G66 is in force: call the
@@ -1015,7 +1016,11 @@ impl Interp {
         let mut a = [None; 33];
         let mut set: i32 = -1;
         let mut last_k = 3usize;
-        let scale = if self.st.metric { 0.001 } else { 0.0001 };
+        let scale = if self.st.modal.metric() {
+            0.001
+        } else {
+            0.0001
+        };
         for i in 0..self.block.words.len() {
             let w = self.block.words[i];
             let Addr::L(l) = w.addr else { continue };

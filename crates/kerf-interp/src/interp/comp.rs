@@ -22,9 +22,6 @@ use super::motion::Speed;
 use super::*;
 use crate::comp::{self, CompError, CornerOpt, Join, Piece, Seg, P};
 
-/// The modal group of G40/G41/G42 in all three dialects.
-pub(super) const COMP_GROUP: usize = 7;
-
 /// A move held until the next one is known.
 pub(crate) struct Held {
     /// The programmed path in the plane.
@@ -163,7 +160,7 @@ impl Interp {
             r: 0.0,
             side: 1.0,
             tip: (0.0, 0.0),
-            plane: self.st.plane,
+            plane: self.st.modal.plane.means,
             startup: false,
             vec: (0.0, 0.0),
             held: None,
@@ -253,7 +250,7 @@ impl Interp {
         setting: bool,
     ) -> R<bool> {
         self.comp_check_words(one_shot)?;
-        let mode = self.st.modal[COMP_GROUP];
+        let mode = self.st.modal.cutter_comp.code10;
         let g39 = one_shot.iter().find(|g| g.0 == 390).map(|g| g.1);
         if self.comp.is_none() {
             if mode == 400 {
@@ -268,7 +265,7 @@ impl Interp {
             }
             self.comp = Some(Box::new(self.comp_new()));
         }
-        let plane = self.st.plane;
+        let plane = self.st.modal.plane.means;
         let (on, cplane) = {
             let c = self.comp.as_deref().expect("set");
             (c.on, c.plane)
@@ -346,7 +343,7 @@ impl Interp {
             }
             self.comp = Some(Box::new(self.comp_new()));
         }
-        let plane = self.st.plane;
+        let plane = self.st.modal.plane.means;
         let (value, tip) = self.comp_value();
         let c = self.comp.as_deref_mut().expect("set");
         match mode {
@@ -409,7 +406,7 @@ impl Interp {
     ) -> R<()> {
         let cur = self.zx_full(seg.from);
         let tw = self.zx_full(seg.to);
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let (cur_t, tw_t) = (self.xf_point(&cur), self.xf_point(&tw));
         let (sp, ep) = ((cur[a1], cur[a2]), (tw[a1], tw[a2]));
         let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
@@ -465,7 +462,7 @@ impl Interp {
             // A ,C/,R move held before the compensation started.
             return Err(self.corner_broken("a cutter compensation start-up (G41/G42)"));
         }
-        let plane = self.st.plane;
+        let plane = self.st.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         let cur = self.prog_pos();
         let arc = matches!(mode, 20 | 30);
@@ -614,7 +611,7 @@ impl Interp {
             at,
             motion,
         } = p;
-        let plane = self.st.plane;
+        let plane = self.st.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         let arc = matches!(mode, 20 | 30);
         let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
@@ -802,7 +799,7 @@ impl Interp {
             };
             AlarmKind::CornerTooLarge.at(id, hc.word, why)
         })?;
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let fwd = |me: &Self, q: P| {
             let p = me.xf_point(&me.plane_pt(cur, q));
             (p[a1], p[a2])
@@ -869,7 +866,7 @@ impl Interp {
         let vec = c.vec;
         let cur_t = self.xf_point(&self.prog_pos());
         let tw_t = self.xf_point(&tw);
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let p = padd((cur_t[a1], cur_t[a2]), vec);
         let start = self.offset_to_machine(&self.plane_pt(cur_t, p));
         let prog = self.place_machine(start);
@@ -910,7 +907,7 @@ impl Interp {
             ));
         }
         let end1 = self.comp_geom(comp::perp_end(&h.seg, h.r), h.motion)?;
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let vec = psub(padd(end1, h.tip), (h.end[a1], h.end[a2]));
         self.comp_flush(&mut h, &Join::at(end1))?;
         self.comp.as_deref_mut().expect("comp").vec = vec;
@@ -1112,14 +1109,14 @@ impl Interp {
         }
         let o = [0.0; NAXES];
         let q = self.plane_pt(o, d);
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let (fo, fq) = (self.st.xf.forward(&o), self.st.xf.forward(&q));
         (fq[a1] - fo[a1], fq[a2] - fo[a2])
     }
 
     /// `p` with its plane coordinates replaced by `uv`.
     fn plane_pt(&self, p: Pos, uv: P) -> Pos {
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let mut q = p;
         q[a1] = uv.0;
         q[a2] = uv.1;

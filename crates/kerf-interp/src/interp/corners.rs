@@ -119,7 +119,7 @@ impl Interp {
         let Some(p) = self.corner.as_deref() else {
             return self.plain_motion(mode, tw, any, at);
         };
-        if p.plane != self.st.plane {
+        if p.plane != self.st.modal.plane.means {
             return Err(self.corner_broken("a move in another plane"));
         }
         if p.origin != self.prog_origin() {
@@ -206,7 +206,7 @@ impl Interp {
             seg,
             start,
             end: tw,
-            plane: self.st.plane,
+            plane: self.st.modal.plane.means,
             feed,
             src: self.cur,
             word,
@@ -245,7 +245,7 @@ impl Interp {
     /// The block's move from the current position to `tw` as a path in the
     /// plane; None when it does not move in the plane or moves another axis.
     fn plane_path(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<Option<Seg>> {
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let cur = self.prog_pos();
         if (0..NAXES).any(|i| i != a1 && i != a2 && (tw[i] - cur[i]).abs() > 1e-9) {
             return Ok(None);
@@ -267,7 +267,7 @@ impl Interp {
 
     /// `p` with its plane coordinates replaced by `uv`.
     fn plane_point(&self, p: Pos, uv: (f64, f64)) -> Pos {
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let mut q = p;
         q[a1] = uv.0;
         q[a2] = uv.1;

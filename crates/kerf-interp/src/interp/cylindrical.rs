@@ -52,7 +52,7 @@ impl Interp {
         }
         if r == 0.0 {
             self.st.rot = RotInterp::Off;
-            self.st.modal[22] = 0;
+            self.st.modal.cylindrical = modal::Active::none(false);
             return Ok(());
         }
         if let Some(what) = self.transform_after_block() {
@@ -65,7 +65,7 @@ impl Interp {
     /// A block's motion in G107: straight moves as usual (C in degrees),
     /// arcs on the developed surface.
     pub(super) fn cylinder_motion(&mut self, r: f64) -> R<()> {
-        let mode = self.st.modal[1];
+        let mode = self.st.modal.motion.code10;
         let (tw, any) = self.target()?;
         let at = self.motion_at();
         match mode {
@@ -73,7 +73,7 @@ impl Interp {
             20 | 30 => {}
             _ => return Ok(()),
         }
-        let (a1, a2) = match self.st.plane {
+        let (a1, a2) = match self.st.modal.plane.means {
             Plane::XY => (C, Axis::Y as usize),
             Plane::ZX => (Axis::Z as usize, C),
             Plane::YZ => {

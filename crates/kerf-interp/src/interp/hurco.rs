@@ -178,11 +178,14 @@ impl Interp {
 
     /// G53 preconditions (002): CRC off, G90, G00 or G01 mode.
     pub(super) fn g53_checks(&self, at: u32) -> R<()> {
-        let why = if self.st.modal[7] != 400 {
+        let why = if self.st.modal.cutter_comp.means != CompSide::Off {
             "cutter radius compensation must be off (G40)"
-        } else if !self.st.absolute {
+        } else if !self.st.modal.absolute() {
             "absolute mode (G90) must be active"
-        } else if !matches!(self.st.modal[1], 0 | 10) {
+        } else if !matches!(
+            self.st.modal.motion.means,
+            MotionMode::Rapid | MotionMode::Linear
+        ) {
             "G00 or G01 mode must be active"
         } else {
             return Ok(());

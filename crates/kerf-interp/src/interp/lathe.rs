@@ -153,7 +153,7 @@ impl Interp {
         }
         let cur = self.prog_pos();
         let xi = Axis::X as usize;
-        if self.st.css && (tw[xi] - cur[xi]).abs() > 1e-9 {
+        if self.st.modal.css.means && (tw[xi] - cur[xi]).abs() > 1e-9 {
             return Err(self.alarm(
                 AlarmKind::LatheCycle,
                 at,

@@ -113,9 +113,9 @@ impl Interp {
                 self.g65(c, at)?;
                 return Ok(None);
             }
-            if g.group == 1 {
+            if let Means::Motion(_) = g.means {
                 motion = Some((c, at));
-            } else if g.group == 0 {
+            } else if g.means == Means::OneShot {
                 one_shot[n_one] = (c, at);
                 n_one += 1;
             }
@@ -133,7 +133,7 @@ impl Interp {
             transfer,
             hurco_macro: None,
             was_cycle: false,
-            plane_before: self.st.plane,
+            plane_before: self.st.modal.plane.means,
             cycle: false,
             hurco_cycle: false,
             xdata: false,
@@ -152,7 +152,7 @@ impl Interp {
             Phase::JobSyncM => self.run_m(|m| m.1 == MWhen::JobSync)?,
             Phase::ModalG => self.apply_modal_codes(b),
             Phase::HxCycleMode => {
-                let plane_changed = self.st.plane != b.plane_before;
+                let plane_changed = self.st.modal.plane.means != b.plane_before;
                 b.cycle = self.cycle_mode(b.was_cycle, plane_changed, b.motion)?;
             }
             Phase::HurcoCycleMode => b.hurco_cycle = self.hurco_cycle_mode(b.motion)?,
@@ -235,23 +235,22 @@ impl Interp {
 
     /// The modal G codes (every group but 0 and 1) and the motion mode.
     fn apply_modal_codes(&mut self, b: &mut BlockRun) {
-        let d = self.dialect;
-        b.was_cycle = self.st.modal[cycles::CYCLE_GROUP] != 800;
-        b.plane_before = self.st.plane;
+        b.was_cycle = self.st.modal.cycle.means;
+        b.plane_before = self.st.modal.plane.means;
         for i in 0..self.words.ng {
             let (c, _) = self.words.g[i];
             let Some(g) = self.gcode(c) else { continue };
-            if g.group != 0 && g.group != 1 {
-                self.st.modal[g.group as usize] = c;
-                Self::apply_modal(&mut self.st, d.id, c);
-                self.mode_event(c);
-                if c == 670 {
+            if !matches!(g.means, Means::OneShot | Means::Motion(_)) {
+                self.apply_modal(g);
+                if g.means == Means::ModalCall(false) {
                     self.g67();
                 }
             }
         }
         if let Some((c, _)) = b.motion {
-            self.st.modal[1] = c;
+            if let Some(g) = self.gcode(c) {
+                self.st.modal.set(g);
+            }
         }
     }
 

@@ -191,7 +191,7 @@ impl Interp {
     /// absolute or incremental); the other axes move linearly along.
     /// G00 alarms (Fanuc).
     fn polar_motion(&mut self, c0: f64) -> R<()> {
-        let mode = self.st.modal[1];
+        let mode = self.st.modal.motion.code10;
         let (tw, any) = self.target()?;
         let at = self.motion_at();
         if mode == 0 {
@@ -212,7 +212,7 @@ impl Interp {
                 Some(w) => {
                     me.check_range(l, w)?;
                     let v = me.linear(w);
-                    if me.st.absolute {
+                    if me.st.modal.absolute() {
                         v
                     } else {
                         from + v

@@ -102,7 +102,7 @@ impl Interp {
             .find(|g| g.0 == ABS || g.0 == INC)
         {
             Some(g) => g.0 == INC,
-            None => !self.st.absolute,
+            None => !self.st.modal.absolute(),
         };
         if !inc || self.macro_args() {
             return Ok(());

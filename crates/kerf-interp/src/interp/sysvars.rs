@@ -277,7 +277,7 @@ impl Interp {
         if s < 3 {
             v /= self.unit();
         }
-        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.diameter {
+        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means {
             v *= 2.0;
         }
         v
@@ -288,7 +288,7 @@ impl Interp {
         if s < 3 {
             v *= self.unit();
         }
-        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.diameter {
+        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means {
             v /= 2.0;
         }
         v
@@ -333,7 +333,7 @@ impl Interp {
                 return Ok(self.axis_value_of(k, &p));
             }
             Modal(g) => {
-                let c = self.st.modal.get(g).copied().unwrap_or(0);
+                let c = u8::try_from(g).map_or(0, |g| self.st.modal.code_of_group(self.dialect, g));
                 let c = if self.system_b() {
                     super::system_b::to_b(c)
                 } else {
