@@ -41,8 +41,8 @@ use crate::job::LoadError;
 pub struct OffsetsError {
     /// The file.
     pub path: PathBuf,
-    /// What is wrong with it.
-    pub problem: Problem,
+    /// What is wrong with it (boxed: TOML's errors are large).
+    pub problem: Box<Problem>,
 }
 
 /// What is wrong with an offsets file (the message names the table and
@@ -114,7 +114,7 @@ impl From<OffsetsError> for LoadError {
 pub fn load(path: &Path, it: &mut Interp) -> Result<(), OffsetsError> {
     load_table(path, it).map_err(|problem| OffsetsError {
         path: path.to_path_buf(),
-        problem,
+        problem: Box::new(problem),
     })
 }
 
@@ -292,7 +292,7 @@ mod tests {
         let err = |t: &str| load_text(t).err().expect("an error");
         let e = err("[tool.99]\nx = 1.0\n");
         assert!(
-            matches!(e.problem, Problem::OffsetNumber { max: 16, .. }),
+            matches!(*e.problem, Problem::OffsetNumber { max: 16, .. }),
             "{e:?}"
         );
         let msg = e.to_string();
@@ -310,15 +310,15 @@ mod tests {
             .to_string()
             .ends_with(": [tool.2] tip: tip direction is 0-9"));
         let e = err("[fixture.0]\nz = 1.0\n");
-        assert!(matches!(e.problem, Problem::FixtureNumber(_)));
+        assert!(matches!(*e.problem, Problem::FixtureNumber(_)));
     }
 
     #[test]
     fn a_lathe_x_is_stored_as_a_radius() {
         // The PUMA programs X as a diameter: x = 0.75 is a radius of 0.375.
-        let it = load_text("[tool.2]\nx = 0.75\nz = -0.93\n")
-            .ok()
-            .expect("loads");
+        let Ok(it) = load_text("[tool.2]\nx = 0.75\nz = -0.93\n") else {
+            panic!("loads")
+        };
         let t = it.offsets().lathe(2);
         assert_eq!((t.x, t.z), (0.375, -0.93));
     }
