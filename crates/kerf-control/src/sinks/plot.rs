@@ -115,7 +115,8 @@ impl<W: Write> Plot<W> {
 pub fn render(d: &mut Drawing, format: PlotFormat) -> io::Result<Vec<u8>> {
     d.flush();
     let rows = legend_rows(d);
-    let layout = Layout::new(&d.panels, d.kind() == MachineKind::Lathe, rows);
+    let keep = d.stop.as_ref().map(|(i, p, _)| (*i, *p));
+    let layout = Layout::new(&d.panels, d.kind() == MachineKind::Lathe, rows, keep);
     let items = scene::build(d, &layout);
     match format {
         PlotFormat::Svg => Ok(svg::write(&items, layout.width, layout.height).into_bytes()),

@@ -161,7 +161,7 @@ fn the_alarm_point_is_crossed_and_named() {
         svg.contains("<path d=\"M299.36 450.82L313.36 464.82M299.36 464.82L313.36 450.82\" fill=\"none\" stroke=\"#dd0000\""),
         "{svg}"
     );
-    assert!(svg.contains(">alarm F_82001 line 7<"));
+    assert!(svg.contains(">alarm F_82001<") && svg.contains(">line 7<"));
 }
 
 #[test]
