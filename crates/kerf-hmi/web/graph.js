@@ -296,9 +296,12 @@ export class Graph {
     g.setDrawRange(0, this.n);
     // Frame the first points at once and the whole path when it is complete.
     const done = dv.getUint32(12, true) === 1;
-    if (done) this.coarse.finish(pos, col, this.n);
-    if ((!this.fitted || done) && this.n > 1) this.view(this.lastView || (this.lathe ? 'front' : 'iso'));
-    this.done = done;
+    if (done) {
+      this.complete();
+      return;
+    }
+    if (!this.fitted && this.n > 1) this.view(this.lastView || (this.lathe ? 'front' : 'iso'));
+    this.done = false;
     // While the path streams in, draw at most four times a second (the
     // coarse copy when the path is larger than it).
     const now = performance.now();
@@ -308,7 +311,16 @@ export class Graph {
     }
   }
 
-  put(pos, col, x, y, z, kind, tool, line) {
+  /** The whole path is in: the coarse copy ends where it does, framed, drawn. */
+  complete() {
+    this.done = true;
+    const g = this.line.geometry;
+    this.coarse.finish(g.attributes.position.array, g.attributes.color.array, this.n);
+    if (this.n > 1) this.view(this.lastView || (this.lathe ? 'front' : 'iso'));
+    this.render();
+  }
+
+    put(pos, col, x, y, z, kind, tool, line) {
     const i = this.n * 3;
     pos[i] = x; pos[i + 1] = y; pos[i + 2] = z;
     const c = this.colour(kind, tool);
@@ -365,6 +377,9 @@ export class Graph {
 
   /** The newest machine state: the tool's live position. */
   state(s, shown) {
+    // The server may finish the trace after sending the last points: the
+    // state then says the path is complete.
+    if (!this.done && s.path.done && s.path.id === this.pathId && this.points === s.path.points) this.complete();
     if (s.path.part && this.partFor !== s.path.id && this.pathId === s.path.id) this.loadPart(s.path.id);
     if (!s.path.part && this.part) { this.scene.remove(this.part); this.part = null; this.partFor = null; }
     // The executing block on the path (blocks of the main program).
