@@ -20,4 +20,6 @@ for t in parse interp pipeline; do
         done
     done
 done
-echo "seeded: $(ls "$here/corpus/parse" | wc -l) parse, $(ls "$here/corpus/interp" | wc -l) interp, $(ls "$here/corpus/pipeline" | wc -l) pipeline"
+mkdir -p "$here/corpus/inputs"
+cp "$here/seeds/inputs/"* "$here/corpus/inputs/"
+echo "seeded: $(ls "$here/corpus/parse" | wc -l) parse, $(ls "$here/corpus/interp" | wc -l) interp, $(ls "$here/corpus/pipeline" | wc -l) pipeline, $(ls "$here/corpus/inputs" | wc -l) inputs"

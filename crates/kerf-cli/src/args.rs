@@ -80,7 +80,9 @@ pub struct Outputs {
     /// Write a JSON summary of the run.
     #[arg(long)]
     pub report: Option<PathBuf>,
-    /// Write an SVG plot of the toolpath.
+    /// Write a plot of the toolpath: PNG when FILE ends in .png, SVG
+    /// otherwise (axes in mm, a colour per tool, rapids dashed; see
+    /// docs/formats.md).
     #[arg(long)]
     pub plot: Option<PathBuf>,
     /// Write the smoothed axis setpoints every DT seconds (e.g. 0.001)

@@ -4,6 +4,7 @@ use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
+use kerf_control::sinks::plot::PlotFormat;
 use kerf_control::sinks::sim::check_stock;
 use kerf_control::sinks::{Log, Plot, Report, Sample, SimSink, Toolpath};
 use kerf_control::Sink;
@@ -115,7 +116,10 @@ impl Outputs {
             sinks.push(Box::new(Log::new(create(p)?)));
         }
         if let Some(p) = &self.plot {
-            sinks.push(Box::new(Plot::new(create(p)?)));
+            sinks.push(Box::new(Plot::with_format(
+                create(p)?,
+                PlotFormat::of_path(p),
+            )));
         }
         Ok(sinks)
     }

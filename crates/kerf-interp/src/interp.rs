@@ -13,7 +13,10 @@ use kerf_lang::{
 
 use crate::alarms::AlarmKind;
 use crate::arc::{self, ArcError};
-use crate::dialect::{Dialect, DialectId, MAction, MWhen, Support};
+use crate::dialect::meaning::{
+    CompSide, CuttingMode, CycleReturn, FeedMode, LengthComp, MotionMode,
+};
+use crate::dialect::{Dialect, DialectId, GCode, MAction, MWhen, Means, Support};
 use crate::machine::{MachineKind, Profile};
 use crate::macros::{round_to, Vars};
 use crate::offsets::OffsetTable;
@@ -34,6 +37,7 @@ mod lathe;
 mod lathe_chamfer;
 mod lathe_mrc;
 mod lathe_shape;
+mod modal;
 mod motion;
 mod mover;
 mod offset_data;
@@ -105,19 +109,11 @@ pub enum Step {
     Alarm(Alarm),
 }
 
-/// Feed mode (group 05).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum FeedMode {
-    PerMin,
-    PerRev,
-    Inverse,
-}
-
 /// Modal state that the words of a block act on.
 #[derive(Clone, Debug)]
 struct State {
-    /// Active code (×10) per modal group.
-    modal: [u16; 32],
+    /// The modal G codes in force, by meaning (interp/modal.rs).
+    modal: modal::Modal,
     /// Current position, machine coordinates: set only by the move seam
     /// (interp/mover.rs).
     mover: mover::Mover,
@@ -148,17 +144,11 @@ struct State {
     h: u32,
     /// G28 intermediate point (programmed coordinates), per axis.
     g28_mid: [Option<f64>; NAXES],
-    metric: bool,
-    absolute: bool,
-    plane: Plane,
-    diameter: bool,
-    feed_mode: FeedMode,
     /// Programmed feed in mm/min or mm/rev (None until an F is given).
     feed: Option<f64>,
     spindle: SpindleDir,
     /// S as programmed (rpm, or surface speed in G96), in program units.
     s: f64,
-    css: bool,
     s_clamp: Option<f64>,
     /// Emitted spindle state, to avoid repeating events.
     last_rpm: f64,
@@ -281,9 +271,9 @@ impl Interp {
             max_digits: profile.max_digits,
             // Bracket nesting: Fanuc 5 levels including function
             // brackets; the HX text of 000 §14.2.4 gives 10.
-            max_nesting: if dialect.id == DialectId::Hx { 10 } else { 5 },
+            max_nesting: dialect.caps.bracket_nesting,
         };
-        let hx = dialect.id == DialectId::Hx;
+        let hx = dialect.caps.hx_variables;
         let offsets = OffsetTable::new(profile.tools.offsets as usize);
         let st = Self::power_on_state(&profile, dialect);
         let hurco = Self::hurco_state();
@@ -319,7 +309,7 @@ impl Interp {
         };
         let settings_sb = settings.single_block;
         let system_b_on =
-            dialect.id == DialectId::Puma && profile.param("gcode_system_b", 0.0) != 0.0;
+            dialect.caps.gcode_system_b && profile.param("gcode_system_b", 0.0) != 0.0;
         let mut cyc = cycles::CycleData::default();
         cyc.params = cycles::CycleParams::from_profile(&profile);
         Interp {
@@ -379,10 +369,12 @@ impl Interp {
     /// PI 144-147), G54 with the profile's work offsets, the start
     /// position, no tool, spindle and coolant off.
     fn power_on_state(profile: &Profile, dialect: &'static Dialect) -> State {
-        let mut modal = [0u16; 32];
-        for g in dialect.gcodes.iter().filter(|g| g.default) {
-            modal[g.group as usize] = g.code10;
-        }
+        let plane = if profile.kind == MachineKind::Lathe {
+            Plane::ZX
+        } else {
+            Plane::XY
+        };
+        let modal = modal::Modal::power_on(dialect, plane);
         let mut wcs = [[0.0; NAXES]; 6];
         for (i, w) in wcs.iter_mut().enumerate() {
             let key = format!("g5{}", 4 + i);
@@ -409,19 +401,9 @@ impl Interp {
             tlo: [0.0; NAXES],
             h: 0,
             g28_mid: [None; NAXES],
-            metric: true,
-            absolute: true,
-            plane: if profile.kind == MachineKind::Lathe {
-                Plane::ZX
-            } else {
-                Plane::XY
-            },
-            diameter: dialect.diameter_default,
-            feed_mode: FeedMode::PerMin,
             feed: None,
             spindle: SpindleDir::Stop,
             s: 0.0,
-            css: false,
             s_clamp: None,
             last_rpm: 0.0,
             tool: 0,
@@ -430,32 +412,25 @@ impl Interp {
             mist: false,
             flood: false,
         };
-        // Apply the group defaults (and, on the HX, PI 144-150).
-        for g in dialect.gcodes.iter().filter(|g| g.default) {
-            Self::apply_modal(&mut st, dialect.id, g.code10);
-        }
-        if dialect.id == DialectId::Hx {
+        // The HX power-on parameters PI 144-147 (000 §3.2).
+        if dialect.caps.power_on_params {
+            use crate::dialect::meaning::{Distance, Units};
             let p = |n: &str, d: f64| profile.param(n, d) as i64;
             if p("PI 144", 0.0) == 1 {
-                st.modal[1] = 10;
+                st.modal
+                    .set_meaning(dialect, Means::Motion(MotionMode::Linear));
             }
             match p("PI 145", 0.0) {
-                1 => st.plane = Plane::ZX,
-                2 => st.plane = Plane::YZ,
+                1 => st.modal.set_meaning(dialect, Means::Plane(Plane::ZX)),
+                2 => st.modal.set_meaning(dialect, Means::Plane(Plane::YZ)),
                 _ => {}
             }
-            st.modal[16] = match st.plane {
-                Plane::XY => 170,
-                Plane::ZX => 180,
-                Plane::YZ => 190,
-            };
             if p("PI 146", 0.0) == 1 {
-                st.absolute = false;
-                st.modal[3] = 910;
+                st.modal
+                    .set_meaning(dialect, Means::Distance(Distance::Incremental));
             }
             if p("PI 147", 1.0) == 0 {
-                st.metric = false;
-                st.modal[6] = 200;
+                st.modal.set_meaning(dialect, Means::Units(Units::Inch));
             }
         }
         st
@@ -476,7 +451,7 @@ impl Interp {
     /// as loaded with `--offsets`.
     pub fn set_work_offset(&mut self, idx: usize, origin: Pos) {
         self.st.work.set(work_offsets::WorkId::G5x(idx), origin);
-        if idx == 0 && self.dialect.id == DialectId::Hurco {
+        if idx == 0 && self.dialect.caps.part_zero_is_e1 {
             // The Hurco's part zero is fixture offset E1.
             self.st.work.set(work_offsets::WorkId::Fixture(1), origin);
         }
@@ -503,7 +478,7 @@ impl Interp {
 
     /// Whether X is programmed as a diameter now (lathes).
     pub fn diameter_programming(&self) -> bool {
-        self.profile.kind == MachineKind::Lathe && self.st.diameter
+        self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means
     }
 
     /// The tool offset memory (H/D pages, lathe tool offsets).
@@ -647,7 +622,7 @@ impl Interp {
 
     fn emit(&mut self, cmd: Canon) {
         // G96 on a lathe: the spindle follows X (interp/lathe.rs).
-        if self.st.css
+        if self.st.modal.css.means
             && matches!(
                 cmd,
                 Canon::Rapid { .. } | Canon::Feed { .. } | Canon::Arc { .. } | Canon::Thread { .. }
@@ -949,11 +924,7 @@ impl Interp {
                     self.words.ng += 1;
                 }
                 Addr::L(b'M') => {
-                    let max_m = if self.dialect.id == DialectId::Hurco {
-                        MAX_CODES
-                    } else {
-                        3
-                    };
+                    let max_m = self.dialect.caps.max_m_per_block;
                     if self.words.nm >= max_m {
                         return Err(self.alarm(
                             AlarmKind::MCodeConflict,
@@ -1025,7 +996,7 @@ impl Interp {
 
     /// A `,C` / `,R` word (HX chamfer and corner R).
     fn collect_comma(&mut self, c: u8, wv: WVal) -> R<()> {
-        if self.dialect.id != DialectId::Hx || !matches!(c, b'C' | b'R') {
+        if !self.dialect.caps.comma_corners || !matches!(c, b'C' | b'R') {
             return Err(self.alarm(
                 AlarmKind::IllegalAddress,
                 wv.at,
@@ -1063,7 +1034,7 @@ impl Interp {
         }
         match l {
             b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'I' | b'J' | b'K' | b'R' | b'Q' => {
-                if self.st.metric {
+                if self.st.modal.metric() {
                     0.001
                 } else {
                     0.0001
@@ -1094,7 +1065,7 @@ impl Interp {
                 return Ok(r);
             }
         }
-        if self.dialect.id == DialectId::Puma && !self.macro_args() {
+        if self.dialect.caps.restricted_words && !self.macro_args() {
             self.puma_words()?;
         }
         self.execute_block()
@@ -1108,6 +1079,13 @@ impl Interp {
     }
 
     #[inline]
+    /// G92 (HX, Hurco) / G50 (PUMA, G-code system A): coordinate setting.
+    fn is_coordinate_setting(&self, code10: u16) -> bool {
+        self.gcode(code10).is_some_and(|g| {
+            g.means == Means::OneShot(crate::dialect::meaning::OneShot::CoordinateSetting)
+        })
+    }
+
     fn gcode(&self, code10: u16) -> Option<&'static crate::dialect::GCode> {
         match self.g_index.get(code10 as usize) {
             Some(g) => *g,
@@ -1199,7 +1177,7 @@ impl Interp {
                 MAction::Aux => {
                     self.emit(Canon::Aux { m, name: mc.name });
                     // 002: M48 use / M49 ignore the feedrate override.
-                    if self.dialect.id == DialectId::Hurco && (m == 48 || m == 49) {
+                    if self.dialect.caps.m48_feed_override && (m == 48 || m == 49) {
                         self.emit(Canon::Mode(ModeChange::FeedOverride(m == 48)));
                     }
                 }
@@ -1212,58 +1190,31 @@ impl Interp {
         Ok(())
     }
 
-    fn apply_modal(st: &mut State, d: DialectId, c: u16) {
-        match c {
-            170 => st.plane = Plane::XY,
-            180 => st.plane = Plane::ZX,
-            190 => st.plane = Plane::YZ,
-            200 => st.metric = false,
-            210 => st.metric = true,
-            540 | 550 | 560 | 570 | 580 | 590 if d != DialectId::Hurco => {
-                if let Some(id) = work_offsets::WorkId::of_code(c) {
-                    st.work.select(id);
-                }
-            }
-            900 if d != DialectId::Puma => st.absolute = true,
-            system_b::ABS if d == DialectId::Puma => st.absolute = true,
-            system_b::INC if d == DialectId::Puma => st.absolute = false,
-            910 if d != DialectId::Puma => st.absolute = false,
-            930 => st.feed_mode = FeedMode::Inverse,
-            940 => st.feed_mode = FeedMode::PerMin,
-            950 => st.feed_mode = FeedMode::PerRev,
-            980 if d == DialectId::Puma => st.feed_mode = FeedMode::PerMin,
-            990 if d == DialectId::Puma => st.feed_mode = FeedMode::PerRev,
-            960 => st.css = true,
-            970 => st.css = false,
-            700 if d == DialectId::Hurco => st.metric = false,
-            70 if d == DialectId::Hurco => st.diameter = false,
-            80 if d == DialectId::Hurco => st.diameter = true,
-            _ => {}
+    /// Puts a modal code in force: its group's state, the work system it
+    /// selects, the mode event it makes (HX G61-G64, G10.3/G11.3,
+    /// G63.1/G63.2).
+    fn apply_modal(&mut self, g: &GCode) {
+        self.st.modal.set(g);
+        match g.means {
+            Means::Work(n) => self.st.work.select(work_offsets::WorkId::G5x(n as usize)),
+            m => self.mode_event(m),
         }
     }
 
-    fn mode_event(&mut self, c: u16) {
-        let m = match c {
-            610 => ModeChange::ExactStopMode(true),
-            620 => ModeChange::CornerOverride,
-            630 => ModeChange::TappingMode,
-            640 => ModeChange::CuttingMode,
-            103 => ModeChange::HighSpeed(true),
-            113 => ModeChange::HighSpeed(false),
-            631 if self.dialect.id == DialectId::Hx => ModeChange::Stitch(true),
-            632 if self.dialect.id == DialectId::Hx => ModeChange::Stitch(false),
+    /// The mode event of a modal code's meaning, if it makes one.
+    fn mode_event(&mut self, m: Means) {
+        use crate::dialect::meaning::CuttingMode;
+        let m = match m {
+            Means::CuttingMode(CuttingMode::ExactStop) => ModeChange::ExactStopMode(true),
+            Means::CuttingMode(CuttingMode::CornerOverride) => ModeChange::CornerOverride,
+            Means::CuttingMode(CuttingMode::Tapping) => ModeChange::TappingMode,
+            Means::CuttingMode(CuttingMode::Cutting) => ModeChange::CuttingMode,
+            Means::HighSpeed(on) => ModeChange::HighSpeed(on),
+            Means::Stitch(on) => ModeChange::Stitch(on),
             _ => return,
         };
         self.emit(Canon::Mode(m));
     }
-}
-
-/// G92 (HX, Hurco) / G50 (PUMA, G-code system A): coordinate setting.
-fn is_coordinate_setting(d: DialectId, code10: u16) -> bool {
-    matches!(
-        (d, code10),
-        (DialectId::Hx | DialectId::Hurco, 920) | (DialectId::Puma, 500)
-    )
 }
 
 fn ax_letter(a: Axis) -> u8 {

@@ -318,3 +318,68 @@ fn comment_inside_brackets() {
     // Unclosed: still an error, not a comment to the end of the block.
     assert!(parse_block(b"X[1 (OOPS]", &LexOptions::default(), &mut Block::default()).is_err());
 }
+
+/// Numbers read digit run by digit run agree with Rust's own decimal
+/// reading of the same text without its blanks (exact up to 15 digits:
+/// the mantissa and the power of ten are exact and the one division is
+/// correctly rounded), over leading zeros, zeros after the point, blanks
+/// between digits and every split of the digits around the point; the
+/// digit count and the limit follow the rule above (leading zeros of the
+/// integer part do not count).
+#[test]
+fn numbers_agree_with_a_decimal_reader() {
+    let o = LexOptions {
+        max_digits: 8,
+        ..LexOptions::default()
+    };
+    let mut b = Block::default();
+    let mut checked = 0;
+    for digits in [
+        "0",
+        "7",
+        "00",
+        "05",
+        "120",
+        "0007",
+        "1234567",
+        "00012345678",
+        "123456789",
+    ] {
+        for point in 0..=digits.len() + 1 {
+            for blank in [None, Some(1)] {
+                let mut text = String::new();
+                for (i, c) in digits.chars().enumerate() {
+                    if point == i {
+                        text.push('.');
+                    }
+                    if blank == Some(i) {
+                        text.push(' ');
+                    }
+                    text.push(c);
+                }
+                if point == digits.len() {
+                    text.push('.');
+                }
+                let plain: String = text.chars().filter(|c| *c != ' ').collect();
+                let int = plain.split('.').next().unwrap();
+                let frac = plain.split('.').nth(1).unwrap_or("");
+                let counted = int.trim_start_matches('0').len() + frac.len();
+                let r = parse_block(format!("X{text}").as_bytes(), &o, &mut b);
+                if counted > 8 {
+                    assert_eq!(r.unwrap_err().kind, LexErrorKind::TooManyDigits, "{text}");
+                } else {
+                    r.unwrap_or_else(|e| panic!("{text}: {e:?}"));
+                    let Val::Num(n) = b.words[0].val else {
+                        panic!("{text}")
+                    };
+                    let want: f64 = plain.parse().unwrap();
+                    assert_eq!(n.value, want, "{text}");
+                    assert_eq!(n.point, plain.contains('.'), "{text}");
+                    assert_eq!(n.digits as usize, digits.len(), "{text}");
+                }
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 100);
+}

@@ -11,7 +11,9 @@ use crate::dynamics::Dynamics;
 use crate::geom::{line_len, Geom};
 use crate::trap::Trap;
 
+mod lag_memo;
 mod resume;
+use lag_memo::LagMemo;
 pub use resume::Modes;
 
 /// Time totals by category, seconds.
@@ -208,6 +210,8 @@ pub struct Planner {
     lag: Pos,
     /// Position loop gain, 1/s (infinite: no servo lag).
     gain: f64,
+    /// [`lag_phase`] results of this gain, for phases that repeat.
+    memo: LagMemo,
     /// Sum of the queued segments' `len / vmax` (each a lower bound of
     /// its time): no stop can come sooner.
     q_tmin: f64,
@@ -299,6 +303,7 @@ impl Planner {
             ev_spent: 0.0,
             lag: [0.0; NAXES],
             gain,
+            memo: LagMemo::new(gain),
             q_tmin: 0.0,
             last_off: [0.0; 3],
             last_feed: 0.0,
@@ -402,7 +407,7 @@ impl Planner {
             (trap.vp, -trap.a, trap.td),
         ] {
             if dt > 0.0 {
-                let (e, inc) = lag_phase(self.gain, v0, a, dt);
+                let (e, inc) = self.memo.get(v0, a, dt);
                 for i in 0..NAXES {
                     self.lag[i] = self.lag[i] * e + u[i] * inc;
                 }
@@ -671,7 +676,8 @@ impl Planner {
         let p0 = self.pos;
         self.rapid_length += line_len(&p0, &to);
         let ovr = self.d.rapid_override;
-        let kind = if linear {
+        let lag = self.gain.is_finite();
+        let dur = if linear {
             let g = Geom::Line { p0, p1: to };
             let len = g.len();
             let u = g.tangent(0.0);
@@ -687,7 +693,17 @@ impl Planner {
             } else {
                 Trap::default()
             };
-            PieceKind::Move { geom: g, trap }
+            let dur = trap.time();
+            if lag && dur > 0.0 {
+                // Servo lag behind the positioning (from a settled start).
+                self.lag = [0.0; NAXES];
+                self.track_lag(&u, &trap);
+            }
+            if let Some(p) = self.pieces.as_mut() {
+                let kind = PieceKind::Move { geom: g, trap };
+                p.push_back(Piece { t0: self.now, kind });
+            }
+            dur
         } else {
             let mut traps = [Trap::default(); NAXES];
             for i in 0..NAXES {
@@ -702,43 +718,20 @@ impl Planner {
                     );
                 }
             }
-            PieceKind::Axes {
-                p0,
-                p1: to,
-                traps: Box::new(traps),
+            let dur = traps.iter().map(|t| t.time()).fold(0.0, f64::max);
+            if lag && dur > 0.0 {
+                self.lag_axes(&p0, &to, &traps, dur);
             }
+            if let Some(p) = self.pieces.as_mut() {
+                let kind = PieceKind::Axes {
+                    p0,
+                    p1: to,
+                    traps: Box::new(traps),
+                };
+                p.push_back(Piece { t0: self.now, kind });
+            }
+            dur
         };
-        let piece = Piece { t0: self.now, kind };
-        let dur = piece.duration();
-        if self.gain.is_finite() && dur > 0.0 {
-            // Servo lag behind the positioning (each from a settled start).
-            match &piece.kind {
-                PieceKind::Move { geom, trap } => {
-                    let u = geom.tangent(0.0);
-                    self.lag = [0.0; NAXES];
-                    self.track_lag(&u, trap);
-                }
-                PieceKind::Axes { p0, p1, traps } => {
-                    for i in 0..NAXES {
-                        let sign = if p1[i] >= p0[i] { 1.0 } else { -1.0 };
-                        let mut u = [0.0; NAXES];
-                        u[i] = sign;
-                        let keep = self.lag;
-                        self.lag = [0.0; NAXES];
-                        self.track_lag(&u, &traps[i]);
-                        // At rest until the slowest axis arrives.
-                        let (e, _) = lag_phase(self.gain, 0.0, 0.0, dur - traps[i].time());
-                        let li = self.lag[i] * e;
-                        self.lag = keep;
-                        self.lag[i] = li;
-                    }
-                }
-                PieceKind::Hold { .. } => {}
-            }
-        }
-        if let Some(p) = self.pieces.as_mut() {
-            p.push_back(piece);
-        }
         self.now += dur;
         self.pos = to;
         let drain = if dur > 0.0 {
@@ -749,6 +742,30 @@ impl Planner {
         self.hold(drain);
         self.time.rapid += dur + drain;
         self.done(self.now, dur + drain);
+    }
+
+    /// Servo lag behind a non-linear positioning of `dur` s: each axis
+    /// from a settled start along its own trapezoid, then at rest until
+    /// the slowest axis arrives. An axis that does not move ends with no
+    /// lag (what the loop below gives it, without its `exp_m1`).
+    fn lag_axes(&mut self, p0: &Pos, p1: &Pos, traps: &[Trap; NAXES], dur: f64) {
+        for i in 0..NAXES {
+            let ti = traps[i].time();
+            if ti == 0.0 {
+                self.lag[i] = 0.0;
+                continue;
+            }
+            let sign = if p1[i] >= p0[i] { 1.0 } else { -1.0 };
+            let mut u = [0.0; NAXES];
+            u[i] = sign;
+            let keep = self.lag;
+            self.lag = [0.0; NAXES];
+            self.track_lag(&u, &traps[i]);
+            let (e, _) = self.memo.get(0.0, 0.0, dur - ti);
+            let li = self.lag[i] * e;
+            self.lag = keep;
+            self.lag[i] = li;
+        }
     }
 
     /// Speed and acceleration limits of a path along `g`, mm/s and mm/s².

@@ -1,165 +1,396 @@
 //! The lathe's stock: the part is a solid of revolution, so it is held as
-//! its half section in the (Z, radius) plane, sampled in columns of width
-//! `dz` along Z. Each column holds the radius intervals where material
-//! is, exact in radius (f64) at the column's centre.
+//! its half section in the (Z, radius) plane, exactly: polygons (outer
+//! contours counter-clockwise, holes clockwise, with z as the first
+//! coordinate and r the second). Each move subtracts the convex region
+//! its insert sweeps with i_overlay's boolean difference.
+//!
+//! The section is cut into tiles of [`TILE`] mm along Z (8 mm: about an
+//! insert's length, so a short move rebuilds one or two), each its own set
+//! of polygons, so that a move only rebuilds the few tiles it reaches.
+//! All coordinates live on one grid of `2^-k` mm (k chosen from the
+//! stock's radius so that a tile fits i_overlay's 29-bit integer range;
+//! 6e-8 mm for a 60 mm bar): a tile's polygons come back from each
+//! boolean unchanged where the move did not touch them, and the tiles'
+//! common edges meet exactly when the outline is merged.
 
 use std::f64::consts::PI;
 
+use i_overlay::core::fill_rule::FillRule;
+use i_overlay::core::overlay::ShapeType;
+use i_overlay::core::overlay_rule::OverlayRule;
+use i_overlay::float::overlay::FloatOverlay;
+use i_overlay::i_float::adapter::FloatPointAdapter;
+use i_overlay::i_float::float::rect::FloatRect;
+
 use crate::hull::{Hull, Pt};
 
-/// Most columns (8 million: 0.001 mm over 8 m).
-pub const MAX_COLUMNS: usize = 8 << 20;
-/// Radius changes below this are not material (mm).
-pub const EPS: f64 = 1e-7;
+/// Width of a tile along Z, mm (a multiple of every grid step; 2, 4, 8
+/// and 16 measured, 8 the fastest on short and whole-pass moves alike).
+pub const TILE: f64 = 8.0;
+/// A move that changes a tile's polygons but its volume by no more than
+/// this does not touch it, mm³ (a move that does not reach the material
+/// leaves the polygons as they were, exactly; one that only grazes them
+/// may merge collinear edges).
+pub const VOL_EPS: f64 = 1e-12;
+/// Margin of a tile's integer frame beyond its own Z range and the
+/// stock's radius, mm.
+const MARGIN: f64 = 1.0;
+
+/// A contour: closed, its last point joined to its first.
+pub type Contour = Vec<[f64; 2]>;
+/// Shapes: each an outer contour followed by its holes.
+pub type Shapes = Vec<Vec<Contour>>;
+
+/// One tile: the material with z in [za, za + TILE].
+#[derive(Clone, Debug, Default)]
+struct Tile {
+    za: f64,
+    shapes: Shapes,
+    /// Least and greatest radius of the material (0, 0 when empty).
+    lo: f64,
+    hi: f64,
+    vol: f64,
+}
+
+impl Tile {
+    fn set(&mut self, shapes: Shapes, vol: f64) {
+        let rs = || shapes.iter().flatten().flatten().map(|p| p[1]);
+        self.lo = rs().fold(f64::INFINITY, f64::min);
+        self.hi = rs().fold(f64::NEG_INFINITY, f64::max);
+        if shapes.is_empty() {
+            (self.lo, self.hi) = (0.0, 0.0);
+        }
+        self.shapes = shapes;
+        self.vol = vol;
+    }
+}
 
 /// The half section.
 #[derive(Clone, Debug)]
 pub struct Section {
-    /// Z of the left edge of column 0 and the column width.
-    pub z0: f64,
-    pub dz: f64,
-    /// Material intervals (r_in, r_out) per column, sorted, disjoint.
-    pub cols: Vec<Vec<(f64, f64)>>,
-}
-
-/// What one sweep did: volume removed and, for a check, volume met.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Touch {
-    pub volume: f64,
+    z0: f64,
+    /// Half height of every tile's integer frame in r (centred on the
+    /// axis), mm.
+    rr: f64,
+    /// Grid: `scale` integer steps per mm, a power of two.
+    scale: f64,
+    tiles: Vec<Tile>,
 }
 
 impl Section {
     /// A bar or tube from `z_end` to `z_face`, radii `r_in`..`r_out`.
-    pub fn new(
-        r_in: f64,
-        r_out: f64,
-        z_end: f64,
-        z_face: f64,
-        res: f64,
-    ) -> Result<Section, String> {
-        let len = z_face - z_end;
-        let n = (len / res).ceil();
-        if !n.is_finite() || n > MAX_COLUMNS as f64 {
-            return Err(format!(
-                "--sim-res {res}: {n:.0} columns over {len} mm, more than {MAX_COLUMNS}"
-            ));
-        }
-        let n = (n as usize).max(1);
+    pub fn new(r_in: f64, r_out: f64, z_end: f64, z_face: f64) -> Result<Section, String> {
+        let rr = (r_out + 2.0 * MARGIN).max(TILE / 2.0 + MARGIN);
+        let scale = (2f64.powi(29) / rr).log2().floor().exp2();
+        let g = |v: f64| (v * scale).round() / scale;
+        let (r_in, r_out, z_end, z_face) = (g(r_in), g(r_out), g(z_end), g(z_face));
+        let z0 = (z_end / TILE).floor() * TILE;
+        let n = ((z_face - z0) / TILE).ceil().max(1.0) as usize;
+        let tiles = (0..n)
+            .map(|k| {
+                let za = z0 + k as f64 * TILE;
+                let (a, b) = (za.max(z_end), (za + TILE).min(z_face));
+                let mut t = Tile {
+                    za,
+                    ..Tile::default()
+                };
+                if b > a {
+                    let c = vec![[a, r_in], [b, r_in], [b, r_out], [a, r_out]];
+                    let shapes = vec![vec![c]];
+                    let v = volume(&shapes);
+                    t.set(shapes, v);
+                }
+                t
+            })
+            .collect();
         Ok(Section {
-            z0: z_end,
-            dz: len / n as f64,
-            cols: vec![vec![(r_in, r_out)]; n],
+            z0,
+            rr,
+            scale,
+            tiles,
         })
     }
 
-    /// Centre z of column k.
-    pub fn zc(&self, k: usize) -> f64 {
-        self.z0 + (k as f64 + 0.5) * self.dz
+    /// The grid step of the coordinates, mm.
+    pub fn grid(&self) -> f64 {
+        1.0 / self.scale
     }
 
-    /// Volume of revolution of the material, mm³.
+    /// Least and greatest z the section may hold.
+    pub fn z_range(&self) -> (f64, f64) {
+        (self.z0, self.z0 + self.tiles.len() as f64 * TILE)
+    }
+
+    /// Volume of revolution of the material, mm³ (Pappus, exact for the
+    /// polygons).
     pub fn volume(&self) -> f64 {
-        let s: f64 = self
-            .cols
+        self.tiles.iter().map(|t| t.vol).sum()
+    }
+
+    /// Number of polygon vertices held (the model's memory is about 16
+    /// bytes each).
+    pub fn vertices(&self) -> usize {
+        self.tiles
             .iter()
-            .flatten()
-            .map(|&(a, b)| b * b - a * a)
-            .sum();
-        PI * s * self.dz
+            .flat_map(|t| t.shapes.iter().flatten())
+            .map(Vec::len)
+            .sum()
     }
 
-    /// Columns whose centres lie in [a, b].
-    fn range(&self, a: f64, b: f64) -> Option<(usize, usize)> {
-        let k0 = ((a - self.z0) / self.dz - 0.5).ceil().max(0.0);
-        let k1 = ((b - self.z0) / self.dz - 0.5)
-            .floor()
-            .min(self.cols.len() as f64 - 1.0);
-        (k0 <= k1).then_some((k0 as usize, k1 as usize))
-    }
-
-    /// Removes (when `write`) the material inside the convex hull `h`,
-    /// mirrored about the axis where it reaches below r = 0, and returns
-    /// the volume it holds.
+    /// Removes (when `write`) the material inside the convex hull `h` and
+    /// its mirror about the axis (a sweep that reaches below r = 0 cuts
+    /// the other side of the part too), and returns the volume it holds.
     pub fn sweep(&mut self, h: &Hull, write: bool) -> f64 {
-        let Some((za, zb)) = h.z_range() else {
+        let poly = ccw(h);
+        self.sweep_regions(std::slice::from_ref(&poly), write)
+    }
+
+    /// [`Self::sweep`] for any region: closed contours, counter-clockwise
+    /// ones filled and clockwise ones holes (as i_overlay returns them).
+    pub fn sweep_regions(&mut self, region: &[Contour], write: bool) -> f64 {
+        let pts = || region.iter().flatten();
+        let za = pts().map(|p| p[0]).fold(f64::INFINITY, f64::min);
+        let zb = pts().map(|p| p[0]).fold(f64::NEG_INFINITY, f64::max);
+        if za > zb {
             return 0.0;
-        };
-        let Some((k0, k1)) = self.range(za, zb) else {
-            return 0.0;
-        };
-        let mut vol = 0.0;
-        let z0 = self.z0 + 0.5 * self.dz;
-        let cols = &mut self.cols;
-        h.slices(z0, self.dz, k0, k1, |k, lo, hi| {
-            let (lo, hi) = fold(lo, hi);
-            if hi - lo > EPS {
-                vol += subtract(&mut cols[k], lo, hi, write);
-            }
-        });
-        PI * vol * self.dz
-    }
-
-    /// The half section's boundary as closed loops of (z, r) points, for
-    /// the STL and the picture: each column's intervals as rectangles,
-    /// merged into outlines.
-    pub fn intervals(&self, k: usize) -> &[(f64, f64)] {
-        &self.cols[k]
-    }
-}
-
-/// The interval in r ≥ 0 covered by [lo, hi] and its mirror.
-fn fold(lo: f64, hi: f64) -> (f64, f64) {
-    if lo >= 0.0 {
-        (lo, hi)
-    } else if hi <= 0.0 {
-        (-hi, -lo)
-    } else {
-        (0.0, hi.max(-lo))
-    }
-}
-
-/// Removes [lo, hi] from the intervals of one column (when `write`);
-/// returns the sum of r² differences removed.
-fn subtract(col: &mut Vec<(f64, f64)>, lo: f64, hi: f64, write: bool) -> f64 {
-    let mut removed = 0.0;
-    let mut changed = false;
-    for &(a, b) in col.iter() {
-        let (x, y) = (a.max(lo), b.min(hi));
-        if y - x > EPS {
-            removed += y * y - x * x;
-            changed = true;
         }
-    }
-    if write && changed {
-        // In place: trim, drop or split the intervals the cut meets.
-        let mut i = 0;
-        while i < col.len() {
-            let (a, b) = col[i];
-            if b <= lo || a >= hi {
-                i += 1;
+        let k0 = ((za - self.z0) / TILE).floor().max(0.0) as usize;
+        let k1 = ((zb - self.z0) / TILE).floor();
+        if k1 < 0.0 || k0 >= self.tiles.len() {
+            return 0.0;
+        }
+        let k1 = (k1 as usize).min(self.tiles.len() - 1);
+        let mut total = 0.0;
+        let half_step = 0.5 / self.scale;
+        let rmax = self.rr - MARGIN;
+        let below_axis = pts().any(|p| p[1] < 0.0);
+        let signs: &[f64] = if below_axis { &[1.0, -1.0] } else { &[1.0] };
+        let mut clips: Vec<Contour> = Vec::new();
+        let mut used;
+        for k in k0..=k1 {
+            let t = &self.tiles[k];
+            if t.shapes.is_empty() {
                 continue;
             }
-            match (a < lo - EPS, b > hi + EPS) {
-                (true, true) => {
-                    col[i] = (a, lo);
-                    col.insert(i + 1, (hi, b));
-                    i += 2;
+            let (ta, tb) = (t.za, t.za + TILE);
+            used = 0;
+            let mut reach = (f64::INFINITY, f64::NEG_INFINITY);
+            for poly in region {
+                for &sign in signs {
+                    if used == clips.len() {
+                        clips.push(Vec::new());
+                    }
+                    let c = &mut clips[used];
+                    clip_box(poly, sign, (ta, tb), (0.0, rmax), c);
+                    for p in c.iter() {
+                        reach = (reach.0.min(p[1]), reach.1.max(p[1]));
+                    }
+                    if c.len() >= 3 {
+                        used += 1;
+                    }
                 }
-                (true, false) => {
-                    col[i].1 = lo;
-                    i += 1;
-                }
-                (false, true) => {
-                    col[i].0 = hi;
-                    i += 1;
-                }
-                (false, false) => {
-                    col.remove(i);
+            }
+            let clips = &clips[..used];
+            // Neither the region nor its mirror reaches the tile's material.
+            if clips.is_empty() || reach.0 > t.hi - half_step || reach.1 < t.lo + half_step {
+                continue;
+            }
+            let shapes = self.difference(t, clips);
+            if shapes == t.shapes {
+                continue;
+            }
+            let v = volume(&shapes);
+            let removed = t.vol - v;
+            if removed > VOL_EPS {
+                total += removed;
+                if write {
+                    self.tiles[k].set(shapes, v);
                 }
             }
         }
+        total
     }
-    removed
+
+    /// The tile's integer frame.
+    fn adapter<I: i_overlay::core::integer::OverlayInt>(
+        &self,
+        za: f64,
+        zb: f64,
+    ) -> FloatPointAdapter<[f64; 2], I> {
+        let rect = FloatRect::new(za - MARGIN, zb + MARGIN, -self.rr, self.rr)
+            .expect("a tile's frame is finite and ordered");
+        FloatPointAdapter::with_scale(rect, self.scale)
+    }
+
+    fn difference(&self, t: &Tile, clips: &[Contour]) -> Shapes {
+        let n: usize = t.shapes.iter().flatten().map(Vec::len).sum::<usize>()
+            + clips.iter().map(Vec::len).sum::<usize>();
+        let mut ov = FloatOverlay::<[f64; 2]>::with_adapter(self.adapter(t.za, t.za + TILE), n);
+        for c in t.shapes.iter().flatten() {
+            ov = ov.unsafe_add_contour(c, ShapeType::Subject);
+        }
+        for c in clips {
+            ov = ov.unsafe_add_contour(c, ShapeType::Clip);
+        }
+        ov.overlay(OverlayRule::Difference, FillRule::NonZero)
+    }
+
+    /// The radius intervals of material on the line z = `z`, sorted.
+    pub fn intervals_at(&self, z: f64) -> Vec<(f64, f64)> {
+        let k = ((z - self.z0) / TILE).floor();
+        if k < 0.0 || k as usize >= self.tiles.len() {
+            return Vec::new();
+        }
+        let mut rs = Vec::new();
+        for c in self.tiles[k as usize].shapes.iter().flatten() {
+            crossings(c, z, &mut rs);
+        }
+        rs.sort_by(f64::total_cmp);
+        rs.chunks_exact(2).map(|w| (w[0], w[1])).collect()
+    }
+
+    /// The whole section's outline: the tiles merged (outer contours
+    /// counter-clockwise, holes clockwise, so the material is on the left
+    /// of every edge).
+    pub fn outline(&self) -> Vec<Contour> {
+        let (za, zb) = self.z_range();
+        let n = self.vertices();
+        let mut ov = FloatOverlay::<[f64; 2], i64>::with_adapter(self.adapter(za, zb), n);
+        for c in self.tiles.iter().flat_map(|t| t.shapes.iter().flatten()) {
+            ov = ov.unsafe_add_contour(c, ShapeType::Subject);
+        }
+        ov.overlay(OverlayRule::Subject, FillRule::NonZero)
+            .into_iter()
+            .flatten()
+            .collect()
+    }
+}
+
+/// A convex hull as one counter-clockwise contour.
+pub fn ccw(h: &Hull) -> Contour {
+    let mut p: Contour = h.lower.iter().map(|q| [q.0, q.1]).collect();
+    let n = h.upper.len();
+    if n >= 2 {
+        p.extend(h.upper[1..n - 1].iter().rev().map(|q| [q.0, q.1]));
+    }
+    p
+}
+
+/// The r where the closed contour `c` crosses z (edges half open in z,
+/// so a vertex on the line counts once).
+fn crossings(c: &[[f64; 2]], z: f64, out: &mut Vec<f64>) {
+    for (i, p) in c.iter().enumerate() {
+        let q = c[(i + 1) % c.len()];
+        if (p[0] <= z) != (q[0] <= z) {
+            let t = (z - p[0]) / (q[0] - p[0]);
+            out.push(p[1] + t * (q[1] - p[1]));
+        }
+    }
+}
+
+/// Volume of revolution about r = 0 of shapes in the (z, r) plane,
+/// `2π ∬ r dA` by Green's theorem: `-π/3 Σ (z₂ - z₁)(r₁² + r₁r₂ + r₂²)`
+/// over the edges (outer contours counter-clockwise).
+pub fn volume(shapes: &Shapes) -> f64 {
+    let mut s = 0.0;
+    for c in shapes.iter().flatten() {
+        for (i, p) in c.iter().enumerate() {
+            let q = c[(i + 1) % c.len()];
+            s += (q[0] - p[0]) * (p[1] * p[1] + p[1] * q[1] + q[1] * q[1]);
+        }
+    }
+    -PI / 3.0 * s
+}
+
+/// The contour `poly` (r multiplied by `sign`: -1 mirrors it about the
+/// axis, keeping its orientation) clipped to z in `zs` and r in `rs`,
+/// into `out` (Sutherland–Hodgman: the box is convex, the contour need
+/// not be).
+fn clip_box(poly: &[[f64; 2]], sign: f64, zs: (f64, f64), rs: (f64, f64), out: &mut Contour) {
+    out.clear();
+    if sign > 0.0 {
+        out.extend(poly.iter().copied());
+    } else {
+        out.extend(poly.iter().rev().map(|p| [p[0], -p[1]]));
+    }
+    let mut tmp = Vec::with_capacity(out.len() + 4);
+    for (axis, v, keep_above) in [
+        (0, zs.0, true),
+        (0, zs.1, false),
+        (1, rs.0, true),
+        (1, rs.1, false),
+    ] {
+        clip_half(out, axis, v, keep_above, &mut tmp);
+        std::mem::swap(out, &mut tmp);
+        if out.len() < 3 {
+            out.clear();
+            return;
+        }
+    }
+}
+
+/// Sutherland–Hodgman against one axis-parallel half plane.
+fn clip_half(src: &[[f64; 2]], axis: usize, v: f64, above: bool, dst: &mut Contour) {
+    dst.clear();
+    let inside = |p: &[f64; 2]| if above { p[axis] >= v } else { p[axis] <= v };
+    for (i, p) in src.iter().enumerate() {
+        let q = &src[(i + 1) % src.len()];
+        let (pi, qi) = (inside(p), inside(q));
+        if pi {
+            dst.push(*p);
+        }
+        if pi != qi {
+            let t = (v - p[axis]) / (q[axis] - p[axis]);
+            let mut x = [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])];
+            x[axis] = v;
+            dst.push(x);
+        }
+    }
+}
+
+/// The region a convex outline (counter-clockwise, `hull`) sweeps along
+/// the straight move p0 → p1, counter-clockwise, into `out`, in linear
+/// time: the chain facing the move's direction placed at p1, the chain
+/// facing back at p0, joined at the points extreme across the move.
+pub fn swept_ccw(hull: &[[f64; 2]], p0: Pt, p1: Pt, out: &mut Contour) {
+    out.clear();
+    let n = hull.len();
+    if n == 0 {
+        return;
+    }
+    let v = (p1.0 - p0.0, p1.1 - p0.1);
+    let side = |p: &[f64; 2]| v.0 * p[1] - v.1 * p[0];
+    let (mut hi, mut lo) = (0, 0);
+    for (i, p) in hull.iter().enumerate() {
+        if side(p) > side(&hull[hi]) {
+            hi = i;
+        }
+        if side(p) < side(&hull[lo]) {
+            lo = i;
+        }
+    }
+    let at = |i: usize, q: Pt| [hull[i][0] + q.0, hull[i][1] + q.1];
+    let mut i = hi;
+    loop {
+        out.push(at(i, p0));
+        if i == lo {
+            break;
+        }
+        i = (i + 1) % n;
+    }
+    if v.0 == 0.0 && v.1 == 0.0 {
+        out.clear();
+        out.extend(hull.iter().map(|p| [p[0] + p0.0, p[1] + p0.1]));
+        return;
+    }
+    let mut i = lo;
+    loop {
+        out.push(at(i, p1));
+        if i == hi {
+            break;
+        }
+        i = (i + 1) % n;
+    }
 }
 
 /// The convex hull of an outline placed at two points (the region a
@@ -176,20 +407,99 @@ pub fn swept(outline: &[Pt], p0: Pt, p1: Pt, scratch: &mut Vec<Pt>, out: &mut Hu
 mod tests {
     use super::*;
 
-    #[test]
-    fn subtracting_splits_and_trims_intervals() {
-        let mut c = vec![(0.0, 10.0)];
-        let r = subtract(&mut c, 4.0, 6.0, true);
-        assert_eq!(c, vec![(0.0, 4.0), (6.0, 10.0)]);
-        assert!((r - 20.0).abs() < 1e-12);
-        let r = subtract(&mut c, 3.0, 20.0, true);
-        assert_eq!(c, vec![(0.0, 3.0)]);
-        assert!((r - (16.0 - 9.0 + 100.0 - 36.0)).abs() < 1e-12);
+    fn hull(pts: &[Pt]) -> Hull {
+        let mut p = pts.to_vec();
+        let mut h = Hull::default();
+        Hull::of(&mut p, &mut h);
+        h
     }
 
     #[test]
-    fn a_rectangle_through_the_axis_is_mirrored() {
-        assert_eq!(fold(-2.0, 1.0), (0.0, 2.0));
-        assert_eq!(fold(-3.0, -1.0), (1.0, 3.0));
+    fn a_square_swept_along_a_diagonal_is_a_hexagon() {
+        // The unit square from (0, 0) to (2, 1): area 1 + |v × diagonal|
+        // = 1 + the parallelogram of v and the square's width across v.
+        let sq = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let mut out = Vec::new();
+        swept_ccw(&sq, (0.0, 0.0), (2.0, 1.0), &mut out);
+        let a: f64 = (0..out.len())
+            .map(|i| {
+                let (p, q) = (out[i], out[(i + 1) % out.len()]);
+                p[0] * q[1] - q[0] * p[1]
+            })
+            .sum::<f64>()
+            / 2.0;
+        // Width across v = (2, 1)/√5: the square's extent (1·1 + 1·2)/√5.
+        assert!((a - (1.0 + 3.0)).abs() < 1e-12, "{a} {out:?}");
+        let mut h = Hull::default();
+        let mut scratch = Vec::new();
+        swept(
+            &[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)],
+            (0.0, 0.0),
+            (2.0, 1.0),
+            &mut scratch,
+            &mut h,
+        );
+        let mut s = Section::new(0.0, 10.0, -20.0, 0.0).unwrap();
+        let mut t = s.clone();
+        let mut c = out.clone();
+        for p in c.iter_mut() {
+            p[0] -= 8.0;
+            p[1] += 8.0;
+        }
+        let mut hh = Hull::default();
+        let mut pts: Vec<Pt> = h
+            .lower
+            .iter()
+            .chain(&h.upper)
+            .map(|p| (p.0 - 8.0, p.1 + 8.0))
+            .collect();
+        Hull::of(&mut pts, &mut hh);
+        let (v1, v2) = (s.sweep_regions(&[c], true), t.sweep(&hh, true));
+        assert!((v1 - v2).abs() < 1e-9 && v1 > 0.0, "{v1} {v2}");
+    }
+
+    #[test]
+    fn pappus_volume_of_a_rectangle_and_a_triangle() {
+        // Rectangle z 0..10, r 2..5: π (25 - 4) 10.
+        let r = vec![vec![vec![[0.0, 2.0], [10.0, 2.0], [10.0, 5.0], [0.0, 5.0]]]];
+        assert!((volume(&r) - PI * 21.0 * 10.0).abs() < 1e-9);
+        // A cone: triangle (0,0) (h,0) (0,R) revolved: π R² h / 3.
+        let t = vec![vec![vec![[0.0, 0.0], [6.0, 0.0], [0.0, 3.0]]]];
+        assert!((volume(&t) - PI * 9.0 * 6.0 / 3.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_rectangle_through_the_axis_cuts_both_sides() {
+        // A bar r 10, z -20..0; a box z -5..-3, r -4..2 folds to r 0..4.
+        let mut s = Section::new(0.0, 10.0, -20.0, 0.0).unwrap();
+        let v = s.sweep(
+            &hull(&[(-5.0, -4.0), (-3.0, -4.0), (-3.0, 2.0), (-5.0, 2.0)]),
+            true,
+        );
+        assert!((v - PI * 16.0 * 2.0).abs() < 1e-6, "{v}");
+        assert_eq!(s.intervals_at(-4.0), vec![(4.0, 10.0)]);
+        assert_eq!(s.intervals_at(-6.0), vec![(0.0, 10.0)]);
+        assert!((s.volume() - PI * 100.0 * 20.0 + v).abs() < 1e-6);
+    }
+
+    #[test]
+    fn a_groove_across_a_tile_edge_merges_into_one_outline() {
+        // Tiles are 8 mm from z -24: a groove z -10..-6 r 6..11 spans the
+        // edge at z -8 and leaves one outline of 8 vertices.
+        let mut s = Section::new(0.0, 10.0, -20.0, 0.0).unwrap();
+        let v = s.sweep(
+            &hull(&[(-5.0, 6.0), (-1.0, 6.0), (-1.0, 11.0), (-5.0, 11.0)]),
+            true,
+        );
+        assert!((v - PI * (100.0 - 36.0) * 4.0).abs() < 1e-6, "{v}");
+        let o = s.outline();
+        assert_eq!(o.len(), 1, "{o:?}");
+        assert_eq!(o[0].len(), 8, "{o:?}");
+        // A second pass over the same region removes nothing.
+        let again = s.sweep(
+            &hull(&[(-5.0, 6.0), (-1.0, 6.0), (-1.0, 11.0), (-5.0, 11.0)]),
+            true,
+        );
+        assert_eq!(again, 0.0);
     }
 }

@@ -18,6 +18,7 @@
 
 pub mod envelope;
 pub mod events;
+pub mod holder;
 pub mod hull;
 pub mod lathe;
 pub mod lathe_tool;
@@ -29,6 +30,7 @@ pub mod stl;
 pub mod stock;
 pub mod tool;
 pub mod tool_file;
+pub mod trapezoids;
 pub mod zmap;
 
 pub use events::{EventKind, SimEvent, SimReport};

@@ -7,16 +7,15 @@
 //!   border blocks' heights, two triangles per quad, a vertical skirt
 //!   round the edge and a fan bottom. The piecewise-linear top encloses
 //!   exactly Σ height × area of the blocks, i.e. the remaining volume.
-//! - Lathe: the half section's outline (column centres joined by lines,
-//!   steps where the columns' intervals change), revolved in N facets with
-//!   N chosen for a chord error of at most 1 µm; radii are scaled by the
-//!   facet factor so that the faceted solid's volume is the round one's.
-//!   Between column centres joined by a line the volume differs from the
-//!   columns' by at most π dz (4 dz)² / 6 per column.
+//! - Lathe: the half section's polygons (merged across tiles) revolved
+//!   in N facets with N chosen for a chord error of at most 1 µm; radii
+//!   are scaled by the facet factor so that the faceted solid's volume is
+//!   the round one's, exactly (each cross-section is an N-gon of the
+//!   circle's area).
 
 use std::f64::consts::PI;
 
-use crate::lathe::Section;
+use crate::lathe::{Contour, Section};
 use crate::zmap::{ZMap, BLOCK};
 
 /// A triangle, counter-clockwise seen from outside.
@@ -110,106 +109,6 @@ pub fn mill(z: &ZMap, emit: &mut dyn FnMut(Tri)) {
     }
 }
 
-/// A point of the outline (z, r) and the outline's edges, each with the
-/// material on its left walking from the first point to the second.
-type Edge = ((f64, f64), (f64, f64));
-
-/// The half section's outline as directed edges.
-pub fn outline(s: &Section, out: &mut Vec<Edge>) {
-    out.clear();
-    let n = s.cols.len();
-    let edge_z = |k: usize| s.z0 + k as f64 * s.dz;
-    let empty: Vec<(f64, f64)> = Vec::new();
-    let mut k = 0;
-    while k < n {
-        // A run: columns whose intervals pair up and overlap.
-        let mut e = k;
-        while e + 1 < n && joins(&s.cols[e], &s.cols[e + 1], 4.0 * s.dz) {
-            e += 1;
-        }
-        let (zl, zr) = (edge_z(k), edge_z(e + 1));
-        for i in 0..s.cols[k].len() {
-            // Upper curve right to left (material below, on the left going -z).
-            let mut prev = (zr, s.cols[e][i].1);
-            for c in (k..=e).rev() {
-                let q = (s.zc(c), s.cols[c][i].1);
-                push_edge(out, prev, q);
-                prev = q;
-            }
-            push_edge(out, prev, (zl, s.cols[k][i].1));
-            let mut prev = (zl, s.cols[k][i].0);
-            for c in k..=e {
-                let q = (s.zc(c), s.cols[c][i].0);
-                push_edge(out, prev, q);
-                prev = q;
-            }
-            push_edge(out, prev, (zr, s.cols[e][i].0));
-        }
-        // The step at the run's right edge, against the next column.
-        let right = if e + 1 < n { &s.cols[e + 1] } else { &empty };
-        step(out, zr, &s.cols[e], right);
-        if k == 0 {
-            step(out, zl, &empty, &s.cols[0]);
-        }
-        k = e + 1;
-    }
-}
-
-fn push_edge(out: &mut Vec<Edge>, a: (f64, f64), b: (f64, f64)) {
-    if a != b {
-        out.push((a, b));
-    }
-}
-
-/// Whether the columns' intervals pair up one to one and change by at
-/// most `jump`: then the outline joins their centres by lines. Steeper
-/// changes are steps at the column edge, so that the outline's volume
-/// stays the columns' (a line across a step of Δr would lose π dz Δr² / 6).
-fn joins(a: &[(f64, f64)], b: &[(f64, f64)], jump: f64) -> bool {
-    a.len() == b.len()
-        && a.iter()
-            .zip(b)
-            .all(|(p, q)| (p.0 - q.0).abs() <= jump && (p.1 - q.1).abs() <= jump)
-}
-
-/// Faces at z between the material on the left (`l`) and on the right.
-fn step(out: &mut Vec<Edge>, z: f64, l: &[(f64, f64)], r: &[(f64, f64)]) {
-    let mut cuts: Vec<f64> = l.iter().chain(r).flat_map(|p| [p.0, p.1]).collect();
-    cuts.sort_by(f64::total_cmp);
-    cuts.dedup();
-    let inside = |s: &[(f64, f64)], m: f64| s.iter().any(|p| p.0 < m && m < p.1);
-    for w in cuts.windows(2) {
-        let m = 0.5 * (w[0] + w[1]);
-        match (inside(l, m), inside(r, m)) {
-            // Material on the left only: the face looks to +z; walking
-            // up in r has the material on the left.
-            (true, false) => out.push(((z, w[0]), (z, w[1]))),
-            (false, true) => out.push(((z, w[1]), (z, w[0]))),
-            _ => {}
-        }
-    }
-}
-
-/// Merges consecutive collinear edges (within 1e-9 mm).
-fn simplify(edges: &[Edge], out: &mut Vec<Edge>) {
-    out.clear();
-    for &(a, b) in edges {
-        if let Some(last) = out.last_mut() {
-            if last.1 == a {
-                let (p, q) = (last.0, b);
-                let cr = (a.0 - p.0) * (q.1 - p.1) - (a.1 - p.1) * (q.0 - p.0);
-                let len = (q.0 - p.0).hypot(q.1 - p.1);
-                let along = (a.0 - p.0) * (q.0 - p.0) + (a.1 - p.1) * (q.1 - p.1);
-                if len > 0.0 && (cr / len).abs() < 1e-9 && along > 0.0 {
-                    last.1 = q;
-                    continue;
-                }
-            }
-        }
-        out.push((a, b));
-    }
-}
-
 /// Facets round the axis for a chord error of [`REVOLVE_TOL`] at radius `r`.
 pub fn facets(r: f64) -> usize {
     if r <= REVOLVE_TOL {
@@ -222,17 +121,37 @@ pub fn facets(r: f64) -> usize {
 /// Triangles of the lathe part. The spindle axis is Z; the part lies in
 /// work coordinates (X, Y about the axis).
 pub fn lathe(s: &Section, emit: &mut dyn FnMut(Tri)) {
-    let mut raw = Vec::new();
-    outline(s, &mut raw);
-    let mut edges = Vec::new();
-    simplify(&raw, &mut edges);
+    revolve(&s.outline(), 0.0, 2.0 * PI, emit);
+}
+
+/// Edges of closed contours, each with the material on its left.
+fn edges(loops: &[Contour]) -> Vec<Edge> {
+    let mut out = Vec::new();
+    for c in loops {
+        for (i, p) in c.iter().enumerate() {
+            let q = c[(i + 1) % c.len()];
+            out.push(((p[0], p[1]), (q[0], q[1])));
+        }
+    }
+    out
+}
+
+/// A point (z, r) and a directed edge of the section.
+type Edge = ((f64, f64), (f64, f64));
+
+/// The surface swept by the section's edges turning about Z from angle
+/// `a0` to `a1` (radians; a full turn closes the solid).
+pub fn revolve(loops: &[Contour], a0: f64, a1: f64, emit: &mut dyn FnMut(Tri)) {
+    let edges = edges(loops);
     let rmax = edges.iter().map(|e| e.0 .1.max(e.1 .1)).fold(0.0, f64::max);
     let n = facets(rmax);
     // Facet factor: the N-gon of radius r has area (N/2) sin(2π/N) r².
     let f = (n as f64 / 2.0 * (2.0 * PI / n as f64).sin() / PI).sqrt();
-    let (cs, sn): (Vec<f64>, Vec<f64>) = (0..n)
+    // Facets of 2π/n from `a0`; a full turn reuses its first ring.
+    let m = (((a1 - a0) * n as f64 / (2.0 * PI)).round() as usize).clamp(1, n);
+    let (cs, sn): (Vec<f64>, Vec<f64>) = (0..=m)
         .map(|i| {
-            let a = 2.0 * PI * i as f64 / n as f64;
+            let a = a0 + 2.0 * PI * (i % n) as f64 / n as f64;
             (a.cos() / f, a.sin() / f)
         })
         .unzip();
@@ -240,20 +159,19 @@ pub fn lathe(s: &Section, emit: &mut dyn FnMut(Tri)) {
         if p.1 == 0.0 {
             return [0.0, 0.0, p.0 as f32];
         }
-        let i = i % n;
         [(p.1 * cs[i]) as f32, (p.1 * sn[i]) as f32, p.0 as f32]
     };
     for &(a, b) in &edges {
         if a.1 == 0.0 && b.1 == 0.0 {
             continue;
         }
-        for i in 0..n {
-            let (a0, a1, b0, b1) = (v(a, i), v(a, i + 1), v(b, i), v(b, i + 1));
+        for i in 0..m {
+            let (pa, qa, pb, qb) = (v(a, i), v(a, i + 1), v(b, i), v(b, i + 1));
             if a.1 != 0.0 {
-                emit([a0, b0, a1]);
+                emit([pa, pb, qa]);
             }
             if b.1 != 0.0 {
-                emit([a1, b0, b1]);
+                emit([qa, pb, qb]);
             }
         }
     }

@@ -4,8 +4,11 @@
 
 use std::io::{self, Write};
 
+use std::f64::consts::PI;
+
 use crate::mesh::{self, Tri};
 use crate::sim::{Model, Sim};
+use crate::trapezoids::trapezoids;
 
 /// An RGB picture with a depth buffer.
 pub struct Canvas {
@@ -18,6 +21,8 @@ pub struct Canvas {
 const BACKGROUND: [u8; 3] = [250, 250, 247];
 const STOCK: [f64; 3] = [150.0, 162.0, 178.0];
 const CUT: [f64; 3] = [214.0, 170.0, 92.0];
+/// The lathe picture's cut-away faces.
+const SECTION: [f64; 3] = [196.0, 96.0, 80.0];
 const MARK: [u8; 3] = [220, 20, 20];
 
 impl Canvas {
@@ -211,6 +216,11 @@ impl View {
 
     /// Draws a triangle shaded by its normal; `cut` picks the cut colour.
     pub fn shade(&self, c: &mut Canvas, t: &Tri, cut: bool) {
+        self.shade_as(c, t, if cut { CUT } else { STOCK });
+    }
+
+    /// Draws a triangle shaded by its normal in the colour `base`.
+    pub fn shade_as(&self, c: &mut Canvas, t: &Tri, base: [f64; 3]) {
         let p: Vec<[f64; 3]> = t
             .iter()
             .map(|v| [v[0] as f64, v[1] as f64, v[2] as f64])
@@ -230,7 +240,6 @@ impl View {
             self.toward[2] + 0.4 * self.up[2] - 0.3 * self.right[2],
         ]);
         let k = 0.3 + 0.7 * dot(n, light).abs();
-        let base = if cut { CUT } else { STOCK };
         let col = [
             (base[0] * k) as u8,
             (base[1] * k) as u8,
@@ -297,27 +306,26 @@ fn lathe(sim: &Sim) -> Canvas {
     };
     let (w, h) = (1600, 700);
     let mut c = Canvas::new(w, h);
-    let rmax = match sim.stock() {
-        crate::Stock::Turn { r_out, .. } => *r_out,
-        _ => 1.0,
+    let (rmax, r_in, za, zb) = match sim.stock() {
+        crate::Stock::Turn {
+            r_out,
+            r_in,
+            z_face,
+            z_end,
+        } => (*r_out, *r_in, *z_end, *z_face),
+        _ => (1.0, 0.0, 0.0, 1.0),
     };
-    let (za, zb) = (s.z0, s.z0 + s.dz * s.cols.len() as f64);
     // Left: the half section, Z to the right, radius up, in (40..760, 40..660).
     let sc = (720.0 / (zb - za)).min(620.0 / rmax);
     let sx = |z: f64| 40.0 + (z - za) * sc;
     let sy = |r: f64| 660.0 - r * sc;
-    let r_in = match sim.stock() {
-        crate::Stock::Turn { r_in, .. } => *r_in,
-        _ => 0.0,
-    };
     for px in 0..(((zb - za) * sc) as usize) {
         // The raw stock, light: what is not drawn over it was cut away.
         for py in (sy(rmax).round() as i64)..(sy(r_in).round() as i64) {
             c.put(40 + px as i64, py, [236, 226, 204]);
         }
         let z = za + (px as f64 + 0.5) / sc;
-        let k = (((z - s.z0) / s.dz) as usize).min(s.cols.len() - 1);
-        for &(a, b) in &s.cols[k] {
+        for (a, b) in s.intervals_at(z) {
             for py in (sy(b).round() as i64)..(sy(a).round() as i64) {
                 c.put(40 + px as i64, py, [120, 132, 150]);
             }
@@ -330,7 +338,8 @@ fn lathe(sim: &Sim) -> Canvas {
             c.put(40 + px, sy(0.0).round() as i64, [60, 60, 60]);
         }
     }
-    // Right: the part seen from three quarters, Z to the right.
+    // Right: the part seen from three quarters, Z to the right, with the
+    // quarter toward the eye (X > 0, Y > 0) cut away to show the section.
     let lo = [-rmax, -rmax, za];
     let hi = [rmax, rmax, zb];
     let v = View::fit(
@@ -340,7 +349,23 @@ fn lathe(sim: &Sim) -> Canvas {
         hi,
         (800.0, 0.0, 800.0, 700.0),
     );
-    mesh::lathe(s, &mut |t| v.shade(&mut c, &t, true));
+    let loops = s.outline();
+    mesh::revolve(&loops, PI / 2.0, 2.0 * PI, &mut |t| {
+        v.shade(&mut c, &t, true)
+    });
+    for t in trapezoids(&loops) {
+        for (cs, sn) in [(1.0, 0.0), (0.0, 1.0)] {
+            let p = |z: f64, r: f64| [(r * cs) as f32, (r * sn) as f32, z as f32];
+            let q = [
+                p(t.z.0, t.lo.0),
+                p(t.z.1, t.lo.1),
+                p(t.z.1, t.hi.1),
+                p(t.z.0, t.hi.0),
+            ];
+            v.shade_as(&mut c, &[q[0], q[1], q[2]], SECTION);
+            v.shade_as(&mut c, &[q[0], q[2], q[3]], SECTION);
+        }
+    }
     for e in &sim.report().events {
         if e.kind.is_collision() {
             c.mark(sx(e.at[2]), sy(e.at[0]), 10.0);

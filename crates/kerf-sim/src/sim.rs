@@ -7,8 +7,9 @@ use kerf_canon::{Canon, Event, Pos, SpindleDir, SrcRef};
 
 use crate::envelope::Sweep;
 use crate::events::{EventKind, SimEvent, SimReport};
+use crate::holder::holder_first;
 use crate::hull::{Hull, Pt};
-use crate::lathe::{swept, Section};
+use crate::lathe::{ccw, swept_ccw, Contour, Section};
 use crate::lathe_tool::cutting_outline;
 use crate::path::chords;
 use crate::stock::Stock;
@@ -19,12 +20,8 @@ use crate::zmap::ZMap;
 pub const MAX_EVENTS: usize = 1000;
 /// Radius of the flat end mill used for a tool whose D offset is 0, mm.
 pub const FALLBACK_RADIUS: f64 = 5.0;
-/// Default column width of the lathe model, mm.
-pub const LATHE_RES: f64 = 0.005;
 /// Chord tolerance of arcs on the lathe, mm.
 pub const ARC_TOL_LATHE: f64 = 0.5e-3;
-/// Travel between holder checks on the lathe, mm.
-const HOLDER_STEP: f64 = 0.5;
 /// Bisection steps locating a first contact (2^-30 of the move).
 const BISECT: usize = 30;
 
@@ -39,7 +36,11 @@ pub enum Model {
 /// The tool in use, with its derived geometry.
 enum Current {
     Mill(MillTool),
-    Lathe { outline: Vec<Pt>, holder: Vec<Pt> },
+    /// The outlines' convex hulls, counter-clockwise.
+    Lathe {
+        outline: Contour,
+        holder: Contour,
+    },
 }
 
 /// The simulation of one run.
@@ -58,8 +59,7 @@ pub struct Sim {
     t_prev: f64,
     chords: Vec<[f64; 3]>,
     undo: Vec<(u32, f32)>,
-    hull: Hull,
-    scratch: Vec<Pt>,
+    region: Contour,
     res: f64,
     rapid_rates: Option<[f64; 3]>,
 }
@@ -86,9 +86,10 @@ impl Sim {
                 z_face,
                 z_end,
             } => {
-                let s = Section::new(r_in, r_out, z_end, z_face, res.unwrap_or(LATHE_RES))?;
-                let res = s.dz;
-                (Model::Lathe(s), res)
+                // The section is exact; its resolution is the arcs' chord
+                // tolerance, whatever --sim-res says.
+                let s = Section::new(r_in, r_out, z_end, z_face)?;
+                (Model::Lathe(s), ARC_TOL_LATHE)
             }
         };
         Ok(Sim {
@@ -106,8 +107,7 @@ impl Sim {
             t_prev: 0.0,
             chords: Vec::new(),
             undo: Vec::new(),
-            hull: Hull::default(),
-            scratch: Vec::new(),
+            region: Vec::new(),
             res,
             rapid_rates: None,
         })
@@ -344,43 +344,20 @@ impl Sim {
         rapid: bool,
         t: (f64, f64),
     ) {
-        let has_holder = matches!(&self.current, Some((_, _, Current::Lathe { holder, .. })) if !holder.is_empty());
-        let len = dist(&p0, &p1);
-        let steps = if has_holder {
-            ((len / HOLDER_STEP).ceil() as usize).clamp(1, 100_000)
-        } else {
-            1
-        };
-        for i in 0..steps {
-            let (fa, fb) = (i as f64 / steps as f64, (i + 1) as f64 / steps as f64);
-            let (a, b) = (lerp(&p0, &p1, fa), lerp(&p0, &p1, fb));
-            let ts = (t.0 + (t.1 - t.0) * fa, t.0 + (t.1 - t.0) * fb);
-            self.lathe_step(src, tool_no, a, b, rapid, ts);
-        }
-    }
-
-    fn lathe_step(
-        &mut self,
-        src: SrcRef,
-        tool_no: u32,
-        p0: [f64; 3],
-        p1: [f64; 3],
-        rapid: bool,
-        t: (f64, f64),
-    ) {
         let (Model::Lathe(sec), Some((_, _, Current::Lathe { outline, holder }))) =
             (&mut self.model, &self.current)
         else {
             return;
         };
         let (a, b) = ((p0[2], p0[0]), (p1[2], p1[0]));
+        let at = |f: f64| (a.0 + (b.0 - a.0) * f, a.1 + (b.1 - a.1) * f);
         let mut found: Vec<(EventKind, f64, f64)> = Vec::new();
-        let (hull, scratch) = (&mut self.hull, &mut self.scratch);
-        let mut sweep_of = |sec: &mut Section, shape: &[Pt], f: f64, write: bool| {
-            let e = (a.0 + (b.0 - a.0) * f, a.1 + (b.1 - a.1) * f);
-            swept(shape, a, e, scratch, hull);
-            sec.sweep(hull, write)
+        let region = &mut self.region;
+        let mut sweep_of = |sec: &mut Section, shape: &[[f64; 2]], f: f64, write: bool| {
+            swept_ccw(shape, a, at(f), region);
+            sec.sweep_regions(std::slice::from_ref(region), write)
         };
+        // Every check is against the stock before the move.
         if rapid || !self.spindle_on {
             let v = sweep_of(sec, outline, 1.0, false);
             if v > 0.0 {
@@ -393,14 +370,24 @@ impl Sim {
                 found.push((kind, v, f));
             }
         }
-        self.removed += sweep_of(sec, outline, 1.0, true);
+        // The holder along the whole move: what it reaches before the
+        // insert has cut it (holder.rs).
+        let mut holder_hit = false;
         if !holder.is_empty() {
-            let v = sweep_of(sec, holder, 1.0, false);
+            let met = |sec: &mut Section, f: f64| {
+                sec.sweep_regions(&holder_first(&pts(outline), &pts(holder), a, at(f)), false)
+            };
+            let v = met(sec, 1.0);
             if v > 0.0 {
-                let f = first_contact(|f| sweep_of(sec, holder, f, false) > 0.0);
+                let f = first_contact(|f| met(sec, f) > 0.0);
                 found.push((EventKind::HolderCollision, v, f));
-                self.removed += sweep_of(sec, holder, 1.0, true);
+                holder_hit = true;
             }
+        }
+        self.removed += sweep_of(sec, outline, 1.0, true);
+        if holder_hit {
+            // The crash removes what the holder met.
+            self.removed += sweep_of(sec, holder, 1.0, true);
         }
         for (kind, vol, f) in found {
             let at = lerp(&p0, &p1, f);
@@ -427,10 +414,24 @@ impl Sim {
 }
 
 fn lathe_current(t: &LatheTool) -> Current {
+    let hull = |pts: &[Pt]| {
+        if pts.is_empty() {
+            return Vec::new();
+        }
+        let mut p = pts.to_vec();
+        let mut h = Hull::default();
+        Hull::of(&mut p, &mut h);
+        ccw(&h)
+    };
     Current::Lathe {
-        outline: cutting_outline(t),
-        holder: t.holder.clone(),
+        outline: hull(&cutting_outline(t)),
+        holder: hull(&t.holder),
     }
+}
+
+/// A contour as points.
+fn pts(c: &[[f64; 2]]) -> Vec<Pt> {
+    c.iter().map(|p| (p[0], p[1])).collect()
 }
 
 fn dist(a: &[f64; 3], b: &[f64; 3]) -> f64 {

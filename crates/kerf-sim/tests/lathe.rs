@@ -6,6 +6,7 @@ mod common;
 use std::f64::consts::PI;
 
 use common::Run;
+use kerf_canon::Plane;
 use kerf_sim::{parse_tools, EventKind, Model, ToolTable};
 
 /// A sharp 80° insert (tip 3, OD) as tool 1, a sharp boring insert
@@ -30,13 +31,12 @@ fn close(got: f64, want: f64, tol: f64) {
     assert!((got - want).abs() <= tol, "{got} vs {want} ± {tol}");
 }
 
-/// The material's outer radius at z (from the column there).
+/// The material's outer radius at z.
 fn outer(r: &Run, z: f64) -> f64 {
     let Model::Lathe(s) = r.sim.model() else {
         panic!()
     };
-    let k = ((z - s.z0) / s.dz).floor() as usize;
-    s.cols[k].last().map_or(0.0, |iv| iv.1)
+    s.intervals_at(z).last().map_or(0.0, |iv| iv.1)
 }
 
 #[test]
@@ -48,7 +48,8 @@ fn facing_a_tube_removes_pi_r2_minus_r2_times_the_depth() {
     let rep = r.sim.report();
     close(rep.removed_mm3, PI * (625.0 - 100.0) * 2.0, 1e-6);
     assert!(rep.events.is_empty(), "{:?}", rep.events);
-    assert_eq!(rep.resolution_mm, 0.005);
+    // The section is exact; the resolution is the arcs' chord tolerance.
+    assert_eq!(rep.resolution_mm, 0.0005);
 }
 
 #[test]
@@ -194,4 +195,92 @@ fn a_tool_without_geometry_is_its_offset_and_a_warning() {
     assert_eq!(rep.events[0].kind, EventKind::ToolUnknown);
     assert!(!rep.collided());
     close(rep.removed_mm3, PI * (625.0 - 400.0) * 30.0, 1e-6);
+}
+
+#[test]
+fn a_hemispherical_end_is_within_half_a_micrometre_and_its_pappus_volume() {
+    // A sharp insert with 30 mm edges (its body reaches the bar's corner,
+    // 20 (√2 - 1) = 8.3 mm from the sphere) turns a hemisphere R 20 centred
+    // on the axis at Z-20 from the pole (r 0, Z0) to the equator, on a
+    // bar r 20 with its face at Z0.
+    let tt = parse_tools("[tool.5]\nnose_radius=0\ntip=3\nedge_length=30\n", true).unwrap();
+    let mut r = Run::new("bar:40,100", tt, None).at(40.0, 0.0, 10.0);
+    r.tool(5, 5);
+    r.spindle(true);
+    r.lrapid(1, 0.0, 1.0);
+    r.lfeed(2, 0.0, 0.0);
+    r.arc(3, [20.0, 0.0, -20.0], [0.0, 0.0, -20.0], true, Plane::ZX, 0);
+    r.lfeed(4, 21.0, -20.0);
+    assert!(r.sim.report().events.is_empty());
+    // The profile's distance from the centre, every degree from the pole
+    // to the equator: the chords (0.5 µm) lie inside the sphere.
+    for deg in 1..90 {
+        let a = (deg as f64).to_radians();
+        let z = -20.0 + 20.0 * a.cos();
+        let d = (z + 20.0).hypot(outer(&r, z));
+        assert!(
+            (20.0 - 0.5e-3 - 1e-6..=20.0 + 1e-6).contains(&d),
+            "{deg}°: {d}"
+        );
+    }
+    close(outer(&r, -20.5), 20.0, 1e-9);
+    // Pappus: the hemisphere 2/3 π R³ and the 80 mm of bar below it; the
+    // chords take at most 0.5 µm off its 31.4 mm arc at radii up to 20.
+    let want = 2.0 / 3.0 * PI * 8000.0 + PI * 400.0 * 80.0;
+    let chords = 0.5e-3 * (PI * 10.0) * 2.0 * PI * 20.0;
+    let got = r.sim.report().remaining_mm3;
+    assert!(
+        (want - chords..=want).contains(&got),
+        "{got} vs {want} - {chords}"
+    );
+}
+
+#[test]
+fn a_holder_just_ahead_of_the_insert_is_caught_along_the_whole_move() {
+    // A holder block 0.05-0.3 mm ahead (-Z) of a sharp insert's tip, r
+    // 0.2-3 above it: on an OD pass at r 24 along -Z it ploughs the bar
+    // (r 25, face Z0) before the insert cuts there. The contact: its
+    // front reaches the face when the tip is at Z0.3, 1.7 of the move's
+    // 12 mm; it meets z -10.3..0, r 24.2..25 (the insert's sweep ahead
+    // of its start counts: the holder gets there first).
+    let tt = parse_tools(
+        "[tool.1]\nnose_radius=0\ntip=3\n\
+         holder=[[-0.3,0.2],[-0.05,0.2],[-0.05,3],[-0.3,3]]\n",
+        true,
+    )
+    .unwrap();
+    let mut r = Run::new("bar:50,100", tt, None).at(40.0, 0.0, 10.0);
+    r.tool(1, 1);
+    r.spindle(true);
+    r.lrapid(1, 24.0, 2.0);
+    r.lfeed(2, 24.0, -10.0);
+    let rep = r.sim.report();
+    assert_eq!(rep.events.len(), 1, "{:?}", rep.events);
+    let e = &rep.events[0];
+    assert_eq!((e.kind, e.line), (EventKind::HolderCollision, 2));
+    close(e.at[2], 0.3, 1e-6);
+    close(e.at[0], 24.0, 1e-9);
+    close(e.volume_mm3, PI * (625.0 - 24.2 * 24.2) * 10.3, 1e-3);
+    // The block on the tip's +Z side instead, plunged at Z-10 and then
+    // run along +Z: on every line of either move the insert's front is
+    // ahead of the block's (the insert's edges at 5° and 85° reach past
+    // it: at 0.2 above the tip the 85° edge is 0.017 from it in z and the
+    // 5° edge 2.3 beyond it), so the block only passes through the
+    // insert's own cut: no event, and the insert's volume alone.
+    let tt = parse_tools(
+        "[tool.1]\nnose_radius=0\ntip=3\n\
+         holder=[[0.05,0.2],[0.3,0.2],[0.3,3],[0.05,3]]\n",
+        true,
+    )
+    .unwrap();
+    let mut r = Run::new("bar:50,100", tt, None).at(40.0, 0.0, 10.0);
+    r.tool(1, 1);
+    r.spindle(true);
+    r.lrapid(1, 26.0, -10.0);
+    r.lfeed(2, 24.0, -10.0);
+    r.lfeed(3, 24.0, 2.0);
+    let rep = r.sim.report();
+    assert!(rep.events.is_empty(), "{:?}", rep.events);
+    // The plunge's sharp tip leaves r 24 from Z-10 on.
+    close(rep.removed_mm3, PI * (625.0 - 576.0) * 10.0, 1e-3);
 }

@@ -16,6 +16,43 @@ use super::*;
 /// Table 1 also names G58, G201 and G202, which 002 never defines; they are
 /// not in the table (see docs/dialects.md), nor are G85-G89, which 002
 /// mentions only as "G81-G89 drill cycles".
+/// A table row with its meaning ([`means`]).
+const fn g(code10: u16, group: u8, default: bool, name: &'static str, support: Support) -> GCode {
+    super::g(code10, group, default, name, support, means(code10, group))
+}
+
+/// What a Hurco modal code means (002); a code without one is a
+/// compile-time error in [`GCODES`].
+const fn means(code10: u16, group: u8) -> Means {
+    use super::meaning::*;
+    if group == 0 {
+        return Means::OneShot(match code10 {
+            380 => OneShot::Probe,
+            590 => OneShot::CancelWorkShift,
+            780 => OneShot::ThreadCycle,
+            920 => OneShot::CoordinateSetting,
+            c => match common_one_shot(c) {
+                Some(o) => o,
+                None => panic!("Hurco one-shot G code without a meaning"),
+            },
+        });
+    }
+    if let Some(m) = common(code10) {
+        return m;
+    }
+    match code10 {
+        70 => Means::Diameter(false),
+        80 => Means::Diameter(true),
+        330 => Means::Motion(MotionMode::ThreadKI),
+        700 => Means::Units(Units::Inch),
+        800 => Means::Cycle(false),
+        730 | 740 | 810..=840 => Means::Cycle(true),
+        980 => Means::CycleReturn(CycleReturn::Initial),
+        990 => Means::CycleReturn(CycleReturn::RPoint),
+        _ => panic!("Hurco modal G code without a meaning"),
+    }
+}
+
 #[rustfmt::skip]
 pub static GCODES: &[GCode] = &[
     g(0, 1, true, "linear motion at rapid", Yes),
@@ -185,4 +222,29 @@ pub static DIALECT: Dialect = Dialect {
     uvw_incremental: false,
     hurco_syntax: true,
     order: super::HURCO_TABLE_1,
+    caps: Caps {
+        bracket_nesting: 5,
+        power_on_params: false,
+        g53_checks: true,
+        comma_corners: false,
+        frame_codes: false,
+        rotary_interp: false,
+        max_loop_label: 3,
+        sub_nesting: 4,
+        m98_q_m99_l: false,
+        dwell_revs_param: false,
+        word_ranges: true,
+        dwell_is_f: true,
+        css_radius_word: true,
+        linear_rapid: true,
+        stops_stop_spindle: true,
+        max_m_per_block: crate::words::MAX_CODES,
+        m48_feed_override: true,
+        part_zero_is_e1: true,
+        gcode_system_b: false,
+        short_r_half_circle: false,
+        direct_drawing: false,
+        hx_variables: false,
+        restricted_words: false,
+    },
 };

@@ -14,6 +14,64 @@ use super::*;
 /// two exceptions recorded in docs/dialects.md: G31-G31.4 (printed 23, a
 /// group §3.2 counts as non-modal together with group 0) are one-shot here,
 /// and G63.1/G63.2 (§15.6, absent from §3.1) get kerf's group 24.
+/// A table row with its meaning ([`means`]).
+const fn g(code10: u16, group: u8, default: bool, name: &'static str, support: Support) -> GCode {
+    super::g(code10, group, default, name, support, means(code10, group))
+}
+
+/// What an HX modal code means (000 §3.1); a code without one is a
+/// compile-time error in [`GCODES`].
+const fn means(code10: u16, group: u8) -> Means {
+    use super::meaning::*;
+    if group == 0 {
+        return Means::OneShot(match code10 {
+            100 | 520 => OneShot::Frame,
+            310..=314 | 370..=374 => OneShot::Skip,
+            390 => OneShot::CompCorner,
+            450 | 460 | 470 | 480 => OneShot::ToolOffset,
+            600 => OneShot::SingleDirection,
+            920 => OneShot::CoordinateSetting,
+            c => match common_one_shot(c) {
+                Some(o) => o,
+                None => panic!("HX one-shot G code without a meaning"),
+            },
+        });
+    }
+    if let Some(m) = common(code10) {
+        return m;
+    }
+    match code10 {
+        103 => Means::HighSpeed(true),
+        113 => Means::HighSpeed(false),
+        150 => Means::PolarCommand(false),
+        160 => Means::PolarCommand(true),
+        220 => Means::Stroke(true),
+        230 => Means::Stroke(false),
+        330 => Means::Motion(MotionMode::ThreadF),
+        430 => Means::LengthComp(LengthComp::Plus),
+        440 => Means::LengthComp(LengthComp::Minus),
+        490 => Means::LengthComp(LengthComp::Off),
+        500 => Means::Scaling(false),
+        510 => Means::Scaling(true),
+        610 => Means::CuttingMode(CuttingMode::ExactStop),
+        620 => Means::CuttingMode(CuttingMode::CornerOverride),
+        630 => Means::CuttingMode(CuttingMode::Tapping),
+        640 => Means::CuttingMode(CuttingMode::Cutting),
+        631 => Means::Stitch(true),
+        632 => Means::Stitch(false),
+        680 => Means::Rotation(true),
+        690 => Means::Rotation(false),
+        800 => Means::Cycle(false),
+        730 | 740 | 760 | 810..=890 => Means::Cycle(true),
+        980 => Means::CycleReturn(CycleReturn::Initial),
+        990 => Means::CycleReturn(CycleReturn::RPoint),
+        1070 => Means::Cylindrical(true),
+        1120 => Means::PolarInterp(true),
+        1130 => Means::PolarInterp(false),
+        _ => panic!("HX modal G code without a meaning"),
+    }
+}
+
 #[rustfmt::skip]
 pub static GCODES: &[GCode] = &[
     g(0, 1, true, "rapid traverse positioning", Yes), // default: PI 144 = 0
@@ -145,4 +203,29 @@ pub static DIALECT: Dialect = Dialect {
     uvw_incremental: false,
     hurco_syntax: false,
     order: super::FANUC_MILL,
+    caps: Caps {
+        bracket_nesting: 10,
+        power_on_params: true,
+        g53_checks: false,
+        comma_corners: true,
+        frame_codes: true,
+        rotary_interp: true,
+        max_loop_label: 9999,
+        sub_nesting: 8,
+        m98_q_m99_l: true,
+        dwell_revs_param: true,
+        word_ranges: false,
+        dwell_is_f: false,
+        css_radius_word: false,
+        linear_rapid: false,
+        stops_stop_spindle: false,
+        max_m_per_block: 3,
+        m48_feed_override: false,
+        part_zero_is_e1: false,
+        gcode_system_b: false,
+        short_r_half_circle: false,
+        direct_drawing: false,
+        hx_variables: true,
+        restricted_words: false,
+    },
 };

@@ -20,6 +20,51 @@ const LATER_LATHE: Support =
 /// 001 either (001 is silent on work coordinate systems); they are the
 /// Fanuc 0-T/16T/18T standard codes real lathe programs start with
 /// (`G18 G21 G40 G80 G99`, `G54`), docs/dialects.md §3.
+/// A table row with its meaning ([`means`]).
+const fn g(code10: u16, group: u8, default: bool, name: &'static str, support: Support) -> GCode {
+    super::g(code10, group, default, name, support, means(code10, group))
+}
+
+/// What a PUMA modal code means (001); a code without one is a
+/// compile-time error in [`GCODES`]. G90/G92/G94 are group-01 cycles
+/// here, G98/G99 the feed mode; the system B G90/G91 are 900/901 shifted
+/// (interp/system_b.rs).
+const fn means(code10: u16, group: u8) -> Means {
+    use super::meaning::*;
+    if group == 0 {
+        return Means::OneShot(match code10 {
+            100 => OneShot::DataSetting,
+            310 => OneShot::Skip,
+            500 => OneShot::CoordinateSetting,
+            700..=760 => OneShot::Mrc,
+            c => match common_one_shot(c) {
+                Some(o) => o,
+                None => panic!("PUMA one-shot G code without a meaning"),
+            },
+        });
+    }
+    match code10 {
+        320 => return Means::Motion(MotionMode::ThreadLathe),
+        900 => return Means::Motion(MotionMode::TurnCycle),
+        920 => return Means::Motion(MotionMode::ThreadCycle),
+        940 => return Means::Motion(MotionMode::FaceCycle),
+        _ => {}
+    }
+    if let Some(m) = common(code10) {
+        return m;
+    }
+    match code10 {
+        220 => Means::Stroke(true),
+        230 => Means::Stroke(false),
+        800 => Means::Cycle(false),
+        9000 => Means::Distance(Distance::Absolute),
+        9010 => Means::Distance(Distance::Incremental),
+        980 => Means::FeedMode(FeedMode::PerMin),
+        990 => Means::FeedMode(FeedMode::PerRev),
+        _ => panic!("PUMA modal G code without a meaning"),
+    }
+}
+
 #[rustfmt::skip]
 pub static GCODES: &[GCode] = &[
     g(0, 1, true, "positioning (rapid feed)", Yes), // # in 001
@@ -187,4 +232,29 @@ pub static DIALECT: Dialect = Dialect {
     uvw_incremental: true,
     hurco_syntax: false,
     order: super::FANUC_LATHE,
+    caps: Caps {
+        bracket_nesting: 5,
+        power_on_params: false,
+        g53_checks: false,
+        comma_corners: false,
+        frame_codes: false,
+        rotary_interp: false,
+        max_loop_label: 3,
+        sub_nesting: 4,
+        m98_q_m99_l: false,
+        dwell_revs_param: false,
+        word_ranges: false,
+        dwell_is_f: false,
+        css_radius_word: false,
+        linear_rapid: false,
+        stops_stop_spindle: false,
+        max_m_per_block: 3,
+        m48_feed_override: false,
+        part_zero_is_e1: false,
+        gcode_system_b: true,
+        short_r_half_circle: true,
+        direct_drawing: true,
+        hx_variables: false,
+        restricted_words: true,
+    },
 };

@@ -7,7 +7,7 @@ impl Interp {
     // ---- numbers -------------------------------------------------------------
 
     pub(super) fn unit(&self) -> f64 {
-        if self.st.metric {
+        if self.st.modal.metric() {
             1.0
         } else {
             25.4
@@ -18,7 +18,11 @@ impl Interp {
     pub(super) fn linear(&self, w: WVal) -> f64 {
         let mut v = w.v;
         if !w.point && !self.profile.calculator_decimal {
-            v *= if self.st.metric { 0.001 } else { 0.0001 };
+            v *= if self.st.modal.metric() {
+                0.001
+            } else {
+                0.0001
+            };
         }
         v * self.unit()
     }
@@ -44,7 +48,7 @@ impl Interp {
     /// Range check of 002 Tables 2-3 for Hurco geometric words.
     #[inline]
     pub(super) fn check_range(&self, l: u8, w: WVal) -> R<()> {
-        if self.dialect.id != DialectId::Hurco {
+        if !self.dialect.caps.word_ranges {
             return Ok(());
         }
         self.check_range_hurco(l, w)
@@ -56,7 +60,7 @@ impl Interp {
         let scale = self.hurco_format_scale();
         let limit = match l {
             b'X' | b'Z' | b'I' | b'K' | b'R' | b'U' | b'W' | b'F' => {
-                if self.st.metric {
+                if self.st.modal.metric() {
                     21463.0 * scale
                 } else {
                     845.0 * scale
@@ -95,7 +99,7 @@ impl Interp {
     /// Table 2's thread lead range in mm/rev (G33 K/I, G78 F).
     pub(super) fn hurco_lead_range(&self) -> (f64, f64) {
         let optional = self.hurco_format_scale() < 1.0;
-        match (self.st.metric, optional) {
+        match (self.st.modal.metric(), optional) {
             (true, false) => (0.00001, 254.0),
             (true, true) => (0.000001, 24.0),
             (false, false) => (0.000001 * 25.4, 10.0 * 25.4),
@@ -106,7 +110,7 @@ impl Interp {
     // ---- F S T ---------------------------------------------------------------
 
     pub(super) fn f_word(&mut self, dwell: bool) -> R<()> {
-        if dwell && self.dialect.id == DialectId::Hurco {
+        if dwell && self.dialect.caps.dwell_is_f {
             return Ok(());
         }
         if let Some(f) = self.words.get(b'F') {
@@ -114,7 +118,7 @@ impl Interp {
             if f.v < 0.0 {
                 return Err(self.alarm(AlarmKind::OutOfRange, f.at, "negative feedrate"));
             }
-            let v = if self.st.feed_mode == FeedMode::Inverse {
+            let v = if self.st.modal.feed_mode.means == FeedMode::Inverse {
                 f.v
             } else {
                 f.v * self.unit()
@@ -240,17 +244,24 @@ impl Interp {
     /// The surface speed in m/min when constant surface speed is on.
     pub(super) fn css_speed(&self) -> Option<f64> {
         self.st
+            .modal
             .css
-            .then_some(self.st.s * if self.st.metric { 1.0 } else { 0.3048 })
+            .means
+            .then_some(self.st.s * if self.st.modal.metric() { 1.0 } else { 0.3048 })
     }
 
     /// Spindle rpm for the programmed S at the current position.
     pub(super) fn rpm(&self) -> f64 {
-        let mut rpm = if self.st.css {
+        let mut rpm = if self.st.modal.css.means {
             // Surface speed in m/min (ft/min in inch) at the current radius.
-            let vc = self.st.s * if self.st.metric { 1000.0 } else { 304.8 };
+            let vc = self.st.s
+                * if self.st.modal.metric() {
+                    1000.0
+                } else {
+                    304.8
+                };
             let r = match self.hurco.css_r {
-                Some(r) if self.dialect.id == DialectId::Hurco => r,
+                Some(r) if self.dialect.caps.css_radius_word => r,
                 _ => self.work_position()[0].abs(),
             }
             .max(1e-3);
@@ -268,7 +279,7 @@ impl Interp {
 
     pub(super) fn dwell(&mut self) -> R<()> {
         let w = &self.words;
-        let (secs, revs) = if self.dialect.id == DialectId::Hurco {
+        let (secs, revs) = if self.dialect.caps.dwell_is_f {
             // 002: "F is the only entry allowed in a G04 block".
             if let Some(x) = [b'X', b'Z', b'I', b'K', b'R', b'P', b'Q', b'A', b'H']
                 .iter()
@@ -289,7 +300,7 @@ impl Interp {
                         format!("G04 F{} out of range (0.0001-999.9999)", fmt_num(f.v)),
                     ))
                 }
-                Some(f) if self.st.feed_mode == FeedMode::PerRev => (0.0, f.v),
+                Some(f) if self.st.modal.feed_mode.means == FeedMode::PerRev => (0.0, f.v),
                 Some(f) => (f.v, 0.0),
                 None => {
                     return Err(self.alarm(
@@ -318,8 +329,8 @@ impl Interp {
         }
         // HX PI 120 = 1: in G95 the dwell counts spindle revolutions, in
         // the same units (000 §5.4, "(G95) PI 120 (#3120) 1").
-        let (secs, revs) = if self.dialect.id == DialectId::Hx
-            && self.st.feed_mode == FeedMode::PerRev
+        let (secs, revs) = if self.dialect.caps.dwell_revs_param
+            && self.st.modal.feed_mode.means == FeedMode::PerRev
             && self.profile.param("PI 120", 0.0) == 1.0
         {
             (0.0, secs)
@@ -373,7 +384,8 @@ impl Interp {
     /// the block is ignored, as Fanuc does (fanuc-semantics §6.2; 000
     /// §7.1.1 prints the format `G90 G53 X_Y_Z_`).
     pub(super) fn g53(&mut self) -> R<()> {
-        let incremental = !self.st.absolute || Axis::ALL.iter().any(|&ax| self.uvw(ax).is_some());
+        let incremental =
+            !self.st.modal.absolute() || Axis::ALL.iter().any(|&ax| self.uvw(ax).is_some());
         if incremental {
             return Ok(());
         }
@@ -400,7 +412,7 @@ impl Interp {
     }
 
     pub(super) fn linear_rapid(&self) -> bool {
-        self.dialect.id == DialectId::Hurco
+        self.dialect.caps.linear_rapid
     }
 
     pub(super) fn work_of(&self, mpos: &Pos) -> Pos {
@@ -419,7 +431,8 @@ impl Interp {
         } else {
             self.linear(w)
         };
-        if ax == Axis::X && self.profile.kind == MachineKind::Lathe && self.st.diameter {
+        if ax == Axis::X && self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means
+        {
             v /= 2.0;
         }
         v

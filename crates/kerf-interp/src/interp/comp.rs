@@ -22,9 +22,6 @@ use super::motion::Speed;
 use super::*;
 use crate::comp::{self, CompError, CornerOpt, Join, Piece, Seg, P};
 
-/// The modal group of G40/G41/G42 in all three dialects.
-pub(super) const COMP_GROUP: usize = 7;
-
 /// A move held until the next one is known.
 pub(crate) struct Held {
     /// The programmed path in the plane.
@@ -68,8 +65,8 @@ pub(super) struct HeldCorner {
 
 /// A move in the plane handed to [`Interp::comp_path`].
 pub(super) struct CompPath {
-    /// Motion mode ×10 (0, 10, 20, 30).
-    pub(super) mode: u16,
+    /// Motion mode: G00-G03.
+    pub(super) mode: MotionMode,
     /// The path in the plane, transformed, and in program coordinates.
     pub(super) seg: Seg,
     pub(super) seg_p: Seg,
@@ -163,7 +160,7 @@ impl Interp {
             r: 0.0,
             side: 1.0,
             tip: (0.0, 0.0),
-            plane: self.st.plane,
+            plane: self.st.modal.plane.means,
             startup: false,
             vec: (0.0, 0.0),
             held: None,
@@ -253,7 +250,7 @@ impl Interp {
         setting: bool,
     ) -> R<bool> {
         self.comp_check_words(one_shot)?;
-        let mode = self.st.modal[COMP_GROUP];
+        let mode = self.st.modal.cutter_comp.code10;
         let g39 = one_shot.iter().find(|g| g.0 == 390).map(|g| g.1);
         if self.comp.is_none() {
             if mode == 400 {
@@ -268,7 +265,7 @@ impl Interp {
             }
             self.comp = Some(Box::new(self.comp_new()));
         }
-        let plane = self.st.plane;
+        let plane = self.st.modal.plane.means;
         let (on, cplane) = {
             let c = self.comp.as_deref().expect("set");
             (c.on, c.plane)
@@ -346,7 +343,7 @@ impl Interp {
             }
             self.comp = Some(Box::new(self.comp_new()));
         }
-        let plane = self.st.plane;
+        let plane = self.st.modal.plane.means;
         let (value, tip) = self.comp_value();
         let c = self.comp.as_deref_mut().expect("set");
         match mode {
@@ -409,13 +406,17 @@ impl Interp {
     ) -> R<()> {
         let cur = self.zx_full(seg.from);
         let tw = self.zx_full(seg.to);
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let (cur_t, tw_t) = (self.xf_point(&cur), self.xf_point(&tw));
         let (sp, ep) = ((cur[a1], cur[a2]), (tw[a1], tw[a2]));
         let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
         let (mode, seg_t, seg_p) = match seg.arc {
             None => (
-                if rapid { 0 } else { 10 },
+                if rapid {
+                    MotionMode::Rapid
+                } else {
+                    MotionMode::Linear
+                },
                 Seg::Line { a: s, b: e },
                 Seg::Line { a: sp, b: ep },
             ),
@@ -423,7 +424,11 @@ impl Interp {
                 let pc = (c.z, c.x);
                 let (_, _, ct, ccw_t) = self.transform_arc(cur, tw, pc, ccw, at)?;
                 (
-                    if ccw { 30 } else { 20 },
+                    if ccw {
+                        MotionMode::ArcCcw
+                    } else {
+                        MotionMode::ArcCw
+                    },
                     Seg::Arc {
                         a: s,
                         b: e,
@@ -460,16 +465,19 @@ impl Interp {
 
     /// The block's move in compensation (offset mode, or a held move or
     /// vector left over).
-    pub(super) fn comp_motion(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
+    pub(super) fn comp_motion(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<()> {
         if self.corner.is_some() {
             // A ,C/,R move held before the compensation started.
             return Err(self.corner_broken("a cutter compensation start-up (G41/G42)"));
         }
-        let plane = self.st.plane;
+        let plane = self.st.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         let cur = self.prog_pos();
-        let arc = matches!(mode, 20 | 30);
-        if !matches!(mode, 0 | 10 | 20 | 30) {
+        let arc = matches!(mode, MotionMode::ArcCw | MotionMode::ArcCcw);
+        if !matches!(
+            mode,
+            MotionMode::Rapid | MotionMode::Linear | MotionMode::ArcCw | MotionMode::ArcCcw
+        ) {
             // G33 and the like: uncompensated, the look-ahead broken.
             self.comp_break()?;
             let c = self.comp.as_deref_mut().expect("comp");
@@ -489,15 +497,16 @@ impl Interp {
             if comp::dist(s, e) < comp::EPS && !ijk {
                 None
             } else {
-                match self.arc_center(tw, any, mode == 30, at)? {
+                match self.arc_center(tw, any, mode == MotionMode::ArcCcw, at)? {
                     None => None,
                     Some(pc) => {
-                        let (_, _, c, ccw) = self.transform_arc(cur, tw, pc, mode == 30, at)?;
+                        let (_, _, c, ccw) =
+                            self.transform_arc(cur, tw, pc, mode == MotionMode::ArcCcw, at)?;
                         let prog = Seg::Arc {
                             a: sp,
                             b: ep,
                             c: pc,
-                            ccw: mode == 30,
+                            ccw: mode == MotionMode::ArcCcw,
                         };
                         Some((Seg::Arc { a: s, b: e, c, ccw }, prog))
                     }
@@ -522,7 +531,9 @@ impl Interp {
         let on_now = self.comp.as_deref().is_some_and(|c| c.on);
         let corner = match word {
             None => None,
-            Some((_, w)) if mode == 0 => return Err(self.corner_no_move(w, "a G00 block")),
+            Some((_, w)) if mode == MotionMode::Rapid => {
+                return Err(self.corner_no_move(w, "a G00 block"))
+            }
             Some((_, w)) if !on_now => return Err(self.corner_no_move(w, "a G40 block")),
             Some((_, w)) if off_plane => {
                 return Err(self.corner_no_move(w, "a block that does not move in the plane alone"))
@@ -535,7 +546,7 @@ impl Interp {
                 word: self.src_here(w.at),
             })),
         };
-        let speed = if mode == 0 {
+        let speed = if mode == MotionMode::Rapid {
             Speed::Rapid
         } else {
             Speed::Feed(self.feed(at)?)
@@ -614,9 +625,9 @@ impl Interp {
             at,
             motion,
         } = p;
-        let plane = self.st.plane;
+        let plane = self.st.modal.plane.means;
         let (a1, a2, _) = plane.axes();
-        let arc = matches!(mode, 20 | 30);
+        let arc = matches!(mode, MotionMode::ArcCw | MotionMode::ArcCcw);
         let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
         self.comp_refresh();
         let c = self.comp.as_deref_mut().expect("comp");
@@ -755,7 +766,7 @@ impl Interp {
         &mut self,
         h: &mut Held,
         hc: &HeldCorner,
-        cut: (u16, bool, bool, P),
+        cut: (MotionMode, bool, bool, P),
         seg_p: &Seg,
         cur: Pos,
     ) -> R<(Held, P)> {
@@ -772,7 +783,7 @@ impl Interp {
         if !on {
             return Err(broken("G40"));
         }
-        if mode == 0 {
+        if mode == MotionMode::Rapid {
             return Err(broken("G00"));
         }
         if off_plane {
@@ -802,7 +813,7 @@ impl Interp {
             };
             AlarmKind::CornerTooLarge.at(id, hc.word, why)
         })?;
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let fwd = |me: &Self, q: P| {
             let p = me.xf_point(&me.plane_pt(cur, q));
             (p[a1], p[a2])
@@ -853,7 +864,7 @@ impl Interp {
     /// A move without motion in the plane (Z alone in G17): with a move
     /// held it is kept back and takes the corner's plane point; otherwise
     /// it moves at the vector in force.
-    fn comp_offplane(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
+    fn comp_offplane(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<()> {
         let c = self.comp.as_deref().expect("comp");
         if let Some(hc) = c.held.as_ref().and_then(|h| h.corner.as_ref()) {
             let k = if hc.chamfer { 'C' } else { 'R' };
@@ -869,7 +880,7 @@ impl Interp {
         let vec = c.vec;
         let cur_t = self.xf_point(&self.prog_pos());
         let tw_t = self.xf_point(&tw);
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let p = padd((cur_t[a1], cur_t[a2]), vec);
         let start = self.offset_to_machine(&self.plane_pt(cur_t, p));
         let prog = self.place_machine(start);
@@ -910,7 +921,7 @@ impl Interp {
             ));
         }
         let end1 = self.comp_geom(comp::perp_end(&h.seg, h.r), h.motion)?;
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let vec = psub(padd(end1, h.tip), (h.end[a1], h.end[a2]));
         self.comp_flush(&mut h, &Join::at(end1))?;
         self.comp.as_deref_mut().expect("comp").vec = vec;
@@ -1112,14 +1123,14 @@ impl Interp {
         }
         let o = [0.0; NAXES];
         let q = self.plane_pt(o, d);
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let (fo, fq) = (self.st.xf.forward(&o), self.st.xf.forward(&q));
         (fq[a1] - fo[a1], fq[a2] - fo[a2])
     }
 
     /// `p` with its plane coordinates replaced by `uv`.
     fn plane_pt(&self, p: Pos, uv: P) -> Pos {
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let mut q = p;
         q[a1] = uv.0;
         q[a2] = uv.1;

@@ -10,10 +10,6 @@
 
 use super::*;
 
-/// Modal group of the canned cycles on the HX (000 §3.1).
-pub(super) const CYCLE_GROUP: usize = 10;
-/// Modal group of G98/G99 on the HX (000 §3.1).
-const RETURN_GROUP: usize = 19;
 /// Most moves one canned-cycle block may queue (K repeats × pecks); more
 /// is an alarm rather than an unbounded queue.
 const MAX_CYCLE_MOVES: f64 = 100_000.0;
@@ -110,7 +106,7 @@ impl Interp {
     ) -> R<bool> {
         let cyc_code = self.words.gs().iter().copied().find(|g| {
             self.gcode(g.0)
-                .is_some_and(|c| c.group as usize == CYCLE_GROUP)
+                .is_some_and(|c| matches!(c.means, Means::Cycle(_)))
         });
         if let Some((m, m_at)) = motion {
             if let Some((c, _)) = cyc_code.filter(|c| c.0 != 800) {
@@ -124,9 +120,9 @@ impl Interp {
                     ),
                 ));
             }
-            self.st.modal[CYCLE_GROUP] = 800;
+            self.st.modal.set_meaning(self.dialect, Means::Cycle(false));
         }
-        if self.st.modal[CYCLE_GROUP] == 800 {
+        if !self.st.modal.cycle.means {
             if was_cycle {
                 self.cyc.clear();
             }
@@ -191,7 +187,7 @@ impl Interp {
     /// Executes a block in canned cycle mode: stores the cycle data and,
     /// if the block names a position, R or the depth, drills K holes.
     pub(super) fn canned_cycle(&mut self, entered: bool, g60: bool) -> R<()> {
-        let code = self.st.modal[CYCLE_GROUP];
+        let code = self.st.modal.cycle.code10;
         let at = self
             .words
             .gs()
@@ -199,7 +195,7 @@ impl Interp {
             .find(|g| g.0 == code)
             .map(|g| g.1)
             .unwrap_or(0);
-        let (a1, a2, n) = self.st.plane.axes();
+        let (a1, a2, n) = self.st.modal.plane.means.axes();
         let drill_ax = Axis::ALL[n];
         if !self.has_axis[n] {
             return Err(self.alarm(
@@ -227,7 +223,7 @@ impl Interp {
             return Ok(());
         }
         let initial = self.cyc.initial.unwrap_or(cur[n]);
-        let abs = self.st.absolute;
+        let abs = self.st.modal.absolute();
         // Data words: R, the depth (the drilling axis's address), Q, P, I/J.
         if let Some(w) = self.words.get(b'R') {
             let v = self.linear(w);
@@ -334,7 +330,7 @@ impl Interp {
             }
             None => 0.0,
         };
-        let g99 = self.st.modal[RETURN_GROUP] == 990;
+        let g99 = self.st.modal.cycle_return.means == CycleReturn::RPoint;
         if code == 870 && g99 {
             return Err(self.alarm(
                 AlarmKind::CannedCycle,
@@ -364,7 +360,7 @@ impl Interp {
         }
         let mut shift = [0.0; NAXES];
         if matches!(code, 760 | 870) {
-            let (a1, a2, _) = self.st.plane.axes();
+            let (a1, a2, _) = self.st.modal.plane.means.axes();
             match self.cyc.ij {
                 Some((i, j)) => {
                     shift[a1] = i;
@@ -496,10 +492,9 @@ impl Interp {
 
     /// The cutting mode of group 15 in force, re-emitted after tapping.
     fn restore_cut_mode(&mut self) {
-        let grp = self.gcode(640).map(|g| g.group as usize).unwrap_or(15);
-        let c = self.st.modal[grp];
-        if c != 630 {
-            self.mode_event(c);
+        match self.st.modal.cutting_mode.means {
+            Some(CuttingMode::Tapping) | None => {}
+            Some(m) => self.mode_event(Means::CuttingMode(m)),
         }
     }
 

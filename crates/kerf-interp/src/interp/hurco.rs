@@ -164,7 +164,7 @@ impl Interp {
 
     /// 002: M00, M01 (when it stops), M02 and M30 turn the spindle off.
     pub(super) fn hurco_stop_spindle(&mut self) {
-        if self.dialect.id != DialectId::Hurco || self.st.spindle == SpindleDir::Stop {
+        if !self.dialect.caps.stops_stop_spindle || self.st.spindle == SpindleDir::Stop {
             return;
         }
         self.st.spindle = SpindleDir::Stop;
@@ -178,11 +178,14 @@ impl Interp {
 
     /// G53 preconditions (002): CRC off, G90, G00 or G01 mode.
     pub(super) fn g53_checks(&self, at: u32) -> R<()> {
-        let why = if self.st.modal[7] != 400 {
+        let why = if self.st.modal.cutter_comp.means != CompSide::Off {
             "cutter radius compensation must be off (G40)"
-        } else if !self.st.absolute {
+        } else if !self.st.modal.absolute() {
             "absolute mode (G90) must be active"
-        } else if !matches!(self.st.modal[1], 0 | 10) {
+        } else if !matches!(
+            self.st.modal.motion.means,
+            MotionMode::Rapid | MotionMode::Linear
+        ) {
             "G00 or G01 mode must be active"
         } else {
             return Ok(());

@@ -32,9 +32,6 @@ pub(crate) struct Drill {
     pub a: Option<f64>,
 }
 
-/// Drill cycle group (group 10).
-const GROUP: usize = 10;
-
 impl Interp {
     /// G80 in the block: cancels the cycle, selects G00 (not allowed with
     /// G00 in the block) and clears the modal data but the R plane.
@@ -49,7 +46,9 @@ impl Interp {
                 ));
             }
             if motion.is_none() {
-                self.st.modal[1] = 0;
+                self.st
+                    .modal
+                    .set_meaning(self.dialect, Means::Motion(MotionMode::Rapid));
             }
             let r = self.hurco.drill.r;
             self.hurco.drill = Drill {
@@ -58,7 +57,7 @@ impl Interp {
             };
             return Ok(false);
         }
-        Ok(self.st.modal[GROUP] != 800 && motion.is_none())
+        Ok(self.st.modal.cycle.means && motion.is_none())
     }
 
     /// A length word in mm (no diameter rule).
@@ -68,7 +67,7 @@ impl Interp {
 
     /// One drill cycle (the block's X/Z/R/Q/P/A and the modal data).
     pub(super) fn hurco_drill(&mut self) -> R<()> {
-        let code = self.st.modal[GROUP];
+        let code = self.st.modal.cycle.code10;
         let at = self
             .words
             .gs()
@@ -82,23 +81,35 @@ impl Interp {
         if let Some(w) = self.words.get(b'R') {
             self.check_range(b'R', w)?;
             let v = self.len_word(w);
-            self.hurco.drill.r = Some(if self.st.absolute { v } else { init + v });
+            self.hurco.drill.r = Some(if self.st.modal.absolute() {
+                v
+            } else {
+                init + v
+            });
         }
         let r = *self.hurco.drill.r.get_or_insert(init);
         if let Some(w) = self.words.get(b'Z') {
             self.check_range(b'Z', w)?;
             let v = self.len_word(w);
-            self.hurco.drill.z = Some(if self.st.absolute { v } else { r + v });
+            self.hurco.drill.z = Some(if self.st.modal.absolute() { v } else { r + v });
         }
         let z = self.hurco.drill.z.unwrap_or(r);
         let mut x = cur[0];
         if let Some(w) = self.words.get(b'X') {
             self.check_range(b'X', w)?;
             let v = self.axis_value(Axis::X, w);
-            x = if self.st.absolute { v } else { cur[0] + v };
+            x = if self.st.modal.absolute() {
+                v
+            } else {
+                cur[0] + v
+            };
         }
         let d = self.hurco.drill;
-        let ret = if self.st.modal[19] == 990 { r } else { init };
+        let ret = if self.st.modal.cycle_return.means == CycleReturn::RPoint {
+            r
+        } else {
+            init
+        };
         // 1. Position X, 2. rapid to the R plane.
         self.drill_go(Speed::Rapid, Some(x), None, at)?;
         self.drill_go(Speed::Rapid, None, Some(r), at)?;
@@ -239,7 +250,7 @@ impl Interp {
         if p <= 0.0 {
             return;
         }
-        let (seconds, revolutions) = if self.st.feed_mode == FeedMode::PerRev {
+        let (seconds, revolutions) = if self.st.modal.feed_mode.means == FeedMode::PerRev {
             (0.0, p)
         } else {
             (p, 0.0)

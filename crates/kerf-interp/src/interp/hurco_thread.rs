@@ -88,7 +88,7 @@ impl Interp {
             }
             p.v[(b'M' - b'A') as usize] = Some(m);
         }
-        if self.st.css {
+        if self.st.modal.css.means {
             return Err(self.alarm(
                 AlarmKind::ThreadCycle,
                 at,
@@ -119,7 +119,7 @@ impl Interp {
             }
         }
         let units = Units {
-            metric: self.st.metric,
+            metric: self.st.modal.metric(),
             calculator_decimal: self.profile.calculator_decimal,
             lead_range: self.hurco_lead_range(),
         };

@@ -327,7 +327,11 @@ impl Interp {
                     mode = g;
                 }
             }
-            let half = if self.st.diameter { 0.5 } else { 1.0 };
+            let half = if self.st.modal.diameter.means {
+                0.5
+            } else {
+                1.0
+            };
             let ax = |me: &Self, abs: u8, inc: u8, k: f64| {
                 if let Some(w) = me.words.get(abs) {
                     Some(Coord::Abs(me.linear(w) * k))

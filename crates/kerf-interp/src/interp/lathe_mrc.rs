@@ -124,7 +124,11 @@ impl Interp {
             }
         };
         // Second-block values, before the shape blocks overwrite the words.
-        let half = if self.st.diameter { 0.5 } else { 1.0 };
+        let half = if self.st.modal.diameter.means {
+            0.5
+        } else {
+            1.0
+        };
         let du = self
             .words
             .get(b'U')
@@ -342,7 +346,7 @@ impl Interp {
 
     /// The feed of a shape block's F (mm, per the feed mode).
     fn shape_feed(&self, f: Option<f64>) -> Option<Feed> {
-        f.map(|f| match self.st.feed_mode {
+        f.map(|f| match self.st.modal.feed_mode.means {
             FeedMode::PerMin => Feed::PerMin(f.min(self.profile.feed.max_cutting)),
             FeedMode::PerRev => Feed::PerRev(f),
             FeedMode::Inverse => Feed::InverseTime(f),
@@ -377,7 +381,9 @@ impl Interp {
             match c {
                 Some(c) if g70 => {
                     self.comp_set_mode(c, None);
-                    self.st.modal[super::comp::COMP_GROUP] = c;
+                    if let Some(g) = self.gcode(c) {
+                        self.st.modal.set(g);
+                    }
                 }
                 // Roughing: the whole shape is offset, a G40 in it does not
                 // cancel (docs/dialects.md).
@@ -500,7 +506,11 @@ impl Interp {
             return Ok(());
         }
         let a = self.zx_pos();
-        let half = if self.st.diameter { 0.5 } else { 1.0 };
+        let half = if self.st.modal.diameter.means {
+            0.5
+        } else {
+            1.0
+        };
         let val = |me: &Self, abs: u8, inc: u8, cur: f64, is_x: bool| -> Option<f64> {
             let k = if is_x { half } else { 1.0 };
             if let Some(w) = me.words.get(abs) {
@@ -740,7 +750,11 @@ impl Interp {
             return Ok(());
         }
         let a = self.zx_pos();
-        let half = if self.st.diameter { 0.5 } else { 1.0 };
+        let half = if self.st.modal.diameter.means {
+            0.5
+        } else {
+            1.0
+        };
         let mut end = a;
         if let Some(w) = self.words.get(b'X') {
             end.x = self.linear(w) * half;

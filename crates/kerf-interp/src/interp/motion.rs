@@ -34,7 +34,7 @@ impl Interp {
             if let Some(w) = abs_w {
                 self.check_range(l, w)?;
                 let v = self.axis_value(ax, w);
-                t[i] = if self.st.absolute {
+                t[i] = if self.st.modal.absolute() {
                     v
                 } else {
                     cur[i] + v + self.tlo_change(i)
@@ -72,7 +72,7 @@ impl Interp {
     /// and the current distance from it are kept. The angle is absolute in
     /// G90, added to the current angle in G91.
     fn polar_target(&self, cur: &Pos, t: &mut Pos) {
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let rw = self.words.get(b"XYZ"[a1]);
         let aw = self.words.get(b"XYZ"[a2]);
         if rw.is_none() && aw.is_none() {
@@ -80,7 +80,7 @@ impl Interp {
         }
         let mut origin = self.st.polar_origin.get();
         if rw.is_some() {
-            origin = if self.st.absolute {
+            origin = if self.st.modal.absolute() {
                 (0.0, 0.0)
             } else {
                 (cur[a1], cur[a2])
@@ -95,7 +95,7 @@ impl Interp {
         };
         let r = rw.map(|w| self.linear(w)).unwrap_or(r_cur);
         let a = match aw {
-            Some(w) if self.st.absolute => self.angular(w),
+            Some(w) if self.st.modal.absolute() => self.angular(w),
             Some(w) => a_cur + self.angular(w),
             None => a_cur,
         };
@@ -176,7 +176,7 @@ impl Interp {
                 "cutting move without a feedrate (no F commanded)",
             )),
             Some(f) if f <= 0.0 => Err(self.alarm(AlarmKind::NoFeed, at, "feedrate is zero")),
-            Some(f) => Ok(match self.st.feed_mode {
+            Some(f) => Ok(match self.st.modal.feed_mode.means {
                 FeedMode::PerMin => Feed::PerMin(f.min(self.profile.feed.max_cutting)),
                 FeedMode::PerRev => Feed::PerRev(f),
                 FeedMode::Inverse => Feed::InverseTime(f),
@@ -188,16 +188,16 @@ impl Interp {
         if self.st.rot != polar_interp::RotInterp::Off {
             return self.rotary_interp_motion();
         }
-        let mode = self.st.modal[1];
-        let puma = self.dialect.id == DialectId::Puma;
-        let (tw, any) = if puma {
+        let mode = self.st.modal.motion.means;
+        let ddi = self.dialect.caps.direct_drawing;
+        let (tw, any) = if ddi {
             self.ddi_target()?
         } else {
             self.target()?
         };
         let at = self.motion_at();
         // PUMA direct chamfer / corner R (interp/lathe_chamfer.rs).
-        if puma && mode == 10 && any && self.ddi_words() {
+        if ddi && mode == MotionMode::Linear && any && self.ddi_words() {
             return self.ddi_motion(tw, at);
         }
         if self.comp.is_some() {
@@ -212,16 +212,17 @@ impl Interp {
     }
 
     /// The block's move without chamfer or corner R.
-    pub(super) fn plain_motion(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
+    pub(super) fn plain_motion(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<()> {
+        use MotionMode::*;
         match mode {
-            0 | 10 if any => self.move_line(mode == 0, tw, at)?,
-            330 if any && self.dialect.id == DialectId::Hx => self.thread_line(tw, at)?,
-            320 | 900 | 920 | 940 if self.dialect.id == DialectId::Puma => {
+            Rapid | Linear if any => self.move_line(mode == Rapid, tw, at)?,
+            ThreadF if any => self.thread_line(tw, at)?,
+            ThreadLathe | TurnCycle | ThreadCycle | FaceCycle => {
                 self.lathe_motion(mode, tw, any, at)?
             }
-            330 if any && self.dialect.id == DialectId::Hurco => self.hurco_g33(tw, at)?,
-            20 | 30 => self.arc(tw, any, mode == 30, at)?,
-            _ => {}
+            ThreadKI if any => self.hurco_g33(tw, at)?,
+            ArcCw | ArcCcw => self.arc(tw, any, mode == ArcCcw, at)?,
+            Rapid | Linear | ThreadF | ThreadKI => {}
         }
         Ok(())
     }
@@ -264,7 +265,7 @@ impl Interp {
         ccw: bool,
         at: u32,
     ) -> R<Option<(f64, f64)>> {
-        let plane = self.st.plane;
+        let plane = self.st.modal.plane.means;
         let (a1, a2, normal) = plane.axes();
         // The centre word of the axis normal to the plane (J in G18, K in
         // G17, I in G19) is not part of the arc: an alarm, never ignored.
@@ -300,7 +301,7 @@ impl Interp {
             }
             // 001 p.15 note (4): on the PUMA an R shorter than half the
             // move is overridden and a half circle made; the others alarm.
-            let tol = if self.dialect.id == DialectId::Puma {
+            let tol = if self.dialect.caps.short_r_half_circle {
                 f64::INFINITY
             } else {
                 self.arc_tol
@@ -380,7 +381,7 @@ impl Interp {
             return Ok((start, tw, center, ccw));
         }
         let xf = self.st.xf;
-        let plane = self.st.plane;
+        let plane = self.st.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         let mut c = start;
         c[a1] = center.0;
@@ -450,7 +451,7 @@ impl Interp {
         // In G91 the block's incremental move counts from the tip as the
         // old offset had it, so the machine moves by the move plus the
         // offset change (fanuc-semantics §5.1).
-        if !self.st.absolute && old != self.st.tlo {
+        if !self.st.modal.absolute() && old != self.st.tlo {
             let mut d = [0.0; NAXES];
             for i in 0..NAXES {
                 d[i] = self.st.tlo[i] - old[i];
@@ -462,19 +463,14 @@ impl Interp {
 
     /// The tool length offset vector from the G43/G44 mode and H in force.
     pub(super) fn refresh_tool_length(&mut self) {
-        let grp = self
-            .dialect
-            .gcode(490)
-            .map(|g| g.group as usize)
-            .unwrap_or(8);
-        let sign = match self.st.modal[grp] {
-            430 => 1.0,
-            440 => -1.0,
-            _ => 0.0,
+        let sign = match self.st.modal.length_comp.means {
+            LengthComp::Plus => 1.0,
+            LengthComp::Minus => -1.0,
+            LengthComp::Off => 0.0,
         };
         // 000 §13.1.1: the axis normal to the plane in force when the
         // offset is taken (G17 Z, G18 Y, G19 X).
-        let normal = self.st.plane.axes().2;
+        let normal = self.st.modal.plane.means.axes().2;
         self.st.tlo = [0.0; NAXES];
         self.st.tlo[normal] = sign * self.offsets.h(self.st.h as usize);
     }
@@ -587,7 +583,11 @@ impl Interp {
                     let i = ax as usize;
                     if let Some(w) = self.words.get(ax_letter(ax)).filter(|_| named[i]) {
                         let v = self.axis_value(ax, w);
-                        end[i] = if self.st.absolute { v } else { mid[i] + v };
+                        end[i] = if self.st.modal.absolute() {
+                            v
+                        } else {
+                            mid[i] + v
+                        };
                     } else if let Some(l) = self.uvw(ax) {
                         let w = self.words.get(l).expect("present");
                         end[i] = mid[i] + self.axis_value(ax, w);

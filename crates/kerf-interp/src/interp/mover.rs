@@ -111,10 +111,7 @@ impl Interp {
     /// way to switch it off).
     pub(super) fn stroke_check_area(&self) -> Option<crate::stroke::Area> {
         let area = self.st.stroke_area?;
-        match self.dialect.gcode(230) {
-            Some(g) => (self.st.modal[g.group as usize] == 220).then_some(area),
-            None => Some(area),
-        }
+        self.st.modal.stroke.means.then_some(area)
     }
 
     /// The alarm of a move that would enter (or leave) the area.
@@ -291,7 +288,7 @@ impl Interp {
         feed: Feed,
         at: u32,
     ) -> R<()> {
-        let plane = self.st.plane;
+        let plane = self.st.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         let (cur, tw, center, ccw) = self.transform_arc(start, tw, center, ccw, at)?;
         let s = (cur[a1], cur[a2]);
@@ -363,7 +360,7 @@ impl Interp {
     /// corner's plane point `corner` (machine coordinates); each is checked
     /// from where the one before ends, and the position is the last one's.
     pub(super) fn release_held(&mut self, events: &mut Vec<Event>, corner: &Pos) -> R<()> {
-        let (a1, a2, _) = self.st.plane.axes();
+        let (a1, a2, _) = self.st.modal.plane.means.axes();
         let mut from = self.st.mover.pos;
         for ev in events.iter_mut() {
             let line = match ev.cmd {

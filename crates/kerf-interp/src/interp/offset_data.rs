@@ -70,7 +70,7 @@ impl Interp {
             // Absolute words replace (G91 on the HX adds); the lathe's
             // U/W add.
             let (w, add) = match (self.words.get(ax_letter(ax)), self.uvw(ax)) {
-                (Some(w), _) => (w, !self.st.absolute),
+                (Some(w), _) => (w, !self.st.modal.absolute()),
                 (None, Some(l)) => (self.words.get(l).expect("present"), true),
                 (None, None) => continue,
             };
@@ -106,7 +106,7 @@ impl Interp {
         };
         self.check_range(b'R', r)?;
         let v = self.linear(r);
-        let absolute = self.st.absolute;
+        let absolute = self.st.modal.absolute();
         let e = if page == 'H' {
             self.offsets.h_mut(p)
         } else {

@@ -113,9 +113,9 @@ impl Interp {
                 self.g65(c, at)?;
                 return Ok(None);
             }
-            if g.group == 1 {
+            if let Means::Motion(_) = g.means {
                 motion = Some((c, at));
-            } else if g.group == 0 {
+            } else if let Means::OneShot(_) = g.means {
                 one_shot[n_one] = (c, at);
                 n_one += 1;
             }
@@ -133,7 +133,7 @@ impl Interp {
             transfer,
             hurco_macro: None,
             was_cycle: false,
-            plane_before: self.st.plane,
+            plane_before: self.st.modal.plane.means,
             cycle: false,
             hurco_cycle: false,
             xdata: false,
@@ -152,7 +152,7 @@ impl Interp {
             Phase::JobSyncM => self.run_m(|m| m.1 == MWhen::JobSync)?,
             Phase::ModalG => self.apply_modal_codes(b),
             Phase::HxCycleMode => {
-                let plane_changed = self.st.plane != b.plane_before;
+                let plane_changed = self.st.modal.plane.means != b.plane_before;
                 b.cycle = self.cycle_mode(b.was_cycle, plane_changed, b.motion)?;
             }
             Phase::HurcoCycleMode => b.hurco_cycle = self.hurco_cycle_mode(b.motion)?,
@@ -235,23 +235,22 @@ impl Interp {
 
     /// The modal G codes (every group but 0 and 1) and the motion mode.
     fn apply_modal_codes(&mut self, b: &mut BlockRun) {
-        let d = self.dialect;
-        b.was_cycle = self.st.modal[cycles::CYCLE_GROUP] != 800;
-        b.plane_before = self.st.plane;
+        b.was_cycle = self.st.modal.cycle.means;
+        b.plane_before = self.st.modal.plane.means;
         for i in 0..self.words.ng {
             let (c, _) = self.words.g[i];
             let Some(g) = self.gcode(c) else { continue };
-            if g.group != 0 && g.group != 1 {
-                self.st.modal[g.group as usize] = c;
-                Self::apply_modal(&mut self.st, d.id, c);
-                self.mode_event(c);
-                if c == 670 {
+            if !matches!(g.means, Means::OneShot(_) | Means::Motion(_)) {
+                self.apply_modal(g);
+                if g.means == Means::ModalCall(false) {
                     self.g67();
                 }
             }
         }
         if let Some((c, _)) = b.motion {
-            self.st.modal[1] = c;
+            if let Some(g) = self.gcode(c) {
+                self.st.modal.set(g);
+            }
         }
     }
 
@@ -303,9 +302,7 @@ impl Interp {
                 || one_shot.iter().any(|g| {
                     matches!(g.0, 270 | 280 | 290 | 300 | 530 | 310..=314 | 370..=374 | 450..=480 | 700..=760)
                 });
-            let setting = one_shot
-                .iter()
-                .any(|g| is_coordinate_setting(self.dialect.id, g.0));
+            let setting = one_shot.iter().any(|g| self.is_coordinate_setting(g.0));
             self.comp_codes(one_shot, special, setting)
         } else {
             Ok(false)
@@ -350,34 +347,36 @@ impl Interp {
     /// Runs the block's one-shot codes that act before motion (G10 on
     /// the PUMA, coordinate setting, G59 on the Hurco) and notes the rest.
     fn one_shots(&mut self, one_shot: &[(u16, u32)]) -> R<OneShots> {
-        let d = self.dialect;
-        let hurco = d.id == DialectId::Hurco;
+        use crate::dialect::meaning::OneShot::*;
         let mut os = OneShots::default();
         for &(c, at) in one_shot {
-            match (d.id, c) {
-                (_, 40) => os.dwell = true,
-                (_, 270 | 280 | 290 | 300) => os.refret = Some((c, at)),
-                (_, 90) => os.g09 = true,
-                (DialectId::Hx, 600) => os.g60 = Some(at),
-                (_, 530) => {
-                    if hurco {
+            let Some(Means::OneShot(what)) = self.gcode(c).map(|g| g.means) else {
+                continue;
+            };
+            match what {
+                Dwell => os.dwell = true,
+                RefReturn => os.refret = Some((c, at)),
+                ExactStop => os.g09 = true,
+                SingleDirection => os.g60 = Some(at),
+                MachineCoords => {
+                    if self.dialect.caps.g53_checks {
                         self.g53_checks(at)?;
                     }
                     os.g53 = true
                 }
-                (DialectId::Hx, 310..=314 | 370..=374) => os.skip = Some((c, at)),
-                (DialectId::Hx, 450 | 460 | 470 | 480) => os.g45 = Some((c, at)),
-                (DialectId::Puma, 100) => {
+                Skip => os.skip = Some((c, at)),
+                ToolOffset => os.g45 = Some((c, at)),
+                DataSetting => {
                     os.setting = true;
                     self.g10(at)?
                 }
-                (DialectId::Puma, 700..=760) => os.mrc = Some((c, at)),
-                _ if is_coordinate_setting(d.id, c) => {
+                Mrc => os.mrc = Some((c, at)),
+                CoordinateSetting => {
                     os.setting = true;
                     self.coordinate_setting(at)?
                 }
-                (DialectId::Hurco, 590) => self.st.shift = [0.0; NAXES],
-                _ => {}
+                CancelWorkShift => self.st.shift = [0.0; NAXES],
+                MacroCall | Frame | CompCorner | Probe | ThreadCycle => {}
             }
         }
         Ok(os)

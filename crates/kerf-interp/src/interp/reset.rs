@@ -59,8 +59,7 @@ impl Interp {
         st.shift = old.shift;
         st.stroke_area = old.stroke_area;
         st.g28_mid = old.g28_mid;
-        st.metric = old.metric;
-        st.modal[6] = old.modal[6];
+        st.modal.units = old.modal.units;
         st.feed = old.feed;
         st.s = old.s;
         st.s_clamp = old.s_clamp;

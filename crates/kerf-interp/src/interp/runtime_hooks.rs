@@ -205,14 +205,14 @@ impl Interp {
             .gcodes
             .iter()
             .map(|g| g.group)
-            .filter(|&g| g != 0 && (g as usize) < self.st.modal.len())
+            .filter(|&g| g != 0)
             .collect();
         groups.sort_unstable();
         groups.dedup();
         groups
             .into_iter()
             .filter_map(|g| {
-                let c = self.st.modal[g as usize];
+                let c = self.st.modal.code_of_group(self.dialect, g);
                 self.dialect
                     .gcodes
                     .iter()

@@ -12,7 +12,6 @@ use kerf_canon::NAXES;
 use super::work_offsets::WorkId;
 use super::Interp;
 use crate::alarms::AlarmKind;
-use crate::dialect::DialectId;
 use crate::machine::MachineKind;
 use crate::macros::{Lookup, MacroError, VarClass, Vars};
 
@@ -187,7 +186,7 @@ impl Interp {
 
     fn sys_decode(&self, i: usize) -> Option<Sys> {
         use Sys::*;
-        Some(if self.dialect.id == DialectId::Hx {
+        Some(if self.dialect.caps.hx_variables {
             match i {
                 2112..=2239 => D(i - 2111),
                 2240..=2367 => H(i - 2239),
@@ -277,7 +276,7 @@ impl Interp {
         if s < 3 {
             v /= self.unit();
         }
-        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.diameter {
+        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means {
             v *= 2.0;
         }
         v
@@ -288,7 +287,7 @@ impl Interp {
         if s < 3 {
             v *= self.unit();
         }
-        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.diameter {
+        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means {
             v /= 2.0;
         }
         v
@@ -333,7 +332,7 @@ impl Interp {
                 return Ok(self.axis_value_of(k, &p));
             }
             Modal(g) => {
-                let c = self.st.modal.get(g).copied().unwrap_or(0);
+                let c = u8::try_from(g).map_or(0, |g| self.st.modal.code_of_group(self.dialect, g));
                 let c = if self.system_b() {
                     super::system_b::to_b(c)
                 } else {

@@ -21,15 +21,18 @@ use super::*;
 impl Interp {
     /// The block's move under G45-G48 (`code` ×10), `at` the code's column.
     pub(super) fn tool_offset_motion(&mut self, code: u16, at: u32) -> R<()> {
-        let mode = self.st.modal[1];
-        if !matches!(mode, 0 | 10 | 20 | 30) {
+        let mode = self.st.modal.motion.means;
+        if !matches!(
+            mode,
+            MotionMode::Rapid | MotionMode::Linear | MotionMode::ArcCw | MotionMode::ArcCcw
+        ) {
             return Err(self.alarm(
                 AlarmKind::ToolOffset,
                 at,
                 format!("G{} needs G00, G01, G02 or G03 (000 §13.3)", fmt_code(code)),
             ));
         }
-        if self.st.modal[self.comp_group()] != 400 {
+        if self.st.modal.cutter_comp.means != CompSide::Off {
             return Err(self.alarm(
                 AlarmKind::ToolOffset,
                 at,
@@ -66,10 +69,12 @@ impl Interp {
         }
         let at = self.motion_at();
         match mode {
-            0 | 10 => self.move_line(mode == 0, t, at),
+            MotionMode::Rapid | MotionMode::Linear => {
+                self.move_line(mode == MotionMode::Rapid, t, at)
+            }
             _ => {
-                let ccw = mode == 30;
-                let (a1, a2, _) = self.st.plane.axes();
+                let ccw = mode == MotionMode::ArcCcw;
+                let (a1, a2, _) = self.st.modal.plane.means.axes();
                 let center =
                     if let Some(r) = self.words.get(b'R') {
                         self.check_range(b'R', r)?;
@@ -126,14 +131,6 @@ impl Interp {
                 self.arc_to(cur, t, center, ccw, feed, at)
             }
         }
-    }
-
-    /// The modal group of G40/G41/G42 in this dialect.
-    pub(super) fn comp_group(&self) -> usize {
-        self.dialect
-            .gcode(400)
-            .map(|g| g.group as usize)
-            .unwrap_or(7)
     }
 
     /// The cutter radius offset of the D number in force (mm); D out of

@@ -14,7 +14,7 @@ impl Interp {
     /// true when the block's axis words were the data of one of them: the
     /// block then makes no move.
     pub(super) fn transform_codes(&mut self, one_shot: &[(u16, u32)]) -> R<bool> {
-        if self.dialect.id != DialectId::Hx {
+        if !self.dialect.caps.frame_codes {
             return Ok(false);
         }
         let mut data = false;
@@ -22,7 +22,9 @@ impl Interp {
         // may change the rotation in offset mode (000 §15.4.2's N1-N8).
         // Scaling is set before G41/G42 and cancelled after G40 (000
         // §15.4.2: G51, G68, G41 … G40, G69, G50).
-        if self.comp.as_deref().is_some_and(|c| c.on()) && self.st.modal[7] != 400 {
+        if self.comp.as_deref().is_some_and(|c| c.on())
+            && self.st.modal.cutter_comp.means != CompSide::Off
+        {
             for i in 0..self.words.ng {
                 let (c, at) = self.words.g[i];
                 if matches!(c, 500 | 510) {
@@ -69,7 +71,7 @@ impl Interp {
             }
         }
         if let Some(r) = self.st.xf.rot {
-            if r.plane != self.st.plane {
+            if r.plane != self.st.modal.plane.means {
                 let at = self
                     .words
                     .gs()
@@ -177,7 +179,7 @@ impl Interp {
     /// (decimal-point rule: `R60` = 0.060°, `R60.` = 60°; PI 117 when
     /// omitted). In G91 the angle is added to the rotation in force.
     fn g68(&mut self, at: u32) -> R<()> {
-        let plane = self.st.plane;
+        let plane = self.st.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         if let Some(r) = self.st.xf.rot {
             if r.plane != plane {
@@ -219,7 +221,7 @@ impl Interp {
                 format!("rotation angle {} out of range (±360°)", fmt_num(r)),
             ));
         }
-        let deg = match (self.st.absolute, self.st.xf.rot) {
+        let deg = match (self.st.modal.absolute(), self.st.xf.rot) {
             (false, Some(old)) => old.deg + r,
             _ => r,
         };
@@ -242,7 +244,7 @@ impl Interp {
             }
             if let Some(w) = self.words.get(ax_letter(ax)) {
                 let v = self.axis_value(ax, w);
-                self.st.local[i] = if self.st.absolute {
+                self.st.local[i] = if self.st.modal.absolute() {
                     v
                 } else {
                     self.st.local[i] + v

@@ -10,9 +10,10 @@
 //! makes it active: editing the fixture afterwards (a probe cycle, an
 //! offsets file) takes effect when the E code is next programmed.
 //!
-//! A G code selects a system only through [`WorkId::of_code`], which
-//! names each code: a code it does not know (G54.1, say) selects nothing,
-//! rather than the G54 a range would make of it.
+//! A G code selects a system only through the meaning its dialect table
+//! gives it, `Means::Work(n)` (dialect/meaning.rs names G54-G59 one by
+//! one): a modal row without a meaning (G54.1, say) does not compile,
+//! rather than becoming the G54 a range would make of it.
 
 use std::collections::BTreeMap;
 
@@ -28,22 +29,6 @@ pub(super) enum WorkId {
     G5x(usize),
     /// Hurco fixture offset E n (1-9999; E0 is no offset).
     Fixture(u32),
-}
-
-impl WorkId {
-    /// The system a G code (value × 10) selects: G54-G59 only.
-    pub(super) fn of_code(code10: u16) -> Option<WorkId> {
-        let n = match code10 {
-            540 => 0,
-            550 => 1,
-            560 => 2,
-            570 => 3,
-            580 => 4,
-            590 => 5,
-            _ => return None,
-        };
-        Some(WorkId::G5x(n))
-    }
 }
 
 /// The work offset table and the active system.
@@ -142,16 +127,6 @@ mod tests {
     }
 
     #[test]
-    fn codes_name_their_system() {
-        assert_eq!(WorkId::of_code(540), Some(WorkId::G5x(0)));
-        assert_eq!(WorkId::of_code(590), Some(WorkId::G5x(5)));
-        // G54.1 is not G54; nor are the codes between.
-        assert_eq!(WorkId::of_code(541), None);
-        assert_eq!(WorkId::of_code(545), None);
-        assert_eq!(WorkId::of_code(600), None);
-    }
-
-    #[test]
     fn g5x_follow_edits_and_fixtures_are_taken_when_selected() {
         let mut w = WorkOffsets::new([at(-400.0); 6]);
         assert_eq!(w.get(WorkId::Fixture(1)), at(-400.0));
@@ -186,18 +161,29 @@ mod tests {
         assert_eq!(fresh.get(WorkId::Fixture(9)), at(8.0));
     }
 
-    /// Through the interpreter's modal code handling: G55 selects G55; a
-    /// G54.1 (code 541, as a table row would give it) selects nothing.
+    /// The codes that select a work system are G54-G59, G54 + n each,
+    /// on the HX and the PUMA; none on the Hurco (its G59 is a one-shot
+    /// cancel, its systems are E codes).
     #[test]
-    fn a_g54_1_row_would_not_select_g54() {
-        use crate::dialect::{Dialect, DialectId};
-        use crate::Profile;
-        let profile = Profile::builtin("hx-mc").unwrap();
-        let mut st = super::super::Interp::power_on_state(&profile, Dialect::get(DialectId::Hx));
-        st.work.set(WorkId::G5x(1), at(-123.0));
-        super::super::Interp::apply_modal(&mut st, DialectId::Hx, 550);
-        assert_eq!(*st.work.origin(), at(-123.0));
-        super::super::Interp::apply_modal(&mut st, DialectId::Hx, 541);
-        assert_eq!(*st.work.origin(), at(-123.0));
+    fn g54_to_g59_are_the_only_work_codes() {
+        use crate::dialect::{Dialect, DialectId, Means};
+        for (id, n) in [
+            (DialectId::Hx, 6),
+            (DialectId::Puma, 6),
+            (DialectId::Hurco, 0),
+        ] {
+            let work: Vec<(u16, u8)> = Dialect::get(id)
+                .gcodes
+                .iter()
+                .filter_map(|g| match g.means {
+                    Means::Work(k) => Some((g.code10, k)),
+                    _ => None,
+                })
+                .collect();
+            assert_eq!(work.len(), n, "{id:?}");
+            for (c, k) in work {
+                assert_eq!(c, 540 + 10 * k as u16, "{id:?}");
+            }
+        }
     }
 }

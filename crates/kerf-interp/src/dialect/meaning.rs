@@ -1,0 +1,297 @@
+//! What a modal G code means, independent of its number. Each dialect's
+//! table gives every modal code its [`Means`] (hx.rs, puma.rs, hurco.rs),
+//! so the interpreter's modal state (interp/modal.rs) is set and read by
+//! meaning: "feed per revolution" is [`FeedMode::PerRev`] whether the
+//! control calls it G95 (HX, Hurco) or G99 (PUMA).
+use kerf_canon::Plane;
+
+/// The meaning of one G code of a dialect's table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Means {
+    /// A one-shot code (group 0): acts in its own block only.
+    OneShot(OneShot),
+    /// Group 01: the motion mode.
+    Motion(MotionMode),
+    /// G96 (true) / G97: constant surface speed.
+    Css(bool),
+    /// G90 / G91 (PUMA system B G90 / G91).
+    Distance(Distance),
+    /// G93 / G94 / G95 (PUMA G98 / G99).
+    FeedMode(FeedMode),
+    /// G20 / G21 (Hurco also G70).
+    Units(Units),
+    /// G40 / G41 / G42: cutter or tool nose radius compensation.
+    CutterComp(CompSide),
+    /// G22 (true) / G23: stored stroke check.
+    Stroke(bool),
+    /// The canned (drill) cycle group: G80 (false) or a cycle code (true).
+    Cycle(bool),
+    /// G51 (true) / G50: scaling and mirror image (HX).
+    Scaling(bool),
+    /// G66 (true) / G67: the macro modal call.
+    ModalCall(bool),
+    /// G43 / G44 / G49: tool length compensation (HX).
+    LengthComp(LengthComp),
+    /// G54-G59: the work coordinate system G54 + n.
+    Work(u8),
+    /// G61-G64 (HX).
+    CuttingMode(CuttingMode),
+    /// G17 / G18 / G19.
+    Plane(Plane),
+    /// G16 (true) / G15: polar coordinate command (HX).
+    PolarCommand(bool),
+    /// G68 (true) / G69: coordinate rotation (HX).
+    Rotation(bool),
+    /// G98 / G99 (HX, Hurco): the canned cycle return level.
+    CycleReturn(CycleReturn),
+    /// G112 (true) / G113: polar coordinate interpolation (HX).
+    PolarInterp(bool),
+    /// G10.3 (true) / G11.3: high speed machining (HX).
+    HighSpeed(bool),
+    /// G107: cylindrical interpolation (HX; turned off by G107 with a
+    /// zero radius, which leaves no code of the group in force).
+    Cylindrical(bool),
+    /// G63.1 (true) / G63.2: stitch function (HX).
+    Stitch(bool),
+    /// Hurco G08 (true) / G07: diameter or radius programming of X.
+    Diameter(bool),
+}
+
+/// What a one-shot (group 0) code does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OneShot {
+    /// G04.
+    Dwell,
+    /// G09.
+    ExactStop,
+    /// G27-G30: reference position return and its check.
+    RefReturn,
+    /// G53: a move in machine coordinates.
+    MachineCoords,
+    /// G65: the macro call (run as the block is classified).
+    MacroCall,
+    /// G92 (HX, Hurco), G50 (PUMA system A): coordinate setting.
+    CoordinateSetting,
+    /// HX G10 and G52: run with the frame codes (interp/transforms.rs).
+    Frame,
+    /// PUMA G10: offset value setting, before the motion.
+    DataSetting,
+    /// G31-G31.4 and HX G37-G37.4: skip and tool length measurement.
+    Skip,
+    /// HX G39: the corner arc of cutter compensation.
+    CompCorner,
+    /// HX G45-G48: tool offset increase / decrease.
+    ToolOffset,
+    /// HX G60: single direction positioning.
+    SingleDirection,
+    /// PUMA G70-G76: the multiple repetitive cycles.
+    Mrc,
+    /// Hurco G38: the turret probe.
+    Probe,
+    /// Hurco G59: cancel the work coordinate shift.
+    CancelWorkShift,
+    /// Hurco G78: the threading cycle.
+    ThreadCycle,
+}
+
+/// The motion mode (group 01).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MotionMode {
+    /// G00.
+    Rapid,
+    /// G01.
+    Linear,
+    /// G02.
+    ArcCw,
+    /// G03.
+    ArcCcw,
+    /// HX G33: thread cutting along a line, F the lead (000 §4.8).
+    ThreadF,
+    /// Hurco G33: thread cutting along a line, the lead in K (along Z)
+    /// or I (along X), P the start angle (002).
+    ThreadKI,
+    /// PUMA G32: lathe thread cutting, F or E the lead (001).
+    ThreadLathe,
+    /// PUMA G90: the turning cycle.
+    TurnCycle,
+    /// PUMA G92: the thread cutting cycle.
+    ThreadCycle,
+    /// PUMA G94: the facing cycle.
+    FaceCycle,
+}
+
+/// Absolute or incremental dimensions (group 03).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Distance {
+    Absolute,
+    Incremental,
+}
+
+/// Feed mode (group 05).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FeedMode {
+    PerMin,
+    PerRev,
+    Inverse,
+}
+
+/// Input units (group 06).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Units {
+    Metric,
+    Inch,
+}
+
+/// Cutter / tool nose radius compensation side (group 07).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CompSide {
+    /// G40.
+    Off,
+    /// G41.
+    Left,
+    /// G42.
+    Right,
+}
+
+/// Tool length compensation (HX group 13).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LengthComp {
+    /// G49.
+    Off,
+    /// G43.
+    Plus,
+    /// G44.
+    Minus,
+}
+
+/// HX group 15.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CuttingMode {
+    /// G61.
+    ExactStop,
+    /// G62.
+    CornerOverride,
+    /// G63.
+    Tapping,
+    /// G64.
+    Cutting,
+}
+
+/// Where a canned cycle returns after a hole (group 19 on the HX and the
+/// Hurco).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CycleReturn {
+    /// G98: the initial level.
+    Initial,
+    /// G99: the R point.
+    RPoint,
+}
+
+/// The kind of modal state a meaning sets: one per field of the
+/// interpreter's modal state, whatever the group's number in a dialect.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    OneShot,
+    Motion,
+    Css,
+    Distance,
+    FeedMode,
+    Units,
+    CutterComp,
+    Stroke,
+    Cycle,
+    Scaling,
+    ModalCall,
+    LengthComp,
+    Work,
+    CuttingMode,
+    Plane,
+    PolarCommand,
+    Rotation,
+    CycleReturn,
+    PolarInterp,
+    HighSpeed,
+    Cylindrical,
+    Stitch,
+    Diameter,
+}
+
+impl Means {
+    /// The kind of state this meaning sets.
+    pub const fn kind(self) -> Kind {
+        match self {
+            Means::OneShot(_) => Kind::OneShot,
+            Means::Motion(_) => Kind::Motion,
+            Means::Css(_) => Kind::Css,
+            Means::Distance(_) => Kind::Distance,
+            Means::FeedMode(_) => Kind::FeedMode,
+            Means::Units(_) => Kind::Units,
+            Means::CutterComp(_) => Kind::CutterComp,
+            Means::Stroke(_) => Kind::Stroke,
+            Means::Cycle(_) => Kind::Cycle,
+            Means::Scaling(_) => Kind::Scaling,
+            Means::ModalCall(_) => Kind::ModalCall,
+            Means::LengthComp(_) => Kind::LengthComp,
+            Means::Work(_) => Kind::Work,
+            Means::CuttingMode(_) => Kind::CuttingMode,
+            Means::Plane(_) => Kind::Plane,
+            Means::PolarCommand(_) => Kind::PolarCommand,
+            Means::Rotation(_) => Kind::Rotation,
+            Means::CycleReturn(_) => Kind::CycleReturn,
+            Means::PolarInterp(_) => Kind::PolarInterp,
+            Means::HighSpeed(_) => Kind::HighSpeed,
+            Means::Cylindrical(_) => Kind::Cylindrical,
+            Means::Stitch(_) => Kind::Stitch,
+            Means::Diameter(_) => Kind::Diameter,
+        }
+    }
+}
+
+/// The one-shot meanings the three controls share: G04, G09, G27-G30,
+/// G53, G65.
+pub(crate) const fn common_one_shot(code10: u16) -> Option<OneShot> {
+    Some(match code10 {
+        40 => OneShot::Dwell,
+        90 => OneShot::ExactStop,
+        270 | 280 | 290 | 300 => OneShot::RefReturn,
+        530 => OneShot::MachineCoords,
+        650 => OneShot::MacroCall,
+        _ => return None,
+    })
+}
+
+/// The meanings the three controls share under the same number: G00-G03,
+/// G17-G19, G20/G21, G40-G42, G54-G59, G90/G91, G93-G97. None for a code
+/// whose meaning depends on the control.
+pub(crate) const fn common(code10: u16) -> Option<Means> {
+    Some(match code10 {
+        0 => Means::Motion(MotionMode::Rapid),
+        10 => Means::Motion(MotionMode::Linear),
+        20 => Means::Motion(MotionMode::ArcCw),
+        30 => Means::Motion(MotionMode::ArcCcw),
+        170 => Means::Plane(Plane::XY),
+        180 => Means::Plane(Plane::ZX),
+        190 => Means::Plane(Plane::YZ),
+        200 => Means::Units(Units::Inch),
+        210 => Means::Units(Units::Metric),
+        400 => Means::CutterComp(CompSide::Off),
+        410 => Means::CutterComp(CompSide::Left),
+        420 => Means::CutterComp(CompSide::Right),
+        540 => Means::Work(0),
+        550 => Means::Work(1),
+        560 => Means::Work(2),
+        570 => Means::Work(3),
+        580 => Means::Work(4),
+        590 => Means::Work(5),
+        660 => Means::ModalCall(true),
+        670 => Means::ModalCall(false),
+        900 => Means::Distance(Distance::Absolute),
+        910 => Means::Distance(Distance::Incremental),
+        930 => Means::FeedMode(FeedMode::Inverse),
+        940 => Means::FeedMode(FeedMode::PerMin),
+        950 => Means::FeedMode(FeedMode::PerRev),
+        960 => Means::Css(true),
+        970 => Means::Css(false),
+        _ => return None,
+    })
+}
