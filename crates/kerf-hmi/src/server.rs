@@ -251,7 +251,10 @@ impl Shared {
         let frame = make_frame(state, &path);
         drop(path);
         self.frames.send_if_modified(|old| {
-            if old.json == frame.json {
+            // A state read before the newest one published (a command's,
+            // overtaken by a tick) is not sent: machine time never goes
+            // back for a client.
+            if old.json == frame.json || frame.state.t < old.state.t {
                 return false;
             }
             *old = Arc::new(frame);

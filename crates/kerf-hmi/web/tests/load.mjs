@@ -74,11 +74,13 @@ await server.stop();
 
 const rates = counts.map((c) => c.states / secs).sort((a, b) => a - b);
 const errors = counts.filter((c) => c.error).map((c) => c.error);
+const kinds = {};
+for (const e of errors) { const k = e.replace(/[-\d.]+/g, 'N'); kinds[k] = (kinds[k] || 0) + 1; }
 const p99 = clicks[Math.ceil(clicks.length * 0.99) - 1];
 const load = loadavg()[0];
 const judged = load <= cpus().length;
 console.log(JSON.stringify({
-  clients: CLIENTS, secs, errors: errors.length, first_error: errors[0] || null,
+  clients: CLIENTS, secs, errors: errors.length, first_error: errors[0] || null, error_kinds: kinds,
   states_per_s: { min: rates[0], median: rates[CLIENTS >> 1], max: rates[CLIENTS - 1] },
   click_ms: { median: clicks[100], p99, max: clicks[clicks.length - 1] },
   load_average: load, cores: cpus().length, judged,
