@@ -271,9 +271,9 @@ impl Interp {
             max_digits: profile.max_digits,
             // Bracket nesting: Fanuc 5 levels including function
             // brackets; the HX text of 000 §14.2.4 gives 10.
-            max_nesting: if dialect.id == DialectId::Hx { 10 } else { 5 },
+            max_nesting: dialect.caps.bracket_nesting,
         };
-        let hx = dialect.id == DialectId::Hx;
+        let hx = dialect.caps.hx_variables;
         let offsets = OffsetTable::new(profile.tools.offsets as usize);
         let st = Self::power_on_state(&profile, dialect);
         let hurco = Self::hurco_state();
@@ -309,7 +309,7 @@ impl Interp {
         };
         let settings_sb = settings.single_block;
         let system_b_on =
-            dialect.id == DialectId::Puma && profile.param("gcode_system_b", 0.0) != 0.0;
+            dialect.caps.gcode_system_b && profile.param("gcode_system_b", 0.0) != 0.0;
         let mut cyc = cycles::CycleData::default();
         cyc.params = cycles::CycleParams::from_profile(&profile);
         Interp {
@@ -413,7 +413,7 @@ impl Interp {
             flood: false,
         };
         // The HX power-on parameters PI 144-147 (000 §3.2).
-        if dialect.id == DialectId::Hx {
+        if dialect.caps.power_on_params {
             use crate::dialect::meaning::{Distance, Units};
             let p = |n: &str, d: f64| profile.param(n, d) as i64;
             if p("PI 144", 0.0) == 1 {
@@ -451,7 +451,7 @@ impl Interp {
     /// as loaded with `--offsets`.
     pub fn set_work_offset(&mut self, idx: usize, origin: Pos) {
         self.st.work.set(work_offsets::WorkId::G5x(idx), origin);
-        if idx == 0 && self.dialect.id == DialectId::Hurco {
+        if idx == 0 && self.dialect.caps.part_zero_is_e1 {
             // The Hurco's part zero is fixture offset E1.
             self.st.work.set(work_offsets::WorkId::Fixture(1), origin);
         }
@@ -924,11 +924,7 @@ impl Interp {
                     self.words.ng += 1;
                 }
                 Addr::L(b'M') => {
-                    let max_m = if self.dialect.id == DialectId::Hurco {
-                        MAX_CODES
-                    } else {
-                        3
-                    };
+                    let max_m = self.dialect.caps.max_m_per_block;
                     if self.words.nm >= max_m {
                         return Err(self.alarm(
                             AlarmKind::MCodeConflict,
@@ -1000,7 +996,7 @@ impl Interp {
 
     /// A `,C` / `,R` word (HX chamfer and corner R).
     fn collect_comma(&mut self, c: u8, wv: WVal) -> R<()> {
-        if self.dialect.id != DialectId::Hx || !matches!(c, b'C' | b'R') {
+        if !self.dialect.caps.comma_corners || !matches!(c, b'C' | b'R') {
             return Err(self.alarm(
                 AlarmKind::IllegalAddress,
                 wv.at,
@@ -1069,7 +1065,7 @@ impl Interp {
                 return Ok(r);
             }
         }
-        if self.dialect.id == DialectId::Puma && !self.macro_args() {
+        if self.dialect.caps.restricted_words && !self.macro_args() {
             self.puma_words()?;
         }
         self.execute_block()
@@ -1083,6 +1079,13 @@ impl Interp {
     }
 
     #[inline]
+    /// G92 (HX, Hurco) / G50 (PUMA, G-code system A): coordinate setting.
+    fn is_coordinate_setting(&self, code10: u16) -> bool {
+        self.gcode(code10).is_some_and(|g| {
+            g.means == Means::OneShot(crate::dialect::meaning::OneShot::CoordinateSetting)
+        })
+    }
+
     fn gcode(&self, code10: u16) -> Option<&'static crate::dialect::GCode> {
         match self.g_index.get(code10 as usize) {
             Some(g) => *g,
@@ -1174,7 +1177,7 @@ impl Interp {
                 MAction::Aux => {
                     self.emit(Canon::Aux { m, name: mc.name });
                     // 002: M48 use / M49 ignore the feedrate override.
-                    if self.dialect.id == DialectId::Hurco && (m == 48 || m == 49) {
+                    if self.dialect.caps.m48_feed_override && (m == 48 || m == 49) {
                         self.emit(Canon::Mode(ModeChange::FeedOverride(m == 48)));
                     }
                 }
@@ -1212,14 +1215,6 @@ impl Interp {
         };
         self.emit(Canon::Mode(m));
     }
-}
-
-/// G92 (HX, Hurco) / G50 (PUMA, G-code system A): coordinate setting.
-fn is_coordinate_setting(d: DialectId, code10: u16) -> bool {
-    matches!(
-        (d, code10),
-        (DialectId::Hx | DialectId::Hurco, 920) | (DialectId::Puma, 500)
-    )
 }
 
 fn ax_letter(a: Axis) -> u8 {

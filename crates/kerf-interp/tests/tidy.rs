@@ -1,13 +1,20 @@
 //! Code rules checked mechanically over the workspace's source (every
-//! `crates/*/src/**.rs`, test code left out: `#[cfg(test)]` modules, inline
-//! or in a file of their own, and `#[test]` functions), read as syntax trees:
+//! `crates/*/src/**.rs`, test code left out: `#[cfg(test)]` modules, in
+//! line or in their own file, and `#[test]` functions), read as syntax
+//! trees:
 //!
 //! - a motion command (`Canon::Rapid`, `Feed`, `Arc`, `Thread`) is built
 //!   only in the move seam, kerf-interp/src/interp/mover.rs: nothing else
 //!   can set the machine position and emit a move without the travel and
 //!   stored stroke checks;
 //! - no function is longer than [`MAX_FN_LINES`] lines, from `fn` to its
-//!   closing brace.
+//!   closing brace;
+//! - in kerf-interp outside `src/dialect/`, no dialect id
+//!   (`DialectId::Hx` …) and no G code number (value×10) matched as a
+//!   literal (a pattern, an `==`/`!=` operand, a `has_g`/`gcode` argument):
+//!   the interpreter asks the dialect's tables what a code means. The
+//!   uses not yet moved are counted per file in [`DIALECT_DEBT`], which
+//!   may only shrink.
 
 use std::path::{Path, PathBuf};
 
@@ -21,6 +28,40 @@ const MAX_FN_LINES: usize = 120;
 const MOVE_SEAM: &str = "crates/kerf-interp/src/interp/mover.rs";
 
 const MOTION: [&str; 4] = ["Rapid", "Feed", "Arc", "Thread"];
+
+/// The source the dialect rule covers, and the part of it exempt.
+const INTERP_SRC: &str = "crates/kerf-interp/src/";
+const DIALECT_DIR: &str = "crates/kerf-interp/src/dialect/";
+
+/// Calls whose integer argument is a G code number.
+const CODE_CALLS: [&str; 2] = ["has_g", "gcode"];
+
+/// The dialect ids and code literals still outside dialect/, per file
+/// (path under crates/kerf-interp/src, ids, code literals). A file may
+/// have fewer (then lower its numbers here), never more; a file not
+/// listed may have none.
+const DIALECT_DEBT: &[(&str, usize, usize)] = &[
+    ("alarms.rs", 3, 0),
+    ("interp/calls.rs", 0, 2),
+    ("interp/codes.rs", 1, 1),
+    ("interp/comp.rs", 3, 17),
+    ("interp/corners.rs", 0, 2),
+    ("interp/cycles.rs", 0, 30),
+    ("interp/hurco.rs", 0, 5),
+    ("interp/hurco_cycles.rs", 0, 14),
+    ("interp/lathe_chamfer.rs", 0, 4),
+    ("interp/lathe_mrc.rs", 0, 29),
+    ("interp/lathe_shape.rs", 0, 11),
+    ("interp/motion.rs", 1, 6),
+    ("interp/phases.rs", 1, 25),
+    ("interp/polar_interp.rs", 0, 26),
+    ("interp/puma_words.rs", 0, 4),
+    ("interp/reset.rs", 1, 0),
+    ("interp/system_b.rs", 0, 18),
+    ("interp/tool_offset.rs", 0, 3),
+    ("interp/transforms.rs", 0, 19),
+    ("interp.rs", 0, 2),
+];
 
 fn workspace() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
@@ -93,17 +134,19 @@ struct Findings {
     long_fns: Vec<(String, usize, usize)>,
     /// Lines where a motion `Canon` is built.
     motion_builds: Vec<usize>,
-    /// `#[cfg(test)] mod NAME;` declarations: test modules in files of
-    /// their own, left out like inline ones.
-    test_mod_files: Vec<String>,
+    /// Lines naming a dialect id (`DialectId::X`).
+    dialect_ids: Vec<usize>,
+    /// Lines matching an integer literal that is a G code number.
+    code_literals: Vec<usize>,
+    /// The G code numbers (value×10) of the dialects' tables that the
+    /// code-literal rule looks for; empty: the rule is off.
+    codes: Vec<u16>,
 }
 
 impl<'ast> Visit<'ast> for Findings {
     fn visit_item_mod(&mut self, m: &'ast syn::ItemMod) {
         if !is_test(&m.attrs) {
             visit::visit_item_mod(self, m);
-        } else if m.content.is_none() {
-            self.test_mod_files.push(m.ident.to_string());
         }
     }
 
@@ -144,9 +187,84 @@ impl<'ast> Visit<'ast> for Findings {
         }
         visit::visit_expr_struct(self, e);
     }
+
+    fn visit_path(&mut self, p: &'ast syn::Path) {
+        let n = p.segments.len();
+        if n >= 2 && p.segments[n - 2].ident == "DialectId" {
+            self.dialect_ids.push(p.span().start().line);
+        }
+        visit::visit_path(self, p);
+    }
+
+    fn visit_pat(&mut self, p: &'ast syn::Pat) {
+        match p {
+            syn::Pat::Lit(l) => self.code_lit(&l.lit),
+            syn::Pat::Range(r) => {
+                for e in [&r.start, &r.end].into_iter().flatten() {
+                    if let syn::Expr::Lit(l) = &**e {
+                        self.code_lit(&l.lit);
+                    }
+                }
+            }
+            _ => {}
+        }
+        visit::visit_pat(self, p);
+    }
+
+    fn visit_expr_binary(&mut self, e: &'ast syn::ExprBinary) {
+        if matches!(e.op, syn::BinOp::Eq(_) | syn::BinOp::Ne(_)) {
+            for side in [&*e.left, &*e.right] {
+                if let syn::Expr::Lit(l) = side {
+                    self.code_lit(&l.lit);
+                }
+            }
+        }
+        visit::visit_expr_binary(self, e);
+    }
+
+    fn visit_expr_method_call(&mut self, e: &'ast syn::ExprMethodCall) {
+        if CODE_CALLS.iter().any(|c| e.method == c) {
+            for a in &e.args {
+                if let syn::Expr::Lit(l) = a {
+                    self.code_lit(&l.lit);
+                }
+            }
+        }
+        visit::visit_expr_method_call(self, e);
+    }
+
+    fn visit_macro(&mut self, m: &'ast syn::Macro) {
+        // `matches!(expr, pattern)`: the pattern is checked like any other.
+        if m.path.is_ident("matches") {
+            let parsed = m.parse_body_with(|input: syn::parse::ParseStream| {
+                let e: syn::Expr = input.parse()?;
+                input.parse::<syn::Token![,]>()?;
+                let p = syn::Pat::parse_multi_with_leading_vert(input)?;
+                let _: proc_macro2::TokenStream = input.parse()?;
+                Ok((e, p))
+            });
+            if let Ok((e, p)) = parsed {
+                self.visit_expr(&e);
+                self.visit_pat(&p);
+            }
+        }
+        visit::visit_macro(self, m);
+    }
 }
 
 impl Findings {
+    /// An integer literal that is one of the tables' G code numbers (G04
+    /// and up: 0-30 are too common as plain numbers to tell apart).
+    fn code_lit(&mut self, l: &syn::Lit) {
+        if let syn::Lit::Int(i) = l {
+            if let Ok(v) = i.base10_parse::<u16>() {
+                if v >= 40 && self.codes.contains(&v) {
+                    self.code_literals.push(i.span().start().line);
+                }
+            }
+        }
+    }
+
     fn measure(&mut self, sig: &syn::Signature, body: &syn::Block) {
         let first = sig.fn_token.span().start().line;
         let last = body.brace_token.span.close().end().line;
@@ -157,32 +275,65 @@ impl Findings {
     }
 }
 
-/// The files a `#[cfg(test)] mod NAME;` in `path` may live in.
-fn module_files(path: &str, name: &str) -> [String; 2] {
-    let (dir, file) = path.rsplit_once('/').expect("a path under crates/");
-    let base = match file {
-        "lib.rs" | "main.rs" | "mod.rs" => dir.to_string(),
-        _ => format!("{dir}/{}", file.trim_end_matches(".rs")),
+/// Every G code number of the three dialects' tables.
+fn table_codes() -> Vec<u16> {
+    use kerf_interp::{Dialect, DialectId};
+    let mut v: Vec<u16> = [DialectId::Hx, DialectId::Puma, DialectId::Hurco]
+        .into_iter()
+        .flat_map(|d| Dialect::get(d).gcodes.iter().map(|g| g.code10))
+        .collect();
+    v.sort_unstable();
+    v.dedup();
+    v
+}
+
+/// The files of the test modules a file declares out of line
+/// (`#[cfg(test)] mod tests;` in `a/b.rs` is `a/b/tests.rs` or
+/// `a/b/tests/mod.rs`).
+fn test_module_files(path: &str, file: &syn::File) -> Vec<String> {
+    let (dir, stem) = path.rsplit_once('/').unwrap_or(("", path));
+    let stem = stem.trim_end_matches(".rs");
+    let base = if matches!(stem, "mod" | "lib" | "main") {
+        dir.to_string()
+    } else {
+        format!("{dir}/{stem}")
     };
-    [format!("{base}/{name}.rs"), format!("{base}/{name}/mod.rs")]
+    let mut out = Vec::new();
+    for item in &file.items {
+        if let syn::Item::Mod(m) = item {
+            if m.content.is_none() && is_test(&m.attrs) {
+                out.push(format!("{base}/{}.rs", m.ident));
+                out.push(format!("{base}/{}/mod.rs", m.ident));
+            }
+        }
+    }
+    out
 }
 
 fn findings() -> Vec<(String, Findings)> {
-    let all: Vec<(String, Findings)> = sources()
+    let codes = table_codes();
+    let parsed: Vec<(String, syn::File)> = sources()
         .into_iter()
         .map(|(path, text)| {
             let file = syn::parse_file(&text).unwrap_or_else(|e| panic!("{path}: {e}"));
-            let mut f = Findings::default();
+            (path, file)
+        })
+        .collect();
+    let tests: Vec<String> = parsed
+        .iter()
+        .flat_map(|(path, file)| test_module_files(path, file))
+        .collect();
+    parsed
+        .into_iter()
+        .filter(|(path, _)| !tests.contains(path))
+        .map(|(path, file)| {
+            let mut f = Findings {
+                codes: codes.clone(),
+                ..Findings::default()
+            };
             f.visit_file(&file);
             (path, f)
         })
-        .collect();
-    let test_files: Vec<String> = all
-        .iter()
-        .flat_map(|(path, f)| f.test_mod_files.iter().flat_map(|m| module_files(path, m)))
-        .collect();
-    all.into_iter()
-        .filter(|(path, _)| !test_files.contains(path))
         .collect()
 }
 
@@ -204,6 +355,47 @@ fn motion_commands_are_built_only_in_the_move_seam() {
     );
     // The rule sees the seam's own builds (it is not vacuous).
     assert!(in_seam >= 4, "found {in_seam} motion builds in {MOVE_SEAM}");
+}
+
+#[test]
+fn dialect_ids_and_code_literals_only_in_dialect() {
+    let mut bad = Vec::new();
+    let mut seen = Vec::new();
+    for (path, f) in findings() {
+        let Some(rel) = path.strip_prefix(INTERP_SRC) else {
+            continue;
+        };
+        if path.starts_with(DIALECT_DIR) {
+            continue;
+        }
+        let (ids, lits) = (f.dialect_ids.len(), f.code_literals.len());
+        let (max_ids, max_lits) = DIALECT_DEBT
+            .iter()
+            .find(|d| d.0 == rel)
+            .map_or((0, 0), |d| (d.1, d.2));
+        if ids > max_ids || lits > max_lits {
+            bad.push(format!(
+                "{path}: {ids} dialect ids (allowed {max_ids}) at lines {:?}, \
+                 {lits} G code literals (allowed {max_lits}) at lines {:?}",
+                f.dialect_ids, f.code_literals
+            ));
+        } else if ids < max_ids || lits < max_lits {
+            bad.push(format!(
+                "{path}: now {ids} dialect ids and {lits} G code literals: \
+                 lower its DIALECT_DEBT entry to (\"{rel}\", {ids}, {lits})"
+            ));
+        }
+        if ids + lits > 0 {
+            seen.push(format!("    (\"{rel}\", {ids}, {lits}),"));
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "dialect ids or G code numbers matched outside {DIALECT_DIR}: ask the \
+         dialect's tables (a meaning, a capability) instead:\n{}\n\ncurrent counts:\n{}",
+        bad.join("\n"),
+        seen.join("\n")
+    );
 }
 
 #[test]
@@ -239,23 +431,42 @@ fn the_rules_see_what_they_should() {
     );
     // One build (the pattern is not one), on the last line.
     assert_eq!(f.motion_builds, vec![text.lines().count()]);
-}
-
-#[test]
-fn out_of_line_test_modules_are_found_beside_their_parent() {
+    // A test module in its own file is test code; another module is not.
+    let decl = syn::parse_file("#[cfg(test)]\nmod tests;\nmod real;\n").unwrap();
     assert_eq!(
-        module_files("crates/a/src/sinks/plot.rs", "tests"),
+        test_module_files("crates/a/src/sinks/plot.rs", &decl),
         [
-            "crates/a/src/sinks/plot/tests.rs".to_string(),
-            "crates/a/src/sinks/plot/tests/mod.rs".to_string()
+            "crates/a/src/sinks/plot/tests.rs",
+            "crates/a/src/sinks/plot/tests/mod.rs"
         ]
     );
     assert_eq!(
-        module_files("crates/a/src/lib.rs", "tests")[0],
-        "crates/a/src/tests.rs"
+        test_module_files("crates/a/src/lib.rs", &decl),
+        ["crates/a/src/tests.rs", "crates/a/src/tests/mod.rs"]
     );
-    let file = syn::parse_file("#[cfg(test)]\nmod tests;\nmod real;\n").unwrap();
-    let mut f = Findings::default();
+}
+
+/// The dialect rule on text whose answer is known: ids in expressions
+/// and patterns, code numbers in patterns, ranges, `matches!`,
+/// comparisons and lookups; plain numbers and test code not.
+#[test]
+fn the_dialect_rule_sees_what_it_should() {
+    let text = "fn f(d: DialectId, c: u16, n: u32) {\n\
+                if d == DialectId::Hx {}\n\
+                match (d, c) { (DialectId::Puma, 500) => {} _ => {} }\n\
+                match c { 700..=760 => {} _ => {} }\n\
+                let _ = matches!(c, 170 | 180);\n\
+                let _ = c == 400 || n == 7 || n == 1000;\n\
+                let _ = self.words.has_g(800);\n\
+                let _ = [0u16; 32];\n\
+                }\n\
+                #[cfg(test)]\nmod tests { fn t() { let _ = DialectId::Hx; let _ = c == 400; } }\n";
+    let file = syn::parse_file(text).unwrap();
+    let mut f = Findings {
+        codes: table_codes(),
+        ..Findings::default()
+    };
     f.visit_file(&file);
-    assert_eq!(f.test_mod_files, ["tests"]);
+    assert_eq!(f.dialect_ids, vec![2, 3]);
+    assert_eq!(f.code_literals, vec![3, 4, 4, 5, 5, 6, 7]);
 }

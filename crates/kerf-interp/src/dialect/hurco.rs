@@ -26,7 +26,16 @@ const fn g(code10: u16, group: u8, default: bool, name: &'static str, support: S
 const fn means(code10: u16, group: u8) -> Means {
     use super::meaning::*;
     if group == 0 {
-        return Means::OneShot;
+        return Means::OneShot(match code10 {
+            380 => OneShot::Probe,
+            590 => OneShot::CancelWorkShift,
+            780 => OneShot::ThreadCycle,
+            920 => OneShot::CoordinateSetting,
+            c => match common_one_shot(c) {
+                Some(o) => o,
+                None => panic!("Hurco one-shot G code without a meaning"),
+            },
+        });
     }
     if let Some(m) = common(code10) {
         return m;
@@ -34,7 +43,7 @@ const fn means(code10: u16, group: u8) -> Means {
     match code10 {
         70 => Means::Diameter(false),
         80 => Means::Diameter(true),
-        330 => Means::Motion(MotionMode::Thread),
+        330 => Means::Motion(MotionMode::ThreadKI),
         700 => Means::Units(Units::Inch),
         800 => Means::Cycle(false),
         730 | 740 | 810..=840 => Means::Cycle(true),
@@ -213,4 +222,29 @@ pub static DIALECT: Dialect = Dialect {
     uvw_incremental: false,
     hurco_syntax: true,
     order: super::HURCO_TABLE_1,
+    caps: Caps {
+        bracket_nesting: 5,
+        power_on_params: false,
+        g53_checks: true,
+        comma_corners: false,
+        frame_codes: false,
+        rotary_interp: false,
+        max_loop_label: 3,
+        sub_nesting: 4,
+        m98_q_m99_l: false,
+        dwell_revs_param: false,
+        word_ranges: true,
+        dwell_is_f: true,
+        css_radius_word: true,
+        linear_rapid: true,
+        stops_stop_spindle: true,
+        max_m_per_block: crate::words::MAX_CODES,
+        m48_feed_override: true,
+        part_zero_is_e1: true,
+        gcode_system_b: false,
+        short_r_half_circle: false,
+        direct_drawing: false,
+        hx_variables: false,
+        restricted_words: false,
+    },
 };

@@ -24,7 +24,18 @@ const fn g(code10: u16, group: u8, default: bool, name: &'static str, support: S
 const fn means(code10: u16, group: u8) -> Means {
     use super::meaning::*;
     if group == 0 {
-        return Means::OneShot;
+        return Means::OneShot(match code10 {
+            100 | 520 => OneShot::Frame,
+            310..=314 | 370..=374 => OneShot::Skip,
+            390 => OneShot::CompCorner,
+            450 | 460 | 470 | 480 => OneShot::ToolOffset,
+            600 => OneShot::SingleDirection,
+            920 => OneShot::CoordinateSetting,
+            c => match common_one_shot(c) {
+                Some(o) => o,
+                None => panic!("HX one-shot G code without a meaning"),
+            },
+        });
     }
     if let Some(m) = common(code10) {
         return m;
@@ -36,7 +47,7 @@ const fn means(code10: u16, group: u8) -> Means {
         160 => Means::PolarCommand(true),
         220 => Means::Stroke(true),
         230 => Means::Stroke(false),
-        330 => Means::Motion(MotionMode::Thread),
+        330 => Means::Motion(MotionMode::ThreadF),
         430 => Means::LengthComp(LengthComp::Plus),
         440 => Means::LengthComp(LengthComp::Minus),
         490 => Means::LengthComp(LengthComp::Off),
@@ -192,4 +203,29 @@ pub static DIALECT: Dialect = Dialect {
     uvw_incremental: false,
     hurco_syntax: false,
     order: super::FANUC_MILL,
+    caps: Caps {
+        bracket_nesting: 10,
+        power_on_params: true,
+        g53_checks: false,
+        comma_corners: true,
+        frame_codes: true,
+        rotary_interp: true,
+        max_loop_label: 9999,
+        sub_nesting: 8,
+        m98_q_m99_l: true,
+        dwell_revs_param: true,
+        word_ranges: false,
+        dwell_is_f: false,
+        css_radius_word: false,
+        linear_rapid: false,
+        stops_stop_spindle: false,
+        max_m_per_block: 3,
+        m48_feed_override: false,
+        part_zero_is_e1: false,
+        gcode_system_b: false,
+        short_r_half_circle: false,
+        direct_drawing: false,
+        hx_variables: true,
+        restricted_words: false,
+    },
 };

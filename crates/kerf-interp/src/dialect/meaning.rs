@@ -9,7 +9,7 @@ use kerf_canon::Plane;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Means {
     /// A one-shot code (group 0): acts in its own block only.
-    OneShot,
+    OneShot(OneShot),
     /// Group 01: the motion mode.
     Motion(MotionMode),
     /// G96 (true) / G97: constant surface speed.
@@ -57,6 +57,43 @@ pub enum Means {
     Diameter(bool),
 }
 
+/// What a one-shot (group 0) code does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OneShot {
+    /// G04.
+    Dwell,
+    /// G09.
+    ExactStop,
+    /// G27-G30: reference position return and its check.
+    RefReturn,
+    /// G53: a move in machine coordinates.
+    MachineCoords,
+    /// G65: the macro call (run as the block is classified).
+    MacroCall,
+    /// G92 (HX, Hurco), G50 (PUMA system A): coordinate setting.
+    CoordinateSetting,
+    /// HX G10 and G52: run with the frame codes (interp/transforms.rs).
+    Frame,
+    /// PUMA G10: offset value setting, before the motion.
+    DataSetting,
+    /// G31-G31.4 and HX G37-G37.4: skip and tool length measurement.
+    Skip,
+    /// HX G39: the corner arc of cutter compensation.
+    CompCorner,
+    /// HX G45-G48: tool offset increase / decrease.
+    ToolOffset,
+    /// HX G60: single direction positioning.
+    SingleDirection,
+    /// PUMA G70-G76: the multiple repetitive cycles.
+    Mrc,
+    /// Hurco G38: the turret probe.
+    Probe,
+    /// Hurco G59: cancel the work coordinate shift.
+    CancelWorkShift,
+    /// Hurco G78: the threading cycle.
+    ThreadCycle,
+}
+
 /// The motion mode (group 01).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MotionMode {
@@ -68,8 +105,13 @@ pub enum MotionMode {
     ArcCw,
     /// G03.
     ArcCcw,
-    /// HX and Hurco G33, PUMA G32: thread cutting along a line.
-    Thread,
+    /// HX G33: thread cutting along a line, F the lead (000 §4.8).
+    ThreadF,
+    /// Hurco G33: thread cutting along a line, the lead in K (along Z)
+    /// or I (along X), P the start angle (002).
+    ThreadKI,
+    /// PUMA G32: lathe thread cutting, F or E the lead (001).
+    ThreadLathe,
     /// PUMA G90: the turning cycle.
     TurnCycle,
     /// PUMA G92: the thread cutting cycle.
@@ -178,7 +220,7 @@ impl Means {
     /// The kind of state this meaning sets.
     pub const fn kind(self) -> Kind {
         match self {
-            Means::OneShot => Kind::OneShot,
+            Means::OneShot(_) => Kind::OneShot,
             Means::Motion(_) => Kind::Motion,
             Means::Css(_) => Kind::Css,
             Means::Distance(_) => Kind::Distance,
@@ -203,6 +245,19 @@ impl Means {
             Means::Diameter(_) => Kind::Diameter,
         }
     }
+}
+
+/// The one-shot meanings the three controls share: G04, G09, G27-G30,
+/// G53, G65.
+pub(crate) const fn common_one_shot(code10: u16) -> Option<OneShot> {
+    Some(match code10 {
+        40 => OneShot::Dwell,
+        90 => OneShot::ExactStop,
+        270 | 280 | 290 | 300 => OneShot::RefReturn,
+        530 => OneShot::MachineCoords,
+        650 => OneShot::MacroCall,
+        _ => return None,
+    })
 }
 
 /// The meanings the three controls share under the same number: G00-G03,

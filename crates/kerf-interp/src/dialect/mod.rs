@@ -43,8 +43,8 @@ pub struct GCode {
     /// The manual's name for it.
     pub name: &'static str,
     pub support: Support,
-    /// What it means: the modal state it sets ([`Means::OneShot`] for
-    /// group 0).
+    /// What it means: the modal state it sets, or what a one-shot
+    /// (group 0) code does.
     pub means: Means,
 }
 
@@ -113,6 +113,67 @@ pub struct Dialect {
     /// The order in which a block's codes execute: [`FANUC_MILL`] on the
     /// HX, [`FANUC_LATHE`] on the PUMA, [`HURCO_TABLE_1`] on the Hurco.
     pub order: &'static [Phase],
+    /// What the control's language has or lacks beyond its tables.
+    pub caps: Caps,
+}
+
+/// The features in which the three controls' languages differ, one fact
+/// each, so that the interpreter asks the dialect instead of naming it.
+#[derive(Debug)]
+pub struct Caps {
+    /// Bracket nesting levels in a macro expression: 10 on the HX (000
+    /// §14.2.4), Fanuc's 5 elsewhere.
+    pub bracket_nesting: u8,
+    /// The HX power-on parameters PI 144-147 (000 §3.2) set the motion,
+    /// plane, distance and unit defaults.
+    pub power_on_params: bool,
+    /// 002: a G53 block's own checks (interp/hurco.rs).
+    pub g53_checks: bool,
+    /// The HX `,C` / `,R` chamfer and corner R words.
+    pub comma_corners: bool,
+    /// The HX frame codes G15/G16, G50/G51, G68/G69, G52.
+    pub frame_codes: bool,
+    /// The HX polar (G112/G113) and cylindrical (G107) interpolation.
+    pub rotary_interp: bool,
+    /// The highest WHILE … DO label: 1-9999 on the HX, Fanuc's 1-3.
+    pub max_loop_label: u32,
+    /// Subprogram nesting when the profile does not say (HX 8, Fanuc 4).
+    pub sub_nesting: u8,
+    /// HX M98 takes the repeat count as Q and M99 a return count L.
+    pub m98_q_m99_l: bool,
+    /// HX PI 120: in G95 a G04 counts spindle revolutions (000 §5.4).
+    pub dwell_revs_param: bool,
+    /// 002: the word ranges of the Hurco are checked per word.
+    pub word_ranges: bool,
+    /// 002: in a G04 block F is the dwell, not a feed.
+    pub dwell_is_f: bool,
+    /// 002: G96 takes the radius of the surface speed as R.
+    pub css_radius_word: bool,
+    /// 002: rapids move in a straight line (no dog-leg).
+    pub linear_rapid: bool,
+    /// 002: M00, M01, M02 and M30 stop the spindle.
+    pub stops_stop_spindle: bool,
+    /// M codes one block may carry: 3 (Fanuc), as many as the block holds
+    /// (002).
+    pub max_m_per_block: usize,
+    /// 002: M48 / M49 switch the feedrate override on / off.
+    pub m48_feed_override: bool,
+    /// 002: the part zero is fixture offset E1.
+    pub part_zero_is_e1: bool,
+    /// The PUMA's G-code system B (profile `gcode_system_b`).
+    pub gcode_system_b: bool,
+    /// 001 p.15 note (4): an arc R shorter than half the move makes a
+    /// half circle instead of an alarm.
+    pub short_r_half_circle: bool,
+    /// 001: A, D, L and E are read only by the codes that use them (PS009
+    /// otherwise).
+    pub restricted_words: bool,
+    /// 001: direct drawing dimension input (the angle A, the direct
+    /// chamfer and corner R of the next block).
+    pub direct_drawing: bool,
+    /// The HX numbering of system variables (000 §14: #2001-, #5001-)
+    /// and its calls by G, M and T code (PI 85-105).
+    pub hx_variables: bool,
 }
 
 /// One step of executing a block. A dialect lists its steps in the

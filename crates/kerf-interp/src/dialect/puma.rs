@@ -32,10 +32,19 @@ const fn g(code10: u16, group: u8, default: bool, name: &'static str, support: S
 const fn means(code10: u16, group: u8) -> Means {
     use super::meaning::*;
     if group == 0 {
-        return Means::OneShot;
+        return Means::OneShot(match code10 {
+            100 => OneShot::DataSetting,
+            310 => OneShot::Skip,
+            500 => OneShot::CoordinateSetting,
+            700..=760 => OneShot::Mrc,
+            c => match common_one_shot(c) {
+                Some(o) => o,
+                None => panic!("PUMA one-shot G code without a meaning"),
+            },
+        });
     }
     match code10 {
-        320 => return Means::Motion(MotionMode::Thread),
+        320 => return Means::Motion(MotionMode::ThreadLathe),
         900 => return Means::Motion(MotionMode::TurnCycle),
         920 => return Means::Motion(MotionMode::ThreadCycle),
         940 => return Means::Motion(MotionMode::FaceCycle),
@@ -223,4 +232,29 @@ pub static DIALECT: Dialect = Dialect {
     uvw_incremental: true,
     hurco_syntax: false,
     order: super::FANUC_LATHE,
+    caps: Caps {
+        bracket_nesting: 5,
+        power_on_params: false,
+        g53_checks: false,
+        comma_corners: false,
+        frame_codes: false,
+        rotary_interp: false,
+        max_loop_label: 3,
+        sub_nesting: 4,
+        m98_q_m99_l: false,
+        dwell_revs_param: false,
+        word_ranges: false,
+        dwell_is_f: false,
+        css_radius_word: false,
+        linear_rapid: false,
+        stops_stop_spindle: false,
+        max_m_per_block: 3,
+        m48_feed_override: false,
+        part_zero_is_e1: false,
+        gcode_system_b: true,
+        short_r_half_circle: true,
+        direct_drawing: true,
+        hx_variables: false,
+        restricted_words: true,
+    },
 };

@@ -17,7 +17,7 @@ use kerf_lang::{parse_block, Addr, Block, LineSource, Mark, RawBlock, Val};
 
 use super::{fmt_num, Interp, R};
 use crate::alarms::AlarmKind;
-use crate::dialect::{DialectId, Means};
+use crate::dialect::Means;
 
 /// Most N-numbered blocks a program may have for its sequence index.
 const SEQ_INDEX_MAX: usize = 65_536;
@@ -554,13 +554,9 @@ impl Interp {
     fn nesting_check(&self, macro_call: bool, at: u32) -> R<()> {
         let macros = self.calls.stack.iter().filter(|f| f.macro_call).count() as u32;
         let subs = self.calls.stack.len() as u32 - macros;
-        let d = self.dialect.id;
         let p = |n: &str, def: f64| self.profile.param(n, def) as u32;
         let max_macro = p("max_macro_nesting", 4.0);
-        let max_sub = p(
-            "max_sub_nesting",
-            if d == DialectId::Hx { 8.0 } else { 4.0 },
-        );
+        let max_sub = p("max_sub_nesting", self.dialect.caps.sub_nesting as f64);
         let max_all = p("max_call_nesting", 8.0);
         let msg = if macro_call && macros + 1 > max_macro {
             format!("macro calls nested more than {max_macro} levels")
@@ -577,7 +573,7 @@ impl Interp {
     /// M98 P_ [Q_ R_] L_ (HX, 000 §2.4.3) / M98 P_ L_ and the 8-digit
     /// count+program P (Fanuc).
     pub(super) fn m98(&mut self, at: u32) -> R<()> {
-        let hx = self.dialect.id == DialectId::Hx;
+        let hx = self.dialect.caps.m98_q_m99_l;
         let p = self.int_word(b'P', 99_999_999.0)?;
         let q = if hx {
             self.int_word(b'Q', 99_999.0)?
@@ -706,7 +702,7 @@ impl Interp {
     /// back to its start (or N P), L times when L is given.
     pub(super) fn m99(&mut self, at: u32) -> R<()> {
         let p = self.int_word(b'P', 99_999.0)?;
-        let l = if self.dialect.id == DialectId::Hx {
+        let l = if self.dialect.caps.m98_q_m99_l {
             self.int_word(b'L', 9999.0)?
         } else {
             None

@@ -48,7 +48,7 @@ impl Interp {
     /// Range check of 002 Tables 2-3 for Hurco geometric words.
     #[inline]
     pub(super) fn check_range(&self, l: u8, w: WVal) -> R<()> {
-        if self.dialect.id != DialectId::Hurco {
+        if !self.dialect.caps.word_ranges {
             return Ok(());
         }
         self.check_range_hurco(l, w)
@@ -110,7 +110,7 @@ impl Interp {
     // ---- F S T ---------------------------------------------------------------
 
     pub(super) fn f_word(&mut self, dwell: bool) -> R<()> {
-        if dwell && self.dialect.id == DialectId::Hurco {
+        if dwell && self.dialect.caps.dwell_is_f {
             return Ok(());
         }
         if let Some(f) = self.words.get(b'F') {
@@ -261,7 +261,7 @@ impl Interp {
                     304.8
                 };
             let r = match self.hurco.css_r {
-                Some(r) if self.dialect.id == DialectId::Hurco => r,
+                Some(r) if self.dialect.caps.css_radius_word => r,
                 _ => self.work_position()[0].abs(),
             }
             .max(1e-3);
@@ -279,7 +279,7 @@ impl Interp {
 
     pub(super) fn dwell(&mut self) -> R<()> {
         let w = &self.words;
-        let (secs, revs) = if self.dialect.id == DialectId::Hurco {
+        let (secs, revs) = if self.dialect.caps.dwell_is_f {
             // 002: "F is the only entry allowed in a G04 block".
             if let Some(x) = [b'X', b'Z', b'I', b'K', b'R', b'P', b'Q', b'A', b'H']
                 .iter()
@@ -329,7 +329,7 @@ impl Interp {
         }
         // HX PI 120 = 1: in G95 the dwell counts spindle revolutions, in
         // the same units (000 §5.4, "(G95) PI 120 (#3120) 1").
-        let (secs, revs) = if self.dialect.id == DialectId::Hx
+        let (secs, revs) = if self.dialect.caps.dwell_revs_param
             && self.st.modal.feed_mode.means == FeedMode::PerRev
             && self.profile.param("PI 120", 0.0) == 1.0
         {
@@ -412,7 +412,7 @@ impl Interp {
     }
 
     pub(super) fn linear_rapid(&self) -> bool {
-        self.dialect.id == DialectId::Hurco
+        self.dialect.caps.linear_rapid
     }
 
     pub(super) fn work_of(&self, mpos: &Pos) -> Pos {

@@ -65,8 +65,8 @@ pub(super) struct HeldCorner {
 
 /// A move in the plane handed to [`Interp::comp_path`].
 pub(super) struct CompPath {
-    /// Motion mode ×10 (0, 10, 20, 30).
-    pub(super) mode: u16,
+    /// Motion mode: G00-G03.
+    pub(super) mode: MotionMode,
     /// The path in the plane, transformed, and in program coordinates.
     pub(super) seg: Seg,
     pub(super) seg_p: Seg,
@@ -412,7 +412,11 @@ impl Interp {
         let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
         let (mode, seg_t, seg_p) = match seg.arc {
             None => (
-                if rapid { 0 } else { 10 },
+                if rapid {
+                    MotionMode::Rapid
+                } else {
+                    MotionMode::Linear
+                },
                 Seg::Line { a: s, b: e },
                 Seg::Line { a: sp, b: ep },
             ),
@@ -420,7 +424,11 @@ impl Interp {
                 let pc = (c.z, c.x);
                 let (_, _, ct, ccw_t) = self.transform_arc(cur, tw, pc, ccw, at)?;
                 (
-                    if ccw { 30 } else { 20 },
+                    if ccw {
+                        MotionMode::ArcCcw
+                    } else {
+                        MotionMode::ArcCw
+                    },
                     Seg::Arc {
                         a: s,
                         b: e,
@@ -457,7 +465,7 @@ impl Interp {
 
     /// The block's move in compensation (offset mode, or a held move or
     /// vector left over).
-    pub(super) fn comp_motion(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
+    pub(super) fn comp_motion(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<()> {
         if self.corner.is_some() {
             // A ,C/,R move held before the compensation started.
             return Err(self.corner_broken("a cutter compensation start-up (G41/G42)"));
@@ -465,8 +473,11 @@ impl Interp {
         let plane = self.st.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         let cur = self.prog_pos();
-        let arc = matches!(mode, 20 | 30);
-        if !matches!(mode, 0 | 10 | 20 | 30) {
+        let arc = matches!(mode, MotionMode::ArcCw | MotionMode::ArcCcw);
+        if !matches!(
+            mode,
+            MotionMode::Rapid | MotionMode::Linear | MotionMode::ArcCw | MotionMode::ArcCcw
+        ) {
             // G33 and the like: uncompensated, the look-ahead broken.
             self.comp_break()?;
             let c = self.comp.as_deref_mut().expect("comp");
@@ -486,15 +497,16 @@ impl Interp {
             if comp::dist(s, e) < comp::EPS && !ijk {
                 None
             } else {
-                match self.arc_center(tw, any, mode == 30, at)? {
+                match self.arc_center(tw, any, mode == MotionMode::ArcCcw, at)? {
                     None => None,
                     Some(pc) => {
-                        let (_, _, c, ccw) = self.transform_arc(cur, tw, pc, mode == 30, at)?;
+                        let (_, _, c, ccw) =
+                            self.transform_arc(cur, tw, pc, mode == MotionMode::ArcCcw, at)?;
                         let prog = Seg::Arc {
                             a: sp,
                             b: ep,
                             c: pc,
-                            ccw: mode == 30,
+                            ccw: mode == MotionMode::ArcCcw,
                         };
                         Some((Seg::Arc { a: s, b: e, c, ccw }, prog))
                     }
@@ -519,7 +531,9 @@ impl Interp {
         let on_now = self.comp.as_deref().is_some_and(|c| c.on);
         let corner = match word {
             None => None,
-            Some((_, w)) if mode == 0 => return Err(self.corner_no_move(w, "a G00 block")),
+            Some((_, w)) if mode == MotionMode::Rapid => {
+                return Err(self.corner_no_move(w, "a G00 block"))
+            }
             Some((_, w)) if !on_now => return Err(self.corner_no_move(w, "a G40 block")),
             Some((_, w)) if off_plane => {
                 return Err(self.corner_no_move(w, "a block that does not move in the plane alone"))
@@ -532,7 +546,7 @@ impl Interp {
                 word: self.src_here(w.at),
             })),
         };
-        let speed = if mode == 0 {
+        let speed = if mode == MotionMode::Rapid {
             Speed::Rapid
         } else {
             Speed::Feed(self.feed(at)?)
@@ -613,7 +627,7 @@ impl Interp {
         } = p;
         let plane = self.st.modal.plane.means;
         let (a1, a2, _) = plane.axes();
-        let arc = matches!(mode, 20 | 30);
+        let arc = matches!(mode, MotionMode::ArcCw | MotionMode::ArcCcw);
         let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
         self.comp_refresh();
         let c = self.comp.as_deref_mut().expect("comp");
@@ -752,7 +766,7 @@ impl Interp {
         &mut self,
         h: &mut Held,
         hc: &HeldCorner,
-        cut: (u16, bool, bool, P),
+        cut: (MotionMode, bool, bool, P),
         seg_p: &Seg,
         cur: Pos,
     ) -> R<(Held, P)> {
@@ -769,7 +783,7 @@ impl Interp {
         if !on {
             return Err(broken("G40"));
         }
-        if mode == 0 {
+        if mode == MotionMode::Rapid {
             return Err(broken("G00"));
         }
         if off_plane {
@@ -850,7 +864,7 @@ impl Interp {
     /// A move without motion in the plane (Z alone in G17): with a move
     /// held it is kept back and takes the corner's plane point; otherwise
     /// it moves at the vector in force.
-    fn comp_offplane(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
+    fn comp_offplane(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<()> {
         let c = self.comp.as_deref().expect("comp");
         if let Some(hc) = c.held.as_ref().and_then(|h| h.corner.as_ref()) {
             let k = if hc.chamfer { 'C' } else { 'R' };

@@ -66,15 +66,18 @@ impl Pending {
 
 impl Interp {
     /// The block's move when a move is held or the block carries `,C`/`,R`.
-    pub(super) fn corner_motion(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
+    pub(super) fn corner_motion(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<()> {
         let word = self.corner_word()?;
-        let circle =
-            matches!(mode, 20 | 30) && [b'I', b'J', b'K'].iter().any(|&l| self.words.has(l));
+        let circle = matches!(mode, MotionMode::ArcCw | MotionMode::ArcCcw)
+            && [b'I', b'J', b'K'].iter().any(|&l| self.words.has(l));
         let moves = any || circle;
-        let cutting = matches!(mode, 10 | 20 | 30);
+        let cutting = matches!(
+            mode,
+            MotionMode::Linear | MotionMode::ArcCw | MotionMode::ArcCcw
+        );
         if self.corner.is_some() {
             if !cutting {
-                let what = format!("G{}", fmt_code(mode));
+                let what = format!("G{}", fmt_code(self.st.modal.motion.code10));
                 return Err(self.corner_broken(&what));
             }
             if !moves {
@@ -91,7 +94,7 @@ impl Interp {
                 return self.plain_motion(mode, tw, any, at);
             };
             if !cutting {
-                let what = format!("a G{} block", fmt_code(mode));
+                let what = format!("a G{} block", fmt_code(self.st.modal.motion.code10));
                 return Err(self.corner_no_move(w, &what));
             }
             if !moves {
@@ -110,7 +113,7 @@ impl Interp {
     /// (or holds it in turn when it carries `,C`/`,R`).
     fn corner_next(
         &mut self,
-        mode: u16,
+        mode: MotionMode,
         tw: Pos,
         any: bool,
         at: u32,
@@ -244,7 +247,7 @@ impl Interp {
 
     /// The block's move from the current position to `tw` as a path in the
     /// plane; None when it does not move in the plane or moves another axis.
-    fn plane_path(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<Option<Seg>> {
+    fn plane_path(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<Option<Seg>> {
         let (a1, a2, _) = self.st.modal.plane.means.axes();
         let cur = self.prog_pos();
         if (0..NAXES).any(|i| i != a1 && i != a2 && (tw[i] - cur[i]).abs() > 1e-9) {
@@ -252,14 +255,14 @@ impl Interp {
         }
         let (a, b) = ((cur[a1], cur[a2]), (tw[a1], tw[a2]));
         let chord = (a.0 - b.0).hypot(a.1 - b.1);
-        if mode == 10 {
+        if mode == MotionMode::Linear {
             return Ok((chord >= EPS).then_some(Seg::Line { a, b }));
         }
         let ijk = [b'I', b'J', b'K'].iter().any(|&l| self.words.has(l));
         if chord < EPS && !ijk {
             return Ok(None); // R with the end at the start: no arc
         }
-        let ccw = mode == 30;
+        let ccw = mode == MotionMode::ArcCcw;
         Ok(self
             .arc_center(tw, any, ccw, at)?
             .map(|c| Seg::Arc { a, b, c, ccw }))

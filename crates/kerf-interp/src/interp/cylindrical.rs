@@ -65,12 +65,14 @@ impl Interp {
     /// A block's motion in G107: straight moves as usual (C in degrees),
     /// arcs on the developed surface.
     pub(super) fn cylinder_motion(&mut self, r: f64) -> R<()> {
-        let mode = self.st.modal.motion.code10;
+        let mode = self.st.modal.motion.means;
         let (tw, any) = self.target()?;
         let at = self.motion_at();
         match mode {
-            0 | 10 if any => return self.move_line(mode == 0, tw, at),
-            20 | 30 => {}
+            MotionMode::Rapid | MotionMode::Linear if any => {
+                return self.move_line(mode == MotionMode::Rapid, tw, at)
+            }
+            MotionMode::ArcCw | MotionMode::ArcCcw => {}
             _ => return Ok(()),
         }
         let (a1, a2) = match self.st.modal.plane.means {
@@ -89,7 +91,15 @@ impl Interp {
         let scale = |i: usize| if i == C { k } else { 1.0 };
         let cur = self.prog_pos();
         let dev = |p: &Pos| (p[a1] * scale(a1), p[a2] * scale(a2));
-        let Some(path) = self.plane_arc(dev(&cur), dev(&tw), any, mode == 30, at, None)? else {
+        let Some(path) = self.plane_arc(
+            dev(&cur),
+            dev(&tw),
+            any,
+            mode == MotionMode::ArcCcw,
+            at,
+            None,
+        )?
+        else {
             return Ok(());
         };
         let feed = self.feed(at)?;

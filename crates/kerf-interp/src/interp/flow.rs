@@ -168,11 +168,7 @@ impl Interp {
     /// The loop labels the control accepts: DO1-DO3 on the Fanuc
     /// profiles, any label 1-9999 on the HX (its sample uses DO 210).
     pub(super) fn check_loop_label(&self, label: u32, at: u32) -> R<()> {
-        let max = if self.dialect.id == DialectId::Hx {
-            9999
-        } else {
-            3
-        };
+        let max = self.dialect.caps.max_loop_label;
         if label == 0 || label > max {
             return Err(self.alarm(
                 AlarmKind::BadLoop,

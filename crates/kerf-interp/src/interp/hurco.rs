@@ -164,7 +164,7 @@ impl Interp {
 
     /// 002: M00, M01 (when it stops), M02 and M30 turn the spindle off.
     pub(super) fn hurco_stop_spindle(&mut self) {
-        if self.dialect.id != DialectId::Hurco || self.st.spindle == SpindleDir::Stop {
+        if !self.dialect.caps.stops_stop_spindle || self.st.spindle == SpindleDir::Stop {
             return;
         }
         self.st.spindle = SpindleDir::Stop;

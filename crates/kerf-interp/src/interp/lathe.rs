@@ -164,15 +164,16 @@ impl Interp {
     }
 
     /// The block's move in G32, G90, G92 or G94 mode (PUMA).
-    pub(super) fn lathe_motion(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
+    pub(super) fn lathe_motion(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<()> {
         if !any {
             return Ok(());
         }
-        if mode == 320 {
+        if mode == MotionMode::ThreadLathe {
             return self.thread_to(tw, at);
         }
         let a = self.zx_pos();
-        let fresh = self.words.gs().iter().any(|g| g.0 == mode);
+        let code = self.st.modal.motion.code10;
+        let fresh = self.words.gs().iter().any(|g| g.0 == code);
         let xi = Axis::X as usize;
         let zi = Axis::Z as usize;
         let has = |me: &Self, ax: Axis| me.words.has(ax_letter(ax)) || me.uvw(ax).is_some();
@@ -195,7 +196,7 @@ impl Interp {
         let at_r = self.words.get(b'R').map(|w| w.at).unwrap_or(at);
         // Cases 3 and 4 of the figures: |R| ≤ |U/2| (|W| for G94); beyond,
         // the cut would start behind the start point.
-        let (len, rr) = if mode == 940 {
+        let (len, rr) = if mode == MotionMode::FaceCycle {
             (e.z - a.z, r)
         } else {
             (e.x - a.x, r)
@@ -206,17 +207,17 @@ impl Interp {
                 at_r,
                 format!(
                     "G{}: taper R {} is larger than the cycle's {} distance {} (cases 3/4 need |R| ≤ |{}|)",
-                    mode / 10,
+                    code / 10,
                     fmt_num(rr),
-                    if mode == 940 { "Z" } else { "X (radius)" },
+                    if mode == MotionMode::FaceCycle { "Z" } else { "X (radius)" },
                     fmt_num(len.abs()),
-                    if mode == 940 { "W" } else { "U/2" }
+                    if mode == MotionMode::FaceCycle { "W" } else { "U/2" }
                 ),
             ));
         }
         let mvs: Vec<Mv> = match mode {
-            900 => turning::g90(a, e, r).to_vec(),
-            940 => turning::g94(a, e, r).to_vec(),
+            MotionMode::TurnCycle => turning::g90(a, e, r).to_vec(),
+            MotionMode::FaceCycle => turning::g94(a, e, r).to_vec(),
             _ => {
                 let c = if self.lathe.chamfer_on {
                     self.profile.param("thread_chamfer_leads", 1.0) * self.st.feed.unwrap_or(0.0)

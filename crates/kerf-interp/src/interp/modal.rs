@@ -105,7 +105,7 @@ impl Modal {
             Active { means, code10 }
         }
         match g.means {
-            Means::OneShot => {}
+            Means::OneShot(_) => {}
             Means::Motion(v) => self.motion = a(v, c),
             Means::Css(v) => self.css = a(v, c),
             Means::Distance(v) => self.distance = a(v, c),
@@ -217,7 +217,7 @@ mod tests {
                 }
                 assert_eq!(
                     a.group == 0,
-                    a.means == Means::OneShot,
+                    a.means.kind() == Kind::OneShot,
                     "{id:?} G{}",
                     a.code10
                 );
@@ -303,7 +303,10 @@ mod tests {
         assert_eq!(code(DialectId::Hurco, 700), M::Units(Units::Inch));
         assert_eq!(code(DialectId::Puma, 900), M::Motion(MotionMode::TurnCycle));
         assert_eq!(code(DialectId::Hx, 900), M::Distance(Distance::Absolute));
-        assert_eq!(code(DialectId::Hurco, 590), M::OneShot);
+        assert_eq!(
+            code(DialectId::Hurco, 590),
+            M::OneShot(crate::dialect::meaning::OneShot::CancelWorkShift)
+        );
         let mut m = Modal::power_on(Dialect::get(DialectId::Hurco), Plane::ZX);
         m.set(Dialect::get(DialectId::Hurco).gcode(700).unwrap());
         assert!(!m.metric());

@@ -188,16 +188,16 @@ impl Interp {
         if self.st.rot != polar_interp::RotInterp::Off {
             return self.rotary_interp_motion();
         }
-        let mode = self.st.modal.motion.code10;
-        let puma = self.dialect.id == DialectId::Puma;
-        let (tw, any) = if puma {
+        let mode = self.st.modal.motion.means;
+        let ddi = self.dialect.caps.direct_drawing;
+        let (tw, any) = if ddi {
             self.ddi_target()?
         } else {
             self.target()?
         };
         let at = self.motion_at();
         // PUMA direct chamfer / corner R (interp/lathe_chamfer.rs).
-        if puma && mode == 10 && any && self.ddi_words() {
+        if ddi && mode == MotionMode::Linear && any && self.ddi_words() {
             return self.ddi_motion(tw, at);
         }
         if self.comp.is_some() {
@@ -212,16 +212,17 @@ impl Interp {
     }
 
     /// The block's move without chamfer or corner R.
-    pub(super) fn plain_motion(&mut self, mode: u16, tw: Pos, any: bool, at: u32) -> R<()> {
+    pub(super) fn plain_motion(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<()> {
+        use MotionMode::*;
         match mode {
-            0 | 10 if any => self.move_line(mode == 0, tw, at)?,
-            330 if any && self.dialect.id == DialectId::Hx => self.thread_line(tw, at)?,
-            320 | 900 | 920 | 940 if self.dialect.id == DialectId::Puma => {
+            Rapid | Linear if any => self.move_line(mode == Rapid, tw, at)?,
+            ThreadF if any => self.thread_line(tw, at)?,
+            ThreadLathe | TurnCycle | ThreadCycle | FaceCycle => {
                 self.lathe_motion(mode, tw, any, at)?
             }
-            330 if any && self.dialect.id == DialectId::Hurco => self.hurco_g33(tw, at)?,
-            20 | 30 => self.arc(tw, any, mode == 30, at)?,
-            _ => {}
+            ThreadKI if any => self.hurco_g33(tw, at)?,
+            ArcCw | ArcCcw => self.arc(tw, any, mode == ArcCcw, at)?,
+            Rapid | Linear | ThreadF | ThreadKI => {}
         }
         Ok(())
     }
@@ -300,7 +301,7 @@ impl Interp {
             }
             // 001 p.15 note (4): on the PUMA an R shorter than half the
             // move is overridden and a half circle made; the others alarm.
-            let tol = if self.dialect.id == DialectId::Puma {
+            let tol = if self.dialect.caps.short_r_half_circle {
                 f64::INFINITY
             } else {
                 self.arc_tol

@@ -115,7 +115,7 @@ impl Interp {
             }
             if let Means::Motion(_) = g.means {
                 motion = Some((c, at));
-            } else if g.means == Means::OneShot {
+            } else if let Means::OneShot(_) = g.means {
                 one_shot[n_one] = (c, at);
                 n_one += 1;
             }
@@ -240,7 +240,7 @@ impl Interp {
         for i in 0..self.words.ng {
             let (c, _) = self.words.g[i];
             let Some(g) = self.gcode(c) else { continue };
-            if !matches!(g.means, Means::OneShot | Means::Motion(_)) {
+            if !matches!(g.means, Means::OneShot(_) | Means::Motion(_)) {
                 self.apply_modal(g);
                 if g.means == Means::ModalCall(false) {
                     self.g67();
@@ -302,9 +302,7 @@ impl Interp {
                 || one_shot.iter().any(|g| {
                     matches!(g.0, 270 | 280 | 290 | 300 | 530 | 310..=314 | 370..=374 | 450..=480 | 700..=760)
                 });
-            let setting = one_shot
-                .iter()
-                .any(|g| is_coordinate_setting(self.dialect.id, g.0));
+            let setting = one_shot.iter().any(|g| self.is_coordinate_setting(g.0));
             self.comp_codes(one_shot, special, setting)
         } else {
             Ok(false)
@@ -349,34 +347,36 @@ impl Interp {
     /// Runs the block's one-shot codes that act before motion (G10 on
     /// the PUMA, coordinate setting, G59 on the Hurco) and notes the rest.
     fn one_shots(&mut self, one_shot: &[(u16, u32)]) -> R<OneShots> {
-        let d = self.dialect;
-        let hurco = d.id == DialectId::Hurco;
+        use crate::dialect::meaning::OneShot::*;
         let mut os = OneShots::default();
         for &(c, at) in one_shot {
-            match (d.id, c) {
-                (_, 40) => os.dwell = true,
-                (_, 270 | 280 | 290 | 300) => os.refret = Some((c, at)),
-                (_, 90) => os.g09 = true,
-                (DialectId::Hx, 600) => os.g60 = Some(at),
-                (_, 530) => {
-                    if hurco {
+            let Some(Means::OneShot(what)) = self.gcode(c).map(|g| g.means) else {
+                continue;
+            };
+            match what {
+                Dwell => os.dwell = true,
+                RefReturn => os.refret = Some((c, at)),
+                ExactStop => os.g09 = true,
+                SingleDirection => os.g60 = Some(at),
+                MachineCoords => {
+                    if self.dialect.caps.g53_checks {
                         self.g53_checks(at)?;
                     }
                     os.g53 = true
                 }
-                (DialectId::Hx, 310..=314 | 370..=374) => os.skip = Some((c, at)),
-                (DialectId::Hx, 450 | 460 | 470 | 480) => os.g45 = Some((c, at)),
-                (DialectId::Puma, 100) => {
+                Skip => os.skip = Some((c, at)),
+                ToolOffset => os.g45 = Some((c, at)),
+                DataSetting => {
                     os.setting = true;
                     self.g10(at)?
                 }
-                (DialectId::Puma, 700..=760) => os.mrc = Some((c, at)),
-                _ if is_coordinate_setting(d.id, c) => {
+                Mrc => os.mrc = Some((c, at)),
+                CoordinateSetting => {
                     os.setting = true;
                     self.coordinate_setting(at)?
                 }
-                (DialectId::Hurco, 590) => self.st.shift = [0.0; NAXES],
-                _ => {}
+                CancelWorkShift => self.st.shift = [0.0; NAXES],
+                MacroCall | Frame | CompCorner | Probe | ThreadCycle => {}
             }
         }
         Ok(os)

@@ -67,7 +67,7 @@ impl Interp {
     /// it). Returns true when the block's axis words were G107's radius
     /// (the block then makes no move).
     pub(super) fn rotary_interp_codes(&mut self) -> R<bool> {
-        if self.dialect.id != DialectId::Hx {
+        if !self.dialect.caps.rotary_interp {
             return Ok(false);
         }
         let was = self.st.rot;
@@ -191,10 +191,10 @@ impl Interp {
     /// absolute or incremental); the other axes move linearly along.
     /// G00 alarms (Fanuc).
     fn polar_motion(&mut self, c0: f64) -> R<()> {
-        let mode = self.st.modal.motion.code10;
+        let mode = self.st.modal.motion.means;
         let (tw, any) = self.target()?;
         let at = self.motion_at();
-        if mode == 0 {
+        if mode == MotionMode::Rapid {
             if any {
                 return Err(self.alarm(
                     AlarmKind::PolarInterp,
@@ -223,10 +223,10 @@ impl Interp {
         };
         let v1 = (coord(self, b'X', v0.0)?, coord(self, b'C', v0.1)?);
         let path = match mode {
-            10 if any => Path::Line { s: v0, e: v1 },
-            20 | 30 => {
+            MotionMode::Linear if any => Path::Line { s: v0, e: v1 },
+            MotionMode::ArcCw | MotionMode::ArcCcw => {
                 let ijk = Some((b'I', b'J'));
-                match self.plane_arc(v0, v1, any, mode == 30, at, ijk)? {
+                match self.plane_arc(v0, v1, any, mode == MotionMode::ArcCcw, at, ijk)? {
                     Some(p) => p,
                     None => return Ok(()),
                 }

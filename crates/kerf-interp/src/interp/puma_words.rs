@@ -58,7 +58,10 @@ impl Interp {
             });
             let thread = match motion_g {
                 Some(g) => thread_code(g.0),
-                None => thread_code(self.st.modal.motion.code10),
+                None => matches!(
+                    self.st.modal.motion.means,
+                    MotionMode::ThreadLathe | MotionMode::ThreadCycle
+                ),
             };
             if !thread {
                 return Err(self.unused_word(b'E', w.at, "a threading block (G32, G92, G76)"));

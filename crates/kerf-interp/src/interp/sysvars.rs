@@ -12,7 +12,6 @@ use kerf_canon::NAXES;
 use super::work_offsets::WorkId;
 use super::Interp;
 use crate::alarms::AlarmKind;
-use crate::dialect::DialectId;
 use crate::machine::MachineKind;
 use crate::macros::{Lookup, MacroError, VarClass, Vars};
 
@@ -187,7 +186,7 @@ impl Interp {
 
     fn sys_decode(&self, i: usize) -> Option<Sys> {
         use Sys::*;
-        Some(if self.dialect.id == DialectId::Hx {
+        Some(if self.dialect.caps.hx_variables {
             match i {
                 2112..=2239 => D(i - 2111),
                 2240..=2367 => H(i - 2239),

@@ -21,8 +21,11 @@ use super::*;
 impl Interp {
     /// The block's move under G45-G48 (`code` ×10), `at` the code's column.
     pub(super) fn tool_offset_motion(&mut self, code: u16, at: u32) -> R<()> {
-        let mode = self.st.modal.motion.code10;
-        if !matches!(mode, 0 | 10 | 20 | 30) {
+        let mode = self.st.modal.motion.means;
+        if !matches!(
+            mode,
+            MotionMode::Rapid | MotionMode::Linear | MotionMode::ArcCw | MotionMode::ArcCcw
+        ) {
             return Err(self.alarm(
                 AlarmKind::ToolOffset,
                 at,
@@ -66,9 +69,11 @@ impl Interp {
         }
         let at = self.motion_at();
         match mode {
-            0 | 10 => self.move_line(mode == 0, t, at),
+            MotionMode::Rapid | MotionMode::Linear => {
+                self.move_line(mode == MotionMode::Rapid, t, at)
+            }
             _ => {
-                let ccw = mode == 30;
+                let ccw = mode == MotionMode::ArcCcw;
                 let (a1, a2, _) = self.st.modal.plane.means.axes();
                 let center =
                     if let Some(r) = self.words.get(b'R') {

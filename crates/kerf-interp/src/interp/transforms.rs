@@ -14,7 +14,7 @@ impl Interp {
     /// true when the block's axis words were the data of one of them: the
     /// block then makes no move.
     pub(super) fn transform_codes(&mut self, one_shot: &[(u16, u32)]) -> R<bool> {
-        if self.dialect.id != DialectId::Hx {
+        if !self.dialect.caps.frame_codes {
             return Ok(false);
         }
         let mut data = false;
