@@ -140,13 +140,40 @@ fn report_and_plot() {
     assert_eq!(r["final"]["work"]["x"], 10.0);
     let s = std::fs::read_to_string(&svg).unwrap();
     // One dashed path for the rapid (and the legend's dashed sample), one
-    // chained path for the four cuts of tool 0: M0 0 then four L.
+    // chained path for the four cuts of tool 0: a move then four lines that
+    // close a rectangle twice as wide as it is high, drawn at one scale in
+    // X and Y with Y up (screen y falls as Y rises).
     assert!(s.starts_with("<svg"), "{s}");
     assert_eq!(s.matches("stroke-dasharray").count(), 2, "{s}");
-    assert!(
-        s.contains("<path d=\"M0 0L100 0L100 -50L0 -50L0 0\" stroke=\"#036\"/>"),
-        "{s}"
-    );
+    let rect = s
+        .split("<path d=\"")
+        .skip(1)
+        .map(|p| p.split('"').next().unwrap())
+        .map(svg_points)
+        .find(|pts| pts.len() == 5)
+        .unwrap_or_else(|| panic!("no five-point path: {s}"));
+    let [(x0, y0), (x1, y1), (x2, y2), (x3, y3), (x4, y4)] = rect[..] else {
+        unreachable!()
+    };
+    let (w, h) = (x1 - x0, y1 - y2);
+    assert!(w > 100.0 && (w - 2.0 * h).abs() < 0.02, "{rect:?}");
+    assert!((y1 - y0).abs() < 0.01 && (x2 - x1).abs() < 0.01, "{rect:?}");
+    assert!((x3 - x0).abs() < 0.01 && (y3 - y2).abs() < 0.01, "{rect:?}");
+    assert!((x4 - x0).abs() < 0.01 && (y4 - y0).abs() < 0.01, "{rect:?}");
+}
+
+/// The points of an SVG path made of `M x y` and `L x y` commands.
+fn svg_points(d: &str) -> Vec<(f64, f64)> {
+    d.split(['M', 'L'])
+        .filter(|p| !p.trim().is_empty())
+        .filter_map(|p| {
+            let mut it = p.split_whitespace().map(|v| v.parse::<f64>());
+            match (it.next(), it.next()) {
+                (Some(Ok(x)), Some(Ok(y))) => Some((x, y)),
+                _ => None,
+            }
+        })
+        .collect()
 }
 
 #[test]

@@ -239,12 +239,9 @@ pub fn load_profile(name: &str) -> Result<Profile, LoadError> {
 }
 
 /// Adds "did you mean" to an unknown `--set` key error.
-fn suggest_key(err: String, profile: &Profile) -> String {
-    let Some(key) = err
-        .strip_prefix("--set ")
-        .and_then(|r| r.strip_suffix(": unknown key (see docs/formats.md)"))
-    else {
-        return err;
+fn suggest_key(err: crate::settings::SettingsError, profile: &Profile) -> String {
+    let crate::settings::SettingsError::UnknownKey { key } = &err else {
+        return err.to_string();
     };
     let params = profile.params.keys().map(String::as_str);
     match crate::suggest::closest(
@@ -256,7 +253,7 @@ fn suggest_key(err: String, profile: &Profile) -> String {
             .chain(params),
     ) {
         Some(k) => format!("--set {key}: unknown key; did you mean '{k}'? (see docs/formats.md)"),
-        None => err,
+        None => err.to_string(),
     }
 }
 

@@ -253,6 +253,7 @@ impl Runner {
         }
     }
 
+    #[inline]
     fn event(&mut self, e: Event, sinks: &mut [&mut dyn Sink]) -> Result<(), RunError> {
         let from = self.work;
         if let Some(m) = e.motion() {
@@ -294,7 +295,9 @@ impl Runner {
     /// timeline pieces.
     fn drain(&mut self, sinks: &mut [&mut dyn Sink]) -> Result<(), RunError> {
         while let Some(d) = self.planner.next_done() {
-            let Some(p) = self.pending.pop_front() else {
+            // Handed out where it lies in the queue (a pop would first
+            // move the 350-byte record out).
+            let Some(p) = self.pending.front() else {
                 break;
             };
             let t = Timed {
@@ -305,10 +308,15 @@ impl Runner {
                 time: d.time,
                 feed_mm_min: p.feed_mm_min,
             };
-            let cx = self.context();
+            let cx = Context {
+                interp: &self.it,
+                planner: &self.planner,
+                warnings: &self.warnings.list,
+            };
             for s in sinks.iter_mut() {
                 s.timed(&t, &cx).map_err(sink_err(*s))?;
             }
+            self.pending.pop_front();
         }
         if !self.pieces {
             return Ok(());

@@ -2,6 +2,28 @@
 
 use kerf_interp::{Profile, Settings};
 
+/// Why a `--set` list was refused.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SettingsError {
+    /// A key that is no setting, switch or profile parameter (the caller
+    /// may offer the closest of [`KEYS`]).
+    #[error("--set {key}: unknown key (see docs/formats.md)")]
+    UnknownKey {
+        /// The key as written.
+        key: String,
+    },
+    /// A known key with a value it does not take, or no `=` at all; the
+    /// message names the key, the value and what was expected.
+    #[error("{0}")]
+    BadValue(String),
+}
+
+impl From<String> for SettingsError {
+    fn from(message: String) -> SettingsError {
+        SettingsError::BadValue(message)
+    }
+}
+
 fn on_off(key: &str, v: &str) -> Result<bool, String> {
     match v.to_ascii_lowercase().as_str() {
         "on" | "1" | "true" | "yes" => Ok(true),
@@ -33,14 +55,14 @@ pub const KEYS: &[&str] = &[
 ];
 
 /// Parses the `--set` list; parameters are written into the profile.
-pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String> {
+pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, SettingsError> {
     let mut s = Settings {
         max_blocks: 0,
         ..Settings::default()
     };
     for kv in sets {
         let Some((k, v)) = kv.split_once('=') else {
-            return Err(format!("--set {kv}: expected KEY=VALUE"));
+            return Err(format!("--set {kv}: expected KEY=VALUE").into());
         };
         let (k, v) = (k.trim(), v.trim());
         match k {
@@ -55,7 +77,7 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
                         .parse()
                         .map_err(|_| format!("--set block_skip={v}: levels are 0-10"))?;
                     if n > 10 {
-                        return Err(format!("--set block_skip={v}: levels are 0-10"));
+                        return Err(format!("--set block_skip={v}: levels are 0-10").into());
                     }
                     s.block_skip |= 1 << n;
                 }
@@ -89,9 +111,9 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
                     "x" | "X" => 0,
                     "z" | "Z" => 2,
                     _ => {
-                        return Err(format!(
-                            "--set {k}: the probe surface is probe.x or probe.z"
-                        ))
+                        return Err(
+                            format!("--set {k}: the probe surface is probe.x or probe.z").into(),
+                        )
                     }
                 };
                 let val: f64 = v
@@ -120,7 +142,7 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, String>
                 let name = normalise_param(k);
                 profile.params.insert(name, val);
             }
-            _ => return Err(format!("--set {k}: unknown key (see docs/formats.md)")),
+            _ => return Err(SettingsError::UnknownKey { key: k.to_string() }),
         }
     }
     Ok(s)
@@ -227,6 +249,29 @@ fn normalise_param(k: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn refusals_say_whether_the_key_or_the_value_is_wrong() {
+        let mut p = Profile::builtin("hx-mc").unwrap();
+        let unknown = parse(&["singel_block=on".into()], &mut p).unwrap_err();
+        assert_eq!(
+            unknown,
+            SettingsError::UnknownKey {
+                key: "singel_block".into()
+            }
+        );
+        assert_eq!(
+            unknown.to_string(),
+            "--set singel_block: unknown key (see docs/formats.md)"
+        );
+        let bad = parse(&["single_block=maybe".into()], &mut p).unwrap_err();
+        assert_eq!(
+            bad,
+            SettingsError::BadValue("--set single_block=maybe: expected on or off".into())
+        );
+        let no_value = parse(&["dry_run".into()], &mut p).unwrap_err();
+        assert_eq!(no_value.to_string(), "--set dry_run: expected KEY=VALUE");
+    }
 
     #[test]
     fn every_listed_key_is_accepted() {

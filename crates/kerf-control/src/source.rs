@@ -101,22 +101,57 @@ pub struct Opened {
     pub read: Arc<AtomicU64>,
 }
 
-/// Opens a program file, refusing what is not program text.
-pub fn open_file(path: &Path) -> Result<Opened, String> {
-    let name = path.display();
-    if path.is_dir() {
-        return Err(format!("{name}: is a folder, not a program"));
+/// A main program that could not be opened or is not program text; the
+/// message names it (`FILE: is a folder, not a program`).
+#[derive(Debug, thiserror::Error)]
+#[error("{name}: {problem}")]
+pub struct SourceError {
+    /// The file as given (or the text's name).
+    pub name: String,
+    /// What is wrong.
+    pub problem: SourceProblem,
+}
+
+/// Why a main program is not read.
+#[derive(Debug, thiserror::Error)]
+pub enum SourceProblem {
+    /// The path is a folder.
+    #[error("is a folder, not a program")]
+    Folder,
+    /// Opening or reading failed.
+    #[error("{0}")]
+    Io(#[from] io::Error),
+    /// Binary data or UTF-16 text (the reason as printed).
+    #[error("{0}")]
+    NotText(&'static str),
+}
+
+impl From<SourceError> for crate::job::LoadError {
+    fn from(e: SourceError) -> crate::job::LoadError {
+        crate::job::LoadError(e.to_string())
     }
-    let mut f = File::open(path).map_err(|e| format!("{name}: {e}"))?;
-    let len = f.metadata().map_err(|e| format!("{name}: {e}"))?.len();
+}
+
+/// Opens a program file, refusing what is not program text.
+pub fn open_file(path: &Path) -> Result<Opened, SourceError> {
+    let named = |problem| SourceError {
+        name: path.display().to_string(),
+        problem,
+    };
+    if path.is_dir() {
+        return Err(named(SourceProblem::Folder));
+    }
+    open_reader(path).map_err(named)
+}
+
+fn open_reader(path: &Path) -> Result<Opened, SourceProblem> {
+    let mut f = File::open(path)?;
+    let len = f.metadata()?.len();
     let mut head = Vec::with_capacity(HEAD);
-    (&mut f)
-        .take(HEAD as u64)
-        .read_to_end(&mut head)
-        .map_err(|e| format!("{name}: {e}"))?;
-    let skip = check_head(&head).map_err(|why| format!("{name}: {why}"))?;
+    (&mut f).take(HEAD as u64).read_to_end(&mut head)?;
+    let skip = check_head(&head)?;
     let read = Arc::new(AtomicU64::new(0));
-    let r = Counted::new(f, skip, read.clone()).map_err(|e| format!("{name}: {e}"))?;
+    let r = Counted::new(f, skip, read.clone())?;
     Ok(Opened {
         reader: Box::new(r),
         len: len - skip,
@@ -125,11 +160,15 @@ pub fn open_file(path: &Path) -> Result<Opened, String> {
 }
 
 /// Opens program text held in memory, as [`open_file`] does a file.
-pub fn open_text(name: &str, text: &[u8]) -> Result<Opened, String> {
-    let skip = check_head(&text[..text.len().min(HEAD)]).map_err(|why| format!("{name}: {why}"))?;
+pub fn open_text(name: &str, text: &[u8]) -> Result<Opened, SourceError> {
+    let named = |problem| SourceError {
+        name: name.to_string(),
+        problem,
+    };
+    let skip = check_head(&text[..text.len().min(HEAD)]).map_err(named)?;
     let read = Arc::new(AtomicU64::new(0));
     let r = Counted::new(Cursor::new(text.to_vec()), skip, read.clone())
-        .map_err(|e| format!("{name}: {e}"))?;
+        .map_err(|e| named(SourceProblem::Io(e)))?;
     Ok(Opened {
         reader: Box::new(r),
         len: text.len() as u64 - skip,
@@ -138,9 +177,9 @@ pub fn open_text(name: &str, text: &[u8]) -> Result<Opened, String> {
 }
 
 /// The bytes to skip (a byte-order mark), or why the text is refused.
-fn check_head(head: &[u8]) -> Result<u64, &'static str> {
+fn check_head(head: &[u8]) -> Result<u64, SourceProblem> {
     if let Some(why) = refuse(head) {
-        return Err(why);
+        return Err(SourceProblem::NotText(why));
     }
     Ok(if head.starts_with(BOM) { 3 } else { 0 })
 }
@@ -161,6 +200,21 @@ mod tests {
         assert!(refuse(b"\xFF\xFEG\0").unwrap().starts_with("UTF-16"));
         let ctl: Vec<u8> = (0..100u8).map(|i| i % 8 + 1).collect();
         assert_eq!(refuse(&ctl), Some("not an NC program (binary data)"));
+    }
+
+    #[test]
+    fn refusals_name_the_program() {
+        let e = open_file(Path::new("/")).err().expect("a folder");
+        assert!(matches!(e.problem, SourceProblem::Folder));
+        assert_eq!(e.to_string(), "/: is a folder, not a program");
+        let e = open_text("x.nc", b"G0\0\0\0").err().expect("binary");
+        assert_eq!(e.to_string(), "x.nc: not an NC program (binary data)");
+        let e = open_file(Path::new("/no/such/file.nc"))
+            .err()
+            .expect("missing");
+        assert!(
+            matches!(&e.problem, SourceProblem::Io(io) if io.kind() == io::ErrorKind::NotFound)
+        );
     }
 
     #[test]

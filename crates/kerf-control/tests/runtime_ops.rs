@@ -321,7 +321,7 @@ fn state_dir_keeps_offsets_across_machines() {
     // A torn or foreign file is an error naming it, not a panic.
     std::fs::write(dir.join("hx-mc.work"), "0 1 2\n").unwrap();
     let mut rt = machine("hx-mc");
-    let err = rt.set_state_dir(dir.clone()).unwrap_err();
+    let err = rt.set_state_dir(dir.clone()).unwrap_err().to_string();
     assert!(err.contains("hx-mc.work:1"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }

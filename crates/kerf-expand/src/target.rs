@@ -16,13 +16,18 @@ pub enum Target {
     LinuxCnc,
 }
 
+/// A `--to` value that names no target.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("unknown target '{0}' (fanuc, linuxcnc)")]
+pub struct UnknownTarget(pub String);
+
 impl FromStr for Target {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Target, String> {
+    type Err = UnknownTarget;
+    fn from_str(s: &str) -> Result<Target, UnknownTarget> {
         match s {
             "fanuc" => Ok(Target::Fanuc),
             "linuxcnc" => Ok(Target::LinuxCnc),
-            _ => Err(format!("unknown target '{s}' (fanuc, linuxcnc)")),
+            _ => Err(UnknownTarget(s.to_string())),
         }
     }
 }
@@ -193,7 +198,8 @@ mod tests {
     fn targets_parse_by_name() {
         assert_eq!("fanuc".parse::<Target>(), Ok(Target::Fanuc));
         assert_eq!("linuxcnc".parse::<Target>(), Ok(Target::LinuxCnc));
-        assert!("haas".parse::<Target>().is_err());
+        let e = "haas".parse::<Target>().unwrap_err();
+        assert_eq!(e.to_string(), "unknown target 'haas' (fanuc, linuxcnc)");
         assert_eq!(Target::LinuxCnc.to_string(), "linuxcnc");
     }
 

@@ -161,7 +161,12 @@ async fn load_program(
             "program: the body is not NC text (it holds NUL bytes)",
         ));
     }
-    let text = String::from_utf8_lossy(&bytes).into_owned();
+    // Valid UTF-8 (the usual case) is copied once; other bytes replaced.
+    let text: Arc<str> = match std::str::from_utf8(&bytes) {
+        Ok(t) => t.into(),
+        Err(_) => String::from_utf8_lossy(&bytes).into(),
+    };
+    drop(bytes);
     let name = q.name.unwrap_or_else(|| "program.nc".into());
     if name.len() > 255 || name.contains(['/', '\\', '\0']) {
         return Err(ApiError::bad_request(

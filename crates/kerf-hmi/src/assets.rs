@@ -32,6 +32,7 @@ pub static ASSETS: &[Asset] = &[
     asset!("screens.js", JS),
     asset!("graph.js", JS),
     asset!("lines.js", JS),
+    asset!("coarse.js", JS),
     asset!("vendor/three.module.js", JS),
     asset!("vendor/three.core.js", JS),
     asset!("vendor/OrbitControls.js", JS),

@@ -82,6 +82,17 @@ impl Drop for Trace {
     }
 }
 
+/// Empties the store for a new path (its `id` bumped: clients reload).
+pub fn clear(store: &Mutex<PathStore>) {
+    let mut s = lock(store);
+    s.id = s.id.wrapping_add(1);
+    s.bytes.clear();
+    s.done = false;
+    s.min_step = 0.0;
+    s.note = None;
+    s.part = None;
+}
+
 /// Starts tracing `text` on `profile` into `store` (its content replaced,
 /// `id` bumped).
 pub fn start(
@@ -93,15 +104,7 @@ pub fn start(
     store: Arc<Mutex<PathStore>>,
 ) -> Trace {
     let stop = Arc::new(AtomicBool::new(false));
-    {
-        let mut s = lock(&store);
-        s.id = s.id.wrapping_add(1);
-        s.bytes.clear();
-        s.done = false;
-        s.min_step = 0.0;
-        s.note = None;
-        s.part = None;
-    }
+    clear(&store);
     let flag = stop.clone();
     let name = name.to_string();
     std::thread::spawn(move || {
@@ -113,8 +116,7 @@ pub fn start(
         for d in libs {
             it.add_lib_dir(d);
         }
-        let bytes: Vec<u8> = text.as_bytes().to_vec();
-        it.load_main(&name, Box::new(Cursor::new(bytes)));
+        it.load_main(&name, Box::new(Cursor::new(Text(text))));
         // The cut part: every event through the simulator on its stock.
         let mut sim = stock.and_then(|st| {
             let mut sim = kerf_sim::Sim::new(
@@ -131,12 +133,24 @@ pub fn start(
             if !flag.load(Ordering::Relaxed) {
                 let mut stl = Vec::new();
                 if kerf_sim::stl::write(&sim, &mut stl).is_ok() {
-                    lock(&store).part = Some(Arc::new(stl));
+                    let mut s = lock(&store);
+                    if !flag.load(Ordering::Relaxed) {
+                        s.part = Some(Arc::new(stl));
+                    }
                 }
             }
         }
     });
     Trace { stop }
+}
+
+/// The shared program text as bytes (read by the tracer without a copy).
+struct Text(Arc<str>);
+
+impl AsRef<[u8]> for Text {
+    fn as_ref(&self) -> &[u8] {
+        self.0.as_bytes()
+    }
 }
 
 fn lock(s: &Mutex<PathStore>) -> std::sync::MutexGuard<'_, PathStore> {
@@ -179,7 +193,7 @@ fn run(
                 note = Some(format!("trace stopped after {} s", MAX_TIME.as_secs()));
                 break;
             }
-            b.publish(store);
+            b.publish(store, stop);
         }
         match it.step() {
             Step::Event(e) => {
@@ -201,8 +215,11 @@ fn run(
     if stop.load(Ordering::Relaxed) {
         return;
     }
-    b.publish(store);
+    b.publish(store, stop);
     let mut s = lock(store);
+    if stop.load(Ordering::Relaxed) {
+        return;
+    }
     s.done = true;
     s.note = note;
 }
@@ -291,8 +308,13 @@ impl Builder {
     }
 
     /// Moves the fresh records into the store, decimating when full.
-    fn publish(&mut self, store: &Mutex<PathStore>) {
+    /// Nothing is published once the trace is cancelled (checked under
+    /// the lock: a cancelled trace never writes into its successor's path).
+    fn publish(&mut self, store: &Mutex<PathStore>, stop: &AtomicBool) {
         let mut s = lock(store);
+        if stop.load(Ordering::Relaxed) {
+            return;
+        }
         s.bytes.extend_from_slice(&self.fresh);
         self.fresh.clear();
         while s.points() > MAX_POINTS {

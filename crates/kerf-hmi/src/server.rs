@@ -163,14 +163,45 @@ impl Shared {
             .map_err(|_| crate::error::ApiError::internal("the controller failed on this request"))
     }
 
-    /// Loads a program: into the runtime, then the PROG text and the
-    /// backplot.
-    pub fn load(&self, name: &str, text: String) -> Result<Arc<Program>, crate::error::ApiError> {
+    /// Loads a program: the backplot's trace starts first (on a thread of
+    /// its own, so the browser gets points while the runtime takes the
+    /// text), then the runtime and the PROG text. When the runtime refuses,
+    /// the trace of the program loaded before is started again.
+    pub fn load(
+        &self,
+        name: &str,
+        text: impl Into<Arc<str>>,
+    ) -> Result<Arc<Program>, crate::error::ApiError> {
         let text: Arc<str> = text.into();
+        self.start_trace(name, text.clone());
         let (n, t) = (name.to_string(), text.clone());
-        self.with(move |c| c.load(&n, &t))??;
-        let prog = Arc::new(Program::new(name, text.clone()));
+        let loaded = self
+            .with(move |c| c.load(&n, &t))
+            .and_then(|r| r.map_err(crate::error::ApiError::from));
+        if let Err(e) = loaded {
+            match self.program() {
+                Some(old) => self.start_trace(&old.name, old.text.clone()),
+                None => {
+                    if let Some(t) = lock(&self.trace).take() {
+                        t.cancel();
+                    }
+                    crate::path::clear(&self.path);
+                }
+            }
+            self.publish();
+            return Err(e);
+        }
+        let prog = Arc::new(Program::new(name, text));
         *lock(&self.program) = Some(prog.clone());
+        self.publish();
+        Ok(prog)
+    }
+
+    fn start_trace(&self, name: &str, text: Arc<str>) {
+        // The old trace stops before the store is emptied for the new one.
+        if let Some(old) = lock(&self.trace).take() {
+            old.cancel();
+        }
         let stock = *lock(&self.stock);
         let t = crate::path::start(
             self.profile.clone(),
@@ -181,8 +212,6 @@ impl Shared {
             self.path.clone(),
         );
         *lock(&self.trace) = Some(t);
-        self.publish();
-        Ok(prog)
     }
 
     /// The loaded program.
@@ -222,7 +251,10 @@ impl Shared {
         let frame = make_frame(state, &path);
         drop(path);
         self.frames.send_if_modified(|old| {
-            if old.json == frame.json {
+            // A state read before the newest one published (a command's,
+            // overtaken by a tick) is not sent: machine time never goes
+            // back for a client.
+            if old.json == frame.json || frame.state.t < old.state.t {
                 return false;
             }
             *old = Arc::new(frame);

@@ -30,6 +30,7 @@ async fn the_page_and_its_scripts_are_served_from_the_binary() {
         "/assets/screens.js",
         "/assets/graph.js",
         "/assets/lines.js",
+        "/assets/coarse.js",
         "/assets/vendor/three.module.js",
         "/assets/vendor/three.core.js",
         "/assets/vendor/OrbitControls.js",

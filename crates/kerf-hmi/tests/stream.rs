@@ -135,3 +135,37 @@ async fn an_oversized_client_message_closes_only_that_client() {
     assert!(matches!(m, Message::Text(_)));
     assert_eq!(common::http::get(at, "/api/state").await.status, 200);
 }
+
+/// The path of `GET /api/state` once its trace is done.
+async fn done_path(at: std::net::SocketAddr) -> serde_json::Value {
+    let deadline = Instant::now() + Duration::from_secs(10);
+    loop {
+        let p = common::http::get(at, "/api/state").await.json()["path"].clone();
+        if p["done"] == true {
+            return p;
+        }
+        assert!(Instant::now() < deadline, "the trace does not end: {p}");
+        tokio::time::sleep(Duration::from_millis(20)).await;
+    }
+}
+
+#[tokio::test]
+async fn a_load_refused_while_running_leaves_the_old_program_and_its_path() {
+    let at = start(Box::new(Double::new()), None).await;
+    let old = b"G90 G00 X10. Y20. Z5.\nG01 X30. F600.\nM30\n";
+    request(at, "POST", "/api/program?name=a.nc", &[], old).await;
+    // Start point and two moves.
+    assert_eq!(done_path(at).await["points"], 3);
+    post_json(at, "/api/command", r#"{"cmd":"cycle_start"}"#).await;
+    // Four moves: the trace of this program starts before the refusal.
+    let new = b"G00 X1.\nG00 X2.\nG00 X3.\nG00 X4.\nM30\n";
+    let r = request(at, "POST", "/api/program?name=b.nc", &[], new).await;
+    assert_eq!(r.status, 409);
+    let p = done_path(at).await;
+    assert_eq!(p["points"], 3, "{p}");
+    let s = common::http::get(at, "/api/state").await.json();
+    assert_eq!(s["program"]["name"], "a.nc");
+    let r = common::http::get(at, "/api/toolpath").await;
+    let x = kerf_hmi::path::record_point(&r.body[16 + 40..16 + 60])[0];
+    assert_eq!(x, 30.0);
+}

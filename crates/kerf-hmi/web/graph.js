@@ -6,6 +6,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from './vendor/OrbitControls.js';
 import { pick, LineIndex } from './lines.js';
+import { Coarse } from './coarse.js';
 
 const RECORD = 20;
 const KIND_COLOURS = {
@@ -19,6 +20,12 @@ const TOOL_PALETTE = [
   [0xff, 0x70, 0x70], [0x70, 0xc0, 0xff], [0x90, 0xff, 0x70], [0xff, 0xd0, 0x50],
   [0xd0, 0x80, 0xff], [0x50, 0xff, 0xe0], [0xff, 0x90, 0x30], [0xff, 0x70, 0xd0],
 ];
+
+/**
+ * Most vertices of the coarse copy drawn while the camera moves or the
+ * path streams in (the full path is drawn when both are still).
+ */
+const COARSE_MAX = 10000;
 
 /** Most segments one highlighted line draws. */
 const HIGHLIGHT_MAX = 200000;
@@ -47,6 +54,9 @@ export class Graph {
     this.kinds = null; // kind per vertex (for recolouring)
     this.tools = null;
     this.lines = null; // program line per vertex
+    this.keys = null; // colour key per vertex (kind, tool)
+    this.coarse = new Coarse(COARSE_MAX);
+    this.moving = false; // the camera is being dragged
     this.index = new LineIndex();
     this.indexAt = 0;
     this.selected = 0; // the line picked (or chosen on PROG), 0: none
@@ -69,6 +79,14 @@ export class Graph {
     this.material = new THREE.LineBasicMaterial({ vertexColors: true });
     this.line = null;
     this.grow(1 << 14);
+    const cg = new THREE.BufferGeometry();
+    cg.setAttribute('position', new THREE.BufferAttribute(this.coarse.pos, 3));
+    cg.setAttribute('color', new THREE.BufferAttribute(this.coarse.col, 3, true));
+    cg.setDrawRange(0, 0);
+    this.coarseLine = new THREE.Line(cg, this.material);
+    this.coarseLine.frustumCulled = false;
+    this.coarseLine.visible = false;
+    this.scene.add(this.coarseLine);
 
     this.axes = new THREE.AxesHelper(20);
     this.scene.add(this.axes);
@@ -187,12 +205,14 @@ export class Graph {
     const kinds = new Uint8Array(cap);
     const tools = new Uint8Array(cap);
     const lines = new Uint32Array(cap);
+    const keys = new Uint16Array(cap);
     if (this.line) {
       pos.set(this.line.geometry.attributes.position.array.subarray(0, this.n * 3));
       col.set(this.line.geometry.attributes.color.array.subarray(0, this.n * 3));
       kinds.set(this.kinds.subarray(0, this.n));
       tools.set(this.tools.subarray(0, this.n));
       lines.set(this.lines.subarray(0, this.n));
+      keys.set(this.keys.subarray(0, this.n));
       this.scene.remove(this.line);
       this.line.geometry.dispose();
     }
@@ -207,6 +227,7 @@ export class Graph {
     this.kinds = kinds;
     this.tools = tools;
     this.lines = lines;
+    this.keys = keys;
   }
 
   colour(kind, tool) {
@@ -224,6 +245,7 @@ export class Graph {
     this.fitted = false;
     this.line.geometry.setDrawRange(0, 0);
     this.index = new LineIndex();
+    this.coarse.clear();
     for (const hl of [this.hlCurrent, this.hlSelected]) { hl.geometry.setDrawRange(0, 0); hl.shownLine = 0; }
   }
 
@@ -231,6 +253,7 @@ export class Graph {
   records(buf) {
     const dv = new DataView(buf);
     const id = dv.getUint32(0, true), first = dv.getUint32(4, true), count = dv.getUint32(8, true);
+    if (this.firstRecordsAt === undefined && count > 0) this.firstRecordsAt = performance.now();
     if (id !== this.pathId) this.clear(id);
     if (first !== this.points) return; // out of order: the next state resends
     this.grow(this.n + count * 2 + 2);
@@ -273,18 +296,31 @@ export class Graph {
     g.setDrawRange(0, this.n);
     // Frame the first points at once and the whole path when it is complete.
     const done = dv.getUint32(12, true) === 1;
-    if ((!this.fitted || done) && this.n > 1) this.view(this.lastView || (this.lathe ? 'front' : 'iso'));
-    this.done = done;
-    // While the path streams in, draw at most once a second (a frame
-    // of a million segments costs more than a message).
+    if (done) {
+      this.complete();
+      return;
+    }
+    if (!this.fitted && this.n > 1) this.view(this.lastView || (this.lathe ? 'front' : 'iso'));
+    this.done = false;
+    // While the path streams in, draw at most four times a second (the
+    // coarse copy when the path is larger than it).
     const now = performance.now();
-    if (done || !this.lastStreamDraw || now - this.lastStreamDraw > 1000) {
+    if (done || !this.lastStreamDraw || now - this.lastStreamDraw > 250) {
       this.lastStreamDraw = now;
       this.render();
     }
   }
 
-  put(pos, col, x, y, z, kind, tool, line) {
+  /** The whole path is in: the coarse copy ends where it does, framed, drawn. */
+  complete() {
+    this.done = true;
+    const g = this.line.geometry;
+    this.coarse.finish(g.attributes.position.array, g.attributes.color.array, this.n);
+    if (this.n > 1) this.view(this.lastView || (this.lathe ? 'front' : 'iso'));
+    this.render();
+  }
+
+    put(pos, col, x, y, z, kind, tool, line) {
     const i = this.n * 3;
     pos[i] = x; pos[i + 1] = y; pos[i + 2] = z;
     const c = this.colour(kind, tool);
@@ -292,6 +328,8 @@ export class Graph {
     this.kinds[this.n] = kind;
     this.tools[this.n] = tool;
     this.lines[this.n] = line;
+    this.keys[this.n] = kind * 256 + tool;
+    this.coarse.add(pos, col, this.keys, this.n);
     this.n++;
   }
 
@@ -303,6 +341,7 @@ export class Graph {
     }
     this.line.geometry.attributes.color.clearUpdateRanges();
     this.line.geometry.attributes.color.needsUpdate = true;
+    this.coarse.recolour(col);
     this.render();
   }
 
@@ -338,6 +377,9 @@ export class Graph {
 
   /** The newest machine state: the tool's live position. */
   state(s, shown) {
+    // The server may finish the trace after sending the last points: the
+    // state then says the path is complete.
+    if (!this.done && s.path.done && s.path.id === this.pathId && this.points === s.path.points) this.complete();
     if (s.path.part && this.partFor !== s.path.id && this.pathId === s.path.id) this.loadPart(s.path.id);
     if (!s.path.part && this.part) { this.scene.remove(this.part); this.part = null; this.partFor = null; }
     // The executing block on the path (blocks of the main program).
@@ -345,11 +387,15 @@ export class Graph {
     if (cur !== this.hlCurrent.shownLine || (cur && this.hlCurrent.shownN !== this.n && this.done)) this.showLine(this.hlCurrent, cur);
     if (this.selected && this.hlSelected.shownN !== this.n && this.done) this.showLine(this.hlSelected, this.selected);
     const w = s.position.work;
+    // A frame only when the tool has moved (states come at 50 Hz; a frame
+    // of a large path costs more than that in software GL).
+    const moved = this.tool.position.x !== (w.X || 0) || this.tool.position.y !== (w.Y || 0) || this.tool.position.z !== (w.Z || 0);
     this.tool.position.set(w.X || 0, w.Y || 0, w.Z || 0);
     if (this.info) {
       this.info.textContent = `${this.points} PTS${s.path.done ? '' : ' …'}${s.path.note ? ` (${s.path.note})` : ''}${this.selected ? `  SEL LINE ${this.selected}` : ''}  X${(w.X || 0).toFixed(3)} ${this.lathe ? '' : `Y${(w.Y || 0).toFixed(3)} `}Z${(w.Z || 0).toFixed(3)}`;
     }
-    if (shown) this.render();
+    if (shown && (moved || cur !== this.lastDrawnLine)) this.render();
+    this.lastDrawnLine = cur;
   }
 
   visible() {
@@ -405,6 +451,8 @@ export class Graph {
     this.controls.screenSpacePanning = true;
     this.controls.target.copy(centre);
     this.controls.addEventListener('change', () => this.render());
+    this.controls.addEventListener('start', () => { this.moving = true; });
+    this.controls.addEventListener('end', () => { this.moving = false; this.render(); });
     this.controls.update();
     this.axes.scale.setScalar(Math.max(radius / 5, 1) / 20);
     this.tool.scale.setScalar(Math.max(radius / 40, 0.5));
@@ -412,12 +460,32 @@ export class Graph {
     this.render();
   }
 
+  /**
+   * Draws the scene now: the coarse copy while the camera moves or the
+   * path streams in (when the path is larger than the copy), else the
+   * whole path.
+   */
+  draw() {
+    const coarse = this.n > COARSE_MAX && (this.moving || !this.done);
+    if (coarse && this.coarse.changed) {
+      const g = this.coarseLine.geometry;
+      g.attributes.position.needsUpdate = true;
+      g.attributes.color.needsUpdate = true;
+      g.setDrawRange(0, this.coarse.n);
+      this.coarse.changed = false;
+    }
+    this.coarseLine.visible = coarse;
+    this.line.visible = !coarse;
+    this.drewCoarse = coarse;
+    this.renderer.render(this.scene, this.camera);
+  }
+
   render() {
     if (this.pending) return;
     this.pending = true;
     requestAnimationFrame((t) => {
       this.pending = false;
-      this.renderer.render(this.scene, this.camera);
+      this.draw();
       this.frames++;
       if (this.n > 1 && this.firstFrameAt === null) this.firstFrameAt = performance.now();
       this.frameTimes.push(t);

@@ -155,10 +155,35 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ),
 ];
 
+/// Why a profile's TOML text was refused.
+#[derive(Debug, thiserror::Error)]
+pub enum ProfileError {
+    /// Not TOML, or not a profile's fields and types.
+    #[error("{0}")]
+    Toml(#[from] toml::de::Error),
+    /// An `[axes.NAME]` table that is not an axis.
+    #[error("unknown axis '{0}' (use x y z a b c)")]
+    UnknownAxis(String),
+    /// An axis whose travel or rapid rate is not usable.
+    #[error("axis '{0}': need min <= max and rapid > 0")]
+    BadAxis(String),
+    /// A work offset or reference table naming an axis the machine lacks.
+    #[error("'{table}' names axis '{axis}' the machine does not have")]
+    MissingAxis {
+        /// The table (`g54`, `second` …).
+        table: String,
+        /// The axis it names.
+        axis: String,
+    },
+    /// `[feed] max_cutting` is not a positive number.
+    #[error("feed.max_cutting must be > 0")]
+    FeedMax,
+}
+
 impl Profile {
     /// Parses a profile from TOML text.
-    pub fn from_toml(text: &str) -> Result<Profile, String> {
-        let p: Profile = toml::from_str(text).map_err(|e| e.to_string())?;
+    pub fn from_toml(text: &str) -> Result<Profile, ProfileError> {
+        let p: Profile = toml::from_str(text)?;
         p.validate()?;
         Ok(p)
     }
@@ -171,10 +196,10 @@ impl Profile {
             .map(|(_, t)| Profile::from_toml(t).expect("built-in profile is valid"))
     }
 
-    fn validate(&self) -> Result<(), String> {
+    fn validate(&self) -> Result<(), ProfileError> {
         for (k, a) in &self.axes {
             if axis_by_name(k).is_none() {
-                return Err(format!("unknown axis '{k}' (use x y z a b c)"));
+                return Err(ProfileError::UnknownAxis(k.clone()));
             }
             if a.min.is_nan()
                 || a.max.is_nan()
@@ -182,18 +207,21 @@ impl Profile {
                 || a.rapid.is_nan()
                 || a.rapid <= 0.0
             {
-                return Err(format!("axis '{k}': need min <= max and rapid > 0"));
+                return Err(ProfileError::BadAxis(k.clone()));
             }
         }
         for (w, m) in self.work_offsets.iter().chain(self.reference.iter()) {
             for k in m.keys() {
                 if !self.axes.contains_key(k) {
-                    return Err(format!("'{w}' names axis '{k}' the machine does not have"));
+                    return Err(ProfileError::MissingAxis {
+                        table: w.clone(),
+                        axis: k.clone(),
+                    });
                 }
             }
         }
         if self.feed.max_cutting.is_nan() || self.feed.max_cutting <= 0.0 {
-            return Err("feed.max_cutting must be > 0".into());
+            return Err(ProfileError::FeedMax);
         }
         Ok(())
     }
@@ -257,6 +285,21 @@ mod tests {
     #[test]
     fn bad_profile_is_an_error() {
         let e = Profile::from_toml("name = 'x'").unwrap_err();
-        assert!(e.contains("missing"), "{e}");
+        assert!(matches!(e, ProfileError::Toml(_)), "{e:?}");
+        assert!(e.to_string().contains("missing"), "{e}");
+    }
+
+    #[test]
+    fn a_profile_naming_an_axis_it_lacks_is_refused() {
+        let text = BUILTIN[0].1.to_string() + "\n[work_offsets.extra]\nw = 1.0\n";
+        let e = Profile::from_toml(&text).unwrap_err();
+        assert!(
+            matches!(&e, ProfileError::MissingAxis { table, axis } if table == "extra" && axis == "w"),
+            "{e:?}"
+        );
+        assert_eq!(
+            e.to_string(),
+            "'extra' names axis 'w' the machine does not have"
+        );
     }
 }

@@ -33,6 +33,41 @@ use std::path::{Path, PathBuf};
 use crate::offsets::{LatheOffset, MillOffset};
 use crate::Interp;
 
+/// Why a state file could not be read: the file, and the line at fault.
+#[derive(Debug, thiserror::Error)]
+pub enum StateError {
+    /// The file exists but could not be read.
+    #[error("{}: {source}", path.display())]
+    Read {
+        /// The file.
+        path: PathBuf,
+        /// What the system said.
+        source: io::Error,
+    },
+    /// A line that is not in the file's format.
+    #[error("{}:{line}: {why}", path.display())]
+    Line {
+        /// The file.
+        path: PathBuf,
+        /// 1-based line number.
+        line: usize,
+        /// What is wrong with it.
+        why: String,
+    },
+}
+
+/// Reads a state file; None when it does not exist.
+fn read_state(path: &Path) -> Result<Option<String>, StateError> {
+    match fs::read_to_string(path) {
+        Ok(t) => Ok(Some(t)),
+        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(None),
+        Err(source) => Err(StateError::Read {
+            path: path.to_path_buf(),
+            source,
+        }),
+    }
+}
+
 /// The state file of a profile in `dir`.
 pub fn state_file(dir: &Path, profile: &str) -> PathBuf {
     state_path(dir, profile, "vars")
@@ -59,29 +94,30 @@ fn state_path(dir: &Path, profile: &str, ext: &str) -> PathBuf {
 
 /// Loads the retained variables of `it`'s profile from `dir` (a missing
 /// file means none are set). A malformed line is an error naming it.
-pub fn load_retained(dir: &Path, it: &mut Interp) -> Result<(), String> {
+pub fn load_retained(dir: &Path, it: &mut Interp) -> Result<(), StateError> {
     let path = state_file(dir, &it.profile().name);
-    let text = match fs::read_to_string(&path) {
-        Ok(t) => t,
-        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(()),
-        Err(e) => return Err(format!("{}: {e}", path.display())),
+    let Some(text) = read_state(&path)? else {
+        return Ok(());
     };
     for (n, line) in text.lines().enumerate() {
         let line = line.trim();
         if line.is_empty() || line.starts_with("# ") || line == "#" {
             continue;
         }
-        let bad = || format!("{}:{}: expected '#N = VALUE'", path.display(), n + 1);
+        let at = |why: String| StateError::Line {
+            path: path.clone(),
+            line: n + 1,
+            why,
+        };
+        let bad = || at("expected '#N = VALUE'".into());
         let rest = line.strip_prefix('#').ok_or_else(bad)?;
         let (num, val) = rest.split_once('=').ok_or_else(bad)?;
         let i: usize = num.trim().parse().map_err(|_| bad())?;
         let v: f64 = val.trim().parse().map_err(|_| bad())?;
         if !it.set_retained_var(i, v) {
-            return Err(format!(
-                "{}:{}: #{i} is not a retained variable of this control",
-                path.display(),
-                n + 1
-            ));
+            return Err(at(format!(
+                "#{i} is not a retained variable of this control"
+            )));
         }
     }
     Ok(())
@@ -99,19 +135,21 @@ pub fn save_retained(dir: &Path, it: &Interp) -> io::Result<()> {
 
 /// Loads the offset memory of `it`'s profile from `dir` (a missing file
 /// leaves it as it is). A malformed line is an error naming it.
-pub fn load_offsets(dir: &Path, it: &mut Interp) -> Result<(), String> {
+pub fn load_offsets(dir: &Path, it: &mut Interp) -> Result<(), StateError> {
     let path = offsets_file(dir, &it.profile().name);
-    let text = match fs::read_to_string(&path) {
-        Ok(t) => t,
-        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(()),
-        Err(e) => return Err(format!("{}: {e}", path.display())),
+    let Some(text) = read_state(&path)? else {
+        return Ok(());
     };
     for (n, line) in text.lines().enumerate() {
         let line = line.trim();
         if line.is_empty() || line.starts_with('#') {
             continue;
         }
-        let bad = |why: &str| format!("{}:{}: {why}", path.display(), n + 1);
+        let bad = |why: &str| StateError::Line {
+            path: path.clone(),
+            line: n + 1,
+            why: why.to_string(),
+        };
         let mut f = line.split_whitespace();
         let page = f.next().unwrap_or("");
         let num: usize = f
@@ -216,4 +254,44 @@ pub fn write_atomic(dir: &Path, path: &Path, text: &str) -> io::Result<()> {
         let _ = fs::remove_file(&tmp);
     }
     r
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Profile, Settings};
+
+    fn interp() -> Interp {
+        Interp::new(Profile::builtin("hx-mc").unwrap(), Settings::default())
+    }
+
+    #[test]
+    fn a_bad_line_names_the_file_and_the_line() {
+        let dir = std::env::temp_dir().join(format!("kerf-state-test-{}", std::process::id()));
+        fs::create_dir_all(&dir).unwrap();
+        let vars = state_file(&dir, "hx-mc");
+        // #100 is a common variable, not retained (000 §14.2.3: #200-#699).
+        fs::write(
+            &vars,
+            "# kerf retained macro variables\n#200 = 1.5\n#100 = 2\n",
+        )
+        .unwrap();
+        let e = load_retained(&dir, &mut interp()).unwrap_err();
+        assert!(
+            matches!(&e, StateError::Line { path, line: 3, .. } if *path == vars),
+            "{e:?}"
+        );
+        let want = format!(
+            "{}:3: #100 is not a retained variable of this control",
+            vars.display()
+        );
+        assert_eq!(e.to_string(), want);
+        fs::write(offsets_file(&dir, "hx-mc"), "H 1 abc 0\n").unwrap();
+        let e = load_offsets(&dir, &mut interp()).unwrap_err();
+        assert!(
+            e.to_string().ends_with(".offsets:1: expected numbers"),
+            "{e}"
+        );
+        let _ = fs::remove_dir_all(&dir);
+    }
 }

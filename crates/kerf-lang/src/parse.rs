@@ -549,7 +549,67 @@ impl<'a> P<'a> {
     }
 
     /// Unsigned decimal number; spaces between digits are ignored.
+    ///
+    /// The common form (digits, a point, digits, no blank between them) is
+    /// read here in two tight loops; anything else is
+    /// read again by [`P::number_slow`], which gives the same value for
+    /// the common form.
+    #[inline]
     fn number(&mut self, at: usize) -> R<Num> {
+        let t = self.t;
+        let s = self.i;
+        let mut i = s;
+        let mut mant: u64 = 0;
+        // Wrapping: a run long enough to overflow is past the digit
+        // limit and read again below.
+        while let Some(d) = t.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d < 10) {
+            mant = mant.wrapping_mul(10).wrapping_add(d as u64);
+            i += 1;
+        }
+        let int_end = i;
+        let point = t.get(i) == Some(&b'.');
+        if point {
+            i += 1;
+            while let Some(d) = t.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d < 10) {
+                mant = mant.wrapping_mul(10).wrapping_add(d as u64);
+                i += 1;
+            }
+        }
+        let frac = i - int_end - point as usize;
+        let digits = int_end - s + frac;
+        let max = (self.o.max_digits as usize).min(18);
+        // Blanks after the number are read with it (as the slow path
+        // does); digits or a first point after them continue it.
+        let mut j = i;
+        while j < t.len() && is_blank(t[j]) {
+            j += 1;
+        }
+        let more = t
+            .get(j)
+            .is_some_and(|c| c.is_ascii_digit() || (*c == b'.' && !point));
+        if digits == 0 || digits > max || more {
+            // Leading zeros may bring a long run under the limit; blanks
+            // between digits, errors: digit by digit.
+            return self.number_slow(at);
+        }
+        self.i = j;
+        let value = if frac == 0 {
+            mant as f64
+        } else {
+            mant as f64 / POW10[frac]
+        };
+        Ok(Num {
+            value,
+            point,
+            digits: digits as u8,
+        })
+    }
+
+    /// [`P::number`] digit by digit: blanks between the digits, and the
+    /// errors.
+    #[cold]
+    #[inline(never)]
+    fn number_slow(&mut self, at: usize) -> R<Num> {
         let t = self.t;
         let mut i = self.i;
         let mut mant: u64 = 0;
@@ -564,32 +624,15 @@ impl<'a> P<'a> {
         while i < t.len() {
             let c = t[i];
             if c.is_ascii_digit() {
-                // A run of digits at once: the mantissa wraps instead of
-                // overflowing, which only happens past the digit limit,
-                // where the run is an error anyway.
-                let s = i;
-                let mut m = mant;
-                while let Some(d) = t.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d < 10) {
-                    m = m.wrapping_mul(10).wrapping_add(d as u64);
-                    i += 1;
+                digits += 1;
+                if c != b'0' || mant != 0 || point {
+                    counted += 1;
                 }
-                let n = (i - s) as u32;
-                // Leading zeros of the integer part do not count.
-                let lead = if point || mant != 0 {
-                    0
-                } else {
-                    t[s..i].iter().take_while(|c| **c == b'0').count() as u32
-                };
-                digits += n;
-                counted += n - lead;
                 if counted > max {
                     return err(LexErrorKind::TooManyDigits, at);
                 }
-                mant = m;
-                if point {
-                    frac += n as i32;
-                }
-                continue;
+                mant = mant * 10 + (c - b'0') as u64;
+                frac += point as i32;
             } else if c == b'.' && !point {
                 point = true;
             } else if !is_blank(c) {

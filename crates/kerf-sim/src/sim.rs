@@ -9,7 +9,7 @@ use crate::envelope::Sweep;
 use crate::events::{EventKind, SimEvent, SimReport};
 use crate::holder::holder_first;
 use crate::hull::{Hull, Pt};
-use crate::lathe::{swept, Section};
+use crate::lathe::{ccw, swept_ccw, Contour, Section};
 use crate::lathe_tool::cutting_outline;
 use crate::path::chords;
 use crate::stock::Stock;
@@ -36,7 +36,11 @@ pub enum Model {
 /// The tool in use, with its derived geometry.
 enum Current {
     Mill(MillTool),
-    Lathe { outline: Vec<Pt>, holder: Vec<Pt> },
+    /// The outlines' convex hulls, counter-clockwise.
+    Lathe {
+        outline: Contour,
+        holder: Contour,
+    },
 }
 
 /// The simulation of one run.
@@ -55,8 +59,7 @@ pub struct Sim {
     t_prev: f64,
     chords: Vec<[f64; 3]>,
     undo: Vec<(u32, f32)>,
-    hull: Hull,
-    scratch: Vec<Pt>,
+    region: Contour,
     res: f64,
     rapid_rates: Option<[f64; 3]>,
 }
@@ -104,8 +107,7 @@ impl Sim {
             t_prev: 0.0,
             chords: Vec::new(),
             undo: Vec::new(),
-            hull: Hull::default(),
-            scratch: Vec::new(),
+            region: Vec::new(),
             res,
             rapid_rates: None,
         })
@@ -350,10 +352,10 @@ impl Sim {
         let (a, b) = ((p0[2], p0[0]), (p1[2], p1[0]));
         let at = |f: f64| (a.0 + (b.0 - a.0) * f, a.1 + (b.1 - a.1) * f);
         let mut found: Vec<(EventKind, f64, f64)> = Vec::new();
-        let (hull, scratch) = (&mut self.hull, &mut self.scratch);
-        let mut sweep_of = |sec: &mut Section, shape: &[Pt], f: f64, write: bool| {
-            swept(shape, a, at(f), scratch, hull);
-            sec.sweep(hull, write)
+        let region = &mut self.region;
+        let mut sweep_of = |sec: &mut Section, shape: &[[f64; 2]], f: f64, write: bool| {
+            swept_ccw(shape, a, at(f), region);
+            sec.sweep_regions(std::slice::from_ref(region), write)
         };
         // Every check is against the stock before the move.
         if rapid || !self.spindle_on {
@@ -373,7 +375,7 @@ impl Sim {
         let mut holder_hit = false;
         if !holder.is_empty() {
             let met = |sec: &mut Section, f: f64| {
-                sec.sweep_regions(&holder_first(outline, holder, a, at(f)), false)
+                sec.sweep_regions(&holder_first(&pts(outline), &pts(holder), a, at(f)), false)
             };
             let v = met(sec, 1.0);
             if v > 0.0 {
@@ -412,10 +414,24 @@ impl Sim {
 }
 
 fn lathe_current(t: &LatheTool) -> Current {
+    let hull = |pts: &[Pt]| {
+        if pts.is_empty() {
+            return Vec::new();
+        }
+        let mut p = pts.to_vec();
+        let mut h = Hull::default();
+        Hull::of(&mut p, &mut h);
+        ccw(&h)
+    };
     Current::Lathe {
-        outline: cutting_outline(t),
-        holder: t.holder.clone(),
+        outline: hull(&cutting_outline(t)),
+        holder: hull(&t.holder),
     }
+}
+
+/// A contour as points.
+fn pts(c: &[[f64; 2]]) -> Vec<Pt> {
+    c.iter().map(|p| (p[0], p[1])).collect()
 }
 
 fn dist(a: &[f64; 3], b: &[f64; 3]) -> f64 {

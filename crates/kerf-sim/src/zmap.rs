@@ -29,6 +29,11 @@ pub struct ZMap {
     pub zmin: f64,
     pub ztop: f64,
     pub h: Vec<f32>,
+    /// An upper bound of the heights in each square of [`BLOCK`] cells
+    /// (row-major, `nbx` per row): a move skips the squares it cannot
+    /// lower with one comparison each.
+    bmax: Vec<f32>,
+    nbx: usize,
 }
 
 /// What one move does to the stock.
@@ -77,6 +82,8 @@ impl ZMap {
             zmin: min[2],
             ztop: max[2],
             h: vec![max[2] as f32; nx * ny],
+            bmax: vec![max[2] as f32; nx.div_ceil(BLOCK) * ny.div_ceil(BLOCK)],
+            nbx: nx.div_ceil(BLOCK),
         })
     }
 
@@ -162,47 +169,71 @@ impl ZMap {
             .map(|g| g.1)
             .fold(f64::INFINITY, f64::min);
         let (ya, yb) = (s.p0[1].min(s.p1[1]), s.p0[1].max(s.p1[1]));
+        // A level flat end mill without a holder lowers every cell of its
+        // capsule (the cells whose centres are within its radius of the
+        // move) to its height: no envelope to evaluate.
+        let flat_z = fast_flat.then(|| s.p0[2].max(zmin));
+        let (bmax, nbx) = (&self.bmax, self.nbx);
+        let mut touched: Vec<usize> = Vec::new();
         grid.for_rows(s, reach, |j, y, a, b| {
             let dy = (ya - y).max(y - yb).max(0.0).min(tool.radius);
             let floor = (zlow + tool.profile(dy).min(bmin)).max(zmin) as f32;
             let base = j * grid.nx;
-            let row = &mut h[base + a..=base + b];
-            if !row.iter().any(|&v| v > floor) {
-                return;
-            }
-            for (k, v) in row.iter_mut().enumerate() {
-                if *v <= floor {
+            let brow = (j / BLOCK) * nbx;
+            let mut i = a;
+            while i <= b {
+                let bi = i / BLOCK;
+                let end = ((bi + 1) * BLOCK - 1).min(b);
+                let (i0, ie) = (i, end);
+                i = end + 1;
+                // Nothing in this square is above what the move can reach.
+                if bmax[brow + bi] <= floor {
                     continue;
                 }
-                let old = *v as f64;
-                if old <= zmin + EPS {
-                    continue;
-                }
-                let x = grid.x0 + ((a + k) as f64 + 0.5) * grid.dx;
-                for &(r, b, l) in &guards[..ng] {
-                    if let Some(z) = s.flat(x, y, r, b) {
-                        if old > z + EPS {
-                            cut.holder += old.min(z + l) - z;
+                let mut wrote = false;
+                for k in i0..=ie {
+                    let v = &mut h[base + k];
+                    if *v <= floor {
+                        continue;
+                    }
+                    let old = *v as f64;
+                    let z = if let Some(z) = flat_z {
+                        Some(z)
+                    } else {
+                        if old <= zmin + EPS {
+                            continue;
+                        }
+                        let x = grid.x0 + (k as f64 + 0.5) * grid.dx;
+                        for &(r, b, l) in &guards[..ng] {
+                            if let Some(z) = s.flat(x, y, r, b) {
+                                if old > z + EPS {
+                                    cut.holder += old.min(z + l) - z;
+                                }
+                            }
+                        }
+                        s.tool_above(tool, x, y, old - EPS).map(|z| z.max(zmin))
+                    };
+                    if let Some(z) = z {
+                        if z < old - EPS {
+                            cut.removed += old - z;
+                            if write {
+                                undo.push(((base + k) as u32, *v));
+                                *v = z as f32;
+                                wrote = true;
+                            }
                         }
                     }
                 }
-                let env = if fast_flat {
-                    s.cover(x, y, tool.radius).map(|_| s.p0[2])
-                } else {
-                    s.tool_above(tool, x, y, old - EPS)
-                };
-                if let Some(z) = env {
-                    let z = z.max(zmin);
-                    if z < old - EPS {
-                        cut.removed += old - z;
-                        if write {
-                            undo.push(((base + a + k) as u32, *v));
-                            *v = z as f32;
-                        }
-                    }
+                if wrote && touched.last() != Some(&(brow + bi)) {
+                    touched.push(brow + bi);
                 }
             }
         });
+        touched.sort_unstable();
+        touched.dedup();
+        for b in touched {
+            self.bmax[b] = self.block_max(b);
+        }
         let a = self.cell_area();
         cut.removed *= a;
         cut.holder *= a;
@@ -212,9 +243,25 @@ impl ZMap {
     /// Puts back the heights a [`Self::cut`] changed.
     pub fn restore(&mut self, undo: &mut Vec<(u32, f32)>) {
         for &(i, z) in undo.iter().rev() {
-            self.h[i as usize] = z;
+            let i = i as usize;
+            self.h[i] = z;
+            let b = (i / self.nx / BLOCK) * self.nbx + (i % self.nx) / BLOCK;
+            self.bmax[b] = self.bmax[b].max(z);
         }
         undo.clear();
+    }
+
+    /// The greatest height in square `b`.
+    fn block_max(&self, b: usize) -> f32 {
+        let (bj, bi) = (b / self.nbx, b % self.nbx);
+        let (i0, i1) = (bi * BLOCK, ((bi + 1) * BLOCK).min(self.nx));
+        let (j0, j1) = (bj * BLOCK, ((bj + 1) * BLOCK).min(self.ny));
+        let mut m = f32::NEG_INFINITY;
+        for j in j0..j1 {
+            let row = &self.h[j * self.nx + i0..j * self.nx + i1];
+            m = row.iter().fold(m, |a, &v| a.max(v));
+        }
+        m
     }
 
     /// Height at the cell under (x, y), if inside.

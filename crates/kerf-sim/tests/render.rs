@@ -85,4 +85,18 @@ fn a_turned_part_is_drawn_as_section_and_view() {
     let c = render::render(&r.sim);
     save(&c, "lathe.png");
     assert!(red(&c) > 20);
+    // The 3/4 view's cut-away: its two section faces are drawn in the
+    // section colour (green under 0.6 of red: neither the gold of the
+    // turned surfaces, 0.79, nor the blue-grey stock), right of x 800.
+    let mut section = 0;
+    for y in 0..c.h {
+        for x in 800..c.w {
+            let px = c.get(x, y);
+            let (r, g) = (px[0] as f64, px[1] as f64);
+            if px != [220, 20, 20] && r > 40.0 && g < 0.6 * r {
+                section += 1;
+            }
+        }
+    }
+    assert!(section > 20_000, "{section} section pixels");
 }

@@ -67,9 +67,10 @@ pub use alarms::{AlarmLog, Record, RecordKind};
 pub use command::{Command, Op, Refusal};
 pub use mode::{Execution, Mode};
 pub use pages::{OffsetWrite, VarWrite};
+pub use persist::PersistError;
 pub use restart::{RestartAt, RestartPlan};
 pub use snapshot::{AlarmInfo, AxisValues, Positions, ProgramAt, Spindle, State};
-pub use switches::{Overrides, Switches};
+pub use switches::{Overrides, PanelError, Switches};
 pub use table::{decide, markdown as mode_table_markdown, reachable, Verdict};
 pub use trail::{MotionRecord, TRAIL_CAP};
 
@@ -153,11 +154,39 @@ pub struct Runtime {
     block_budget: usize,
 }
 
+/// A runtime that could not be built or set up.
+#[derive(Debug, thiserror::Error)]
+pub enum RuntimeError {
+    /// The machine profile could not be loaded (its name or file).
+    #[error(transparent)]
+    Profile(#[from] crate::job::LoadError),
+    /// The profile's `[motion]` table.
+    #[error("machine {name}: {source}")]
+    Motion {
+        /// The machine as named.
+        name: String,
+        /// The parameter at fault.
+        source: crate::dynamics::DynamicsError,
+    },
+    /// Dynamics out of range (kerf-motion's check, naming the parameter).
+    #[error("{0}")]
+    Dynamics(String),
+    /// A time rate outside (0, 10000].
+    #[error("rate {0}: must be in (0, 10000]")]
+    Rate(f64),
+}
+
+impl From<RuntimeError> for String {
+    fn from(e: RuntimeError) -> String {
+        e.to_string()
+    }
+}
+
 impl Runtime {
     /// A machine at power-on: EDIT mode, READY, at the profile's start
     /// position, with `dynamics` for the planner (see kerf-motion).
-    pub fn new(profile: Profile, dynamics: Dynamics) -> Result<Runtime, String> {
-        dynamics.validate()?;
+    pub fn new(profile: Profile, dynamics: Dynamics) -> Result<Runtime, RuntimeError> {
+        dynamics.validate().map_err(RuntimeError::Dynamics)?;
         let buffer = dynamics.lookahead.max(1);
         let interp = Interp::new(profile.clone(), Settings::default());
         let pos = interp.machine_position();
@@ -202,10 +231,14 @@ impl Runtime {
     /// A machine by built-in name or profile file, with the planner's
     /// dynamics from its `[motion]` table (the same loading as `kerf run`:
     /// `load_profile`, `dynamics::dynamics_of`).
-    pub fn for_machine(name: &str) -> Result<Runtime, String> {
-        let profile = crate::load_profile(name).map_err(|e| e.0)?;
-        let d = crate::dynamics::dynamics_of(&profile, 100.0, 100.0, false)
-            .map_err(|e| format!("machine {name}: {e}"))?;
+    pub fn for_machine(name: &str) -> Result<Runtime, RuntimeError> {
+        let profile = crate::load_profile(name)?;
+        let d = crate::dynamics::dynamics_of(&profile, 100.0, 100.0, false).map_err(|source| {
+            RuntimeError::Motion {
+                name: name.to_string(),
+                source,
+            }
+        })?;
         Runtime::new(profile, d)
     }
 
@@ -251,9 +284,9 @@ impl Runtime {
 
     /// Sets the rate of machine time to wall time for [`Runtime::advance`]
     /// (1 = real time; larger runs faster). Must be in (0, 10000].
-    pub fn set_rate(&mut self, rate: f64) -> Result<(), String> {
+    pub fn set_rate(&mut self, rate: f64) -> Result<(), RuntimeError> {
         if !(rate.is_finite() && rate > 0.0 && rate <= 10_000.0) {
-            return Err(format!("rate {rate}: must be in (0, 10000]"));
+            return Err(RuntimeError::Rate(rate));
         }
         self.rate = rate;
         Ok(())
@@ -321,7 +354,7 @@ impl Runtime {
 
     /// Keeps offsets, work offsets and retained variables in `dir` (loaded
     /// now, each write saved atomically).
-    pub fn set_state_dir(&mut self, dir: PathBuf) -> Result<(), String> {
+    pub fn set_state_dir(&mut self, dir: PathBuf) -> Result<(), PersistError> {
         persist::load(&dir, &mut self.interp)?;
         self.state_dir = Some(dir);
         Ok(())
@@ -347,5 +380,33 @@ impl Runtime {
             Verdict::Allow(next) => Ok(next),
             Verdict::Refuse(r) => Err(self.refuse(op, r)),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn setup_errors_say_what_is_wrong() {
+        let e = Runtime::for_machine("no-such-machine")
+            .err()
+            .expect("refused");
+        assert!(matches!(e, RuntimeError::Profile(_)), "{e:?}");
+        let mut rt = Runtime::for_machine("hx-mc").expect("built in");
+        let e = rt.set_rate(0.0).unwrap_err();
+        assert!(matches!(e, RuntimeError::Rate(r) if r == 0.0));
+        assert_eq!(e.to_string(), "rate 0: must be in (0, 10000]");
+        assert!(rt.set_rate(10_000.0).is_ok());
+        let mut p = Profile::builtin("hx-mc").unwrap();
+        p.motion.as_mut().unwrap().remove("lookahead");
+        let name = "hx-mc".to_string();
+        let e = crate::dynamics::dynamics_of(&p, 100.0, 100.0, false)
+            .map_err(|source| RuntimeError::Motion { name, source })
+            .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "machine hx-mc: profile parameter motion.lookahead is missing"
+        );
     }
 }

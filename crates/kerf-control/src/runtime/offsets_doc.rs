@@ -88,7 +88,7 @@ impl Runtime {
             self.apply_offset(w);
         }
         self.save_state_now(Part::All)
-            .map_err(|e| self.refuse(op, e))
+            .map_err(|e| self.refuse(op, e.to_string()))
     }
 
     fn writes_of(&self, doc: &Value) -> Result<Vec<OffsetWrite>, String> {

@@ -5,7 +5,7 @@ use super::alarms::RecordKind;
 use super::command::{Command, Op, Refusal};
 use super::mode::{Execution, Mode};
 use super::program::Program;
-use super::switches::{Overrides, Switches};
+use super::switches::{Overrides, PanelError, Switches};
 use super::Runtime;
 
 impl Runtime {
@@ -65,14 +65,16 @@ impl Runtime {
                 if let Some(v) = block_skip {
                     s.block_skip = v;
                 }
-                self.set_switches(s).map_err(|r| self.refuse(op, r))?;
+                self.set_switches(s)
+                    .map_err(|r| self.refuse(op, r.to_string()))?;
             }
             Command::Override { feed, rapid } => {
                 let o = Overrides {
                     feed: feed.unwrap_or(self.overrides.feed),
                     rapid: rapid.unwrap_or(self.overrides.rapid),
                 };
-                self.set_overrides(o).map_err(|r| self.refuse(op, r))?;
+                self.set_overrides(o)
+                    .map_err(|r| self.refuse(op, r.to_string()))?;
             }
             Command::Jog { axis, distance } => self.jog(op, &axis, distance, false)?,
             Command::Handle {
@@ -100,7 +102,7 @@ impl Runtime {
     }
 
     /// Sets the panel switches (they act from the next block read).
-    pub fn set_switches(&mut self, s: Switches) -> Result<(), String> {
+    pub fn set_switches(&mut self, s: Switches) -> Result<(), PanelError> {
         s.validate()?;
         self.interp
             .set_switches(s.skip_mask(), s.optional_stop, s.single_block);
@@ -111,7 +113,7 @@ impl Runtime {
     }
 
     /// Sets the override dials (they act from the next block read).
-    pub fn set_overrides(&mut self, o: Overrides) -> Result<(), String> {
+    pub fn set_overrides(&mut self, o: Overrides) -> Result<(), PanelError> {
         o.validate()?;
         self.overrides = o;
         self.apply_overrides();

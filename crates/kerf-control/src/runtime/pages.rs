@@ -95,7 +95,8 @@ impl Runtime {
             _ => Part::Tools,
         };
         self.apply_offset(w);
-        self.save_state_now(part).map_err(|e| self.refuse(op, e))
+        self.save_state_now(part)
+            .map_err(|e| self.refuse(op, e.to_string()))
     }
 
     /// Applies a validated write.
@@ -222,7 +223,7 @@ impl Runtime {
             ));
         }
         self.save_state_now(Part::Vars)
-            .map_err(|e| self.refuse(op, e))
+            .map_err(|e| self.refuse(op, e.to_string()))
     }
 
     /// Writes a parameter (EDIT or MDI mode, control idle). Parameters the

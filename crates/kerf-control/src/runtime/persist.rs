@@ -15,9 +15,64 @@ use std::io;
 use std::path::{Path, PathBuf};
 
 use kerf_canon::NAXES;
+use kerf_interp::state::StateError;
 use kerf_interp::Interp;
 
 use super::Runtime;
+use crate::job::LoadError;
+
+/// A `--state` folder that could not be read or written; the message
+/// names the folder, or the file and line at fault.
+#[derive(Debug, thiserror::Error)]
+pub enum PersistError {
+    /// The folder could not be created.
+    #[error("{}: {source}", dir.display())]
+    Folder {
+        /// The folder.
+        dir: PathBuf,
+        /// What the system said.
+        source: io::Error,
+    },
+    /// The retained variables or tool offsets file.
+    #[error(transparent)]
+    State(#[from] StateError),
+    /// The work offsets file could not be read.
+    #[error("{}: {source}", path.display())]
+    Read {
+        /// The file.
+        path: PathBuf,
+        /// What the system said.
+        source: io::Error,
+    },
+    /// A line of the work offsets file that is not `INDEX X Y Z A B C`.
+    #[error("{}:{line}: expected 'INDEX X Y Z A B C'", path.display())]
+    WorkLine {
+        /// The file.
+        path: PathBuf,
+        /// 1-based line number.
+        line: usize,
+    },
+    /// A file could not be written.
+    #[error("--state {}: {source}", dir.display())]
+    Save {
+        /// The folder.
+        dir: PathBuf,
+        /// What the system said.
+        source: io::Error,
+    },
+}
+
+impl From<PersistError> for String {
+    fn from(e: PersistError) -> String {
+        e.to_string()
+    }
+}
+
+impl From<StateError> for LoadError {
+    fn from(e: StateError) -> LoadError {
+        LoadError(e.to_string())
+    }
+}
 
 fn work_file(dir: &Path, it: &Interp) -> PathBuf {
     let f = kerf_interp::state::offsets_file(dir, &it.profile().name);
@@ -25,22 +80,28 @@ fn work_file(dir: &Path, it: &Interp) -> PathBuf {
 }
 
 /// Loads what `dir` keeps into the interpreter (missing files: nothing).
-pub(super) fn load(dir: &Path, it: &mut Interp) -> Result<(), String> {
-    fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+pub(super) fn load(dir: &Path, it: &mut Interp) -> Result<(), PersistError> {
+    fs::create_dir_all(dir).map_err(|source| PersistError::Folder {
+        dir: dir.to_path_buf(),
+        source,
+    })?;
     kerf_interp::state::load_retained(dir, it)?;
     kerf_interp::state::load_offsets(dir, it)?;
     let path = work_file(dir, it);
     let text = match fs::read_to_string(&path) {
         Ok(t) => t,
         Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(()),
-        Err(e) => return Err(format!("{}: {e}", path.display())),
+        Err(source) => return Err(PersistError::Read { path, source }),
     };
     for (n, line) in text.lines().enumerate() {
         let line = line.trim();
         if line.is_empty() || line.starts_with('#') {
             continue;
         }
-        let bad = || format!("{}:{}: expected 'INDEX X Y Z A B C'", path.display(), n + 1);
+        let bad = || PersistError::WorkLine {
+            path: path.clone(),
+            line: n + 1,
+        };
         let nums: Vec<f64> = line
             .split_whitespace()
             .map(|w| w.parse::<f64>().map_err(|_| bad()))
@@ -69,8 +130,11 @@ pub(super) enum Part {
 }
 
 /// Saves what `dir` keeps (the files of `part`).
-pub(super) fn save(dir: &Path, it: &Interp, part: Part) -> Result<(), String> {
-    let err = |e: io::Error| format!("--state {}: {e}", dir.display());
+pub(super) fn save(dir: &Path, it: &Interp, part: Part) -> Result<(), PersistError> {
+    let err = |source: io::Error| PersistError::Save {
+        dir: dir.to_path_buf(),
+        source,
+    };
     if matches!(part, Part::Tools | Part::All) {
         kerf_interp::state::save_offsets(dir, it).map_err(err)?;
     }
@@ -96,7 +160,7 @@ pub(super) fn save(dir: &Path, it: &Interp, part: Part) -> Result<(), String> {
 
 impl Runtime {
     /// Saves `part` to `--state` now; the error names the folder.
-    pub(super) fn save_state_now(&self, part: Part) -> Result<(), String> {
+    pub(super) fn save_state_now(&self, part: Part) -> Result<(), PersistError> {
         match &self.state_dir {
             Some(d) => save(d, &self.interp, part),
             None => Ok(()),
@@ -107,7 +171,7 @@ impl Runtime {
     /// offsets and retained variables); a failure goes to the history.
     pub(super) fn save_state(&mut self) {
         if let Err(e) = self.save_state_now(Part::All) {
-            let r = self.record(super::RecordKind::Message, "STATE", &e, None);
+            let r = self.record(super::RecordKind::Message, "STATE", &e.to_string(), None);
             self.log.push(r);
         }
     }

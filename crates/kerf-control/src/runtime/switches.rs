@@ -18,6 +18,20 @@ pub struct Switches {
     pub block_skip: Vec<u8>,
 }
 
+/// A switch or dial setting the operator panel does not have.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum PanelError {
+    /// A block skip level above 10.
+    #[error("block skip level {0}: levels are 0-10")]
+    SkipLevel(u8),
+    /// A feed override outside 1-200 %.
+    #[error("feed override {0}: the dial goes 1-200 %")]
+    FeedOverride(f64),
+    /// A rapid override outside 1-100 %.
+    #[error("rapid override {0}: the dial goes 1-100 %")]
+    RapidOverride(f64),
+}
+
 impl Switches {
     /// The block-skip levels as the interpreter's bit mask (bit n = `/n`).
     pub fn skip_mask(&self) -> u16 {
@@ -28,10 +42,10 @@ impl Switches {
 
     /// Checks the levels: 0-10 (000 §2.3.3 "/0 ~ /10" on the HX, 002
     /// `/0`-`/9` on the Hurco).
-    pub fn validate(&self) -> Result<(), String> {
+    pub fn validate(&self) -> Result<(), PanelError> {
         for &l in &self.block_skip {
             if l > 10 {
-                return Err(format!("block skip level {l}: levels are 0-10"));
+                return Err(PanelError::SkipLevel(l));
             }
         }
         Ok(())
@@ -58,18 +72,12 @@ impl Default for Overrides {
 
 impl Overrides {
     /// Checks the ranges of the panel dials: feed 1-200 %, rapid 1-100 %.
-    pub fn validate(&self) -> Result<(), String> {
+    pub fn validate(&self) -> Result<(), PanelError> {
         if !(self.feed.is_finite() && (1.0..=200.0).contains(&self.feed)) {
-            return Err(format!(
-                "feed override {}: the dial goes 1-200 %",
-                self.feed
-            ));
+            return Err(PanelError::FeedOverride(self.feed));
         }
         if !(self.rapid.is_finite() && (1.0..=100.0).contains(&self.rapid)) {
-            return Err(format!(
-                "rapid override {}: the dial goes 1-100 %",
-                self.rapid
-            ));
+            return Err(PanelError::RapidOverride(self.rapid));
         }
         Ok(())
     }
@@ -97,24 +105,30 @@ mod tests {
             block_skip: vec![11],
             ..Default::default()
         };
-        assert!(bad.validate().is_err());
-        assert!(Overrides {
+        assert_eq!(bad.validate(), Err(PanelError::SkipLevel(11)));
+        let e = Overrides {
             feed: 0.0,
-            rapid: 100.0
+            rapid: 100.0,
         }
-        .validate()
-        .is_err());
+        .validate();
+        assert_eq!(e, Err(PanelError::FeedOverride(0.0)));
+        assert_eq!(
+            e.unwrap_err().to_string(),
+            "feed override 0: the dial goes 1-200 %"
+        );
         assert!(Overrides {
             feed: 200.0,
             rapid: 100.0
         }
         .validate()
         .is_ok());
-        assert!(Overrides {
-            feed: 100.0,
-            rapid: 101.0
-        }
-        .validate()
-        .is_err());
+        assert_eq!(
+            Overrides {
+                feed: 100.0,
+                rapid: 101.0
+            }
+            .validate(),
+            Err(PanelError::RapidOverride(101.0))
+        );
     }
 }

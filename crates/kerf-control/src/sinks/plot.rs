@@ -115,7 +115,8 @@ impl<W: Write> Plot<W> {
 pub fn render(d: &mut Drawing, format: PlotFormat) -> io::Result<Vec<u8>> {
     d.flush();
     let rows = legend_rows(d);
-    let layout = Layout::new(&d.panels, d.kind() == MachineKind::Lathe, rows);
+    let keep = d.stop.as_ref().map(|(i, p, _)| (*i, *p));
+    let layout = Layout::new(&d.panels, d.kind() == MachineKind::Lathe, rows, keep);
     let items = scene::build(d, &layout);
     match format {
         PlotFormat::Svg => Ok(svg::write(&items, layout.width, layout.height).into_bytes()),
@@ -158,10 +159,10 @@ impl<W: Write> Sink for Plot<W> {
         Ok(())
     }
 
-    fn finish(&mut self, _cx: &Context, alarm: Option<&Alarm>) -> io::Result<()> {
+    fn finish(&mut self, cx: &Context, alarm: Option<&Alarm>) -> io::Result<()> {
         if let Some(a) = alarm {
-            self.drawing
-                .mark_stop(format!("alarm {} line {}", a.code, a.src.line));
+            let label = format!("alarm {} line {}", a.code, a.src.line);
+            self.drawing.mark_stop(label, &cx.interp.work_position());
         }
         let bytes = render(&mut self.drawing, self.format)?;
         self.out.write_all(&bytes)?;

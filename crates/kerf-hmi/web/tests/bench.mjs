@@ -25,42 +25,69 @@ const name = file ? file.split('/').pop() : 'loop_10m.nc';
 const server = await serve(['--machine', 'hx-mc']);
 const ctx = await launch();
 const page = await ctx.newPage();
+page.on('pageerror', (e) => console.error('page error:', e));
+page.on('console', (m) => console.error('page:', m.text()));
+page.on('crash', () => console.error('page crashed'));
 await page.goto(`${server.url}#graph`);
 await page.waitForFunction(() => window.kerf && window.kerf.graph);
 const r = await page.evaluate(async ({ text, name }) => {
   const g = window.kerf.graph;
+  const gl = g.renderer.getContext();
+  // A frame is done when its pixels can be read (the GL queue drained).
+  const finish = () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
+  const wait = (f, ms) => new Promise((res) => { const k = () => (f() ? res() : setTimeout(k, ms)); k(); });
+  // The file as the page's LOAD FILE sends it: a Blob, not a JS string.
+  const body = new Blob([text]);
   const t0 = performance.now();
-  const load = fetch(`/api/program?name=${name}`, { method: 'POST', body: text });
-  await new Promise((res) => {
-    const f = () => (g.n > 2 && g.frames > 0 && g.firstFrameAt !== null && g.firstFrameAt > t0 ? res() : setTimeout(f, 5));
-    f();
-  });
-  const first = g.firstFrameAt - t0;
+  let loaded = null;
+  const load = fetch(`/api/program?name=${name}`, { method: 'POST', body }).then(() => { loaded = performance.now() - t0; });
+  await wait(() => g.n > 2 && g.firstFrameAt !== null && g.firstFrameAt > t0, 2);
+  finish();
+  const drawn = performance.now() - t0;
+  const first = { records: g.firstRecordsAt - t0, frame: g.firstFrameAt - t0, drawn, points: g.points, coarse: g.drewCoarse };
+  console.log(`first frame ${JSON.stringify(first)}`);
   await load;
-  await new Promise((res) => {
-    const f = () => (window.kerf.state.path.done && g.points === window.kerf.state.path.points ? res() : setTimeout(f, 50));
-    f();
-  });
+  console.log(`loaded in ${loaded} ms`);
+  await wait(() => window.kerf.state.path.done && g.points === window.kerf.state.path.points && g.done, 20);
   const all = performance.now() - t0;
+  console.log(`whole path ${all} ms, ${g.n} vertices, ${g.coarse.n} coarse`);
   g.view('iso');
-  // Orbit: turn the camera about the target every frame for 5 s.
-  const c = g.camera, tgt = g.controls.target;
-  let frames = 0;
-  const t1 = performance.now();
-  await new Promise((res) => {
-    const step = () => {
-      const d = c.position.clone().sub(tgt);
-      d.applyAxisAngle(c.up, 0.02);
-      c.position.copy(tgt).add(d);
-      c.lookAt(tgt);
-      g.renderer.render(g.scene, c);
-      frames++;
-      if (performance.now() - t1 < 5000) requestAnimationFrame(step); else res();
-    };
-    requestAnimationFrame(step);
-  });
-  const fps = frames / ((performance.now() - t1) / 1000);
-  return { first_frame_ms: first, whole_path_ms: all, points: g.points, vertices: g.n, fps, state: window.kerf.state.path };
+  // Orbit: the camera turned about the target every frame for 5 s, as a
+  // drag does (the coarse copy drawn while it moves).
+  const orbit = async (moving, secs) => {
+    g.moving = moving;
+    const c = g.camera, tgt = g.controls.target;
+    let frames = 0;
+    const t1 = performance.now();
+    await new Promise((res) => {
+      const step = () => {
+        const d = c.position.clone().sub(tgt);
+        d.applyAxisAngle(c.up, 0.02);
+        c.position.copy(tgt).add(d);
+        c.lookAt(tgt);
+        g.draw();
+        frames++;
+        if (performance.now() - t1 < secs * 1000) requestAnimationFrame(step); else res();
+      };
+      requestAnimationFrame(step);
+    });
+    finish();
+    return frames / ((performance.now() - t1) / 1000);
+  };
+  const fps = await orbit(true, 5);
+  console.log(`orbit ${fps} frames/s`);
+  // The whole path, camera still: one frame drawn to the end.
+  g.moving = false;
+  finish();
+  const t2 = performance.now();
+  g.draw();
+  finish();
+  const fullFrame = performance.now() - t2;
+  return {
+    load_ms: loaded, first_records_ms: first.records, first_frame_ms: first.frame, first_frame_drawn_ms: first.drawn,
+    first_frame_points: first.points, whole_path_ms: all, points: g.points, vertices: g.n,
+    coarse_vertices: g.coarse.n, orbit_fps: fps, full_frame_ms: fullFrame, state: window.kerf.state.path,
+  };
 }, { text, name });
 console.log(JSON.stringify({ program: name, lines: text.split('\n').length - 1, ...r }));
 await ctx.cleanup();

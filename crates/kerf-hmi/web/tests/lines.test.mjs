@@ -24,3 +24,28 @@ test('a pick is the segment nearest the pixel, within the tolerance', () => {
   assert.equal(pick(pos, 3, m, 100, 100, 25, 57), -1); // 7 px: outside 6
   assert.equal(pick(pos, 3, m, 100, 100, 90, 90), -1);
 });
+
+test('the coarse copy keeps colour changes and stays within its size', async () => {
+  const { Coarse } = await import('../coarse.js');
+  // 1001 feed vertices 0.01 mm apart along X (0 … 10 mm), then a rapid
+  // (its first vertex the duplicate of the last feed one) to (10, 5).
+  const n = 1003;
+  const pos = new Float32Array(n * 3), col = new Uint8Array(n * 3), key = new Uint16Array(n);
+  for (let i = 0; i <= 1000; i++) { pos[i * 3] = i * 0.01; key[i] = 1; }
+  pos[1001 * 3] = 10; key[1001] = 0;
+  pos[1002 * 3] = 10; pos[1002 * 3 + 1] = 5; key[1002] = 0;
+  const c = new Coarse(100);
+  for (let i = 0; i < n; i++) c.add(pos, col, key, i);
+  c.finish(pos, col, n);
+  assert.ok(c.n <= 102, `${c.n} vertices`);
+  // The copy first overflows at vertex 100 (X 1.00 mm): a first step of
+  // 1.00 / 4000 = 0.00025 mm, doubled while over 100 vertices: at 2^9 ·
+  // 0.00025 = 0.128 mm every 13th feed vertex (0.13 mm) is kept, 77 of
+  // them over 10 mm, with the ends and the rapid.
+  assert.ok(Math.abs(c.step - 0.128) < 1e-9, `step ${c.step}`);
+  const src = [...c.src.subarray(0, c.n)];
+  assert.equal(src[0], 0);
+  assert.ok(src.includes(1000), 'the last feed vertex');
+  assert.ok(src.includes(1001), 'the colour change');
+  assert.equal(src[src.length - 1], 1002);
+});

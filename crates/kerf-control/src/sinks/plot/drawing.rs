@@ -139,6 +139,9 @@ pub struct Panel {
     budget: usize,
     min: (f64, f64),
     max: (f64, f64),
+    /// The extent of the cutting moves alone.
+    cut_min: (f64, f64),
+    cut_max: (f64, f64),
     /// A run of lines too short for the grid so far, growing until it
     /// spans a cell.
     pending: Option<Shape>,
@@ -159,6 +162,8 @@ impl Panel {
             budget,
             min: (f64::MAX, f64::MAX),
             max: (f64::MIN, f64::MIN),
+            cut_min: (f64::MAX, f64::MAX),
+            cut_max: (f64::MIN, f64::MIN),
             pending: None,
             polar: false,
             start: None,
@@ -185,9 +190,24 @@ impl Panel {
         }
     }
 
+    /// The extent of the cutting moves, None without any.
+    pub fn cut_bounds(&self) -> Option<((f64, f64), (f64, f64))> {
+        (self.cut_min.0 <= self.cut_max.0).then_some((self.cut_min, self.cut_max))
+    }
+
     /// True when something other than holes was kept (or is pending).
     pub fn has_lines(&self) -> bool {
         self.pending.is_some() || self.shapes.iter().any(|s| s.form != Form::Hole)
+    }
+
+    /// The largest v of the cutting moves' end points (a lathe's largest
+    /// radius cut), None without cuts.
+    pub fn cut_top(&self) -> Option<f64> {
+        self.shapes
+            .iter()
+            .filter(|s| s.class != 0)
+            .map(|s| s.a.1.max(s.b.1))
+            .reduce(f64::max)
     }
 
     /// Widens the extent to hold `p`.
@@ -196,12 +216,19 @@ impl Panel {
         self.max = (self.max.0.max(p.0), self.max.1.max(p.1));
     }
 
+    fn grow_cut(&mut self, p: (f64, f64)) {
+        self.grow(p);
+        self.cut_min = (self.cut_min.0.min(p.0), self.cut_min.1.min(p.1));
+        self.cut_max = (self.cut_max.0.max(p.0), self.cut_max.1.max(p.1));
+    }
+
     /// Keeps a shape (merged, snapped, deduplicated).
     pub fn keep(&mut self, s: Shape) {
-        self.grow(s.a);
-        self.grow(s.b);
+        let cut = s.class != 0;
+        self.grow_by(s.a, cut);
+        self.grow_by(s.b, cut);
         if let Form::Arc { c, sweep } = s.form {
-            self.grow_arc(s.a, c, sweep);
+            self.grow_arc(s.a, c, sweep, cut);
         }
         if s.form == Form::Line {
             if let Some(p) = self.pending.as_mut() {
@@ -226,14 +253,22 @@ impl Panel {
     }
 
     /// The arc's extreme points in the view.
-    fn grow_arc(&mut self, a: (f64, f64), c: (f64, f64), sweep: f64) {
+    fn grow_by(&mut self, p: (f64, f64), cut: bool) {
+        if cut {
+            self.grow_cut(p)
+        } else {
+            self.grow(p)
+        }
+    }
+
+    fn grow_arc(&mut self, a: (f64, f64), c: (f64, f64), sweep: f64, cut: bool) {
         let r = (a.0 - c.0).hypot(a.1 - c.1);
         let a0 = (a.1 - c.1).atan2(a.0 - c.0);
         for k in -4..=8 {
             let q = k as f64 * PI / 2.0;
             let t = (q - a0) / sweep;
             if (0.0..=1.0).contains(&t) {
-                self.grow((c.0 + r * q.cos(), c.1 + r * q.sin()));
+                self.grow_by((c.0 + r * q.cos(), c.1 + r * q.sin()), cut);
             }
         }
     }
@@ -397,11 +432,12 @@ impl Drawing {
         }
     }
 
-    /// Marks where the run stopped (on an alarm) with its label.
-    pub fn mark_stop(&mut self, label: String) {
-        if let Some((panel, p)) = self.last {
-            self.stop = Some((panel, p, label));
-        }
+    /// Marks where the run stopped (on an alarm) with its label: the end
+    /// of the last motion, or `at` (work coordinates) when the alarm came
+    /// before any motion.
+    pub fn mark_stop(&mut self, label: String, at: &Pos) {
+        let (panel, p) = self.last.unwrap_or_else(|| self.view(at, Rot::Off));
+        self.stop = Some((panel, p, label));
     }
 
     /// Keeps the pending runs (before drawing).
@@ -499,6 +535,23 @@ mod tests {
         assert!((s.a.0 - 20.0).abs() < 1e-12 && s.a.1.abs() < 1e-12);
         assert!(s.b.0.abs() < 1e-12 && (s.b.1 - 20.0).abs() < 1e-12);
         assert!(d.panels[0].polar);
+    }
+
+    #[test]
+    fn an_alarm_before_any_motion_is_marked_where_the_tool_is() {
+        // A lathe at X250 Z400 (work): the cross at view (Z, X).
+        let mut d = Drawing::new(MachineKind::Lathe);
+        d.mark_stop(
+            "alarm PS0010 line 1".into(),
+            &[250.0, 0.0, 400.0, 0.0, 0.0, 0.0],
+        );
+        let (panel, p, _) = d.stop.clone().unwrap();
+        assert_eq!((panel, p), (0, (400.0, 250.0)));
+        // After a motion, the motion's end.
+        let mut d = Drawing::new(MachineKind::Mill);
+        d.add(&feed(1, 5.0, 6.0), &[0.0; 6], Rot::Off);
+        d.mark_stop("alarm".into(), &[1.0; 6]);
+        assert_eq!(d.stop.unwrap().1, (5.0, 6.0));
     }
 
     #[test]

@@ -28,6 +28,11 @@ pub const BOTTOM_H: f64 = 56.0;
 pub const PAD: f64 = 0.05;
 /// Least distance between two ticks, px.
 pub const MIN_TICK_PX: f64 = 70.0;
+/// Smallest extent shown, mm: a point is drawn in a 1 mm square.
+pub const MIN_SIDE: f64 = 1.0;
+/// Rapids this far from the cuts are shown whole, a fraction of the
+/// cuts' larger side.
+pub const NEAR: f64 = 0.25;
 /// Lathe: room left of the extent for the chuck, a fraction of the
 /// larger side.
 pub const CHUCK: f64 = 0.12;
@@ -127,7 +132,13 @@ impl Layout {
     /// Lays out the panels of a drawing that have content (the main
     /// panel always when nothing was drawn at all), `legend_rows` rows of
     /// legend beside them.
-    pub fn new(panels: &[Panel], lathe: bool, legend_rows: usize) -> Layout {
+    /// `keep` is a point that must be in view (the alarm's: panel, point).
+    pub fn new(
+        panels: &[Panel],
+        lathe: bool,
+        legend_rows: usize,
+        keep: Option<(usize, (f64, f64))>,
+    ) -> Layout {
         let mut out = Vec::new();
         let mut top = 8.0 + TITLE_H;
         let others = |i: usize| {
@@ -137,16 +148,23 @@ impl Layout {
                 .any(|(j, p)| j != i && p.bounds().is_some() && p.has_lines())
         };
         for (i, p) in panels.iter().enumerate() {
-            let bounds = match p.bounds() {
+            let kept = keep.filter(|k| k.0 == i).map(|k| k.1);
+            let (mut lo, mut hi) = match p.bounds() {
                 // A main panel with only a point in it (the G107 example's
                 // start) gives way to a panel that has the path.
-                Some(_) if !p.has_lines() && others(i) => continue,
-                Some(b) => b,
+                Some(_) if !p.has_lines() && others(i) && kept.is_none() => continue,
+                Some(b) => view_extent(b, p.cut_bounds()),
+                None if kept.is_some() => (kept.unwrap(), kept.unwrap()),
                 None if i == 0 && panels.iter().all(|p| p.bounds().is_none()) => {
                     ((0.0, 0.0), (0.0, 0.0))
                 }
                 None => continue,
             };
+            if let Some(k) = kept {
+                lo = (lo.0.min(k.0), lo.1.min(k.1));
+                hi = (hi.0.max(k.0), hi.1.max(k.1));
+            }
+            let bounds = (lo, hi);
             let pl = place(i, p.view, bounds, lathe && i == 0, top);
             top = pl.top + pl.h + BOTTOM_H + TITLE_H;
             out.push(pl);
@@ -163,6 +181,22 @@ impl Layout {
     }
 }
 
+/// What a panel shows: the cutting moves and the rapids near them. A
+/// rapid to a far home or tool change position would make the part a
+/// speck; past [`NEAR`] of the cuts' larger side around them it is cut
+/// off at the frame.
+fn view_extent(
+    all: ((f64, f64), (f64, f64)),
+    cut: Option<((f64, f64), (f64, f64))>,
+) -> ((f64, f64), (f64, f64)) {
+    let Some((lo, hi)) = cut else { return all };
+    let m = NEAR * (hi.0 - lo.0).max(hi.1 - lo.1).max(MIN_SIDE);
+    (
+        (all.0 .0.max(lo.0 - m), all.0 .1.max(lo.1 - m)),
+        (all.1 .0.min(hi.0 + m), all.1 .1.min(hi.1 + m)),
+    )
+}
+
 /// One panel's area and scale for an extent.
 fn place(
     index: usize,
@@ -177,7 +211,14 @@ fn place(
         min.1 = min.1.min(0.0);
         max.1 = max.1.max(0.0);
     }
-    let side = (max.0 - min.0).max(max.1 - min.1).max(1.0);
+    // A point or a short move is shown in at least MIN_SIDE mm.
+    for (l, h) in [(&mut min.0, &mut max.0), (&mut min.1, &mut max.1)] {
+        if *h - *l < MIN_SIDE {
+            let mid = 0.5 * (*l + *h);
+            (*l, *h) = (mid - 0.5 * MIN_SIDE, mid + 0.5 * MIN_SIDE);
+        }
+    }
+    let side = (max.0 - min.0).max(max.1 - min.1);
     let chuck = lathe.then(|| {
         let right = min.0 - PAD * side;
         min.0 -= CHUCK * side;
@@ -212,6 +253,22 @@ fn place(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_far_rapid_does_not_shrink_the_part() {
+        // Cuts over 0..100 × 0..50, a rapid out to X400 Y250: the view is
+        // the cuts and 25 mm (25 % of 100) around them, within the whole.
+        let v = view_extent(
+            ((0.0, 0.0), (400.0, 250.0)),
+            Some(((0.0, 0.0), (100.0, 50.0))),
+        );
+        assert_eq!(v, ((0.0, 0.0), (125.0, 75.0)));
+        // Without cuts, everything.
+        assert_eq!(
+            view_extent(((1.0, 2.0), (3.0, 4.0)), None),
+            ((1.0, 2.0), (3.0, 4.0))
+        );
+    }
 
     #[test]
     fn steps_are_round_numbers() {

@@ -6,7 +6,7 @@
 use std::io;
 
 use font8x8::legacy::BASIC_LEGACY;
-use tiny_skia::{FillRule, Paint, PathBuilder, Pixmap, Rect, Stroke, StrokeDash, Transform};
+use tiny_skia::{FillRule, Mask, Paint, PathBuilder, Pixmap, Rect, Stroke, StrokeDash, Transform};
 
 use super::scene::{arc_points, Anchor, Item, Pen, Rgb, Seg};
 
@@ -15,10 +15,24 @@ use super::scene::{arc_points, Anchor, Item, Pen, Rgb, Seg};
 pub fn write(items: &[Item], width: f64, height: f64) -> io::Result<Vec<u8>> {
     let mut pm = Pixmap::new(width.ceil() as u32, height.ceil() as u32)
         .ok_or_else(|| io::Error::other(format!("cannot make a {width}x{height} picture")))?;
+    let mut mask = None;
     for it in items {
-        draw(&mut pm, it);
+        if let Item::Clip(c) = it {
+            mask = c.and_then(|(at, w, h)| clip(&pm, at, w, h));
+            continue;
+        }
+        draw(&mut pm, it, mask.as_ref());
     }
     pm.encode_png().map_err(io::Error::other)
+}
+
+/// A mask letting through a rectangle.
+fn clip(pm: &Pixmap, at: (f64, f64), w: f64, h: f64) -> Option<Mask> {
+    let mut m = Mask::new(pm.width(), pm.height())?;
+    let r = Rect::from_xywh(at.0 as f32, at.1 as f32, w as f32, h as f32)?;
+    let path = PathBuilder::from_rect(r);
+    m.fill_path(&path, FillRule::Winding, false, Transform::identity());
+    Some(m)
 }
 
 fn paint((r, g, b): Rgb, aa: bool) -> Paint<'static> {
@@ -28,7 +42,7 @@ fn paint((r, g, b): Rgb, aa: bool) -> Paint<'static> {
     p
 }
 
-fn stroke(pm: &mut Pixmap, pb: PathBuilder, pen: &Pen) {
+fn stroke(pm: &mut Pixmap, pb: PathBuilder, pen: &Pen, mask: Option<&Mask>) {
     let Some(path) = pb.finish() else { return };
     let st = Stroke {
         width: pen.width as f32,
@@ -42,11 +56,11 @@ fn stroke(pm: &mut Pixmap, pb: PathBuilder, pen: &Pen) {
         &paint(pen.colour, true),
         &st,
         Transform::identity(),
-        None,
+        mask,
     );
 }
 
-fn draw(pm: &mut Pixmap, it: &Item) {
+fn draw(pm: &mut Pixmap, it: &Item, mask: Option<&Mask>) {
     match it {
         Item::Path { segs, pen } => {
             let mut pb = PathBuilder::new();
@@ -69,14 +83,14 @@ fn draw(pm: &mut Pixmap, it: &Item) {
                     }
                 }
             }
-            stroke(pm, pb, pen);
+            stroke(pm, pb, pen, mask);
         }
         Item::Rings { at, r, pen } => {
             let mut pb = PathBuilder::new();
             for p in at {
                 pb.push_circle(p.0 as f32, p.1 as f32, *r as f32);
             }
-            stroke(pm, pb, pen);
+            stroke(pm, pb, pen, mask);
         }
         Item::Rect {
             at,
@@ -89,12 +103,12 @@ fn draw(pm: &mut Pixmap, it: &Item) {
                 return;
             };
             if let Some(f) = fill {
-                pm.fill_rect(rect, &paint(*f, false), Transform::identity(), None);
+                pm.fill_rect(rect, &paint(*f, false), Transform::identity(), mask);
             }
             if let Some(pen) = pen {
                 let mut pb = PathBuilder::new();
                 pb.push_rect(rect);
-                stroke(pm, pb, pen);
+                stroke(pm, pb, pen, mask);
             }
         }
         Item::Text {
@@ -104,6 +118,7 @@ fn draw(pm: &mut Pixmap, it: &Item) {
             colour,
             text,
         } => text_at(pm, *at, *size, *anchor, *colour, text),
+        Item::Clip(_) => {}
     }
 }
 

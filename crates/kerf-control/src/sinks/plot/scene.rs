@@ -129,6 +129,9 @@ pub enum Item {
         fill: Option<Rgb>,
         pen: Option<Pen>,
     },
+    /// Items up to the next `Clip` are clipped to this rectangle (top
+    /// left, width, height); None ends the clipping.
+    Clip(Option<(P, f64, f64)>),
     /// Text, its baseline at `at.1`.
     Text {
         at: P,
@@ -169,7 +172,9 @@ pub fn build(d: &Drawing, l: &Layout) -> Vec<Item> {
     }];
     for pl in &l.panels {
         frame(&mut items, pl, d);
+        items.push(Item::Clip(Some(((pl.left, pl.top), pl.w, pl.h))));
         toolpath(&mut items, pl, d.panels[pl.index].shapes(), d.tools.len());
+        items.push(Item::Clip(None));
         if let Some((i, p, _)) = &d.stop {
             if *i == pl.index {
                 cross(&mut items, pl.px(*p));
@@ -231,7 +236,7 @@ fn frame(items: &mut Vec<Item>, pl: &PanelLayout, d: &Drawing) {
     items.push(text((l, t - 10.0), LARGE, Anchor::End, tv));
     items.push(text((l, t - 30.0), LARGE, Anchor::Start, title(pl, d)));
     if let Some(edge) = pl.chuck {
-        lathe_marks(items, pl, edge);
+        lathe_marks(items, pl, edge, d.panels[pl.index].cut_top());
     }
 }
 
@@ -249,8 +254,9 @@ fn title(pl: &PanelLayout, d: &Drawing) -> String {
     format!("{s}; grid {} {unit}", pl.label(pl.step))
 }
 
-/// The spindle centre line across the area and the chuck left of `edge`.
-fn lathe_marks(items: &mut Vec<Item>, pl: &PanelLayout, edge: f64) {
+/// The spindle centre line across the area and the chuck left of `edge`,
+/// as high as the largest radius cut (`top`) or 45 % of the area.
+fn lathe_marks(items: &mut Vec<Item>, pl: &PanelLayout, edge: f64, top: Option<f64>) {
     let y0 = pl.px((0.0, 0.0)).1;
     items.push(Item::Path {
         segs: vec![Seg::Move((pl.left, y0)), Seg::Line((pl.left + pl.w, y0))],
@@ -258,7 +264,8 @@ fn lathe_marks(items: &mut Vec<Item>, pl: &PanelLayout, edge: f64) {
     });
     let x1 = pl.px((edge, 0.0)).0;
     let x0 = pl.left + 4.0;
-    let h = (0.45 * (y0 - pl.top)).max(12.0);
+    let cut = top.map_or(f64::MAX, |v| 1.1 * v * pl.scale);
+    let h = (0.45 * (y0 - pl.top)).min(cut).max(12.0);
     if x1 - x0 >= 4.0 {
         items.push(Item::Rect {
             at: (x0, y0 - h),
@@ -326,15 +333,16 @@ fn legend(items: &mut Vec<Item>, d: &Drawing, l: &Layout) {
         Line(Pen),
         Ring,
         Cross,
+        Nothing,
     }
     let mut rows = vec![(Mark::Line(path_pen(0)), "rapid".to_string())];
     for (i, t) in d.tools.iter().enumerate() {
         rows.push((Mark::Line(path_pen(i as u16 + 1)), format!("T{t} cutting")));
     }
-    let holes = d
+    let holes = l
         .panels
         .iter()
-        .flat_map(|p| p.shapes())
+        .flat_map(|pl| d.panels[pl.index].shapes())
         .any(|s| s.form == Form::Hole);
     if holes {
         rows.push((Mark::Ring, "hole / plunge".into()));
@@ -344,7 +352,12 @@ fn legend(items: &mut Vec<Item>, d: &Drawing, l: &Layout) {
         rows.push((Mark::Line(centre), "spindle centre".into()));
     }
     if let Some((_, _, label)) = &d.stop {
-        rows.push((Mark::Cross, label.clone()));
+        // "alarm CODE" and "line N" on rows of their own.
+        let (a, b) = label.split_once(" line ").unwrap_or((label, ""));
+        rows.push((Mark::Cross, a.to_string()));
+        if !b.is_empty() {
+            rows.push((Mark::Nothing, format!("line {b}")));
+        }
     }
     let x = LEGEND_X;
     for (k, (mark, label)) in rows.into_iter().enumerate() {
@@ -360,6 +373,7 @@ fn legend(items: &mut Vec<Item>, d: &Drawing, l: &Layout) {
                 pen: Pen::solid(INK, 1.5),
             }),
             Mark::Cross => cross(items, (x + 13.0, y)),
+            Mark::Nothing => {}
         }
         items.push(text((x + 34.0, y + 5.0), LARGE, Anchor::Start, label));
     }

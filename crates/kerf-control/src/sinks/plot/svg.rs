@@ -11,7 +11,25 @@ pub fn write(items: &[Item], width: f64, height: f64) -> String {
     let mut s = format!(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {width} {height}\" width=\"{width}\" height=\"{height}\" font-family=\"DejaVu Sans, Verdana, sans-serif\">\n"
     );
+    let mut clips = 0;
     for it in items {
+        if let Item::Clip(c) = it {
+            match c {
+                Some((at, w, h)) => {
+                    clips += 1;
+                    let _ = writeln!(
+                        s,
+                        "<clipPath id=\"area{clips}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath><g clip-path=\"url(#area{clips})\">",
+                        num(at.0),
+                        num(at.1),
+                        num(*w),
+                        num(*h)
+                    );
+                }
+                None => s.push_str("</g>\n"),
+            }
+            continue;
+        }
         item(&mut s, it);
     }
     s.push_str("</svg>\n");
@@ -80,6 +98,7 @@ fn item(s: &mut String, it: &Item) {
                 num(*h)
             );
         }
+        Item::Clip(_) => {}
         Item::Text {
             at,
             size,
@@ -162,7 +181,7 @@ mod tests {
     fn numbers_are_short() {
         assert_eq!(num(12.0), "12");
         assert_eq!(num(-0.001), "0");
-        assert_eq!(num(3.14159), "3.14");
+        assert_eq!(num(1.23456), "1.23");
     }
 
     #[test]
