@@ -25,10 +25,11 @@ impl Relative {
     /// Sets axis `axis` (an index into the machine's axes; every axis when
     /// `None`) to `value` at the machine position `machine`.
     pub fn set(&mut self, axis: Option<usize>, value: f64, machine: &[f64]) {
-        for i in 0..self.base.len().min(machine.len()) {
+        let counters = self.base.iter_mut().zip(self.preset.iter_mut());
+        for (i, ((b, p), m)) in counters.zip(machine).enumerate() {
             if axis.is_none_or(|a| a == i) {
-                self.base[i] = machine[i];
-                self.preset[i] = value;
+                *b = *m;
+                *p = value;
             }
         }
     }
