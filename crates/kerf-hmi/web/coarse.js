@@ -79,7 +79,8 @@ export class Coarse {
         if (v < lo[a]) lo[a] = v;
         if (v > hi[a]) hi[a] = v;
       }
-      this.step = Math.max(Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) / 4000, 1e-6) / 2;
+      this.step0 = Math.max(Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) / 4000, 1e-6);
+      this.step = this.step0 / 2;
     }
     for (let round = 0; ; round++) {
       this.step *= 2;
@@ -89,7 +90,11 @@ export class Coarse {
       if (this.n <= this.max) return;
       // Half the copy kept for colour changes alone: a longer step cannot
       // make room, so from now on only distance counts.
-      if (this.keepChanges && (this.forced > this.max / 2 || round > 60)) this.keepChanges = false;
+      // The step starts again from the first one.
+      if (this.keepChanges && (this.forced > this.max / 2 || round > 60)) {
+        this.keepChanges = false;
+        this.step = this.step0 / 2;
+      }
     }
   }
 
