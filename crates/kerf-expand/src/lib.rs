@@ -25,4 +25,4 @@ mod target;
 
 pub use expander::{base_name, Expander};
 pub use machine::SpindleState;
-pub use target::{ClampWord, Control, DwellWord, Spelling, Target, ThreadWord};
+pub use target::{ClampWord, Control, DwellWord, Spelling, Target, ThreadWord, UnknownTarget};

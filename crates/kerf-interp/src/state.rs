@@ -255,3 +255,43 @@ pub fn write_atomic(dir: &Path, path: &Path, text: &str) -> io::Result<()> {
     }
     r
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Profile, Settings};
+
+    fn interp() -> Interp {
+        Interp::new(Profile::builtin("hx-mc").unwrap(), Settings::default())
+    }
+
+    #[test]
+    fn a_bad_line_names_the_file_and_the_line() {
+        let dir = std::env::temp_dir().join(format!("kerf-state-test-{}", std::process::id()));
+        fs::create_dir_all(&dir).unwrap();
+        let vars = state_file(&dir, "hx-mc");
+        // #100 is a common variable, not retained (000 §14.2.3: #200-#699).
+        fs::write(
+            &vars,
+            "# kerf retained macro variables\n#200 = 1.5\n#100 = 2\n",
+        )
+        .unwrap();
+        let e = load_retained(&dir, &mut interp()).unwrap_err();
+        assert!(
+            matches!(&e, StateError::Line { path, line: 3, .. } if *path == vars),
+            "{e:?}"
+        );
+        let want = format!(
+            "{}:3: #100 is not a retained variable of this control",
+            vars.display()
+        );
+        assert_eq!(e.to_string(), want);
+        fs::write(offsets_file(&dir, "hx-mc"), "H 1 abc 0\n").unwrap();
+        let e = load_offsets(&dir, &mut interp()).unwrap_err();
+        assert!(
+            e.to_string().ends_with(".offsets:1: expected numbers"),
+            "{e}"
+        );
+        let _ = fs::remove_dir_all(&dir);
+    }
+}

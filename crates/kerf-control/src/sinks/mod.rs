@@ -11,6 +11,8 @@
 //!   (docs/expand.md).
 //!
 //! Each takes any `io::Write`; formats are in docs/formats.md.
+//! [`WriteBehind`] is an `io::Write` that writes on a thread of its own
+//! (the CLI's toolpath file).
 
 pub mod expand;
 pub mod log;
@@ -20,6 +22,7 @@ pub mod report;
 pub mod sample;
 pub mod sim;
 pub mod toolpath;
+pub mod write_behind;
 
 pub use expand::Expand;
 pub use log::Log;
@@ -28,6 +31,7 @@ pub use report::Report;
 pub use sample::Sample;
 pub use sim::{SimHandle, SimSink};
 pub use toolpath::Toolpath;
+pub use write_behind::WriteBehind;
 
 use kerf_canon::Axis;
 use kerf_interp::Profile;

@@ -159,10 +159,10 @@ impl<W: Write> Sink for Plot<W> {
         Ok(())
     }
 
-    fn finish(&mut self, _cx: &Context, alarm: Option<&Alarm>) -> io::Result<()> {
+    fn finish(&mut self, cx: &Context, alarm: Option<&Alarm>) -> io::Result<()> {
         if let Some(a) = alarm {
-            self.drawing
-                .mark_stop(format!("alarm {} line {}", a.code, a.src.line));
+            let label = format!("alarm {} line {}", a.code, a.src.line);
+            self.drawing.mark_stop(label, &cx.interp.work_position());
         }
         let bytes = render(&mut self.drawing, self.format)?;
         self.out.write_all(&bytes)?;

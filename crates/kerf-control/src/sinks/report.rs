@@ -4,7 +4,7 @@
 use std::collections::BTreeMap;
 use std::io::{self, Write};
 
-use kerf_canon::{Alarm, Axis, Canon, Event, Motion, Pos};
+use kerf_canon::{Alarm, Axis, Canon, Event, Motion, Pos, NAXES};
 use kerf_interp::Interp;
 use kerf_motion::Planner;
 use serde::Serialize;
@@ -84,6 +84,9 @@ pub struct Summary {
     axes: Vec<Axis>,
     motions: u64,
     bbox: Option<(Pos, Pos)>,
+    /// The end of the last motion when it was a cutting move (already in
+    /// the box); NaN otherwise (a NaN start adds nothing to a box either).
+    last_cut_to: Pos,
     tools: Vec<u32>,
     /// Cutting seconds per tool, in the order tools first cut.
     cutting: Vec<(u32, f64)>,
@@ -240,6 +243,7 @@ impl Summary {
             axes: axes.to_vec(),
             motions: 0,
             bbox: None,
+            last_cut_to: [f64::NAN; NAXES],
             tools: Vec::new(),
             cutting: Vec::new(),
             messages: Vec::new(),
@@ -267,9 +271,19 @@ impl Summary {
             Canon::Feed { .. } | Canon::Arc { .. } | Canon::Thread { .. }
         );
         if !cutting {
+            self.last_cut_to = [f64::NAN; NAXES];
             return;
         }
         let mut pts = [*from, m.to, m.to, m.to];
+        // A line's box is its two ends, and a start that ended the last
+        // cutting move (the same bits) is in the box already: a point
+        // added twice changes no minimum or maximum.
+        let same = from
+            .iter()
+            .zip(&self.last_cut_to)
+            .all(|(a, b)| a.to_bits() == b.to_bits());
+        let first = usize::from(same);
+        let mut last = 2;
         if let Canon::Arc {
             center, plane, dir, ..
         } = &e.cmd
@@ -285,9 +299,11 @@ impl Summary {
             pts[2][a2] = v0;
             pts[3][a1] = u1;
             pts[3][a2] = v1;
+            last = 4;
         }
-        for p in pts {
-            let b = self.bbox.get_or_insert((p, p));
+        self.last_cut_to = m.to;
+        for p in &pts[first..last] {
+            let b = self.bbox.get_or_insert((*p, *p));
             for (i, v) in p.iter().enumerate() {
                 b.0[i] = b.0[i].min(*v);
                 b.1[i] = b.1[i].max(*v);

@@ -432,11 +432,12 @@ impl Drawing {
         }
     }
 
-    /// Marks where the run stopped (on an alarm) with its label.
-    pub fn mark_stop(&mut self, label: String) {
-        if let Some((panel, p)) = self.last {
-            self.stop = Some((panel, p, label));
-        }
+    /// Marks where the run stopped (on an alarm) with its label: the end
+    /// of the last motion, or `at` (work coordinates) when the alarm came
+    /// before any motion.
+    pub fn mark_stop(&mut self, label: String, at: &Pos) {
+        let (panel, p) = self.last.unwrap_or_else(|| self.view(at, Rot::Off));
+        self.stop = Some((panel, p, label));
     }
 
     /// Keeps the pending runs (before drawing).
@@ -534,6 +535,23 @@ mod tests {
         assert!((s.a.0 - 20.0).abs() < 1e-12 && s.a.1.abs() < 1e-12);
         assert!(s.b.0.abs() < 1e-12 && (s.b.1 - 20.0).abs() < 1e-12);
         assert!(d.panels[0].polar);
+    }
+
+    #[test]
+    fn an_alarm_before_any_motion_is_marked_where_the_tool_is() {
+        // A lathe at X250 Z400 (work): the cross at view (Z, X).
+        let mut d = Drawing::new(MachineKind::Lathe);
+        d.mark_stop(
+            "alarm PS0010 line 1".into(),
+            &[250.0, 0.0, 400.0, 0.0, 0.0, 0.0],
+        );
+        let (panel, p, _) = d.stop.clone().unwrap();
+        assert_eq!((panel, p), (0, (400.0, 250.0)));
+        // After a motion, the motion's end.
+        let mut d = Drawing::new(MachineKind::Mill);
+        d.add(&feed(1, 5.0, 6.0), &[0.0; 6], Rot::Off);
+        d.mark_stop("alarm".into(), &[1.0; 6]);
+        assert_eq!(d.stop.unwrap().1, (5.0, 6.0));
     }
 
     #[test]

@@ -148,23 +148,23 @@ impl Layout {
                 .any(|(j, p)| j != i && p.bounds().is_some() && p.has_lines())
         };
         for (i, p) in panels.iter().enumerate() {
-            let bounds = match p.bounds() {
+            let kept = keep.filter(|k| k.0 == i).map(|k| k.1);
+            let (mut lo, mut hi) = match p.bounds() {
                 // A main panel with only a point in it (the G107 example's
                 // start) gives way to a panel that has the path.
-                Some(_) if !p.has_lines() && others(i) => continue,
-                Some(b) => {
-                    let (mut lo, mut hi) = view_extent(b, p.cut_bounds());
-                    if let Some((_, k)) = keep.filter(|k| k.0 == i) {
-                        lo = (lo.0.min(k.0), lo.1.min(k.1));
-                        hi = (hi.0.max(k.0), hi.1.max(k.1));
-                    }
-                    (lo, hi)
-                }
+                Some(_) if !p.has_lines() && others(i) && kept.is_none() => continue,
+                Some(b) => view_extent(b, p.cut_bounds()),
+                None if kept.is_some() => (kept.unwrap(), kept.unwrap()),
                 None if i == 0 && panels.iter().all(|p| p.bounds().is_none()) => {
                     ((0.0, 0.0), (0.0, 0.0))
                 }
                 None => continue,
             };
+            if let Some(k) = kept {
+                lo = (lo.0.min(k.0), lo.1.min(k.1));
+                hi = (hi.0.max(k.0), hi.1.max(k.1));
+            }
+            let bounds = (lo, hi);
             let pl = place(i, p.view, bounds, lathe && i == 0, top);
             top = pl.top + pl.h + BOTTOM_H + TITLE_H;
             out.push(pl);

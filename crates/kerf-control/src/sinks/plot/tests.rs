@@ -154,7 +154,7 @@ fn a_lathe_picture_holds_the_centre_line_and_the_chuck() {
 #[test]
 fn the_alarm_point_is_crossed_and_named() {
     let mut d = square_and_hole();
-    d.mark_stop("alarm F_82001 line 7".into());
+    d.mark_stop("alarm F_82001 line 7".into(), &[0.0; 6]);
     let svg = String::from_utf8(render(&mut d, PlotFormat::Svg).unwrap()).unwrap();
     // The last point X30 Y40 at (306.36, 457.82), a 7-px cross.
     assert!(
