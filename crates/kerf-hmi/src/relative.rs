@@ -25,11 +25,11 @@ impl Relative {
     /// Sets axis `axis` (an index into the machine's axes; every axis when
     /// `None`) to `value` at the machine position `machine`.
     pub fn set(&mut self, axis: Option<usize>, value: f64, machine: &[f64]) {
-        let axes = self.base.iter_mut().zip(self.preset.iter_mut());
-        for (i, ((base, preset), &at)) in axes.zip(machine).enumerate() {
+        let counters = self.base.iter_mut().zip(self.preset.iter_mut());
+        for (i, ((b, p), m)) in counters.zip(machine).enumerate() {
             if axis.is_none_or(|a| a == i) {
-                *base = at;
-                *preset = value;
+                *b = *m;
+                *p = value;
             }
         }
     }

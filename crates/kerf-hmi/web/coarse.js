@@ -17,6 +17,10 @@ export class Coarse {
   clear() {
     this.n = 0;
     this.step = 0;
+    // Colour changes are kept until they alone would overflow the copy
+    // (a path with more changes than `max`): then only distance counts.
+    this.keepChanges = true;
+    this.forced = 0; // vertices kept for a colour change in this pass
     this.changed = true;
   }
 
@@ -37,10 +41,11 @@ export class Coarse {
   take(pos, col, key, i) {
     if (this.n > 0) {
       const j = this.src[this.n - 1];
-      if (key[i] === key[j]) {
+      if (key[i] === key[j] || !this.keepChanges) {
         if (this.dist2(pos, j, i) < this.step * this.step) return;
-      } else if (j !== i - 1) {
-        this.put(pos, col, i - 1); // the old run's last vertex, in its colour
+      } else {
+        this.forced++;
+        if (j !== i - 1) this.put(pos, col, i - 1); // the old run's last vertex, in its colour
       }
     }
     this.put(pos, col, i);
@@ -74,13 +79,23 @@ export class Coarse {
         if (v < lo[a]) lo[a] = v;
         if (v > hi[a]) hi[a] = v;
       }
-      this.step = Math.max(Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) / 4000, 1e-6) / 2;
+      this.step0 = Math.max(Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) / 4000, 1e-6);
+      this.step = this.step0 / 2;
     }
-    do {
+    for (let round = 0; ; round++) {
       this.step *= 2;
       this.n = 0;
+      this.forced = 0;
       for (let i = 0; i < n && this.n <= this.max; i++) this.take(pos, col, key, i);
-    } while (this.n > this.max);
+      if (this.n <= this.max) return;
+      // Half the copy kept for colour changes alone: a longer step cannot
+      // make room, so from now on only distance counts.
+      // The step starts again from the first one.
+      if (this.keepChanges && (this.forced > this.max / 2 || round > 60)) {
+        this.keepChanges = false;
+        this.step = this.step0 / 2;
+      }
+    }
   }
 
   /** Colours again from the full path's colours. */

@@ -49,3 +49,22 @@ test('the coarse copy keeps colour changes and stays within its size', async () 
   assert.ok(src.includes(1001), 'the colour change');
   assert.equal(src[src.length - 1], 1002);
 });
+
+test('a path with more colour changes than the copy holds still fits it', async () => {
+  const { Coarse } = await import('../coarse.js');
+  // 3000 vertices along X, 0.01 mm apart, the colour changing at every
+  // one: keeping every change would need all 3000; the copy of 100 keeps
+  // vertices by distance only then, and ends at the path's end.
+  const n = 3000;
+  const pos = new Float32Array(n * 3), col = new Uint8Array(n * 3), key = new Uint16Array(n);
+  for (let i = 0; i < n; i++) { pos[i * 3] = i * 0.01; key[i] = i % 2; }
+  const c = new Coarse(100);
+  for (let i = 0; i < n; i++) c.add(pos, col, key, i);
+  c.finish(pos, col, n);
+  assert.ok(c.n <= 102, `${c.n} vertices`);
+  assert.equal(c.keepChanges, false);
+  assert.equal(c.src[c.n - 1], n - 1);
+  // By distance alone the copy is full, not a few vertices: the step is
+  // the shortest doubling of the first (extent/4000) that fits 100.
+  assert.ok(c.n > 50, `${c.n} vertices`);
+});

@@ -284,6 +284,20 @@ test('a click on the path selects its block in PROG; the executing block is draw
   await until('reset', async () => (await pageState()).execution !== 'ACTIVE');
 });
 
+test('ORIGIN and PRESET set the RELATIVE counters per axis', async () => {
+  await page.click('[data-show=pos]');
+  await page.fill('#rel-entry', 'y12.5');
+  await page.click('#rel-preset');
+  await until('Y preset', async () => (await shown('pos-relative-Y')) === '12.500');
+  await page.fill('#rel-entry', 'X');
+  await page.click('#rel-origin');
+  await until('X zeroed', async () => (await shown('pos-relative-X')) === '0.000');
+  const s = await api('/api/state');
+  assert.equal(s.position.relative.X, 0);
+  assert.equal(s.position.relative.Y, 12.5);
+  await shot('pos-relative');
+});
+
 test('click to repaint is under 50 ms at the 99th percentile', async (t) => {
   await page.click('[data-show=pos]');
   const times = await page.evaluate(async () => {
