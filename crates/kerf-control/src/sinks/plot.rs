@@ -96,16 +96,11 @@ impl<W: Write> Plot<W> {
         if self.rot == Rot::Off && !first_feed && (m.to[C] - from[C]).abs() < 1e-9 {
             return Rot::Off;
         }
-        let codes = cx.interp.modal_codes();
-        let has = |c: &str| codes.iter().any(|x| x == c);
-        self.rot = if has("G112") {
-            Rot::Polar
-        } else if has("G107") && has("G17") {
-            Rot::CylCy
-        } else if has("G107") {
-            Rot::CylZc
-        } else {
-            Rot::Off
+        self.rot = match cx.interp.rotary_interpolation() {
+            Some((true, _)) => Rot::Polar,
+            Some((false, kerf_canon::Plane::XY)) => Rot::CylCy,
+            Some((false, _)) => Rot::CylZc,
+            None => Rot::Off,
         };
         self.rot
     }
