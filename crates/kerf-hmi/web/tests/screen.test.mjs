@@ -298,7 +298,11 @@ test('ORIGIN and PRESET set the RELATIVE counters per axis', async () => {
   await shot('pos-relative');
 });
 
-test('click to repaint is under 50 ms at the 99th percentile', async (t) => {
+// Tests never assert time: this one checks that each of 200 clicks
+// repaints the switch (within a 2 s bound, so it cannot hang) and prints
+// the click-to-repaint figures; docs/benchmarks.md holds the 50 ms p99
+// bar and how it was measured.
+test('every click repaints its switch (latency printed)', async () => {
   await page.click('[data-show=pos]');
   const times = await page.evaluate(async () => {
     const b = document.querySelector('[data-switch=dry_run]');
@@ -306,29 +310,29 @@ test('click to repaint is under 50 ms at the 99th percentile', async (t) => {
     for (let i = 0; i < 200; i++) {
       const was = b.classList.contains('on');
       const t0 = performance.now();
+      let mo;
       const changed = new Promise((res) => {
-        const mo = new MutationObserver(() => {
-          if (b.classList.contains('on') !== was) { mo.disconnect(); res(); }
+        mo = new MutationObserver(() => {
+          if (b.classList.contains('on') !== was) res(true);
         });
         mo.observe(b, { attributes: true });
       });
+      const late = new Promise((res) => setTimeout(() => res(false), 2000));
       b.click();
-      await changed;
+      const ok = await Promise.race([changed, late]);
+      mo.disconnect();
+      if (!ok) return { missed: i };
       await new Promise((r) => requestAnimationFrame(r));
       out.push(performance.now() - t0);
     }
-    return out.sort((a, b) => a - b);
+    return { times: out.sort((a, b) => a - b) };
   });
-  const p99 = times[Math.ceil(times.length * 0.99) - 1];
+  assert.equal(times.missed, undefined, `click ${times.missed} did not repaint within 2 s`);
+  const sorted = times.times;
+  assert.equal(sorted.length, 200);
+  const p99 = sorted[Math.ceil(sorted.length * 0.99) - 1];
   const load = loadavg()[0];
-  console.log(`click→repaint: median ${times[100].toFixed(1)} ms, p99 ${p99.toFixed(1)} ms (load average ${load.toFixed(1)} on ${cpus().length} cores)`);
-  // A latency bar means nothing on a machine whose run queue is longer
-  // than its cores (other builds): skipped then, with the figures printed.
-  if (load > cpus().length) {
-    t.skip(`load average ${load.toFixed(1)} on ${cpus().length} cores`);
-    return;
-  }
-  assert.ok(p99 < 50, `p99 ${p99} ms`);
+  console.log(`click→repaint: median ${sorted[100].toFixed(1)} ms, p99 ${p99.toFixed(1)} ms (load average ${load.toFixed(1)} on ${cpus().length} cores)`);
 });
 
 test('every page of the other skins (PUMA, Hurco)', async () => {
