@@ -256,11 +256,9 @@ fn offset_pages_write_and_refuse() {
 fn a_macro_loop_without_motion_costs_bounded_work_per_step() {
     let mut rt = mem("WHILE [1 EQ 1] DO1\n#100 = #100 + 1\nEND1\nM30\n");
     rt.command(Command::CycleStart).unwrap();
-    let wall = std::time::Instant::now();
     rt.step(1.0);
-    // One step executes at most 20,000 blocks; the axes do not move and
-    // machine time waits for the interpreter.
-    assert!(wall.elapsed().as_secs_f64() < 5.0);
+    // One step executes at most 20,000 blocks (counted below, not timed);
+    // the axes do not move and machine time waits for the interpreter.
     assert_eq!(rt.execution(), Execution::Active);
     let n = rt.interp().macro_var(100).unwrap();
     assert!(n > 1000.0 && n <= 20_000.0, "{n}");
