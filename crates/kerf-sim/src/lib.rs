@@ -37,4 +37,4 @@ pub use events::{EventKind, SimEvent, SimReport};
 pub use sim::{Model, Sim, MAX_EVENTS};
 pub use stock::{Stock, StockError};
 pub use tool::{LatheKind, LatheTool, MillKind, MillTool, OffsetData, Tool, ToolTable};
-pub use tool_file::parse_tools;
+pub use tool_file::{parse_tools, ToolFileError};

@@ -51,19 +51,43 @@ struct Entry {
     depth: Option<f64>,
 }
 
+/// Why a tool file was refused.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ToolFileError {
+    /// Not TOML of the expected shape (the TOML reader's message, with its
+    /// line and column).
+    #[error("{0}")]
+    Syntax(String),
+    /// A `[tool.KEY]` whose key is not a whole number.
+    #[error("[tool.{key}]: the tool number must be a whole number")]
+    ToolNumber {
+        /// The key as written.
+        key: String,
+    },
+    /// A tool whose entry is refused: the key and what is wrong with it.
+    #[error("[tool.{tool}]: {problem}")]
+    Tool {
+        /// The tool number.
+        tool: u32,
+        /// The key and what it must be.
+        problem: String,
+    },
+}
+
 /// Reads a tool file. `lathe` selects the lathe meaning of the kinds.
 /// Errors name the tool number and the key.
-pub fn parse_tools(text: &str, lathe: bool) -> Result<ToolTable, String> {
-    let f: File = toml::from_str(text).map_err(|e| e.to_string())?;
+pub fn parse_tools(text: &str, lathe: bool) -> Result<ToolTable, ToolFileError> {
+    let f: File = toml::from_str(text).map_err(|e| ToolFileError::Syntax(e.to_string()))?;
     let mut t = ToolTable::default();
     for (key, e) in f.tool {
         let n: u32 = key
             .parse()
-            .map_err(|_| format!("[tool.{key}]: the tool number must be a whole number"))?;
+            .map_err(|_| ToolFileError::ToolNumber { key: key.clone() })?;
+        let refused = |problem| ToolFileError::Tool { tool: n, problem };
         let tool = if lathe {
-            Tool::Lathe(lathe_tool(&e).map_err(|m| format!("[tool.{n}]: {m}"))?)
+            Tool::Lathe(lathe_tool(&e).map_err(refused)?)
         } else {
-            Tool::Mill(mill_tool(&e).map_err(|m| format!("[tool.{n}]: {m}"))?)
+            Tool::Mill(mill_tool(&e).map_err(refused)?)
         };
         t.tools.insert(n, tool);
     }
@@ -335,8 +359,27 @@ mod tests {
                 "holder[0] length",
             ),
         ] {
-            let e = parse_tools(text, lathe).unwrap_err();
+            let e = parse_tools(text, lathe).unwrap_err().to_string();
             assert!(e.contains(part), "{text}: {e}");
         }
+    }
+
+    #[test]
+    fn refusals_name_the_tool_and_the_key_as_values() {
+        assert_eq!(
+            parse_tools("[tool.x]\nkind=\"flat\"\n", false).unwrap_err(),
+            ToolFileError::ToolNumber { key: "x".into() }
+        );
+        match parse_tools("[tool.7]\nkind=\"groove\"\n", true).unwrap_err() {
+            ToolFileError::Tool { tool, problem } => {
+                assert_eq!(tool, 7);
+                assert!(problem.contains("width is missing"), "{problem}");
+            }
+            e => panic!("{e:?}"),
+        }
+        assert!(matches!(
+            parse_tools("[tool.1\n", false).unwrap_err(),
+            ToolFileError::Syntax(_)
+        ));
     }
 }
