@@ -174,21 +174,9 @@ pub fn default_bisector(tip: u8) -> f64 {
 }
 
 /// Vector from the nose centre to the imaginary tip per unit of nose
-/// radius, (Z, X) (001 p.29; the same table as the interpreter's
-/// compensation).
-pub fn tip_vector(tip: u8) -> (f64, f64) {
-    match tip {
-        1 => (1.0, 1.0),
-        2 => (-1.0, 1.0),
-        3 => (-1.0, -1.0),
-        4 => (1.0, -1.0),
-        5 => (1.0, 0.0),
-        6 => (0.0, 1.0),
-        7 => (-1.0, 0.0),
-        8 => (0.0, -1.0),
-        _ => (0.0, 0.0),
-    }
-}
+/// radius, (Z, X) (001 p.29): the compensation's own table, so the
+/// simulated insert and the compensated path agree by construction.
+pub use kerf_geom::comp::tip_vector;
 
 /// Any tool of the file.
 #[derive(Clone, Debug, PartialEq)]
