@@ -282,16 +282,8 @@ impl Control for RuntimeControl {
                 direction: s.spindle.direction.clone(),
             },
             tool: s.tool,
-            switches: st::Switches {
-                single_block: s.switches.single_block,
-                optional_stop: s.switches.optional_stop,
-                dry_run: s.switches.dry_run,
-                block_skip: s.switches.block_skip.clone(),
-            },
-            overrides: st::Overrides {
-                feed: s.overrides.feed,
-                rapid: s.overrides.rapid,
-            },
+            switches: s.switches.clone(),
+            overrides: s.overrides,
             alarm,
             t: s.t,
             alarm_seq: self.history.last().map(|a| a.seq).unwrap_or(0),

@@ -143,36 +143,9 @@ pub struct SpindleState {
     pub direction: String,
 }
 
-/// The operator panel switches.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct Switches {
-    /// Single block.
-    pub single_block: bool,
-    /// Optional stop (M01).
-    pub optional_stop: bool,
-    /// Dry run.
-    pub dry_run: bool,
-    /// Block skip levels switched on (1-9).
-    pub block_skip: Vec<u8>,
-}
-
-/// Overrides, percent.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Overrides {
-    /// Feed override, 0-200 %.
-    pub feed: f64,
-    /// Rapid override, 0-100 %.
-    pub rapid: f64,
-}
-
-impl Default for Overrides {
-    fn default() -> Overrides {
-        Overrides {
-            feed: 100.0,
-            rapid: 100.0,
-        }
-    }
-}
+/// The operator panel switches and the overrides, as the runtime keeps
+/// them (the same serde shape goes on the wire).
+pub use kerf_control::runtime::{Overrides, Switches};
 
 /// An alarm as shown on the ALARM page and in the history.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
