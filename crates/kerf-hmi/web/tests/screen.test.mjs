@@ -140,7 +140,8 @@ test('single block stops after one block', async () => {
   // Stopped after the first block (O1 and the modal line move nothing:
   // the block shown is the last one the axes finished, none yet or line 3).
   assert.ok(s.program.line <= 3, `stopped at line ${s.program.line}`);
-  assert.equal(await shown('st-exec'), 'INTERRUPTED');
+  // The screen follows the API by one push of the stream (20 Hz or more).
+  await until('the screen to show INTERRUPTED', async () => (await shown('st-exec')) === 'INTERRUPTED', 2000);
   await page.click('[data-switch=single_block]');
   await page.click('#reset');
   await until('READY', async () => (await api('/api/state')).execution === 'READY');
