@@ -81,7 +81,7 @@ impl Outputs {
             return Ok(None);
         };
         let stock = Stock::parse(spec).map_err(|e| e.to_string())?;
-        check_stock(&stock, profile)?;
+        check_stock(&stock, profile).map_err(|e| e.to_string())?;
         let tools = match &self.tools {
             Some(p) => {
                 let text =
