@@ -261,3 +261,40 @@ fn completions_and_man_page_list_the_commands() {
     assert!(s.starts_with(".ie") && s.contains(".TH kerf 1"), "{s}");
     assert!(s.contains("machines"), "{s}");
 }
+
+#[test]
+fn columns_after_non_ascii_comments_count_characters() {
+    // "(Ø10 Maß) G01 X10. Y5." without F: the alarm is at the G01, after
+    // the ten characters "(Ø10 Maß) ": byte 13 (Ø and ß are two bytes
+    // each) but character 11, where the caret is.
+    let p = tmp(
+        "umlaut.nc",
+        "G90 G00 X0 Y0\n(Ø10 Maß) G01 X10. Y5.\nM30\n".as_bytes(),
+    );
+    let out = run(&["run"], &p);
+    assert_eq!(out.status.code(), Some(1));
+    let err = text(&out.stderr);
+    let mut lines = err.lines();
+    let head = lines.next().unwrap();
+    assert!(
+        head.ends_with(":2:11: alarm F_84020: cutting move without a feedrate (no F commanded)"),
+        "{err}"
+    );
+    assert_eq!(lines.next(), Some("  (Ø10 Maß) G01 X10. Y5."), "{err}");
+    assert_eq!(
+        lines.next(),
+        Some(&*format!("  {}^", " ".repeat(10))),
+        "{err}"
+    );
+    // A warning after "(Ø) ": X118 is character 5 (byte 6).
+    let p = tmp(
+        "umlaut_warn.nc",
+        "G90 G00 X0 Y0\nG01 X10. Y5. F100.\n(Ø) X118 Y5.\nM30\n".as_bytes(),
+    );
+    let out = run(&["run", "--quiet"], &p);
+    let err = text(&out.stderr);
+    assert!(
+        err.contains(":3:5: warning KERF-W001: X118 has no decimal point"),
+        "{err}"
+    );
+}
