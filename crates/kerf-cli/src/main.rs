@@ -11,6 +11,7 @@ mod args;
 mod diagnostic;
 mod expand;
 mod manual;
+mod output_paths;
 mod outputs;
 mod progress;
 mod serve;

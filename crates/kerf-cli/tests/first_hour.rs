@@ -240,10 +240,40 @@ fn an_unwritable_output_fails_before_the_run() {
         &p,
     );
     assert_eq!(out.status.code(), Some(2));
-    assert!(text(&out.stderr).starts_with("kerf: /no/such/folder/r.json: "));
+    assert_eq!(
+        text(&out.stderr),
+        "kerf: --report /no/such/folder/r.json: no folder /no/such/folder\n"
+    );
     assert!(out.stdout.is_empty());
     // Nothing ran: no state was saved.
     assert!(!state.join("hx-mc.vars").exists());
+}
+
+#[test]
+fn no_output_is_created_when_a_later_one_cannot_be_written() {
+    // The toolpath could be written, the plot cannot: neither is made, and
+    // an existing toolpath is not emptied.
+    let p = tmp("never_runs2.nc", b"G0 X1.\nM30\n");
+    let tp = dir().join("kept.jsonl");
+    let _ = std::fs::remove_file(&tp);
+    let args = [
+        "run",
+        "--toolpath",
+        tp.to_str().unwrap(),
+        "--plot",
+        "/no/such/folder/p.svg",
+    ];
+    let out = run(&args, &p);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).starts_with("kerf: --plot /no/such/folder/p.svg: "));
+    assert!(!tp.exists());
+    std::fs::write(&tp, "an earlier run\n").unwrap();
+    assert_eq!(run(&args, &p).status.code(), Some(2));
+    assert_eq!(std::fs::read_to_string(&tp).unwrap(), "an earlier run\n");
+    // A folder given as the file.
+    let out = run(&["run", "--report", dir().to_str().unwrap()], &p);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).ends_with(": is a folder, not a file\n"));
 }
 
 #[test]
