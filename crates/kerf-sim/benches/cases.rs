@@ -218,11 +218,21 @@ fn threader() -> Sim {
 }
 
 fn mill_flat() -> Sim {
-    sim(BLOCK, "[tool.1]\nkind=\"flat\"\ndiameter=10\n", false, Some(0.05))
+    sim(
+        BLOCK,
+        "[tool.1]\nkind=\"flat\"\ndiameter=10\n",
+        false,
+        Some(0.05),
+    )
 }
 
 fn mill_ball() -> Sim {
-    sim(BLOCK, "[tool.1]\nkind=\"ball\"\ndiameter=6\n", false, Some(0.05))
+    sim(
+        BLOCK,
+        "[tool.1]\nkind=\"ball\"\ndiameter=6\n",
+        false,
+        Some(0.05),
+    )
 }
 
 fn mill_drill() -> Sim {
