@@ -18,8 +18,9 @@ use crate::server::Shared;
 
 /// Largest command, offsets or other JSON body, bytes.
 pub const MAX_JSON: usize = 64 * 1024;
-/// Largest program text, bytes.
-pub const MAX_PROGRAM: usize = 256 * 1024 * 1024;
+/// Largest program text, bytes: the runtime's own limit, so a body the
+/// server takes is one the runtime loads.
+pub const MAX_PROGRAM: usize = kerf_control::runtime::MAX_PROGRAM_BYTES;
 /// Most lines one `GET /api/program` returns.
 pub const MAX_LINES: usize = 2000;
 /// Most toolpath points one `GET /api/toolpath` returns.

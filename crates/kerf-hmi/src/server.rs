@@ -11,6 +11,7 @@ use tokio::sync::watch;
 
 use crate::control::Control;
 use crate::path::{PathStore, Trace};
+use crate::serve_error::ServeError;
 use crate::state::State;
 
 /// Period of the ticker: 50 Hz.
@@ -70,7 +71,8 @@ pub struct Frame {
 type Job = Box<dyn FnOnce(&mut dyn Control) + Send>;
 
 /// Makes the controller on its own thread.
-pub type MakeControl = Box<dyn FnOnce() -> Result<Box<dyn Control>, String> + Send>;
+pub type MakeControl =
+    Box<dyn FnOnce() -> Result<Box<dyn Control>, crate::serve_error::MakeError> + Send>;
 
 /// What every handler shares.
 pub struct Shared {
@@ -106,7 +108,7 @@ impl Shared {
         libs: Vec<PathBuf>,
         token: Option<String>,
         rate: f64,
-    ) -> Result<Arc<Shared>, String> {
+    ) -> Result<Arc<Shared>, ServeError> {
         let (jobs, rx) = std::sync::mpsc::channel::<Job>();
         let (ready_tx, ready_rx) = std::sync::mpsc::channel();
         let (weak_tx, weak_rx) = std::sync::mpsc::channel::<Weak<Shared>>();
@@ -125,10 +127,11 @@ impl Shared {
                     control_loop(c, rx, weak, rate);
                 }
             })
-            .map_err(|e| format!("controller thread: {e}"))?;
+            .map_err(ServeError::Thread)?;
         let state = ready_rx
             .recv()
-            .map_err(|_| "the controller did not start".to_string())??;
+            .map_err(|_| ServeError::ControlGone)?
+            .map_err(ServeError::Control)?;
         let frame = make_frame(state, &PathStore::default());
         let (tx, _) = watch::channel(Arc::new(frame));
         let shared = Arc::new(Shared {

@@ -68,6 +68,7 @@ pub use command::{Command, Op, Refusal};
 pub use mode::{Execution, Mode};
 pub use pages::{OffsetWrite, VarWrite};
 pub use persist::PersistError;
+pub use program::MAX_PROGRAM_BYTES;
 pub use restart::{RestartAt, RestartPlan};
 pub use snapshot::{AlarmInfo, AxisValues, Positions, ProgramAt, Spindle, State};
 pub use switches::{Overrides, PanelError, Switches};
