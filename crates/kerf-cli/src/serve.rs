@@ -107,7 +107,7 @@ fn serve(a: Args) -> Result<(), String> {
     };
     let shared = kerf_hmi::Shared::new(make, profile.clone(), a.lib, token.clone(), a.rate)
         .map_err(|e| e.to_string())?;
-    *shared.stock.lock().unwrap_or_else(|p| p.into_inner()) = stock;
+    shared.set_stock(stock).map_err(|e| e.message)?;
     if let Some((name, text)) = program {
         shared
             .load(&name, text)

@@ -378,14 +378,14 @@ async fn toolpath(
 }
 
 /// The simulated part of the loaded program (binary STL), when the server
-/// has a stock (`--stock`) and the trace is done.
+/// has a stock (`--stock`): as cut so far once a run has started, else the
+/// whole program's result once the trace is done.
 async fn part(AxState(s): S) -> Answer {
     let p = s
         .path
         .lock()
         .unwrap_or_else(|p| p.into_inner())
-        .part
-        .clone();
+        .shown_part();
     match p {
         Some(stl) => Ok((
             StatusCode::OK,

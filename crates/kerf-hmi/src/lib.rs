@@ -11,6 +11,7 @@ pub mod assets;
 pub mod command;
 pub mod control;
 pub mod error;
+pub mod live_part;
 pub mod path;
 pub mod relative;
 pub mod runtime_control;
