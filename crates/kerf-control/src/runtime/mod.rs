@@ -172,7 +172,7 @@ pub enum RuntimeError {
     },
     /// Dynamics out of range (kerf-motion's check, naming the parameter).
     #[error("{0}")]
-    Dynamics(String),
+    Dynamics(kerf_motion::DynamicsLimitError),
     /// A time rate outside (0, 10000].
     #[error("rate {0}: must be in (0, 10000]")]
     Rate(f64),

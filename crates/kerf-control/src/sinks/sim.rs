@@ -173,7 +173,7 @@ impl SimSink {
         png: Option<Box<dyn Write>>,
     ) -> Result<SimSink, String> {
         Ok(SimSink {
-            sim: Sim::new(stock, tools, res)?,
+            sim: Sim::new(stock, tools, res).map_err(|e| e.to_string())?,
             seen: 0,
             done: 0,
             queue: VecDeque::new(),
