@@ -24,8 +24,9 @@ pub enum Means {
     CutterComp(CompSide),
     /// G22 (true) / G23: stored stroke check.
     Stroke(bool),
-    /// The canned (drill) cycle group: G80 (false) or a cycle code (true).
-    Cycle(bool),
+    /// The canned (drill) cycle group: G80 (None) or the cycle a code
+    /// selects.
+    Cycle(Option<HoleCycle>),
     /// G51 (true) / G50: scaling and mirror image (HX).
     Scaling(bool),
     /// G66 (true) / G67: the macro modal call.
@@ -175,6 +176,65 @@ pub enum CuttingMode {
     Tapping,
     /// G64.
     Cutting,
+}
+
+/// A canned (drill) cycle: what one hole does between the R level and
+/// the return (000 chapter 12 on the HX, 002 G73-G84 on the Hurco).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HoleCycle {
+    /// G81: feed to the bottom, rapid out.
+    Drill,
+    /// G82: G81 with a dwell at the bottom.
+    DrillDwell,
+    /// G73: peck with a short retract that breaks the chip.
+    PeckChipBreak,
+    /// G83: peck, out to R after each peck.
+    Peck,
+    /// G84: tapping, spindle reversed at the bottom.
+    Tap,
+    /// G74: left-hand (counter) tapping.
+    TapLeft,
+    /// HX G84.2: rigid tapping.
+    RigidTap,
+    /// HX G84.3: rigid counter tapping.
+    RigidTapLeft,
+    /// HX G85: bore in and out at feed.
+    Bore,
+    /// HX G89: G85 with a dwell at the bottom.
+    BoreDwell,
+    /// HX G86: bore, spindle stopped at the bottom, rapid out.
+    BoreStop,
+    /// HX G88: bore, dwell, stop; the operator retracts by hand.
+    ManualBore,
+    /// HX G76: fine boring (oriented stop and shift at the bottom).
+    FineBore,
+    /// HX G87: back boring (from below the bore, upwards).
+    BackBore,
+}
+
+impl HoleCycle {
+    /// G73 and G83: the depth is cut in pecks of Q.
+    pub const fn pecks(self) -> bool {
+        matches!(self, HoleCycle::PeckChipBreak | HoleCycle::Peck)
+    }
+
+    /// G76 and G87: the tool is shifted off the wall by I/J or Q.
+    pub const fn shifts(self) -> bool {
+        matches!(self, HoleCycle::FineBore | HoleCycle::BackBore)
+    }
+
+    /// The tapping cycles.
+    pub const fn taps(self) -> bool {
+        matches!(
+            self,
+            HoleCycle::Tap | HoleCycle::TapLeft | HoleCycle::RigidTap | HoleCycle::RigidTapLeft
+        )
+    }
+
+    /// A tapping cycle that cuts with the spindle CCW (left hand).
+    pub const fn left_hand(self) -> bool {
+        matches!(self, HoleCycle::TapLeft | HoleCycle::RigidTapLeft)
+    }
 }
 
 /// Where a canned cycle returns after a hole (group 19 on the HX and the

@@ -56,7 +56,7 @@ const fn means(code10: u16, group: u8) -> Means {
     match code10 {
         220 => Means::Stroke(true),
         230 => Means::Stroke(false),
-        800 => Means::Cycle(false),
+        800 => Means::Cycle(None),
         9000 => Means::Distance(Distance::Absolute),
         9010 => Means::Distance(Distance::Incremental),
         980 => Means::FeedMode(FeedMode::PerMin),

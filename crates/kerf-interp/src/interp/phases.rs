@@ -68,6 +68,16 @@ impl BlockRun {
 }
 
 impl Interp {
+    /// The first G code of the block (code, byte) whose table meaning
+    /// satisfies `is`.
+    pub(super) fn block_g(&self, is: impl Fn(Means) -> bool) -> Option<(u16, u32)> {
+        self.words
+            .gs()
+            .iter()
+            .copied()
+            .find(|g| self.gcode(g.0).is_some_and(|c| is(c.means)))
+    }
+
     /// Executes the block in `self.words`: its codes checked, then the
     /// dialect's phases in order. Ok(false) when the program ended.
     pub(super) fn execute_block(&mut self) -> R<bool> {
@@ -235,7 +245,7 @@ impl Interp {
 
     /// The modal G codes (every group but 0 and 1) and the motion mode.
     fn apply_modal_codes(&mut self, b: &mut BlockRun) {
-        b.was_cycle = self.st.modal.cycle.means;
+        b.was_cycle = self.st.modal.cycle.means.is_some();
         b.plane_before = self.st.modal.plane.means;
         for i in 0..self.words.ng {
             let (c, _) = self.words.g[i];
