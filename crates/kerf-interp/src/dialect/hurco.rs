@@ -250,6 +250,11 @@ pub static DIALECT: Dialect = Dialect {
         short_r_half_circle: false,
         direct_drawing: false,
         hx_variables: false,
+        comp: CompParams {
+            type_b: ("comp_exit_normal", 1.0, 0.0),
+            idle_blocks: 2.0,
+            circular_joining: true,
+        },
         restricted_words: false,
     },
 };

@@ -239,6 +239,11 @@ pub static DIALECT: Dialect = Dialect {
         short_r_half_circle: false,
         direct_drawing: false,
         hx_variables: true,
+        comp: CompParams {
+            type_b: ("PI 128", 0.0, 1.0),
+            idle_blocks: 2.0,
+            circular_joining: false,
+        },
         restricted_words: false,
     },
 };

@@ -86,13 +86,32 @@ pub enum OneShot {
     /// HX G60: single direction positioning.
     SingleDirection,
     /// PUMA G70-G76: the multiple repetitive cycles.
-    Mrc,
+    Mrc(LatheCycle),
     /// Hurco G38: the turret probe.
     Probe,
     /// Hurco G59: cancel the work coordinate shift.
     CancelWorkShift,
     /// Hurco G78: the threading cycle.
     ThreadCycle,
+}
+
+/// A multiple repetitive cycle of the lathe (001 G70-G76).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LatheCycle {
+    /// G70: the finishing shape once.
+    Finish,
+    /// G71: stock removal in turning (cuts along Z).
+    RoughTurn,
+    /// G72: stock removal in facing (cuts along X).
+    RoughFace,
+    /// G73: pattern repeating.
+    Pattern,
+    /// G74: peck drilling along Z (columns stepped in X).
+    PeckZ,
+    /// G75: grooving along X (grooves stepped in Z).
+    GrooveX,
+    /// G76: multiple thread cutting.
+    Thread,
 }
 
 /// The motion mode (group 01).

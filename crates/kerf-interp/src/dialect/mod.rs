@@ -171,9 +171,26 @@ pub struct Caps {
     /// 001: direct drawing dimension input (the angle A, the direct
     /// chamfer and corner R of the next block).
     pub direct_drawing: bool,
+    /// How cutter / nose radius compensation reads the profile.
+    pub comp: CompParams,
     /// The HX numbering of system variables (000 §14: #2001-, #5001-)
     /// and its calls by G, M and T code (PI 85-105).
     pub hx_variables: bool,
+}
+
+/// The profile parameters of a control's compensation.
+#[derive(Debug)]
+pub struct CompParams {
+    /// The parameter that selects start-up and cancel type B, its
+    /// default, and the value that means type B: HX PI 128 = 1, PUMA
+    /// `comp_type_b` = 1, Hurco `comp_exit_normal` = 0 (type B unless
+    /// the exit is along the normal).
+    pub type_b: (&'static str, f64, f64),
+    /// The default of `comp_idle_blocks`, the blocks without a move in
+    /// the plane the look-ahead waits: 2 (HX, Hurco), 1 (PUMA).
+    pub idle_blocks: f64,
+    /// 002: circular joining of outside corners (`comp_circular_joining`).
+    pub circular_joining: bool,
 }
 
 /// One step of executing a block. A dialect lists its steps in the

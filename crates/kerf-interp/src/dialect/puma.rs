@@ -36,7 +36,13 @@ const fn means(code10: u16, group: u8) -> Means {
             100 => OneShot::DataSetting,
             310 => OneShot::Skip,
             500 => OneShot::CoordinateSetting,
-            700..=760 => OneShot::Mrc,
+            700 => OneShot::Mrc(LatheCycle::Finish),
+            710 => OneShot::Mrc(LatheCycle::RoughTurn),
+            720 => OneShot::Mrc(LatheCycle::RoughFace),
+            730 => OneShot::Mrc(LatheCycle::Pattern),
+            740 => OneShot::Mrc(LatheCycle::PeckZ),
+            750 => OneShot::Mrc(LatheCycle::GrooveX),
+            760 => OneShot::Mrc(LatheCycle::Thread),
             c => match common_one_shot(c) {
                 Some(o) => o,
                 None => panic!("PUMA one-shot G code without a meaning"),
@@ -255,6 +261,11 @@ pub static DIALECT: Dialect = Dialect {
         short_r_half_circle: true,
         direct_drawing: true,
         hx_variables: false,
+        comp: CompParams {
+            type_b: ("comp_type_b", 0.0, 1.0),
+            idle_blocks: 1.0,
+            circular_joining: false,
+        },
         restricted_words: true,
     },
 };

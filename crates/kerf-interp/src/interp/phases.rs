@@ -6,6 +6,7 @@
 //! block's [`BlockRun`].
 
 use super::*;
+use crate::dialect::meaning::LatheCycle;
 use crate::dialect::Phase;
 
 /// What a phase tells the walk.
@@ -28,7 +29,7 @@ pub(super) struct OneShots {
     refret: Option<(u16, u32)>,
     skip: Option<(u16, u32)>,
     g45: Option<(u16, u32)>,
-    mrc: Option<(u16, u32)>,
+    mrc: Option<(LatheCycle, u16, u32)>,
 }
 
 /// The state of one block's execution, passed from phase to phase.
@@ -383,7 +384,7 @@ impl Interp {
                     os.setting = true;
                     self.g10(at)?
                 }
-                Mrc => os.mrc = Some((c, at)),
+                Mrc(kind) => os.mrc = Some((kind, c, at)),
                 CoordinateSetting => {
                     os.setting = true;
                     self.coordinate_setting(at)?
@@ -410,8 +411,8 @@ impl Interp {
             self.reference_return(c, at)?;
         } else if let Some((c, at)) = os.skip {
             self.skip_block(c, at)?;
-        } else if let Some((c, at)) = os.mrc {
-            self.mrc(c, at)?;
+        } else if let Some((kind, c, at)) = os.mrc {
+            self.mrc(kind, c, at)?;
         } else if !no_motion {
             if os.g53 {
                 self.g53()?;
