@@ -48,13 +48,11 @@ const DIALECT_DEBT: &[(&str, usize, usize)] = &[
     ("interp/hurco.rs", 0, 5),
     ("interp/lathe_chamfer.rs", 0, 4),
     ("interp/motion.rs", 1, 6),
-    ("interp/phases.rs", 1, 25),
     ("interp/polar_interp.rs", 0, 26),
     ("interp/puma_words.rs", 0, 4),
     ("interp/reset.rs", 1, 0),
     ("interp/system_b.rs", 0, 18),
     ("interp/tool_offset.rs", 0, 3),
-    ("interp/transforms.rs", 0, 19),
     ("interp.rs", 0, 2),
 ];
 

@@ -25,7 +25,8 @@ const fn means(code10: u16, group: u8) -> Means {
     use super::meaning::*;
     if group == 0 {
         return Means::OneShot(match code10 {
-            100 | 520 => OneShot::Frame,
+            100 => OneShot::FrameData,
+            520 => OneShot::LocalCoords,
             310..=314 | 370..=374 => OneShot::Skip,
             390 => OneShot::CompCorner,
             450 | 460 | 470 | 480 => OneShot::ToolOffset,

@@ -73,8 +73,11 @@ pub enum OneShot {
     MacroCall,
     /// G92 (HX, Hurco), G50 (PUMA system A): coordinate setting.
     CoordinateSetting,
-    /// HX G10 and G52: run with the frame codes (interp/transforms.rs).
-    Frame,
+    /// HX G10: offset data, run with the frame codes
+    /// (interp/transforms.rs).
+    FrameData,
+    /// HX G52: the local coordinate system, run with the frame codes.
+    LocalCoords,
     /// PUMA G10: offset value setting, before the motion.
     DataSetting,
     /// G31-G31.4 and HX G37-G37.4: skip and tool length measurement.

@@ -6,7 +6,7 @@
 //! block's [`BlockRun`].
 
 use super::*;
-use crate::dialect::meaning::LatheCycle;
+use crate::dialect::meaning::{HoleCycle, LatheCycle, OneShot as Os};
 use crate::dialect::Phase;
 
 /// What a phase tells the walk.
@@ -120,7 +120,10 @@ impl Interp {
                     ),
                 ));
             }
-            if c == 650 || c == 660 {
+            if matches!(
+                g.means,
+                Means::OneShot(Os::MacroCall) | Means::ModalCall(true)
+            ) {
                 self.g65(c, at)?;
                 return Ok(None);
             }
@@ -275,10 +278,8 @@ impl Interp {
         }
         if self.words.has(b'H')
             || self
-                .words
-                .gs()
-                .iter()
-                .any(|g| matches!(g.0, 430 | 440 | 490))
+                .block_g(|m| matches!(m, Means::LengthComp(_)))
+                .is_some()
         {
             self.tool_length()?;
         }
@@ -305,16 +306,27 @@ impl Interp {
     /// Cutter / tool nose radius compensation codes, before the one-shots
     /// (a G92 or G28 ends a held move first). True for a G39 block.
     fn block_comp(&mut self, one_shot: &[(u16, u32)], cycle: bool) -> R<bool> {
-        let comp_words = self.words.has(b'D')
-            || self
-                .words
-                .gs()
-                .iter()
-                .any(|g| matches!(g.0, 170 | 180 | 190 | 390 | 400 | 410 | 420));
+        let comp_code = |m| {
+            matches!(
+                m,
+                Means::Plane(_) | Means::OneShot(Os::CompCorner) | Means::CutterComp(_)
+            )
+        };
+        let comp_words = self.words.has(b'D') || self.block_g(comp_code).is_some();
         if comp_words || (self.comp.is_some() && (!one_shot.is_empty() || cycle)) {
+            // The one-shots that move otherwise than by G00-G03.
             let special = cycle
                 || one_shot.iter().any(|g| {
-                    matches!(g.0, 270 | 280 | 290 | 300 | 530 | 310..=314 | 370..=374 | 450..=480 | 700..=760)
+                    matches!(
+                        self.gcode(g.0).map(|c| c.means),
+                        Some(Means::OneShot(
+                            Os::RefReturn
+                                | Os::MachineCoords
+                                | Os::Skip
+                                | Os::ToolOffset
+                                | Os::Mrc(_)
+                        ))
+                    )
                 });
             let setting = one_shot.iter().any(|g| self.is_coordinate_setting(g.0));
             self.comp_codes(one_shot, special, setting)
@@ -331,7 +343,8 @@ impl Interp {
             if self.mcode(m).is_none() {
                 // Fanuc programs ask for rigid tapping with M29 before G84;
                 // the HX has G84.2/G84.3 instead (000 §12.3.5-12.3.6).
-                let hint = if m == 29 && self.dialect.id == DialectId::Hx {
+                let rigid = Means::Cycle(Some(HoleCycle::RigidTap));
+                let hint = if m == 29 && self.dialect.gcodes.iter().any(|g| g.means == rigid) {
                     ": rigid tapping on this control is G84.2 (G84.3 left-hand), without M29"
                 } else {
                     ""
@@ -390,7 +403,7 @@ impl Interp {
                     self.coordinate_setting(at)?
                 }
                 CancelWorkShift => self.st.shift = [0.0; NAXES],
-                MacroCall | Frame | CompCorner | Probe | ThreadCycle => {}
+                MacroCall | FrameData | LocalCoords | CompCorner | Probe | ThreadCycle => {}
             }
         }
         Ok(os)
