@@ -51,7 +51,6 @@ const DIALECT_DEBT: &[(&str, usize, usize)] = &[
     ("interp/polar_interp.rs", 0, 26),
     ("interp/puma_words.rs", 0, 4),
     ("interp/reset.rs", 1, 0),
-    ("interp/system_b.rs", 0, 18),
     ("interp/tool_offset.rs", 0, 3),
     ("interp.rs", 0, 2),
 ];

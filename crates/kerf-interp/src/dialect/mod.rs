@@ -6,6 +6,7 @@ pub mod hurco;
 pub mod hx;
 pub mod meaning;
 pub mod puma;
+pub mod system_b;
 
 pub use meaning::Means;
 
