@@ -42,16 +42,8 @@ const CODE_CALLS: [&str; 2] = ["has_g", "gcode"];
 /// listed may have none.
 const DIALECT_DEBT: &[(&str, usize, usize)] = &[
     ("alarms.rs", 3, 0),
-    ("interp/calls.rs", 0, 2),
-    ("interp/codes.rs", 1, 1),
-    ("interp/corners.rs", 0, 2),
-    ("interp/hurco.rs", 0, 5),
-    ("interp/lathe_chamfer.rs", 0, 4),
-    ("interp/motion.rs", 1, 6),
     ("interp/polar_interp.rs", 0, 26),
-    ("interp/puma_words.rs", 0, 4),
     ("interp/reset.rs", 1, 0),
-    ("interp/tool_offset.rs", 0, 3),
     ("interp.rs", 0, 2),
 ];
 

@@ -245,6 +245,7 @@ pub static DIALECT: Dialect = Dialect {
         stops_stop_spindle: true,
         max_m_per_block: crate::words::MAX_CODES,
         m48_feed_override: true,
+        offsets_wait_for_move: true,
         part_zero_is_e1: true,
         gcode_system_b: false,
         short_r_half_circle: false,

@@ -66,7 +66,7 @@ pub enum OneShot {
     /// G09.
     ExactStop,
     /// G27-G30: reference position return and its check.
-    RefReturn,
+    RefReturn(RefReturn),
     /// G53: a move in machine coordinates.
     MachineCoords,
     /// G65: the macro call (run as the block is classified).
@@ -85,7 +85,9 @@ pub enum OneShot {
     /// HX G39: the corner arc of cutter compensation.
     CompCorner,
     /// HX G45-G48: tool offset increase / decrease.
-    ToolOffset,
+    /// The move amount changes by this many times the D offset: G45 +1,
+    /// G46 -1, G47 +2, G48 -2 (000 §13.3).
+    ToolOffset(i8),
     /// HX G60: single direction positioning.
     SingleDirection,
     /// PUMA G70-G76: the multiple repetitive cycles.
@@ -96,6 +98,19 @@ pub enum OneShot {
     CancelWorkShift,
     /// Hurco G78: the threading cycle.
     ThreadCycle,
+}
+
+/// A reference position code (G27-G30, on all three controls).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RefReturn {
+    /// G27: move to the programmed point and check it is the reference.
+    Check,
+    /// G28: through the intermediate point to the reference position.
+    Home,
+    /// G29: from the reference through the stored intermediate point.
+    Back,
+    /// G30: to the 2nd (3rd, 4th by P) reference position.
+    Other,
 }
 
 /// A multiple repetitive cycle of the lathe (001 G70-G76).
@@ -335,7 +350,10 @@ pub(crate) const fn common_one_shot(code10: u16) -> Option<OneShot> {
     Some(match code10 {
         40 => OneShot::Dwell,
         90 => OneShot::ExactStop,
-        270 | 280 | 290 | 300 => OneShot::RefReturn,
+        270 => OneShot::RefReturn(RefReturn::Check),
+        280 => OneShot::RefReturn(RefReturn::Home),
+        290 => OneShot::RefReturn(RefReturn::Back),
+        300 => OneShot::RefReturn(RefReturn::Other),
         530 => OneShot::MachineCoords,
         650 => OneShot::MacroCall,
         _ => return None,

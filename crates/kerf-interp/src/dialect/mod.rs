@@ -159,6 +159,9 @@ pub struct Caps {
     pub max_m_per_block: usize,
     /// 002: M48 / M49 switch the feedrate override on / off.
     pub m48_feed_override: bool,
+    /// 002 Table 16: the offsets of a T or E code take effect with the
+    /// next move, and a move's words go to the position they name.
+    pub offsets_wait_for_move: bool,
     /// 002: the part zero is fixture offset E1.
     pub part_zero_is_e1: bool,
     /// The PUMA's G-code system B (profile `gcode_system_b`).

@@ -256,6 +256,7 @@ pub static DIALECT: Dialect = Dialect {
         stops_stop_spindle: false,
         max_m_per_block: 3,
         m48_feed_override: false,
+        offsets_wait_for_move: false,
         part_zero_is_e1: false,
         gcode_system_b: true,
         short_r_half_circle: true,

@@ -213,7 +213,9 @@ impl Interp {
         let no_startup = |g: &&(u16, u32)| {
             matches!(
                 self.gcode(g.0).map(|c| c.means),
-                Some(Means::OneShot(OneShot::RefReturn | OneShot::MachineCoords))
+                Some(Means::OneShot(
+                    OneShot::RefReturn(_) | OneShot::MachineCoords
+                ))
             )
         };
         if let Some(&(g, _)) = one_shot.iter().find(no_startup) {

@@ -26,9 +26,9 @@ pub(super) struct OneShots {
     g09: bool,
     g60: Option<u32>,
     setting: bool,
-    refret: Option<(u16, u32)>,
+    refret: Option<(crate::dialect::meaning::RefReturn, u32)>,
     skip: Option<(u16, u32)>,
-    g45: Option<(u16, u32)>,
+    g45: Option<(i8, u16, u32)>,
     mrc: Option<(LatheCycle, u16, u32)>,
 }
 
@@ -77,6 +77,11 @@ impl Interp {
             .iter()
             .copied()
             .find(|g| self.gcode(g.0).is_some_and(|c| is(c.means)))
+    }
+
+    /// What a G code of the block means (None: not in the table).
+    pub(super) fn means_of(&self, code10: u16) -> Option<Means> {
+        self.gcode(code10).map(|g| g.means)
     }
 
     /// Executes the block in `self.words`: its codes checked, then the
@@ -320,10 +325,10 @@ impl Interp {
                     matches!(
                         self.gcode(g.0).map(|c| c.means),
                         Some(Means::OneShot(
-                            Os::RefReturn
+                            Os::RefReturn(_)
                                 | Os::MachineCoords
                                 | Os::Skip
-                                | Os::ToolOffset
+                                | Os::ToolOffset(_)
                                 | Os::Mrc(_)
                         ))
                     )
@@ -382,7 +387,7 @@ impl Interp {
             };
             match what {
                 Dwell => os.dwell = true,
-                RefReturn => os.refret = Some((c, at)),
+                RefReturn(kind) => os.refret = Some((kind, at)),
                 ExactStop => os.g09 = true,
                 SingleDirection => os.g60 = Some(at),
                 MachineCoords => {
@@ -392,7 +397,7 @@ impl Interp {
                     os.g53 = true
                 }
                 Skip => os.skip = Some((c, at)),
-                ToolOffset => os.g45 = Some((c, at)),
+                ToolOffset(k) => os.g45 = Some((k, c, at)),
                 DataSetting => {
                     os.setting = true;
                     self.g10(at)?
@@ -420,8 +425,8 @@ impl Interp {
         cycles: (bool, bool, bool),
     ) -> R<()> {
         let (cycle, was_cycle, hurco_cycle) = cycles;
-        if let Some((c, at)) = os.refret {
-            self.reference_return(c, at)?;
+        if let Some((kind, at)) = os.refret {
+            self.reference_return(kind, at)?;
         } else if let Some((c, at)) = os.skip {
             self.skip_block(c, at)?;
         } else if let Some((kind, c, at)) = os.mrc {
@@ -437,8 +442,8 @@ impl Interp {
                 }
             } else if let Some(at) = os.g60 {
                 self.g60(at)?;
-            } else if let Some((c, at)) = os.g45 {
-                self.tool_offset_motion(c, at)?;
+            } else if let Some((k, c, at)) = os.g45 {
+                self.tool_offset_motion((k, c), at)?;
             } else {
                 self.motion()?;
             }

@@ -84,7 +84,7 @@ impl Interp {
             let Some(Means::OneShot(what)) = self.gcode(c).map(|g| g.means) else {
                 continue;
             };
-            let not_in_xf = matches!(what, OneShot::RefReturn | OneShot::CoordinateSetting);
+            let not_in_xf = matches!(what, OneShot::RefReturn(_) | OneShot::CoordinateSetting);
             if self.st.xf.active() && not_in_xf {
                 let what = if self.st.xf.rot.is_some() {
                     "coordinate rotation (G69 first)"
