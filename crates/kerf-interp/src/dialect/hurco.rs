@@ -227,6 +227,8 @@ pub static DIALECT: Dialect = Dialect {
     uvw_incremental: false,
     hurco_syntax: true,
     order: super::HURCO_TABLE_1,
+    alarm_column: alarm_codes::AlarmColumn::Hurco,
+    macro_calls: [650, 660],
     caps: Caps {
         bracket_nesting: 5,
         power_on_params: false,
@@ -246,6 +248,7 @@ pub static DIALECT: Dialect = Dialect {
         max_m_per_block: crate::words::MAX_CODES,
         m48_feed_override: true,
         offsets_wait_for_move: true,
+        reset_keeps_tool_offset: true,
         part_zero_is_e1: true,
         gcode_system_b: false,
         short_r_half_circle: false,

@@ -220,6 +220,8 @@ pub static DIALECT: Dialect = Dialect {
     uvw_incremental: false,
     hurco_syntax: false,
     order: super::FANUC_MILL,
+    alarm_column: alarm_codes::AlarmColumn::Hx,
+    macro_calls: [650, 660],
     caps: Caps {
         bracket_nesting: 10,
         power_on_params: true,
@@ -239,6 +241,7 @@ pub static DIALECT: Dialect = Dialect {
         max_m_per_block: 3,
         m48_feed_override: false,
         offsets_wait_for_move: false,
+        reset_keeps_tool_offset: false,
         part_zero_is_e1: false,
         gcode_system_b: false,
         short_r_half_circle: false,

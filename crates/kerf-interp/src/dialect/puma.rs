@@ -238,6 +238,8 @@ pub static DIALECT: Dialect = Dialect {
     uvw_incremental: true,
     hurco_syntax: false,
     order: super::FANUC_LATHE,
+    alarm_column: alarm_codes::AlarmColumn::Fanuc,
+    macro_calls: [650, 660],
     caps: Caps {
         bracket_nesting: 5,
         power_on_params: false,
@@ -257,6 +259,7 @@ pub static DIALECT: Dialect = Dialect {
         max_m_per_block: 3,
         m48_feed_override: false,
         offsets_wait_for_move: false,
+        reset_keeps_tool_offset: false,
         part_zero_is_e1: false,
         gcode_system_b: true,
         short_r_half_circle: true,
