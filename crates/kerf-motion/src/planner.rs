@@ -664,7 +664,7 @@ impl Planner {
                     self.finalize_head();
                 }
             }
-            ModeChange::Stitch(_) => {}
+            ModeChange::Stitch(_) | ModeChange::Rotary(_) => {}
             ModeChange::FeedOverride(on) => self.ignore_override = !on,
             ModeChange::SpindleClamp(rpm) => {
                 self.s_clamp = if rpm.is_nan() { f64::INFINITY } else { rpm };

@@ -10,6 +10,7 @@
 //! in closed form for the flat, ball and drill shapes and by bisection on
 //! the derivative for the others.
 
+use crate::shape::Shape;
 use crate::tool::{MillKind, MillTool};
 
 /// A straight move of the tool tip, prepared for envelope queries.
@@ -89,13 +90,13 @@ impl Sweep {
     /// Lowest height of the tool's cutting surface over (x, y).
     #[inline]
     pub fn tool(&self, tool: &MillTool, x: f64, y: f64) -> Option<f64> {
-        self.tool_above(tool, x, y, f64::INFINITY)
+        self.tool_above(&Shape::of(tool), x, y, f64::INFINITY)
     }
 
     /// As [`Self::tool`], but None as soon as the envelope is known to be
     /// at or above `old` (nothing to cut there).
     #[inline]
-    pub fn tool_above(&self, tool: &MillTool, x: f64, y: f64, old: f64) -> Option<f64> {
+    pub fn tool_above(&self, tool: &Shape, x: f64, y: f64, old: f64) -> Option<f64> {
         let r = tool.radius;
         let (t0, t1, b, e2) = self.cover(x, y, r)?;
         if !matches!(tool.kind, MillKind::Flat) {
@@ -129,9 +130,9 @@ impl Sweep {
                 let a = (r * r - e2).max(0.0);
                 b - self.dz * a.sqrt() / (self.l * self.l3)
             }
-            MillKind::Drill { point_angle } => {
+            MillKind::Drill { .. } => {
                 // g = s dz + k sqrt(e² + L² s²), k = 1/tan(half angle).
-                let k = 1.0 / (point_angle.to_radians() / 2.0).tan();
+                let k = tool.slope(r);
                 let l = self.l;
                 let q = k * k * self.l2 - self.dz * self.dz;
                 if q <= 0.0 {

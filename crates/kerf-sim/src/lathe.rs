@@ -79,7 +79,7 @@ pub struct Section {
 
 impl Section {
     /// A bar or tube from `z_end` to `z_face`, radii `r_in`..`r_out`.
-    pub fn new(r_in: f64, r_out: f64, z_end: f64, z_face: f64) -> Result<Section, String> {
+    pub fn new(r_in: f64, r_out: f64, z_end: f64, z_face: f64) -> Section {
         let rr = (r_out + 2.0 * MARGIN).max(TILE / 2.0 + MARGIN);
         let scale = (2f64.powi(29) / rr).log2().floor().exp2();
         let g = |v: f64| (v * scale).round() / scale;
@@ -103,12 +103,12 @@ impl Section {
                 t
             })
             .collect();
-        Ok(Section {
+        Section {
             z0,
             rr,
             scale,
             tiles,
-        })
+        }
     }
 
     /// The grid step of the coordinates, mm.
@@ -439,7 +439,7 @@ mod tests {
             &mut scratch,
             &mut h,
         );
-        let mut s = Section::new(0.0, 10.0, -20.0, 0.0).unwrap();
+        let mut s = Section::new(0.0, 10.0, -20.0, 0.0);
         let mut t = s.clone();
         let mut c = out.clone();
         for p in c.iter_mut() {
@@ -471,7 +471,7 @@ mod tests {
     #[test]
     fn a_rectangle_through_the_axis_cuts_both_sides() {
         // A bar r 10, z -20..0; a box z -5..-3, r -4..2 folds to r 0..4.
-        let mut s = Section::new(0.0, 10.0, -20.0, 0.0).unwrap();
+        let mut s = Section::new(0.0, 10.0, -20.0, 0.0);
         let v = s.sweep(
             &hull(&[(-5.0, -4.0), (-3.0, -4.0), (-3.0, 2.0), (-5.0, 2.0)]),
             true,
@@ -486,7 +486,7 @@ mod tests {
     fn a_groove_across_a_tile_edge_merges_into_one_outline() {
         // Tiles are 8 mm from z -24: a groove z -10..-6 r 6..11 spans the
         // edge at z -8 and leaves one outline of 8 vertices.
-        let mut s = Section::new(0.0, 10.0, -20.0, 0.0).unwrap();
+        let mut s = Section::new(0.0, 10.0, -20.0, 0.0);
         let v = s.sweep(
             &hull(&[(-5.0, 6.0), (-1.0, 6.0), (-1.0, 11.0), (-5.0, 11.0)]),
             true,

@@ -16,8 +16,10 @@
 //! assert_eq!(sim.report().removed_mm3, 0.0);
 //! ```
 
+pub mod ball;
 pub mod envelope;
 pub mod events;
+pub mod grid;
 pub mod holder;
 pub mod hull;
 pub mod lathe;
@@ -25,6 +27,7 @@ pub mod lathe_tool;
 pub mod mesh;
 pub mod path;
 pub mod render;
+pub mod shape;
 pub mod sim;
 pub mod stl;
 pub mod stock;
@@ -35,6 +38,7 @@ pub mod zmap;
 
 pub use events::{EventKind, SimEvent, SimReport};
 pub use sim::{Model, Sim, MAX_EVENTS};
-pub use stock::{Stock, StockError};
+pub use stock::{Stock, StockError, StockProblem};
 pub use tool::{LatheKind, LatheTool, MillKind, MillTool, OffsetData, Tool, ToolTable};
-pub use tool_file::{parse_tools, ToolFileError};
+pub use tool_file::{parse_tools, ToolFileError, ToolProblem};
+pub use zmap::ResolutionError;

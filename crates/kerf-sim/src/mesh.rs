@@ -33,9 +33,9 @@ pub const REVOLVE_TOL: f64 = 1e-3;
 pub fn mill_block(z: &ZMap) -> usize {
     let mut k = 1;
     while k < BLOCK
-        && (z.nx / k) * (z.ny / k) > MAX_TOP_VERTICES
-        && z.nx.is_multiple_of(2 * k)
-        && z.ny.is_multiple_of(2 * k)
+        && (z.grid.nx / k) * (z.grid.ny / k) > MAX_TOP_VERTICES
+        && z.grid.nx.is_multiple_of(2 * k)
+        && z.grid.ny.is_multiple_of(2 * k)
     {
         k *= 2;
     }
@@ -45,10 +45,10 @@ pub fn mill_block(z: &ZMap) -> usize {
 /// Triangles of the mill part.
 pub fn mill(z: &ZMap, emit: &mut dyn FnMut(Tri)) {
     let k = mill_block(z);
-    let (mx, my) = (z.nx / k, z.ny / k);
-    let (bx, by) = (k as f64 * z.dx, k as f64 * z.dy);
-    let x1 = z.x0 + z.nx as f64 * z.dx;
-    let y1 = z.y0 + z.ny as f64 * z.dy;
+    let (mx, my) = (z.grid.nx / k, z.grid.ny / k);
+    let (bx, by) = (k as f64 * z.grid.dx, k as f64 * z.grid.dy);
+    let x1 = z.grid.x0 + z.grid.nx as f64 * z.grid.dx;
+    let y1 = z.grid.y0 + z.grid.ny as f64 * z.grid.dy;
     let floor = z.zmin + THROUGH_GAP;
     let height = |bi: usize, bj: usize| -> f64 {
         let mut s = 0.0;
@@ -61,14 +61,14 @@ pub fn mill(z: &ZMap, emit: &mut dyn FnMut(Tri)) {
     };
     // Vertex (i, j), i in 0..=mx+1: 0 and mx+1 on the edge, else block centres.
     let vx = |i: usize| match i {
-        0 => z.x0,
+        0 => z.grid.x0,
         i if i == mx + 1 => x1,
-        i => z.x0 + (i as f64 - 0.5) * bx,
+        i => z.grid.x0 + (i as f64 - 0.5) * bx,
     };
     let vy = |j: usize| match j {
-        0 => z.y0,
+        0 => z.grid.y0,
         j if j == my + 1 => y1,
-        j => z.y0 + (j as f64 - 0.5) * by,
+        j => z.grid.y0 + (j as f64 - 0.5) * by,
     };
     let clampi = |i: usize, m: usize| i.saturating_sub(1).min(m - 1);
     let mut row0: Vec<f64> = (0..mx + 2).map(|i| height(clampi(i, mx), 0)).collect();
@@ -95,8 +95,8 @@ pub fn mill(z: &ZMap, emit: &mut dyn FnMut(Tri)) {
     ring.extend((1..=my + 1).rev().map(|j| (0, j)));
     let hr = |(i, j): (usize, usize)| height(clampi(i, mx), clampi(j, my));
     let centre = [
-        ((z.x0 + x1) / 2.0) as f32,
-        ((z.y0 + y1) / 2.0) as f32,
+        ((z.grid.x0 + x1) / 2.0) as f32,
+        ((z.grid.y0 + y1) / 2.0) as f32,
         z.zmin as f32,
     ];
     for n in 0..ring.len() {

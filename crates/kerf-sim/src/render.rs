@@ -265,8 +265,12 @@ fn mill(sim: &Sim) -> Canvas {
         unreachable!()
     };
     let mut c = Canvas::new(1200, 900);
-    let lo = [z.x0, z.y0, z.zmin];
-    let hi = [z.x0 + z.nx as f64 * z.dx, z.y0 + z.ny as f64 * z.dy, z.ztop];
+    let lo = [z.grid.x0, z.grid.y0, z.zmin];
+    let hi = [
+        z.grid.x0 + z.grid.nx as f64 * z.grid.dx,
+        z.grid.y0 + z.grid.ny as f64 * z.grid.dy,
+        z.ztop,
+    ];
     let v = View::fit(
         [1.0, -1.0, 1.0],
         [0.0, 0.0, 1.0],

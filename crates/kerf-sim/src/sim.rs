@@ -14,7 +14,7 @@ use crate::lathe_tool::cutting_outline;
 use crate::path::chords;
 use crate::stock::Stock;
 use crate::tool::{LatheTool, MillTool, Tool, ToolTable};
-use crate::zmap::ZMap;
+use crate::zmap::{ResolutionError, ZMap};
 
 /// Events kept in the report; later ones are counted only.
 pub const MAX_EVENTS: usize = 1000;
@@ -67,17 +67,17 @@ pub struct Sim {
 impl Sim {
     /// A simulation of `stock` with `tools`; `res` the cell size (mill) or
     /// column width (lathe), mm, or None for the default.
-    pub fn new(stock: Stock, tools: ToolTable, res: Option<f64>) -> Result<Sim, String> {
+    pub fn new(stock: Stock, tools: ToolTable, res: Option<f64>) -> Result<Sim, ResolutionError> {
         if let Some(r) = res {
             if !(r.is_finite() && (0.001..=10.0).contains(&r)) {
-                return Err(format!("--sim-res {r}: the cell size must be 0.001-10 mm"));
+                return Err(ResolutionError::OutOfRange { res: r });
             }
         }
         let (model, res) = match stock {
             Stock::Box { min, max } => {
                 let r = res.unwrap_or_else(|| ZMap::default_res(max[0] - min[0], max[1] - min[1]));
                 let z = ZMap::new(min, max, r)?;
-                let res = z.dx.max(z.dy);
+                let res = z.grid.dx.max(z.grid.dy);
                 (Model::Mill(z), res)
             }
             Stock::Turn {
@@ -88,7 +88,7 @@ impl Sim {
             } => {
                 // The section is exact; its resolution is the arcs' chord
                 // tolerance, whatever --sim-res says.
-                let s = Section::new(r_in, r_out, z_end, z_face)?;
+                let s = Section::new(r_in, r_out, z_end, z_face);
                 (Model::Lathe(s), ARC_TOL_LATHE)
             }
         };
@@ -285,8 +285,16 @@ impl Sim {
         };
         let s = Sweep::new(p0, p1);
         let centre_before = z.height_at(p1[0], p1[1]);
+        let descends = p1[2] < p0[2] - crate::zmap::EPS;
+        // The old heights are kept only when the move can be an event (its
+        // first contact is then located on the stock before the move).
+        let may_collide = rapid
+            || !self.spindle_on
+            || (descends && !tool.centre_cutting)
+            || tool.flute_length < 1.0e4;
         self.undo.clear();
-        let cut = z.cut(tool, &s, true, &mut self.undo);
+        let undo = may_collide.then_some(&mut self.undo);
+        let cut = z.cut(tool, &s, true, undo);
         let mut found: Vec<(EventKind, f64)> = Vec::new();
         if cut.removed > 0.0 {
             if rapid {
@@ -294,8 +302,7 @@ impl Sim {
             } else if !self.spindle_on {
                 found.push((EventKind::SpindleOffCut, cut.removed));
             }
-            let plunge = p1[2] < p0[2] - crate::zmap::EPS
-                && centre_before.is_some_and(|h| h > p1[2] + crate::zmap::EPS);
+            let plunge = descends && centre_before.is_some_and(|h| h > p1[2] + crate::zmap::EPS);
             if !tool.centre_cutting && plunge {
                 found.push((EventKind::PlungeNonCentreCutting, cut.removed));
             }
@@ -309,17 +316,11 @@ impl Sim {
         }
         // Locate the first contact on the stock as it was before the move.
         z.restore(&mut self.undo);
-        let mut scratch = Vec::new();
         let mut located = Vec::new();
         for (kind, vol) in found {
             let holder = kind == EventKind::HolderCollision;
             let f = first_contact(|f| {
-                let c = z.cut(
-                    tool,
-                    &Sweep::new(p0, lerp(&p0, &p1, f)),
-                    false,
-                    &mut scratch,
-                );
+                let c = z.cut(tool, &Sweep::new(p0, lerp(&p0, &p1, f)), false, None);
                 if holder {
                     c.holder > 0.0
                 } else {
@@ -328,7 +329,7 @@ impl Sim {
             });
             located.push((kind, vol, f));
         }
-        z.cut(tool, &s, true, &mut self.undo);
+        z.cut(tool, &s, true, None);
         for (kind, vol, f) in located {
             let at = lerp(&p0, &p1, f);
             self.push(kind, src, tool_no, t.0 + (t.1 - t.0) * f, at, vol);

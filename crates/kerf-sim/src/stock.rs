@@ -2,7 +2,6 @@
 //! coordinates of the first work offset in force, mm (docs/sim.md).
 
 use std::f64::consts::PI;
-use std::fmt;
 
 /// Largest stock dimension accepted, mm (a sanity bound: 10 m).
 pub const MAX_DIM: f64 = 10_000.0;
@@ -23,44 +22,71 @@ pub enum Stock {
 }
 
 /// A stock spec that could not be read; the message names the value.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct StockError(pub String);
-
-impl fmt::Display for StockError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0)
-    }
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("--stock {spec}: {problem}")]
+pub struct StockError {
+    /// The spec as given.
+    pub spec: String,
+    /// What is wrong with it.
+    pub problem: StockProblem,
 }
 
-impl std::error::Error for StockError {}
+/// What is wrong with a stock spec (values numbered from 1).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum StockProblem {
+    #[error("expected box:…, bar:… or tube:…")]
+    NoKind,
+    #[error("value {index} '{text}' is not a number")]
+    NotANumber { index: usize, text: String },
+    #[error("value {index} '{text}' is out of range (|v| <= {MAX_DIM} mm)")]
+    OutOfRange { index: usize, text: String },
+    #[error("{axis}MAX {hi} is not above {axis}MIN {lo}")]
+    Empty { axis: char, lo: f64, hi: f64 },
+    #[error("box needs 6 values XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX")]
+    BoxValues,
+    #[error("bar needs DIAMETER,LENGTH[,FACE_Z]")]
+    BarValues,
+    #[error("tube needs OD,ID,LENGTH[,FACE_Z]")]
+    TubeValues,
+    #[error("unknown stock kind '{0}' (box, bar, tube)")]
+    UnknownKind(String),
+    #[error("diameter {0} must be positive")]
+    Diameter(f64),
+    #[error("length {0} must be positive")]
+    Length(f64),
+    #[error("inner diameter {id} must be 0 or more and below {od}")]
+    InnerDiameter { id: f64, od: f64 },
+}
 
 impl Stock {
     /// Parses `box:XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX`,
     /// `bar:DIAMETER,LENGTH[,FACE_Z]` or `tube:OD,ID,LENGTH[,FACE_Z]`.
     pub fn parse(spec: &str) -> Result<Stock, StockError> {
-        let err = |m: String| StockError(format!("--stock {spec}: {m}"));
-        let (kind, rest) = spec
-            .split_once(':')
-            .ok_or_else(|| err("expected box:…, bar:… or tube:…".into()))?;
+        Self::read(spec).map_err(|problem| StockError {
+            spec: spec.to_string(),
+            problem,
+        })
+    }
+
+    fn read(spec: &str) -> Result<Stock, StockProblem> {
+        let (kind, rest) = spec.split_once(':').ok_or(StockProblem::NoKind)?;
         let mut nums = Vec::new();
         for (i, s) in rest.split(',').enumerate() {
-            let v: f64 = s
-                .trim()
-                .parse()
-                .map_err(|_| err(format!("value {} '{s}' is not a number", i + 1)))?;
+            let (index, text) = (i + 1, s.to_string());
+            let v: f64 = s.trim().parse().map_err(|_| StockProblem::NotANumber {
+                index,
+                text: text.clone(),
+            })?;
             if !v.is_finite() || v.abs() > MAX_DIM {
-                return Err(err(format!(
-                    "value {} '{s}' is out of range (|v| <= {MAX_DIM} mm)",
-                    i + 1
-                )));
+                return Err(StockProblem::OutOfRange { index, text });
             }
             nums.push(v);
         }
         match (kind.trim(), nums.as_slice()) {
             ("box", &[x0, y0, z0, x1, y1, z1]) => {
-                for (a, lo, hi) in [("X", x0, x1), ("Y", y0, y1), ("Z", z0, z1)] {
+                for (axis, lo, hi) in [('X', x0, x1), ('Y', y0, y1), ('Z', z0, z1)] {
                     if hi <= lo {
-                        return Err(err(format!("{a}MAX {hi} is not above {a}MIN {lo}")));
+                        return Err(StockProblem::Empty { axis, lo, hi });
                     }
                 }
                 Ok(Stock::Box {
@@ -68,30 +94,26 @@ impl Stock {
                     max: [x1, y1, z1],
                 })
             }
-            ("box", _) => Err(err(
-                "box needs 6 values XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX".into()
-            )),
-            ("bar", &[d, l]) => Self::turn(d, 0.0, l, 0.0).map_err(err),
-            ("bar", &[d, l, f]) => Self::turn(d, 0.0, l, f).map_err(err),
-            ("bar", _) => Err(err("bar needs DIAMETER,LENGTH[,FACE_Z]".into())),
-            ("tube", &[od, id, l]) => Self::turn(od, id, l, 0.0).map_err(err),
-            ("tube", &[od, id, l, f]) => Self::turn(od, id, l, f).map_err(err),
-            ("tube", _) => Err(err("tube needs OD,ID,LENGTH[,FACE_Z]".into())),
-            (k, _) => Err(err(format!("unknown stock kind '{k}' (box, bar, tube)"))),
+            ("box", _) => Err(StockProblem::BoxValues),
+            ("bar", &[d, l]) => Self::turn(d, 0.0, l, 0.0),
+            ("bar", &[d, l, f]) => Self::turn(d, 0.0, l, f),
+            ("bar", _) => Err(StockProblem::BarValues),
+            ("tube", &[od, id, l]) => Self::turn(od, id, l, 0.0),
+            ("tube", &[od, id, l, f]) => Self::turn(od, id, l, f),
+            ("tube", _) => Err(StockProblem::TubeValues),
+            (k, _) => Err(StockProblem::UnknownKind(k.to_string())),
         }
     }
 
-    fn turn(od: f64, id: f64, len: f64, face: f64) -> Result<Stock, String> {
+    fn turn(od: f64, id: f64, len: f64, face: f64) -> Result<Stock, StockProblem> {
         if od <= 0.0 {
-            return Err(format!("diameter {od} must be positive"));
+            return Err(StockProblem::Diameter(od));
         }
         if len <= 0.0 {
-            return Err(format!("length {len} must be positive"));
+            return Err(StockProblem::Length(len));
         }
         if id < 0.0 || id >= od {
-            return Err(format!(
-                "inner diameter {id} must be 0 or more and below {od}"
-            ));
+            return Err(StockProblem::InnerDiameter { id, od });
         }
         Ok(Stock::Turn {
             r_out: od / 2.0,
@@ -165,7 +187,8 @@ mod tests {
             ("bar:1e9,10", "out of range"),
             ("bar50", "expected box"),
         ] {
-            let e = Stock::parse(spec).unwrap_err().0;
+            let e = Stock::parse(spec).unwrap_err().to_string();
+            assert!(e.starts_with(&format!("--stock {spec}: ")), "{e}");
             assert!(e.contains(part), "{spec}: {e}");
         }
     }

@@ -5,6 +5,8 @@
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 
+use crate::shape::Shape;
+
 /// Cutting shape of a milling tool.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum MillKind {
@@ -50,56 +52,14 @@ impl MillTool {
     }
 
     /// Height of the tool's lower surface above the tip at distance `rho`
-    /// from the axis (`rho <= radius`).
-    #[inline]
+    /// from the axis (`rho <= radius`); [`Shape`] for inner loops.
     pub fn profile(&self, rho: f64) -> f64 {
-        match self.kind {
-            MillKind::Flat => 0.0,
-            MillKind::Ball => {
-                let r = self.radius;
-                r - (r * r - rho * rho).max(0.0).sqrt()
-            }
-            MillKind::Bull { corner } => {
-                let d = rho - (self.radius - corner);
-                if d <= 0.0 {
-                    0.0
-                } else {
-                    corner - (corner * corner - d * d).max(0.0).sqrt()
-                }
-            }
-            MillKind::Drill { point_angle } => rho / (point_angle.to_radians() / 2.0).tan(),
-            MillKind::Chamfer { angle, tip_radius } => {
-                (rho - tip_radius).max(0.0) / (angle.to_radians() / 2.0).tan()
-            }
-        }
+        Shape::of(self).profile(rho)
     }
 
     /// Slope d(profile)/d(rho) at `rho`.
-    #[inline]
     pub fn slope(&self, rho: f64) -> f64 {
-        match self.kind {
-            MillKind::Flat => 0.0,
-            MillKind::Ball => {
-                let r = self.radius;
-                rho / (r * r - rho * rho).max(1e-12).sqrt()
-            }
-            MillKind::Bull { corner } => {
-                let d = rho - (self.radius - corner);
-                if d <= 0.0 {
-                    0.0
-                } else {
-                    d / (corner * corner - d * d).max(1e-12).sqrt()
-                }
-            }
-            MillKind::Drill { point_angle } => 1.0 / (point_angle.to_radians() / 2.0).tan(),
-            MillKind::Chamfer { angle, tip_radius } => {
-                if rho > tip_radius {
-                    1.0 / (angle.to_radians() / 2.0).tan()
-                } else {
-                    0.0
-                }
-            }
-        }
+        Shape::of(self).slope(rho)
     }
 
     /// Largest radius of the tool or its holder, mm.

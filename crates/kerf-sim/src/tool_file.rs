@@ -70,8 +70,39 @@ pub enum ToolFileError {
         /// The tool number.
         tool: u32,
         /// The key and what it must be.
-        problem: String,
+        problem: ToolProblem,
     },
+}
+
+/// What is wrong with one tool's entry (the key and what it must be).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ToolProblem {
+    #[error("{key} is missing")]
+    Missing { key: String },
+    #[error("{key} = {value} must be positive (mm, at most 10000)")]
+    NotPositive { key: String, value: f64 },
+    #[error("{key} = {value} must be 0 or more")]
+    Negative { key: String, value: f64 },
+    #[error("{key} = {value} must be between 0 and 180 degrees")]
+    Angle { key: String, value: f64 },
+    #[error("corner_radius = {corner} must be below the radius {radius} (use kind = \"ball\")")]
+    Corner { corner: f64, radius: f64 },
+    #[error("tip_diameter must be below diameter {diameter}")]
+    TipDiameter { diameter: f64 },
+    #[error("kind = \"{0}\" (flat, ball, bull, drill, chamfer)")]
+    MillKind(String),
+    #[error("shape = \"{0}\" (C, D, K, S, T, V, W, or angle = DEG)")]
+    Shape(String),
+    #[error("tip = {0} must be 0-9")]
+    Tip(u8),
+    #[error("kind = \"{0}\" (insert, groove, drill)")]
+    LatheKind(String),
+    #[error("nose_radius = {nose_radius} is more than half the width {width}")]
+    NoseRadius { nose_radius: f64, width: f64 },
+    #[error("holder points must be numbers")]
+    HolderNumbers,
+    #[error("holder needs at least 3 [z, x] points")]
+    HolderPoints,
 }
 
 /// Reads a tool file. `lathe` selects the lathe meaning of the kinds.
@@ -94,42 +125,57 @@ pub fn parse_tools(text: &str, lathe: bool) -> Result<ToolTable, ToolFileError> 
     Ok(t)
 }
 
-fn need(v: Option<f64>, name: &str) -> Result<f64, String> {
-    let v = v.ok_or_else(|| format!("{name} is missing"))?;
+fn need(v: Option<f64>, name: &str) -> Result<f64, ToolProblem> {
+    let v = v.ok_or_else(|| missing(name))?;
     positive(v, name)
 }
 
-fn positive(v: f64, name: &str) -> Result<f64, String> {
+fn missing(key: &str) -> ToolProblem {
+    ToolProblem::Missing {
+        key: key.to_string(),
+    }
+}
+
+fn positive(v: f64, name: &str) -> Result<f64, ToolProblem> {
     if v.is_finite() && v > 0.0 && v <= 10_000.0 {
         Ok(v)
     } else {
-        Err(format!("{name} = {v} must be positive (mm, at most 10000)"))
+        Err(ToolProblem::NotPositive {
+            key: name.to_string(),
+            value: v,
+        })
     }
 }
 
-fn non_negative(v: Option<f64>, name: &str) -> Result<f64, String> {
+fn non_negative(v: Option<f64>, name: &str) -> Result<f64, ToolProblem> {
     match v {
         None => Ok(0.0),
         Some(v) if v.is_finite() && (0.0..=10_000.0).contains(&v) => Ok(v),
-        Some(v) => Err(format!("{name} = {v} must be 0 or more")),
+        Some(v) => Err(ToolProblem::Negative {
+            key: name.to_string(),
+            value: v,
+        }),
     }
 }
 
-fn angle(v: Option<f64>, name: &str, default: Option<f64>) -> Result<f64, String> {
+fn angle(v: Option<f64>, name: &str, default: Option<f64>) -> Result<f64, ToolProblem> {
     let v = match (v, default) {
         (Some(v), _) => v,
         (None, Some(d)) => d,
-        (None, None) => return Err(format!("{name} is missing")),
+        (None, None) => return Err(missing(name)),
     };
     if v.is_finite() && v > 0.0 && v < 180.0 {
         Ok(v)
     } else {
-        Err(format!("{name} = {v} must be between 0 and 180 degrees"))
+        Err(ToolProblem::Angle {
+            key: name.to_string(),
+            value: v,
+        })
     }
 }
 
-fn mill_tool(e: &Entry) -> Result<MillTool, String> {
-    let kind_name = e.kind.as_deref().ok_or("kind is missing")?;
+fn mill_tool(e: &Entry) -> Result<MillTool, ToolProblem> {
+    let kind_name = e.kind.as_deref().ok_or_else(|| missing("kind"))?;
     let radius = need(e.diameter, "diameter")? / 2.0;
     let kind = match kind_name {
         "flat" => MillKind::Flat,
@@ -137,9 +183,7 @@ fn mill_tool(e: &Entry) -> Result<MillTool, String> {
         "bull" => {
             let c = need(e.corner_radius, "corner_radius")?;
             if c >= radius {
-                return Err(format!(
-                    "corner_radius = {c} must be below the radius {radius} (use kind = \"ball\")"
-                ));
+                return Err(ToolProblem::Corner { corner: c, radius });
             }
             MillKind::Bull { corner: c }
         }
@@ -149,17 +193,16 @@ fn mill_tool(e: &Entry) -> Result<MillTool, String> {
         "chamfer" => {
             let tip_radius = non_negative(e.tip_diameter, "tip_diameter")? / 2.0;
             if tip_radius >= radius {
-                return Err(format!(
-                    "tip_diameter must be below diameter {}",
-                    2.0 * radius
-                ));
+                return Err(ToolProblem::TipDiameter {
+                    diameter: 2.0 * radius,
+                });
             }
             MillKind::Chamfer {
                 angle: angle(e.angle, "angle", Some(90.0))?,
                 tip_radius,
             }
         }
-        k => return Err(format!("kind = \"{k}\" (flat, ball, bull, drill, chamfer)")),
+        k => return Err(ToolProblem::MillKind(k.to_string())),
     };
     let flute_length = match e.flute_length {
         Some(v) => positive(v, "flute_length")?,
@@ -182,7 +225,7 @@ fn mill_tool(e: &Entry) -> Result<MillTool, String> {
 }
 
 /// ISO insert shape letter → included angle, degrees.
-fn shape_angle(s: &str) -> Result<f64, String> {
+fn shape_angle(s: &str) -> Result<f64, ToolProblem> {
     Ok(match s {
         "C" => 80.0,
         "D" => 55.0,
@@ -191,20 +234,16 @@ fn shape_angle(s: &str) -> Result<f64, String> {
         "S" => 90.0,
         "W" => 80.0,
         "K" => 55.0,
-        other => {
-            return Err(format!(
-                "shape = \"{other}\" (C, D, K, S, T, V, W, or angle = DEG)"
-            ))
-        }
+        other => return Err(ToolProblem::Shape(other.to_string())),
     })
 }
 
-fn lathe_tool(e: &Entry) -> Result<LatheTool, String> {
+fn lathe_tool(e: &Entry) -> Result<LatheTool, ToolProblem> {
     let kind_name = e.kind.as_deref().unwrap_or("insert");
     let nose_radius = non_negative(e.nose_radius, "nose_radius")?;
     let tip = e.tip.unwrap_or(3);
     if tip > 9 {
-        return Err(format!("tip = {tip} must be 0-9"));
+        return Err(ToolProblem::Tip(tip));
     }
     let kind = match kind_name {
         "insert" => {
@@ -237,13 +276,11 @@ fn lathe_tool(e: &Entry) -> Result<LatheTool, String> {
                 None => 1.0e4,
             },
         },
-        k => return Err(format!("kind = \"{k}\" (insert, groove, drill)")),
+        k => return Err(ToolProblem::LatheKind(k.to_string())),
     };
     if let LatheKind::Groove { width, .. } = kind {
         if 2.0 * nose_radius > width {
-            return Err(format!(
-                "nose_radius = {nose_radius} is more than half the width {width}"
-            ));
+            return Err(ToolProblem::NoseRadius { nose_radius, width });
         }
     }
     let holder = e
@@ -253,10 +290,10 @@ fn lathe_tool(e: &Entry) -> Result<LatheTool, String> {
         .map(|[z, x]| (*z, *x))
         .collect::<Vec<_>>();
     if holder.iter().any(|(z, x)| !z.is_finite() || !x.is_finite()) {
-        return Err("holder points must be numbers".into());
+        return Err(ToolProblem::HolderNumbers);
     }
     if !holder.is_empty() && holder.len() < 3 {
-        return Err("holder needs at least 3 [z, x] points".into());
+        return Err(ToolProblem::HolderPoints);
     }
     Ok(LatheTool {
         kind,
@@ -373,7 +410,13 @@ mod tests {
         match parse_tools("[tool.7]\nkind=\"groove\"\n", true).unwrap_err() {
             ToolFileError::Tool { tool, problem } => {
                 assert_eq!(tool, 7);
-                assert!(problem.contains("width is missing"), "{problem}");
+                assert_eq!(
+                    problem,
+                    ToolProblem::Missing {
+                        key: "width".into()
+                    }
+                );
+                assert_eq!(problem.to_string(), "width is missing");
             }
             e => panic!("{e:?}"),
         }
