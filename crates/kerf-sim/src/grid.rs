@@ -67,10 +67,13 @@ impl Grid {
         let Some((j0, j1)) = range(ya, yb, self.y0, self.dy, self.ny) else {
             return;
         };
+        let (dx, dy) = (s.p1[0] - s.p0[0], s.p1[1] - s.p0[1]);
+        let l = dx.hypot(dy);
+        let dir = (l > 1e-12).then(|| (dx / l, dy / l, l));
         for j in j0..=j1 {
             let y = self.y0 + (j as f64 + 0.5) * self.dy;
             // The X span of the capsule on this row narrows the scan.
-            let (lo, hi) = capsule_span(s, r, y);
+            let (lo, hi) = capsule_span(s, dir, r, y);
             let Some((a, b)) = range(
                 (lo - 1e-9).max(xa),
                 (hi + 1e-9).min(xb),
@@ -96,8 +99,9 @@ fn range(lo: f64, hi: f64, o: f64, d: f64, n: usize) -> Option<(usize, usize)> {
 }
 
 /// X interval of the capsule (points within `r` of the move's XY
-/// segment) on the row at `y`: the end discs and the band between them.
-fn capsule_span(s: &Sweep, r: f64, y: f64) -> (f64, f64) {
+/// segment, of unit direction and length `dir` when not vertical) on the
+/// row at `y`: the end discs and the band between them.
+fn capsule_span(s: &Sweep, dir: Option<(f64, f64, f64)>, r: f64, y: f64) -> (f64, f64) {
     let mut lo = f64::INFINITY;
     let mut hi = f64::NEG_INFINITY;
     for p in [s.p0, s.p1] {
@@ -108,10 +112,7 @@ fn capsule_span(s: &Sweep, r: f64, y: f64) -> (f64, f64) {
             hi = hi.max(p[0] + w);
         }
     }
-    let (dx, dy) = (s.p1[0] - s.p0[0], s.p1[1] - s.p0[1]);
-    let l = dx.hypot(dy);
-    if l > 1e-12 {
-        let (ux, uy) = (dx / l, dy / l);
+    if let Some((ux, uy, l)) = dir {
         let yy = y - s.p0[1];
         // cross = xx uy - yy ux in [-r, r]; along = xx ux + yy uy in [0, l],
         // with xx = x - x0: each a linear interval in xx.
