@@ -73,13 +73,8 @@ impl Grid {
             let y = self.y0 + (j as f64 + 0.5) * self.dy;
             // The X span of the capsule on this row narrows the scan.
             let (lo, hi) = cap.span(y);
-            let Some((a, b)) = range(
-                (lo - 1e-9).max(xa),
-                (hi + 1e-9).min(xb),
-                self.x0,
-                ix,
-                self.nx,
-            ) else {
+            let Some((a, b)) = range(max(lo - 1e-9, xa), min(hi + 1e-9, xb), self.x0, ix, self.nx)
+            else {
                 continue;
             };
             let (a, b) = (a.max(i0), b.min(i1));
@@ -97,8 +92,8 @@ fn range(lo: f64, hi: f64, o: f64, inv: f64, n: usize) -> Option<(usize, usize)>
     // Clamped to [-1, n] first, so that the integer rounding below (the
     // baseline x86-64 has no instruction for ceil and floor) is exact.
     let top = n as f64;
-    let a = ceil(((lo - o) * inv - 0.5).clamp(-1.0, top)).max(0);
-    let b = floor(((hi - o) * inv - 0.5).clamp(-1.0, top)).min(n as i64 - 1);
+    let a = ceil(min(max((lo - o) * inv - 0.5, -1.0), top)).max(0);
+    let b = floor(min(max((hi - o) * inv - 0.5, -1.0), top)).min(n as i64 - 1);
     (a <= b).then_some((a as usize, b as usize))
 }
 
@@ -167,10 +162,10 @@ impl Capsule {
         let mut hi = f64::NEG_INFINITY;
         for p in [self.p0, self.p1] {
             let dy = y - p[1];
-            if dy.abs() <= r {
+            if dy * dy <= r * r {
                 let w = (r * r - dy * dy).sqrt();
-                lo = lo.min(p[0] - w);
-                hi = hi.max(p[0] + w);
+                lo = min(lo, p[0] - w);
+                hi = max(hi, p[0] + w);
             }
         }
         if let Some(([ux, uy], [iux, iuy], l)) = self.dir {
@@ -179,10 +174,10 @@ impl Capsule {
             // [0, l], with xx = x - x0: each a linear interval in xx.
             let (a1, b1) = lin_interval(uy, iuy, -yy * ux, -r, r);
             let (a2, b2) = lin_interval(ux, iux, yy * uy, 0.0, l);
-            let (a, b) = (a1.max(a2), b1.min(b2));
+            let (a, b) = (max(a1, a2), min(b1, b2));
             if a <= b {
-                lo = lo.min(self.p0[0] + a);
-                hi = hi.max(self.p0[0] + b);
+                lo = min(lo, self.p0[0] + a);
+                hi = max(hi, self.p0[0] + b);
             }
         }
         (lo, hi)
@@ -200,7 +195,28 @@ fn lin_interval(k: f64, inv: f64, c: f64, lo: f64, hi: f64) -> (f64, f64) {
         }
     } else {
         let (a, b) = ((lo - c) * inv, (hi - c) * inv);
-        (a.min(b), a.max(b))
+        (min(a, b), max(a, b))
+    }
+}
+
+/// The lesser of two numbers that are not NaN (a plain comparison: the
+/// library's `f64::min` also orders NaN, in several more instructions).
+#[inline]
+fn min(a: f64, b: f64) -> f64 {
+    if a < b {
+        a
+    } else {
+        b
+    }
+}
+
+/// The greater of two numbers that are not NaN.
+#[inline]
+fn max(a: f64, b: f64) -> f64 {
+    if a > b {
+        a
+    } else {
+        b
     }
 }
 
