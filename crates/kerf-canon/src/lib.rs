@@ -234,6 +234,37 @@ pub enum ModeChange {
     /// Hurco M48 (true) / M49 (false): the feed override applies / is
     /// ignored (the programmed feed is used).
     FeedOverride(bool),
+    /// HX G112 / G113 and G107 (000 §4.6, §4.7): the rotary-axis
+    /// interpolation the following motions are made in. Emitted at the
+    /// block that changes it; the motions themselves stay in machine axes
+    /// (X radius and C degrees), so a consumer that draws or times them on
+    /// the programmed surface reads the mode from here.
+    Rotary(RotaryMode),
+}
+
+/// The HX rotary-axis interpolation in force (see [`ModeChange::Rotary`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum RotaryMode {
+    /// Neither: G113, G107 C0, or not yet commanded.
+    Off,
+    /// G112 polar coordinate interpolation: the contour is programmed in the
+    /// Cartesian X-C plane on the part's face; the motions turn C.
+    Polar,
+    /// G107 cylindrical interpolation on a cylinder of `radius` mm: C in
+    /// degrees stands for the length C·π·radius/180 on the developed
+    /// surface. `plane` is the program's plane (G17: C with Y, G18: Z with C).
+    Cylinder { radius: f64, plane: Plane },
+}
+
+impl RotaryMode {
+    /// Millimetres on the developed surface per degree of C: π·r/180 in
+    /// G107, None otherwise.
+    pub fn mm_per_degree(self) -> Option<f64> {
+        match self {
+            RotaryMode::Cylinder { radius, .. } => Some(radius * std::f64::consts::PI / 180.0),
+            _ => None,
+        }
+    }
 }
 
 /// A canonical command with the source position of the block that made it.

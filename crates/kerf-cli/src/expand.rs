@@ -44,9 +44,7 @@ pub fn expand(c: &Common, to: &str, out: Option<&Path>) -> ExitCode {
         Ok(o) => o,
         Err(e) => return usage_error(e),
     };
-    for w in &outcome.warnings {
-        diagnostic::print_warning(w);
-    }
+    diagnostic::print_warnings(&outcome.warnings);
     if outcome.warnings_dropped > 0 {
         eprintln!("kerf: {} more warnings not shown", outcome.warnings_dropped);
     }

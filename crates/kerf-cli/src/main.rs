@@ -11,6 +11,7 @@ mod args;
 mod diagnostic;
 mod expand;
 mod manual;
+mod output_paths;
 mod outputs;
 mod progress;
 mod serve;
@@ -99,9 +100,7 @@ fn run(c: &Common, outputs: &Outputs, check: bool) -> ExitCode {
 }
 
 fn print_outcome(c: &Common, name: &str, o: &Outcome, doc: &Document, check: bool) -> ExitCode {
-    for w in &o.warnings {
-        diagnostic::print_warning(w);
-    }
+    diagnostic::print_warnings(&o.warnings);
     if o.warnings_dropped > 0 {
         eprintln!("kerf: {} more warnings not shown", o.warnings_dropped);
     }

@@ -13,13 +13,14 @@ use kerf_interp::Profile;
 use kerf_sim::Stock;
 
 use crate::args::Outputs;
+use crate::output_paths::{check_writable, io_reason};
 
 type Out = BufWriter<File>;
 
 fn create(path: &Path) -> Result<Out, String> {
     File::create(path)
         .map(|f| BufWriter::with_capacity(1 << 16, f))
-        .map_err(|e| format!("{}: {e}", path.display()))
+        .map_err(|e| format!("{}: {}", path.display(), io_reason(&e)))
 }
 
 /// A large output (the toolpath): written by a thread of its own in 1 MiB
@@ -27,7 +28,7 @@ fn create(path: &Path) -> Result<Out, String> {
 fn create_behind(path: &Path) -> Result<WriteBehind, String> {
     File::create(path)
         .map(|f| WriteBehind::new(f, 1 << 20))
-        .map_err(|e| format!("{}: {e}", path.display()))
+        .map_err(|e| format!("{}: {}", path.display(), io_reason(&e)))
 }
 
 /// `--sample DT FILE`: the period (0.00001-1 s) and the file.
@@ -45,9 +46,23 @@ fn sample_arg(sample: &[String]) -> Result<Option<(f64, PathBuf)>, String> {
 }
 
 impl Outputs {
-    /// Checks the arguments (before anything is loaded).
+    /// Checks the arguments and that every output can be written (before
+    /// anything is loaded or created).
     pub fn validate(&self) -> Result<(), String> {
-        sample_arg(&self.sample)?;
+        let sample = sample_arg(&self.sample)?.map(|(_, p)| p);
+        for (option, path) in [
+            ("--toolpath", &self.toolpath),
+            ("--report", &self.report),
+            ("--plot", &self.plot),
+            ("--sample", &sample),
+            ("--log", &self.log),
+            ("--stl", &self.stl),
+            ("--png", &self.png),
+        ] {
+            if let Some(p) = path {
+                check_writable(option, p).map_err(|e| e.to_string())?;
+            }
+        }
         if self.stock.is_none() {
             for (set, name) in [
                 (self.tools.is_some(), "--tools"),
@@ -81,7 +96,7 @@ impl Outputs {
             return Ok(None);
         };
         let stock = Stock::parse(spec).map_err(|e| e.to_string())?;
-        check_stock(&stock, profile)?;
+        check_stock(&stock, profile).map_err(|e| e.to_string())?;
         let tools = match &self.tools {
             Some(p) => {
                 let text =

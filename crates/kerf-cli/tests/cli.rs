@@ -652,3 +652,41 @@ fn puma_work_offsets_from_the_offset_table() {
     assert_eq!(v["to"]["z"], 10.0);
     assert_eq!(v["mto"]["z"], -490.0);
 }
+
+#[test]
+fn g107_is_plotted_unrolled_on_its_cylinder() {
+    // G107 C10 (000 §4.7): Z0 → Z20, then C0 → C180, half a turn of a
+    // 10 mm cylinder, π·10 = 31.416 mm on the developed surface. Drawn at
+    // one scale, the C leg is π/2 = 1.5708 times the Z leg (in degrees it
+    // would be 9 times).
+    let p = tmp(
+        "g107.nc",
+        "G54 G00 G90 Z0 C0\nG18\nG107 C10.\nG01 Z20. F100\nC180.\nG107 C0\nM30\n",
+    );
+    let svg = p.with_extension("svg");
+    let out = kerf()
+        .args(["run", "--quiet", "--plot"])
+        .arg(&svg)
+        .arg(&p)
+        .output()
+        .unwrap();
+    assert_success(&out);
+    let s = std::fs::read_to_string(&svg).unwrap();
+    assert!(s.contains("C as arc length on r 10 mm"), "{s}");
+    let leg = s
+        .split("<path d=\"")
+        .skip(1)
+        .map(|p| p.split('"').next().unwrap())
+        .map(svg_points)
+        .find(|pts| pts.len() == 3)
+        .unwrap_or_else(|| panic!("no three-point path: {s}"));
+    let [(x0, y0), (x1, y1), (x2, y2)] = leg[..] else {
+        unreachable!()
+    };
+    let (z, c) = (x1 - x0, y1 - y2);
+    assert!((y1 - y0).abs() < 0.01 && (x2 - x1).abs() < 0.01, "{leg:?}");
+    assert!(
+        (c / z - std::f64::consts::FRAC_PI_2).abs() < 1e-3,
+        "{leg:?}"
+    );
+}

@@ -240,10 +240,40 @@ fn an_unwritable_output_fails_before_the_run() {
         &p,
     );
     assert_eq!(out.status.code(), Some(2));
-    assert!(text(&out.stderr).starts_with("kerf: /no/such/folder/r.json: "));
+    assert_eq!(
+        text(&out.stderr),
+        "kerf: --report /no/such/folder/r.json: no folder /no/such/folder\n"
+    );
     assert!(out.stdout.is_empty());
     // Nothing ran: no state was saved.
     assert!(!state.join("hx-mc.vars").exists());
+}
+
+#[test]
+fn no_output_is_created_when_a_later_one_cannot_be_written() {
+    // The toolpath could be written, the plot cannot: neither is made, and
+    // an existing toolpath is not emptied.
+    let p = tmp("never_runs2.nc", b"G0 X1.\nM30\n");
+    let tp = dir().join("kept.jsonl");
+    let _ = std::fs::remove_file(&tp);
+    let args = [
+        "run",
+        "--toolpath",
+        tp.to_str().unwrap(),
+        "--plot",
+        "/no/such/folder/p.svg",
+    ];
+    let out = run(&args, &p);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).starts_with("kerf: --plot /no/such/folder/p.svg: "));
+    assert!(!tp.exists());
+    std::fs::write(&tp, "an earlier run\n").unwrap();
+    assert_eq!(run(&args, &p).status.code(), Some(2));
+    assert_eq!(std::fs::read_to_string(&tp).unwrap(), "an earlier run\n");
+    // A folder given as the file.
+    let out = run(&["run", "--report", dir().to_str().unwrap()], &p);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).ends_with(": is a folder, not a file\n"));
 }
 
 #[test]
@@ -260,4 +290,41 @@ fn completions_and_man_page_list_the_commands() {
     let s = text(&out.stdout);
     assert!(s.starts_with(".ie") && s.contains(".TH kerf 1"), "{s}");
     assert!(s.contains("machines"), "{s}");
+}
+
+#[test]
+fn columns_after_non_ascii_comments_count_characters() {
+    // "(Ø10 Maß) G01 X10. Y5." without F: the alarm is at the G01, after
+    // the ten characters "(Ø10 Maß) ": byte 13 (Ø and ß are two bytes
+    // each) but character 11, where the caret is.
+    let p = tmp(
+        "umlaut.nc",
+        "G90 G00 X0 Y0\n(Ø10 Maß) G01 X10. Y5.\nM30\n".as_bytes(),
+    );
+    let out = run(&["run"], &p);
+    assert_eq!(out.status.code(), Some(1));
+    let err = text(&out.stderr);
+    let mut lines = err.lines();
+    let head = lines.next().unwrap();
+    assert!(
+        head.ends_with(":2:11: alarm F_84020: cutting move without a feedrate (no F commanded)"),
+        "{err}"
+    );
+    assert_eq!(lines.next(), Some("  (Ø10 Maß) G01 X10. Y5."), "{err}");
+    assert_eq!(
+        lines.next(),
+        Some(&*format!("  {}^", " ".repeat(10))),
+        "{err}"
+    );
+    // A warning after "(Ø) ": X118 is character 5 (byte 6).
+    let p = tmp(
+        "umlaut_warn.nc",
+        "G90 G00 X0 Y0\nG01 X10. Y5. F100.\n(Ø) X118 Y5.\nM30\n".as_bytes(),
+    );
+    let out = run(&["run", "--quiet"], &p);
+    let err = text(&out.stderr);
+    assert!(
+        err.contains(":3:5: warning KERF-W001: X118 has no decimal point"),
+        "{err}"
+    );
 }

@@ -27,7 +27,7 @@ const KEYS: &[&str] = &[
 
 /// A `[motion]` table the planner cannot run with; each message names the
 /// profile parameter (`motion.axes.x.jerk`).
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum DynamicsError {
     /// The profile has no `[motion]` table.
     #[error("profile has no [motion] table (planner limits; see docs/formats.md)")]
@@ -58,7 +58,7 @@ pub enum DynamicsError {
     NotBool(String),
     /// A limit out of range, as kerf-motion's `Dynamics::validate` names it.
     #[error("{0}")]
-    Limit(String),
+    Limit(#[from] kerf_motion::DynamicsLimitError),
 }
 
 impl From<DynamicsError> for String {
@@ -260,7 +260,7 @@ mod tests {
         .err()
         .unwrap();
         assert!(
-            matches!(&e, DynamicsError::Limit(s) if s.contains("motion.axes.x.jerk")),
+            matches!(&e, DynamicsError::Limit(l) if l.names("motion.axes.x.jerk")),
             "{e}"
         );
     }

@@ -12,23 +12,30 @@ pub enum SettingsError {
         /// The key as written.
         key: String,
     },
-    /// A known key with a value it does not take, or no `=` at all; the
-    /// message names the key, the value and what was expected.
-    #[error("{0}")]
-    BadValue(String),
+    /// A known key with a value it does not take, or no `=` at all.
+    #[error("--set {setting}: {expected}")]
+    BadValue {
+        /// `KEY=VALUE` as written, or the key alone when the key is at
+        /// fault.
+        setting: String,
+        /// What the key takes.
+        expected: String,
+    },
 }
 
-impl From<String> for SettingsError {
-    fn from(message: String) -> SettingsError {
-        SettingsError::BadValue(message)
+/// A [`SettingsError::BadValue`].
+fn bad(setting: impl Into<String>, expected: impl Into<String>) -> SettingsError {
+    SettingsError::BadValue {
+        setting: setting.into(),
+        expected: expected.into(),
     }
 }
 
-fn on_off(key: &str, v: &str) -> Result<bool, String> {
+fn on_off(key: &str, v: &str) -> Result<bool, SettingsError> {
     match v.to_ascii_lowercase().as_str() {
         "on" | "1" | "true" | "yes" => Ok(true),
         "off" | "0" | "false" | "no" => Ok(false),
-        _ => Err(format!("--set {key}={v}: expected on or off")),
+        _ => Err(bad(format!("{key}={v}"), "expected on or off")),
     }
 }
 
@@ -62,7 +69,7 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, Setting
     };
     for kv in sets {
         let Some((k, v)) = kv.split_once('=') else {
-            return Err(format!("--set {kv}: expected KEY=VALUE").into());
+            return Err(bad(kv, "expected KEY=VALUE"));
         };
         let (k, v) = (k.trim(), v.trim());
         match k {
@@ -75,9 +82,9 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, Setting
                     // 0-9, and 10 (000 §2.3.3: "/0 ~ /10" on the HX).
                     let n: u16 = lv
                         .parse()
-                        .map_err(|_| format!("--set block_skip={v}: levels are 0-10"))?;
+                        .map_err(|_| bad(format!("block_skip={v}"), "levels are 0-10"))?;
                     if n > 10 {
-                        return Err(format!("--set block_skip={v}: levels are 0-10").into());
+                        return Err(bad(format!("block_skip={v}"), "levels are 0-10"));
                     }
                     s.block_skip |= 1 << n;
                 }
@@ -95,13 +102,13 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, Setting
             "main_passes" => {
                 s.main_passes = v
                     .parse()
-                    .map_err(|_| format!("--set main_passes={v}: expected a count"))?
+                    .map_err(|_| bad(format!("main_passes={v}"), "expected a count"))?
             }
             "calculator_decimal" => profile.calculator_decimal = on_off(k, v)?,
             "max_blocks" => {
                 s.max_blocks = v
                     .parse()
-                    .map_err(|_| format!("--set max_blocks={v}: expected a count"))?
+                    .map_err(|_| bad(format!("max_blocks={v}"), "expected a count"))?
             }
             _ if k.starts_with("in.") => set_input(&mut s.inputs, k, v)?,
             _ if k.starts_with("skip") && k.contains('.') => set_skip(&mut s.skip, k, v)?,
@@ -110,15 +117,11 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, Setting
                 let slot = match &k[6..] {
                     "x" | "X" => 0,
                     "z" | "Z" => 2,
-                    _ => {
-                        return Err(
-                            format!("--set {k}: the probe surface is probe.x or probe.z").into(),
-                        )
-                    }
+                    _ => return Err(bad(k, "the probe surface is probe.x or probe.z")),
                 };
                 let val: f64 = v
                     .parse()
-                    .map_err(|_| format!("--set {k}={v}: expected a number"))?;
+                    .map_err(|_| bad(format!("{k}={v}"), "expected a number"))?;
                 s.probe[slot] = Some(val);
             }
             _ if k.starts_with("PI ")
@@ -138,7 +141,7 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, Setting
             {
                 let val: f64 = v
                     .parse()
-                    .map_err(|_| format!("--set {k}={v}: expected a number"))?;
+                    .map_err(|_| bad(format!("{k}={v}"), "expected a number"))?;
                 let name = normalise_param(k);
                 profile.params.insert(name, val);
             }
@@ -149,22 +152,22 @@ pub fn parse(sets: &[String], profile: &mut Profile) -> Result<Settings, Setting
 }
 
 /// `probe.time=hh:mm:ss`: seconds after midnight.
-fn clock(v: &str) -> Result<u32, String> {
-    let bad = || format!("--set probe.time={v}: expected hh:mm:ss");
+fn clock(v: &str) -> Result<u32, SettingsError> {
+    let wrong = || bad(format!("probe.time={v}"), "expected hh:mm:ss");
     let parts: Vec<u32> = v
         .split(':')
-        .map(|p| p.trim().parse::<u32>().map_err(|_| bad()))
+        .map(|p| p.trim().parse::<u32>().map_err(|_| wrong()))
         .collect::<Result<_, _>>()?;
     match parts.as_slice() {
         [h, m, s] if *h < 24 && *m < 60 && *s < 60 => Ok(h * 3600 + m * 60 + s),
-        _ => Err(bad()),
+        _ => Err(wrong()),
     }
 }
 
 /// `skip.AXIS=V` / `skipN.AXIS=V` (N = 1-4): where the simulated skip
 /// signal comes during G31/G37 (N: G31.N/G37.N), as the program coordinate
 /// of that axis.
-fn set_skip(skip: &mut [[Option<f64>; 6]; 5], k: &str, v: &str) -> Result<(), String> {
+fn set_skip(skip: &mut [[Option<f64>; 6]; 5], k: &str, v: &str) -> Result<(), SettingsError> {
     let (sig, ax) = k.split_once('.').expect("has a dot");
     let n: usize = match &sig[4..] {
         "" => 0,
@@ -172,7 +175,7 @@ fn set_skip(skip: &mut [[Option<f64>; 6]; 5], k: &str, v: &str) -> Result<(), St
             .parse()
             .ok()
             .filter(|n| (1..=4).contains(n))
-            .ok_or_else(|| format!("--set {k}: skip signals are skip, skip1 … skip4"))?,
+            .ok_or_else(|| bad(k, "skip signals are skip, skip1 … skip4"))?,
     };
     let slot = match ax {
         "x" | "X" => 0,
@@ -181,11 +184,11 @@ fn set_skip(skip: &mut [[Option<f64>; 6]; 5], k: &str, v: &str) -> Result<(), St
         "a" | "A" => 3,
         "b" | "B" => 4,
         "c" | "C" => 5,
-        _ => return Err(format!("--set {k}: expected an axis x, y, z, a, b or c")),
+        _ => return Err(bad(k, "expected an axis x, y, z, a, b or c")),
     };
     let val: f64 = v
         .parse()
-        .map_err(|_| format!("--set {k}={v}: expected a number"))?;
+        .map_err(|_| bad(format!("{k}={v}"), "expected a number"))?;
     skip[n][slot] = Some(val);
     Ok(())
 }
@@ -194,23 +197,24 @@ fn set_skip(skip: &mut [[Option<f64>; 6]; 5], k: &str, v: &str) -> Result<(), St
 /// `in.7031` one signal (0/1), `in.7032` … `in.7035` a 32-bit word
 /// (UI000-UI031 … UI300-UI331). Fanuc: `in.1000` … `in.1015` one signal,
 /// `in.1032` the 16-bit word.
-fn set_input(inputs: &mut [u32; 4], k: &str, v: &str) -> Result<(), String> {
-    let n: u32 = k[3..]
-        .parse()
-        .map_err(|_| format!("--set {k}: expected in.NUMBER"))?;
+fn set_input(inputs: &mut [u32; 4], k: &str, v: &str) -> Result<(), SettingsError> {
+    let n: u32 = k[3..].parse().map_err(|_| bad(k, "expected in.NUMBER"))?;
     let val: f64 = v
         .parse()
-        .map_err(|_| format!("--set {k}={v}: expected a number"))?;
+        .map_err(|_| bad(format!("{k}={v}"), "expected a number"))?;
     let flag = || match val {
         0.0 => Ok(false),
         1.0 => Ok(true),
-        _ => Err(format!("--set {k}={v}: a signal is 0 or 1")),
+        _ => Err(bad(format!("{k}={v}"), "a signal is 0 or 1")),
     };
     let word = |max: f64| {
         if val >= 0.0 && val.fract() == 0.0 && val <= max {
             Ok(val as u32)
         } else {
-            Err(format!("--set {k}={v}: expected a whole number 0-{max}"))
+            Err(bad(
+                format!("{k}={v}"),
+                format!("expected a whole number 0-{max}"),
+            ))
         }
     };
     match n {
@@ -225,8 +229,9 @@ fn set_input(inputs: &mut [u32; 4], k: &str, v: &str) -> Result<(), String> {
         7032..=7035 => inputs[(n - 7032) as usize] = word(u32::MAX as f64)?,
         1032 => inputs[0] = (inputs[0] & !0xffff) | word(65535.0)?,
         _ => {
-            return Err(format!(
-                "--set {k}: inputs are in.7000-in.7035 (HX) or in.1000-in.1015, in.1032 (Fanuc)"
+            return Err(bad(
+                k,
+                "inputs are in.7000-in.7035 (HX) or in.1000-in.1015, in.1032 (Fanuc)",
             ))
         }
     }
@@ -267,7 +272,14 @@ mod tests {
         let bad = parse(&["single_block=maybe".into()], &mut p).unwrap_err();
         assert_eq!(
             bad,
-            SettingsError::BadValue("--set single_block=maybe: expected on or off".into())
+            SettingsError::BadValue {
+                setting: "single_block=maybe".into(),
+                expected: "expected on or off".into()
+            }
+        );
+        assert_eq!(
+            bad.to_string(),
+            "--set single_block=maybe: expected on or off"
         );
         let no_value = parse(&["dry_run".into()], &mut p).unwrap_err();
         assert_eq!(no_value.to_string(), "--set dry_run: expected KEY=VALUE");

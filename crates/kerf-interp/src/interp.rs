@@ -46,6 +46,7 @@ mod polar_interp;
 mod probe;
 mod puma_words;
 mod reset;
+mod rotary_mode;
 mod runtime_hooks;
 mod skip;
 mod system_b;

@@ -1,52 +1,52 @@
-//! `Interp::rotary_interpolation`: the G112 / G107 mode a sink reads on
-//! every move, checked against the manual's own examples (000 §4.6 and
-//! §4.7, as in examples/hx/): on for the moves between G112 and G113 and
-//! after G107 with a radius, in the plane the program selected.
+//! `ModeChange::Rotary`: the G112 / G107 mode the interpreter reports in
+//! the event stream, checked against the manual's own examples (000 §4.6
+//! and §4.7, as in examples/hx/): one event where each block switches the
+//! mode, with G107's cylinder radius and the plane the program selected,
+//! and `Interp::rotary_mode` agreeing with the last event on every move.
 
-use kerf_canon::Plane;
+use kerf_canon::{Canon, ModeChange, Plane, RotaryMode};
 use kerf_interp::{Interp, Profile, Settings, Step};
 
-/// For each motion of `path`, whether its end was commanded with the mode.
-fn modes_per_move(path: &str) -> Vec<Option<(bool, Plane)>> {
+/// The rotary mode events of `path` as (line, mode), and for each motion
+/// whether `rotary_mode()` equals the last event's mode.
+fn events(path: &str) -> (Vec<(u32, RotaryMode)>, Vec<bool>) {
     let text = std::fs::read(format!("{}/../../{path}", env!("CARGO_MANIFEST_DIR"))).unwrap();
     let mut it = Interp::new(Profile::builtin("hx-mc").unwrap(), Settings::default());
     it.load_main(path, Box::new(std::io::Cursor::new(text)));
-    let mut modes = Vec::new();
+    let (mut modes, mut agree) = (Vec::new(), Vec::new());
     loop {
         match it.step() {
-            Step::Event(e) if e.motion().is_some() => modes.push(it.rotary_interpolation()),
-            Step::Event(_) => {}
+            Step::Event(e) => match e.cmd {
+                Canon::Mode(ModeChange::Rotary(m)) => modes.push((e.src.line, m)),
+                _ if e.motion().is_some() => {
+                    let last = modes.last().map_or(RotaryMode::Off, |m| m.1);
+                    agree.push(it.rotary_mode() == last);
+                }
+                _ => {}
+            },
             Step::End => break,
             Step::Alarm(a) => panic!("{path}: {a:?}"),
         }
     }
-    modes
+    (modes, agree)
 }
 
 #[test]
-fn polar_interpolation_is_on_between_g112_and_g113() {
-    let modes = modes_per_move("examples/hx/polar_interp_g112.nc");
-    // The rapid to X60 C0 before G112, then G112's contour in XY.
-    assert_eq!(modes.first(), Some(&None));
-    assert!(modes.len() > 10, "{modes:?}");
-    let inside = &modes[1..];
-    assert!(
-        inside.iter().all(|m| *m == Some((true, Plane::XY))),
-        "{modes:?}"
-    );
+fn polar_interpolation_is_reported_at_g112_and_g113() {
+    let (modes, agree) = events("examples/hx/polar_interp_g112.nc");
+    // G112 on line 3, G113 on line 13.
+    assert_eq!(modes, vec![(3, RotaryMode::Polar), (13, RotaryMode::Off)]);
+    assert!(agree.len() > 10 && agree.iter().all(|&a| a), "{agree:?}");
 }
 
 #[test]
-fn cylindrical_interpolation_is_on_after_g107_in_the_zx_plane() {
-    let modes = modes_per_move("examples/hx/cylindrical_g107.nc");
-    // G00 Z100 C0 and the G01 G18 Z0 C0 before G107; G18 for the rest.
-    assert_eq!(modes[0], None);
-    assert!(modes.len() > 8, "{modes:?}");
-    assert!(modes.contains(&Some((false, Plane::ZX))), "{modes:?}");
-    assert!(
-        modes
-            .iter()
-            .all(|m| matches!(m, None | Some((false, Plane::ZX)))),
-        "{modes:?}"
-    );
+fn cylindrical_interpolation_carries_the_radius_and_the_zx_plane() {
+    let (modes, agree) = events("examples/hx/cylindrical_g107.nc");
+    // G107 C57.299 on line 4 after G18 on line 3; G107 C0 on line 16.
+    let on = RotaryMode::Cylinder {
+        radius: 57.299,
+        plane: Plane::ZX,
+    };
+    assert_eq!(modes, vec![(4, on), (16, RotaryMode::Off)]);
+    assert!(agree.len() > 8 && agree.iter().all(|&a| a), "{agree:?}");
 }

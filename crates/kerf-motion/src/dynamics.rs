@@ -2,6 +2,8 @@
 
 use kerf_canon::{Axis, NAXES};
 
+pub use crate::dynamics_error::DynamicsLimitError;
+
 /// Acceleration/deceleration after interpolation (000 §5.5: PM 598
 /// linear, PM 599 bell-shaped).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -142,24 +144,20 @@ impl Dynamics {
         }
     }
 
-    /// Checks every limit; the message names the profile parameter.
-    pub fn validate(&self) -> Result<(), String> {
-        let pos = |name: String, v: f64| -> Result<(), String> {
+    /// Checks every limit; the error names the profile parameter.
+    pub fn validate(&self) -> Result<(), DynamicsLimitError> {
+        let pos = |name: String, v: f64| -> Result<(), DynamicsLimitError> {
             if v.is_finite() && v > 0.0 {
                 Ok(())
             } else {
-                Err(format!(
-                    "profile parameter {name} must be a number > 0 (is {v})"
-                ))
+                Err(DynamicsLimitError::NotPositive(name, v))
             }
         };
-        let nonneg = |name: &str, v: f64| -> Result<(), String> {
+        let nonneg = |name: &str, v: f64| -> Result<(), DynamicsLimitError> {
             if v.is_finite() && v >= 0.0 {
                 Ok(())
             } else {
-                Err(format!(
-                    "profile parameter {name} must be a number >= 0 (is {v})"
-                ))
+                Err(DynamicsLimitError::Negative(name.to_string(), v))
             }
         };
         for a in Axis::ALL {
@@ -180,10 +178,10 @@ impl Dynamics {
         pos("feed.max_cutting".into(), self.max_feed)?;
         nonneg("tools.change_time_s", self.tool_change_s)?;
         if self.lookahead == 0 {
-            return Err("profile parameter motion.lookahead must be >= 1".into());
+            return Err(DynamicsLimitError::NoBlocks("motion.lookahead"));
         }
         if self.lookahead_high_speed == 0 {
-            return Err("profile parameter motion.lookahead_high_speed must be >= 1".into());
+            return Err(DynamicsLimitError::NoBlocks("motion.lookahead_high_speed"));
         }
         pos("motion.path_tolerance_mm".into(), self.path_tolerance)?;
         pos("motion.spindle_accel_rpm_s".into(), self.spindle_accel)?;
@@ -193,31 +191,22 @@ impl Dynamics {
         pos("rapid_override".into(), self.rapid_override)?;
         let c = &self.corner;
         if !(2.0..=178.0).contains(&c.angle_deg) {
-            return Err(format!(
-                "profile parameter motion.corner_override_angle_deg must be 2-178 (is {})",
-                c.angle_deg
-            ));
+            return Err(DynamicsLimitError::CornerAngle(c.angle_deg));
         }
         if !(0.01..=1.0).contains(&c.factor) {
-            return Err(format!(
-                "profile parameter motion.corner_override_pct must be 1-100 (is {})",
-                c.factor * 100.0
-            ));
+            return Err(DynamicsLimitError::CornerPct(c.factor * 100.0));
         }
         nonneg("motion.corner_override_before_mm", c.before)?;
         nonneg("motion.corner_override_after_mm", c.after)?;
         if let Some(m) = self.internal_arc_min {
             if !(m > 0.0 && m <= 1.0) {
-                return Err(format!(
-                    "profile parameter motion.internal_arc_min_pct must be > 0 and <= 100 (is {})",
-                    m * 100.0
-                ));
+                return Err(DynamicsLimitError::InternalArcPct(m * 100.0));
             }
         }
         if self.position_gain.is_nan() || self.position_gain <= 0.0 {
-            return Err(format!(
-                "profile parameter motion.position_gain must be a number > 0 (is {})",
-                self.position_gain
+            return Err(DynamicsLimitError::NotPositive(
+                "motion.position_gain".into(),
+                self.position_gain,
             ));
         }
         Ok(())

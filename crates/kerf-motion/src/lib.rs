@@ -15,12 +15,13 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod dynamics;
+mod dynamics_error;
 pub mod geom;
 pub mod planner;
 pub mod sampler;
 pub mod trap;
 
-pub use dynamics::{AccelType, CornerOverride, Dynamics};
+pub use dynamics::{AccelType, CornerOverride, Dynamics, DynamicsLimitError};
 pub use planner::{Breakdown, Done, Modes, Piece, PieceKind, Planner};
 pub use sampler::Sampler;
 pub use trap::Trap;

@@ -664,7 +664,7 @@ impl Planner {
                     self.finalize_head();
                 }
             }
-            ModeChange::Stitch(_) => {}
+            ModeChange::Stitch(_) | ModeChange::Rotary(_) => {}
             ModeChange::FeedOverride(on) => self.ignore_override = !on,
             ModeChange::SpindleClamp(rpm) => {
                 self.s_clamp = if rpm.is_nan() { f64::INFINITY } else { rpm };
@@ -1379,40 +1379,41 @@ mod tests {
         let mut d = dynm();
         d.jerk[1] = 0.0;
         let e = d.validate().unwrap_err();
-        assert!(e.contains("motion.axes.y.jerk"), "{e}");
+        assert!(e.names("motion.axes.y.jerk"), "{e}");
+        assert_eq!(
+            e.to_string(),
+            "profile parameter motion.axes.y.jerk must be a number > 0 (is 0)"
+        );
         let mut d = dynm();
         d.path_tolerance = -1.0;
-        assert!(d
-            .validate()
-            .unwrap_err()
-            .contains("motion.path_tolerance_mm"));
+        assert!(d.validate().unwrap_err().names("motion.path_tolerance_mm"));
         let mut d = dynm();
         d.rapid[0] = f64::NAN;
-        assert!(d.validate().unwrap_err().contains("axes.x.rapid"));
+        assert!(d.validate().unwrap_err().names("axes.x.rapid"));
         assert!(dynm().validate().is_ok());
         let mut d = dynm();
         d.corner.angle_deg = 1.0;
         assert!(d
             .validate()
             .unwrap_err()
-            .contains("motion.corner_override_angle_deg"));
+            .names("motion.corner_override_angle_deg"));
         let mut d = dynm();
         d.corner.factor = 0.0;
         assert!(d
             .validate()
             .unwrap_err()
-            .contains("motion.corner_override_pct"));
+            .names("motion.corner_override_pct"));
         let mut d = dynm();
         d.internal_arc_min = Some(0.0);
         assert!(d
             .validate()
             .unwrap_err()
-            .contains("motion.internal_arc_min_pct"));
+            .names("motion.internal_arc_min_pct"));
         let mut d = dynm();
         d.position_gain = f64::NAN;
-        assert!(d.validate().unwrap_err().contains("motion.position_gain"));
+        assert!(d.validate().unwrap_err().names("motion.position_gain"));
         d.position_gain = -1.0;
-        assert!(d.validate().unwrap_err().contains("motion.position_gain"));
+        assert!(d.validate().unwrap_err().names("motion.position_gain"));
         // An ideal servo is allowed.
         d.position_gain = f64::INFINITY;
         assert!(d.validate().is_ok());

@@ -131,7 +131,7 @@ impl Runtime {
         let e = if super::clock::moved(&from, &to) {
             Some(
                 machine_move(&self.profile, from, to, kind, self.work_shift())
-                    .map_err(|r| self.refuse(op, r))?,
+                    .map_err(|r| self.refuse(op, r.to_string()))?,
             )
         } else {
             None

@@ -45,12 +45,14 @@ mod manual;
 mod mdi;
 mod mode;
 mod moves;
+mod offset_error;
 mod offsets_doc;
 mod ops;
 mod pages;
 mod persist;
 mod program;
 mod restart;
+mod restart_error;
 mod run;
 mod snapshot;
 mod switches;
@@ -170,7 +172,7 @@ pub enum RuntimeError {
     },
     /// Dynamics out of range (kerf-motion's check, naming the parameter).
     #[error("{0}")]
-    Dynamics(String),
+    Dynamics(kerf_motion::DynamicsLimitError),
     /// A time rate outside (0, 10000].
     #[error("rate {0}: must be in (0, 10000]")]
     Rate(f64),

@@ -6,7 +6,7 @@
 //! and stroke checks. The motion's work point is then set to `work_shift`
 //! away (so the screen's work position stays the machine's own).
 
-use kerf_canon::{Axis, Event, Pos, NAXES};
+use kerf_canon::{Alarm, Axis, Event, Pos, NAXES};
 use kerf_interp::{DialectId, Interp, Profile, Settings, Step};
 
 /// How a machine move goes.
@@ -18,6 +18,17 @@ pub(super) enum MoveKind {
     Feed(f64),
 }
 
+/// Why a machine move cannot be made.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub(super) enum MoveError {
+    /// The block made no motion.
+    #[error("no move")]
+    NoMove,
+    /// The move seam's alarm (travel, stroke): its message.
+    #[error("{}", .0.message)]
+    Alarm(Alarm),
+}
+
 /// The motion event from `from` to `to` (machine coordinates); its work
 /// point is machine − `work_shift`. An alarm of the seam (travel) is the
 /// error.
@@ -27,7 +38,7 @@ pub(super) fn machine_move(
     to: Pos,
     kind: MoveKind,
     work_shift: Pos,
-) -> Result<Event, String> {
+) -> Result<Event, MoveError> {
     let mut it = Interp::new(profile.clone(), Settings::default());
     for i in 0..6 {
         it.set_work_offset(i, [0.0; NAXES]);
@@ -62,8 +73,8 @@ pub(super) fn machine_move(
                 return Ok(e);
             }
             Step::Event(_) => {}
-            Step::End => return Err("no move".into()),
-            Step::Alarm(a) => return Err(a.message),
+            Step::End => return Err(MoveError::NoMove),
+            Step::Alarm(a) => return Err(MoveError::Alarm(a)),
         }
     }
 }

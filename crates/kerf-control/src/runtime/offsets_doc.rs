@@ -15,6 +15,7 @@
 use serde_json::{json, Map, Value};
 
 use super::command::{Op, Refusal};
+use super::offset_error::OffsetError;
 use super::pages::OffsetWrite;
 use super::persist::Part;
 use super::Runtime;
@@ -80,9 +81,12 @@ impl Runtime {
     pub fn put_offsets_document(&mut self, doc: &Value) -> Result<(), Refusal> {
         let op = Op::WriteOffset;
         self.check(op)?;
-        let writes = self.writes_of(doc).map_err(|r| self.refuse(op, r))?;
+        let writes = self
+            .writes_of(doc)
+            .map_err(|r| self.refuse(op, r.to_string()))?;
         for w in &writes {
-            self.validate_offset(w).map_err(|r| self.refuse(op, r))?;
+            self.validate_offset(w)
+                .map_err(|r| self.refuse(op, r.to_string()))?;
         }
         for w in writes {
             self.apply_offset(w);
@@ -91,15 +95,17 @@ impl Runtime {
             .map_err(|e| self.refuse(op, e.to_string()))
     }
 
-    fn writes_of(&self, doc: &Value) -> Result<Vec<OffsetWrite>, String> {
-        let top = doc
-            .as_object()
-            .ok_or("the offsets document is a JSON object")?;
-        let num =
-            |v: &Value, what: &str| v.as_f64().ok_or_else(|| format!("{what} must be a number"));
+    fn writes_of(&self, doc: &Value) -> Result<Vec<OffsetWrite>, OffsetError> {
+        let top = doc.as_object().ok_or(OffsetError::NotADocument)?;
+        let num = |v: &Value, what: &str| {
+            v.as_f64()
+                .ok_or_else(|| OffsetError::NotANumber(what.to_string()))
+        };
         let index = |k: &str, page: &str| {
-            k.parse::<usize>()
-                .map_err(|_| format!("[{page}] key '{k}' is not an offset number"))
+            k.parse::<usize>().map_err(|_| OffsetError::BadKey {
+                page: page.to_string(),
+                key: k.to_string(),
+            })
         };
         let lathe = self.profile.kind == kerf_interp::MachineKind::Lathe;
         let xs = if self.interp.diameter_programming() {
@@ -111,7 +117,7 @@ impl Runtime {
         for (k, v) in top {
             let page = v
                 .as_object()
-                .ok_or_else(|| format!("'{k}' must be an object"))?;
+                .ok_or_else(|| OffsetError::PageNotObject(k.clone()))?;
             if let Some(i) = WORK.iter().position(|w| w == k) {
                 for (a, x) in page {
                     out.push(OffsetWrite::Work {
@@ -143,32 +149,32 @@ impl Runtime {
                         out.push(self.lathe_write(index(n, "tool")?, e, xs)?);
                     }
                 }
-                _ => return Err(format!("unknown page '{k}' for this machine")),
+                _ => return Err(OffsetError::UnknownPage(k.clone())),
             }
         }
         Ok(out)
     }
 
-    fn lathe_write(&self, n: usize, e: &Value, xs: f64) -> Result<OffsetWrite, String> {
-        let e = e
-            .as_object()
-            .ok_or_else(|| format!("[tool.{n}] must be an object"))?;
-        let get = |k: &str| -> Result<Option<f64>, String> {
+    fn lathe_write(&self, n: usize, e: &Value, xs: f64) -> Result<OffsetWrite, OffsetError> {
+        let e = e.as_object().ok_or(OffsetError::ToolNotObject(n))?;
+        let get = |k: &str| -> Result<Option<f64>, OffsetError> {
             e.get(k)
                 .map(|v| {
-                    v.as_f64()
-                        .ok_or_else(|| format!("[tool.{n}] {k} must be a number"))
+                    v.as_f64().ok_or_else(|| OffsetError::ToolNotANumber {
+                        n,
+                        key: k.to_string(),
+                    })
                 })
                 .transpose()
         };
         for k in e.keys() {
             if !["x", "z", "r", "tip", "wear_x", "wear_z", "wear_r"].contains(&k.as_str()) {
-                return Err(format!("[tool.{n}] {k}: unknown field"));
+                return Err(OffsetError::ToolUnknownField { n, key: k.clone() });
             }
         }
         let tip = match get("tip")? {
             Some(t) if t.fract() == 0.0 && (0.0..=9.0).contains(&t) => Some(t as u8),
-            Some(t) => return Err(format!("[tool.{n}] tip {t}: tip direction is 0-9")),
+            Some(t) => return Err(OffsetError::ToolTip { n, tip: t }),
             None => None,
         };
         Ok(OffsetWrite::Lathe {

@@ -7,6 +7,7 @@ use kerf_interp::machine::axis_by_name;
 use serde::{Deserialize, Serialize};
 
 use super::command::{Op, Refusal};
+use super::offset_error::OffsetError;
 use super::persist::Part;
 use super::Runtime;
 
@@ -73,11 +74,13 @@ pub struct VarWrite {
     pub value: Option<f64>,
 }
 
-fn check(v: Option<f64>, max: f64, what: &str) -> Result<(), String> {
+fn check(v: Option<f64>, max: f64, what: &'static str) -> Result<(), OffsetError> {
     match v {
-        Some(x) if !x.is_finite() || x.abs() > max => {
-            Err(format!("{what} {x}: the page takes -{max} .. {max} mm"))
-        }
+        Some(x) if !x.is_finite() || x.abs() > max => Err(OffsetError::Range {
+            what,
+            value: x,
+            max,
+        }),
         _ => Ok(()),
     }
 }
@@ -89,7 +92,8 @@ impl Runtime {
     pub fn write_offset(&mut self, w: OffsetWrite) -> Result<(), Refusal> {
         let op = Op::WriteOffset;
         self.check(op)?;
-        self.validate_offset(&w).map_err(|r| self.refuse(op, r))?;
+        self.validate_offset(&w)
+            .map_err(|r| self.refuse(op, r.to_string()))?;
         let part = match w {
             OffsetWrite::Work { .. } => Part::Work,
             _ => Part::Tools,
@@ -153,13 +157,13 @@ impl Runtime {
         }
     }
 
-    pub(super) fn validate_offset(&self, w: &OffsetWrite) -> Result<(), String> {
+    pub(super) fn validate_offset(&self, w: &OffsetWrite) -> Result<(), OffsetError> {
         let count = self.interp.offsets().count();
         let num = |n: usize| {
             if (1..=count).contains(&n) {
                 Ok(())
             } else {
-                Err(format!("offset number {n}: this machine has 1-{count}"))
+                Err(OffsetError::Number { n, count })
             }
         };
         match w {
@@ -186,20 +190,20 @@ impl Runtime {
                     check(*v, MAX_WEAR, "wear")?;
                 }
                 if r.is_some_and(|r| r < 0.0) {
-                    return Err("nose radius must not be negative".into());
+                    return Err(OffsetError::NegativeRadius);
                 }
                 match tip {
-                    Some(t) if *t > 9 => Err(format!("tip {t}: imaginary tip numbers are 0-9")),
+                    Some(t) if *t > 9 => Err(OffsetError::Tip(*t)),
                     _ => Ok(()),
                 }
             }
             OffsetWrite::Work { index, axis, value } => {
                 if *index >= 6 {
-                    return Err(format!("work offset {index}: G54-G59 are 0-5"));
+                    return Err(OffsetError::WorkIndex(*index));
                 }
                 match axis_by_name(&axis.to_ascii_lowercase()) {
                     Some(a) if self.profile.has_axis(a) => {}
-                    _ => return Err(format!("this machine has no axis '{axis}'")),
+                    _ => return Err(OffsetError::NoAxis(axis.clone())),
                 }
                 check(Some(*value), 99_999.999, "work offset")
             }

@@ -14,6 +14,7 @@ use serde::{Deserialize, Serialize};
 use super::command::{Op, Refusal};
 use super::mode::Execution;
 use super::moves::{machine_move, MoveKind};
+use super::restart_error::RestartError;
 use super::snapshot::AxisValues;
 use super::Runtime;
 
@@ -82,7 +83,9 @@ impl Runtime {
             (None, Some(n)) => RestartAt::Sequence(n),
             _ => return Err(self.refuse(op, "give a line or a sequence number")),
         };
-        let target = self.restart_line(at).map_err(|r| self.refuse(op, r))?;
+        let target = self
+            .restart_line(at)
+            .map_err(|r| self.refuse(op, r.to_string()))?;
         let home = self.clock.position(self.clock.t);
         // From the reset state at the program start.
         self.interp.reset();
@@ -101,7 +104,7 @@ impl Runtime {
                 self.interp.reset();
                 self.load_main_program();
                 self.interp.set_machine_position(home);
-                Err(self.refuse(op, r))
+                Err(self.refuse(op, r.to_string()))
             }
         }
     }
@@ -125,49 +128,54 @@ impl Runtime {
         }
     }
 
-    fn restart_line(&self, at: RestartAt) -> Result<u32, String> {
-        let p = self.program.as_ref().ok_or("no program loaded")?;
+    fn restart_line(&self, at: RestartAt) -> Result<u32, RestartError> {
+        let p = self.program.as_ref().ok_or(RestartError::NoProgram)?;
         let l = match at {
             RestartAt::Line(l) => l,
-            RestartAt::Sequence(n) => p
-                .line_of_sequence(n)
-                .ok_or_else(|| format!("no block N{n} in {}", p.name))?,
+            RestartAt::Sequence(n) => {
+                p.line_of_sequence(n)
+                    .ok_or_else(|| RestartError::NoSequence {
+                        n,
+                        name: p.name.clone(),
+                    })?
+            }
         };
         match p.line(l) {
-            None => Err(format!("{} has {} lines, no line {l}", p.name, p.lines())),
-            Some(t) if t.trim().is_empty() => Err(format!("line {l} is empty")),
+            None => Err(RestartError::NoLine {
+                name: p.name.clone(),
+                lines: p.lines(),
+                line: l,
+            }),
+            Some(t) if t.trim().is_empty() => Err(RestartError::EmptyLine(l)),
             Some(_) => Ok(l),
         }
     }
 
     /// Runs the program without motion until the next block read is
     /// `target` in the main program.
-    fn silent_run(&mut self, target: u32) -> Result<Seen, String> {
+    fn silent_run(&mut self, target: u32) -> Result<Seen, RestartError> {
         let mut seen = Seen::default();
         let main = self.interp.next_block_at().map(|n| n.0).unwrap_or(0);
         let mut blocks = 0u64;
         loop {
             let Some((file, line, depth)) = self.interp.next_block_at() else {
-                return Err("no program loaded".into());
+                return Err(RestartError::NoProgram);
             };
             if file == main && line == target {
                 if depth > 0 {
-                    return Err(format!(
-                        "line {target} is reached inside a subprogram or macro call: the control restarts in the main program"
-                    ));
+                    return Err(RestartError::InCall(target));
                 }
                 if self.interp.holds_motion() {
-                    return Err(format!(
-                        "line {target} is inside cutter / nose radius compensation or after a ,C/,R corner: restart at a block before G41/G42 or after G40"
-                    ));
+                    return Err(RestartError::InCompensation(target));
                 }
                 return Ok(seen);
             }
             blocks += 1;
             if blocks > MAX_SILENT_BLOCKS {
-                return Err(format!(
-                    "line {target} not reached in {MAX_SILENT_BLOCKS} blocks"
-                ));
+                return Err(RestartError::NotReached {
+                    line: target,
+                    blocks: MAX_SILENT_BLOCKS,
+                });
             }
             let step = self.interp.step_block();
             while let Some(e) = self.interp.take_event() {
@@ -182,25 +190,25 @@ impl Runtime {
                 BlockStep::Block => {
                     if let Some((f, l, 0)) = self.interp.next_block_at() {
                         if depth == 0 && file == main && f == main && line < target && l > target {
-                            return Err(format!(
-                                "line {target} is not executed as a block of its own (inside a G70-G73 shape, or jumped over)"
-                            ));
+                            return Err(RestartError::NotABlock(target));
                         }
                     }
                 }
-                BlockStep::End => return Err(format!("the program ends before line {target}")),
+                BlockStep::End => return Err(RestartError::EndsBefore(target)),
                 BlockStep::Alarm(a) => {
-                    return Err(format!(
-                        "the program alarms at line {} before line {target}: {} {}",
-                        a.src.line, a.code, a.message
-                    ))
+                    return Err(RestartError::AlarmBefore {
+                        at: a.src.line,
+                        line: target,
+                        code: a.code,
+                        message: a.message,
+                    })
                 }
             }
         }
     }
 
     /// The re-entry from the machine position `home` to the block start.
-    fn reentry(&self, line: u32, home: Pos, seen: Seen) -> Result<RestartPlan, String> {
+    fn reentry(&self, line: u32, home: Pos, seen: Seen) -> Result<RestartPlan, RestartError> {
         let it = &self.interp;
         let target = it.machine_position();
         let legs = self.reentry_legs(home, target);

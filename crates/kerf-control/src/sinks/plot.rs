@@ -5,7 +5,9 @@
 //! colour per tool, holes and plunges as rings, the alarm point as a red
 //! cross, a legend beside the drawing. HX G112 contours are drawn on the
 //! part's face (X and C as the Cartesian point), G107 moves in a panel of
-//! their own on the developed surface (Z or Y against C in degrees).
+//! their own on the developed surface (Z or Y against C unrolled to mm:
+//! the arc length C·π·r/180 on the cylinder of radius r). Both modes are
+//! read from the `ModeChange::Rotary` events.
 //!
 //! - [`drawing`]: the shapes, collected and bounded by the picture;
 //! - [`layout`]: the pixel geometry (areas, scale, ticks);
@@ -21,7 +23,7 @@ pub mod svg;
 use std::io::{self, Write};
 use std::path::Path;
 
-use kerf_canon::{Alarm, Axis, Event, Pos};
+use kerf_canon::{Alarm, Canon, Event, ModeChange, Pos};
 use kerf_interp::MachineKind;
 
 use crate::sink::{Context, Sink};
@@ -53,12 +55,9 @@ pub struct Plot<W: Write> {
     out: W,
     format: PlotFormat,
     drawing: Drawing,
-    /// The machine has a C axis (G112 / G107 possible).
-    has_c: bool,
+    /// The rotary interpolation in force, from the last
+    /// `ModeChange::Rotary` event.
     rot: Rot,
-    /// The last motion was a feed (not a rapid): the mode can only have
-    /// changed where C turns.
-    feeding: bool,
 }
 
 impl<W: Write> Plot<W> {
@@ -73,36 +72,8 @@ impl<W: Write> Plot<W> {
             out,
             format,
             drawing: Drawing::new(MachineKind::Mill),
-            has_c: false,
             rot: Rot::Off,
-            feeding: false,
         }
-    }
-
-    /// The rotary interpolation the motion `e` is made in. The modal
-    /// codes are read only for a motion that turns C, the first feed
-    /// after a rapid (G112 allows no rapid) or while a mode is in force,
-    /// so a program without G112/G107 pays about one comparison a move.
-    fn rot(&mut self, e: &Event, from: &Pos, cx: &Context) -> Rot {
-        if self.drawing.kind() != MachineKind::Mill || !self.has_c {
-            return Rot::Off;
-        }
-        let Some(m) = e.motion() else {
-            return self.rot;
-        };
-        const C: usize = Axis::C as usize;
-        let first_feed = !self.feeding && !matches!(e.cmd, kerf_canon::Canon::Rapid { .. });
-        self.feeding = !matches!(e.cmd, kerf_canon::Canon::Rapid { .. });
-        if self.rot == Rot::Off && !first_feed && (m.to[C] - from[C]).abs() < 1e-9 {
-            return Rot::Off;
-        }
-        self.rot = match cx.interp.rotary_interpolation() {
-            Some((true, _)) => Rot::Polar,
-            Some((false, kerf_canon::Plane::XY)) => Rot::CylCy,
-            Some((false, _)) => Rot::CylZc,
-            None => Rot::Off,
-        };
-        self.rot
     }
 }
 
@@ -141,15 +112,15 @@ impl<W: Write> Sink for Plot<W> {
     fn start(&mut self, cx: &Context) -> io::Result<()> {
         let p = cx.interp.profile();
         self.drawing = Drawing::new(p.kind);
-        self.has_c = p.has_axis(Axis::C);
         self.rot = Rot::Off;
         Ok(())
     }
 
-    fn event(&mut self, e: &Event, from: &Pos, cx: &Context) -> io::Result<()> {
-        if e.motion().is_some() {
-            let rot = self.rot(e, from, cx);
-            self.drawing.add(e, from, rot);
+    fn event(&mut self, e: &Event, from: &Pos, _cx: &Context) -> io::Result<()> {
+        match e.cmd {
+            Canon::Mode(ModeChange::Rotary(m)) => self.rot = m,
+            _ if e.motion().is_some() => self.drawing.add(e, from, self.rot),
+            _ => {}
         }
         Ok(())
     }

@@ -74,10 +74,42 @@ fn timed_kind(e: &Event) -> bool {
     e.motion().is_some() || matches!(e.cmd, Canon::Dwell { .. })
 }
 
+/// A `--stock` that does not suit the machine.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum StockError {
+    /// A box side outside the X or Y travel (machine coordinates at the
+    /// first work offset).
+    #[error("--stock: {axis} {min}..{max} is machine {lo}..{hi}, outside the {axis} travel {travel_min}..{travel_max}")]
+    Travel {
+        /// `X` or `Y`.
+        axis: String,
+        /// The box side as given (work coordinates).
+        min: f64,
+        max: f64,
+        /// The same in machine coordinates.
+        lo: f64,
+        hi: f64,
+        /// The axis travel.
+        travel_min: f64,
+        travel_max: f64,
+    },
+    /// A bar or tube wider than the lathe's X travel allows.
+    #[error(
+        "--stock: diameter {diameter} is more than the X travel allows ({radius} mm of radius)"
+    )]
+    Diameter { diameter: f64, radius: f64 },
+    /// A box on a lathe (`machine` names it).
+    #[error("--stock box: is a machining center stock; {0} is a lathe (bar: or tube:)")]
+    BoxOnLathe(String),
+    /// A bar or tube on a machining center.
+    #[error("--stock bar:/tube: is a lathe stock; {0} is a machining center (box:)")]
+    TurnOnMill(String),
+}
+
 /// Checks that the stock suits the machine: a box on the machining
 /// center, within the X/Y travel at the first work offset; a bar or tube
 /// on a lathe, its radius within the X travel.
-pub fn check_stock(stock: &Stock, p: &Profile) -> Result<(), String> {
+pub fn check_stock(stock: &Stock, p: &Profile) -> Result<(), StockError> {
     match (stock, p.kind) {
         (Stock::Box { min, max }, MachineKind::Mill) => {
             let origin = p.work_offsets.values().next();
@@ -90,35 +122,28 @@ pub fn check_stock(stock: &Stock, p: &Profile) -> Result<(), String> {
                 };
                 let (lo, hi) = (min[i] + o, max[i] + o);
                 if lo < ax.min - 1e-9 || hi > ax.max + 1e-9 {
-                    return Err(format!(
-                        "--stock: {} {}..{} is machine {lo}..{hi}, outside the {} travel {}..{}",
-                        name.to_uppercase(),
-                        min[i],
-                        max[i],
-                        name.to_uppercase(),
-                        ax.min,
-                        ax.max
-                    ));
+                    return Err(StockError::Travel {
+                        axis: name.to_uppercase(),
+                        min: min[i],
+                        max: max[i],
+                        lo,
+                        hi,
+                        travel_min: ax.min,
+                        travel_max: ax.max,
+                    });
                 }
             }
             Ok(())
         }
         (Stock::Turn { r_out, .. }, MachineKind::Lathe) => match p.axes.get("x") {
-            Some(ax) if 2.0 * r_out > 2.0 * (ax.max - ax.min) => Err(format!(
-                "--stock: diameter {} is more than the X travel allows ({} mm of radius)",
-                2.0 * r_out,
-                ax.max - ax.min
-            )),
+            Some(ax) if 2.0 * r_out > 2.0 * (ax.max - ax.min) => Err(StockError::Diameter {
+                diameter: 2.0 * r_out,
+                radius: ax.max - ax.min,
+            }),
             _ => Ok(()),
         },
-        (Stock::Box { .. }, MachineKind::Lathe) => Err(format!(
-            "--stock box: is a machining center stock; {} is a lathe (bar: or tube:)",
-            p.name
-        )),
-        (Stock::Turn { .. }, MachineKind::Mill) => Err(format!(
-            "--stock bar:/tube: is a lathe stock; {} is a machining center (box:)",
-            p.name
-        )),
+        (Stock::Box { .. }, MachineKind::Lathe) => Err(StockError::BoxOnLathe(p.name.clone())),
+        (Stock::Turn { .. }, MachineKind::Mill) => Err(StockError::TurnOnMill(p.name.clone())),
     }
 }
 

@@ -50,7 +50,11 @@ export function serve(args, env = {}) {
           url: m[1],
           proc,
           log: () => err,
-          stop: () => new Promise((res) => { proc.once('exit', res); proc.kill('SIGTERM'); }),
+          stop: () => new Promise((res) => {
+            if (proc.exitCode !== null || proc.signalCode !== null) return res();
+            proc.once('exit', res);
+            proc.kill('SIGTERM');
+          }),
         });
       }
     });

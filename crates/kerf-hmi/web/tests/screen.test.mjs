@@ -28,6 +28,16 @@ writeFileSync(join(work, 'long.nc'), LONG);
 writeFileSync(join(work, 'alarm.nc'), ALARM);
 
 let server, ctx, page;
+// Servers a test starts besides the main one: stopped in after() when a
+// failed test left them running.
+const extra = new Set();
+async function serveExtra(args) {
+  const s = await serve(args);
+  extra.add(s);
+  const stop = s.stop;
+  s.stop = () => { extra.delete(s); return stop(); };
+  return s;
+}
 
 async function api(path, init) {
   const r = await fetch(new URL(path, server.url), init);
@@ -35,19 +45,71 @@ async function api(path, init) {
 }
 const cmd = (body) => api('/api/command', { method: 'POST', body: JSON.stringify(body) });
 
-async function until(what, f, ms = 15000) {
+// Every check of the screen or the state after a change waits for the
+// condition (polled, bounded) instead of reading once or sleeping: the
+// screen follows the API by one push of the stream, and a loaded machine
+// may be slow by seconds.
+async function until(what, f, ms = 20000) {
   const t0 = Date.now();
+  let last;
   for (;;) {
-    const v = await f();
-    if (v) return v;
-    if (Date.now() - t0 > ms) throw new Error(`timed out waiting for ${what}`);
+    last = await f();
+    if (last) return last;
+    if (Date.now() - t0 > ms) throw new Error(`timed out after ${ms} ms waiting for ${what}`);
     await new Promise((r) => setTimeout(r, 50));
   }
 }
 
-const shown = (id) => page.$eval(`#${id}`, (e) => e.textContent);
-const pageState = () => page.evaluate(() => window.kerf.state);
-const shot = (name) => page.screenshot({ path: join(shots, `${name}.png`) });
+const shown = (id, p = page) => p.$eval(`#${id}`, (e) => e.textContent);
+const pageState = (p = page) => p.evaluate(() => window.kerf.state);
+const shot = (name, p = page) => p.screenshot({ path: join(shots, `${name}.png`) });
+
+/** Waits until the element `id` shows `want` (a string or a RegExp); resolves to the text. */
+function untilShown(id, want, p = page) {
+  const ok = (t) => (want instanceof RegExp ? want.test(t) : t === want);
+  return until(`#${id} to show ${want}`, async () => {
+    const t = await shown(id, p).catch(() => null);
+    return t !== null && ok(t) ? t : null;
+  });
+}
+
+/**
+ * Presses a mode key and waits until the API and the screen are in that
+ * mode (two clicks are two requests: the next must not overtake it).
+ */
+async function mode(m, p = page) {
+  await p.click(`[data-mode=${m}]`);
+  await until(`mode ${m}`, async () => (await api('/api/state')).mode === m
+    && (await pageState(p)).mode === m);
+}
+
+/** Presses a switch key and waits until the API and the key show `on`. */
+async function setSwitch(name, on) {
+  const lit = () => page.$eval(`[data-switch=${name}]`, (e) => e.classList.contains('on'));
+  if ((await lit()) === on && (await api('/api/state')).switches[name] === on) return;
+  await page.click(`[data-switch=${name}]`);
+  await until(`${name} ${on ? 'on' : 'off'}`, async () => (await api('/api/state')).switches[name] === on
+    && (await lit()) === on);
+}
+
+/** Waits until GRAPH has drawn a frame after `before` frames; resolves to the count. */
+function frameAfter(before, p = page) {
+  return until('a frame drawn', () => p.evaluate((b) => window.kerf.graph && window.kerf.graph.frames > b && window.kerf.graph.frames, before));
+}
+
+/** Asks GRAPH for a frame of what it holds now and waits until it is drawn. */
+async function redrawn(p = page) {
+  const before = await p.evaluate(() => { const g = window.kerf.graph; const n = g.frames; g.render(); return n; });
+  return frameAfter(before, p);
+}
+
+/** Waits until the program `name` is loaded and its backplot complete. */
+function loadedAndTraced(name) {
+  return until(`${name} loaded and traced`, async () => {
+    const s = await api('/api/state');
+    return s.program.name === name && s.path.done ? s : null;
+  });
+}
 
 async function open(url) {
   page = await ctx.newPage();
@@ -63,6 +125,7 @@ before(async () => {
 });
 
 after(async () => {
+  for (const s of [...extra]) await s.stop();
   if (ctx) await ctx.cleanup();
   if (server) await server.stop();
   rmSync(work, { recursive: true, force: true });
@@ -72,23 +135,20 @@ test('a program loaded from the PROG page is listed', async () => {
   await page.click('[data-show=prog]');
   await page.setInputFiles('#prog-file', join(work, 'long.nc'));
   await until('the listing', async () => (await page.$$('#prog-list li')).length === 8);
-  assert.equal(await shown('prog-total'), '8 LINES');
+  await untilShown('prog-total', '8 LINES');
   assert.equal(await page.$eval('#prog-list li[data-n="5"]', (e) => e.textContent), 'G01 X100. F300.');
-  const s = await api('/api/state');
-  assert.equal(s.program.name, 'long.nc');
+  await until('the state to name the program', async () => (await api('/api/state')).program.name === 'long.nc');
 });
 
 test('cycle start moves the tool and highlights the block', async () => {
-  await page.click('[data-mode=MEM]');
+  await mode('MEM');
   await page.click('[data-show=pos]');
   await page.click('#cycle-start');
   await until('ACTIVE', async () => (await pageState()).execution === 'ACTIVE');
   await until('the long feed', async () => (await pageState()).program.line === 5);
   const x1 = Number(await shown('pos-work-X'));
-  await page.waitForTimeout(600);
-  const x2 = Number(await shown('pos-work-X'));
-  // F300 is 5 mm/s: 0.6 s moves about 3 mm.
-  assert.ok(x2 > x1 + 1, `X did not move on the screen: ${x1} → ${x2}`);
+  // F300 is 5 mm/s: the 100 mm feed takes 20 s; the screen's X grows.
+  await until(`X to move on the screen from ${x1}`, async () => Number(await shown('pos-work-X')) > x1 + 1);
   await shot('pos-running');
   await page.click('[data-show=prog]');
   await until('the highlighted block', async () => {
@@ -103,37 +163,47 @@ test('feed hold stops mid-move and the screen shows the API position', async () 
   await page.click('#feed-hold');
   await until('FEED_HOLD', async () => (await api('/api/state')).execution === 'FEED_HOLD');
   // FEED_HOLD starts with the deceleration on the path; the axes have
-  // stopped when two reads 300 ms apart agree.
+  // stopped when the path speed is 0 and X stays put over 0.2 s of
+  // machine time (machine time, not wall time: a stalled server is not
+  // taken for a stopped axis).
   const b = await until('the axes to stop', async () => {
     const a = await api('/api/state');
-    await page.waitForTimeout(300);
-    const b = await api('/api/state');
-    return a.position.work.X === b.position.work.X && b.execution === 'FEED_HOLD' ? b : null;
+    const b = await until('0.2 s of machine time', async () => {
+      const x = await api('/api/state');
+      return x.t >= a.t + 0.2 ? x : null;
+    });
+    return a.position.work.X === b.position.work.X && b.feed.actual === 0 && b.execution === 'FEED_HOLD' ? b : null;
   });
   assert.ok(b.position.work.X > 0 && b.position.work.X < 100, `not mid-move: X${b.position.work.X}`);
   await page.click('[data-show=pos]');
-  await until('the screen to settle', async () => (await pageState()).execution === 'FEED_HOLD');
-  await page.waitForTimeout(100);
+  await untilShown('st-exec', 'FEED HOLD');
+  // The screen reaches the held position one push after the API.
+  const want = (ax) => [b.position.work[ax].toFixed(3), b.position.machine[ax].toFixed(3)];
+  await until('the screen to show the held position', async () => {
+    for (const ax of ['X', 'Y', 'Z']) {
+      const [w, m] = want(ax);
+      if ((await shown(`pos-work-${ax}`)) !== w || (await shown(`pos-machine-${ax}`)) !== m) return false;
+    }
+    return true;
+  });
   for (const ax of ['X', 'Y', 'Z']) {
-    assert.equal(await shown(`pos-work-${ax}`), b.position.work[ax].toFixed(3), `ABSOLUTE ${ax}`);
-    assert.equal(await shown(`pos-machine-${ax}`), b.position.machine[ax].toFixed(3), `MACHINE ${ax}`);
+    assert.equal(await shown(`pos-work-${ax}`), want(ax)[0], `ABSOLUTE ${ax}`);
+    assert.equal(await shown(`pos-machine-${ax}`), want(ax)[1], `MACHINE ${ax}`);
   }
-  assert.equal(await shown('st-exec'), 'FEED HOLD');
   await shot('pos-feed-hold');
   // Resume, then RESET stops everything.
   await page.click('#cycle-start');
   await until('ACTIVE again', async () => (await api('/api/state')).execution === 'ACTIVE');
   const x3 = (await api('/api/state')).position.work.X;
-  await page.waitForTimeout(400);
-  assert.ok((await api('/api/state')).position.work.X > x3, 'resume did not move');
+  await until('the resumed feed to move X', async () => (await api('/api/state')).position.work.X > x3);
   await page.click('#reset');
-  await until('READY after reset', async () => (await api('/api/state')).execution === 'READY');
+  await until('READY after reset', async () => (await api('/api/state')).execution === 'READY'
+    && (await pageState()).execution === 'READY');
 });
 
 test('single block stops after one block', async () => {
   await cmd({ cmd: 'override', rapid: 100 });
-  await page.click('[data-switch=single_block]');
-  await until('the switch lit', async () => page.$eval('[data-switch=single_block]', (e) => e.classList.contains('on')));
+  await setSwitch('single_block', true);
   await page.click('#cycle-start');
   await until('INTERRUPTED', async () => (await api('/api/state')).execution === 'INTERRUPTED', 20000);
   const s = await api('/api/state');
@@ -141,14 +211,17 @@ test('single block stops after one block', async () => {
   // the block shown is the last one the axes finished, none yet or line 3).
   assert.ok(s.program.line <= 3, `stopped at line ${s.program.line}`);
   // The screen follows the API by one push of the stream (20 Hz or more).
-  await until('the screen to show INTERRUPTED', async () => (await shown('st-exec')) === 'INTERRUPTED', 2000);
-  await page.click('[data-switch=single_block]');
+  await untilShown('st-exec', 'INTERRUPTED');
+  // The switch off and the machine reset before the next test, each
+  // waited for (two clicks are two requests).
+  await setSwitch('single_block', false);
   await page.click('#reset');
-  await until('READY', async () => (await api('/api/state')).execution === 'READY');
+  await until('READY', async () => (await api('/api/state')).execution === 'READY'
+    && (await pageState()).execution === 'READY');
 });
 
 test('MDI runs a block typed on the MDI page', async () => {
-  await page.click('[data-mode=MDI]');
+  await mode('MDI');
   await page.click('[data-show=mdi]');
   const before = (await api('/api/state')).position.work;
   // Away from the +X/+Y travel ends (the machine may stand at its
@@ -163,13 +236,15 @@ test('MDI runs a block typed on the MDI page', async () => {
   const s = await api('/api/state');
   assert.ok(Math.abs(s.position.work.Y - (before.Y - 3)) < 1e-6, `Y ${s.position.work.Y}`);
   assert.ok(s.modal.includes('G91'));
+  await untilShown('mdi-status', 'EXECUTED');
+  await until('the MDI page to show G91', async () => (await shown('mdi-modal')).includes('G91'));
   await shot('mdi');
   await cmd({ cmd: 'mdi', block: 'G90' });
   await until('G90', async () => (await api('/api/state')).modal.includes('G90'));
 });
 
 test('an offset written on the OFFSET page is kept across a restart of the server', async () => {
-  await page.click('[data-mode=EDIT]');
+  await mode('EDIT');
   await page.click('[data-show=offset]');
   await page.waitForSelector('#ofs-h-3');
   await page.fill('#ofs-h-3', '123.456');
@@ -178,8 +253,11 @@ test('an offset written on the OFFSET page is kept across a restart of the serve
   assert.equal((await api('/api/offsets')).h['3'], 123.456);
   await shot('offset');
   await page.click('[data-tab=work]');
+  await until('the WORK table', async () => page.$eval('#ofs-work', (e) => !e.hidden && !!e.querySelector('#ofs-g54-x')));
   await shot('offset-work');
   await page.click('[data-tab=setting]');
+  // The parameters are read after the switches: the table then has PARAM rows.
+  await untilShown('ofs-setting', /SINGLE BLOCK.*PARAM /s);
   await shot('setting');
   await page.click('[data-tab=tool]');
   // The same --state folder, a new server process.
@@ -189,44 +267,42 @@ test('an offset written on the OFFSET page is kept across a restart of the serve
   await page.close();
   await open(server.url);
   await page.click('[data-show=offset]');
-  await page.waitForSelector('#ofs-h-3');
-  assert.equal(await page.$eval('#ofs-h-3', (e) => e.value), '123.456');
+  await until('the kept offset on the page', async () => (await page.$eval('#ofs-h-3', (e) => e.value).catch(() => null)) === '123.456');
 });
 
 test('an alarm is shown with its code, line and block', async () => {
-  await page.click('[data-mode=EDIT]');
+  await mode('EDIT');
   await page.click('[data-show=prog]');
   await page.setInputFiles('#prog-file', join(work, 'alarm.nc'));
   await until('loaded', async () => (await api('/api/state')).program.name === 'alarm.nc');
-  await page.click('[data-mode=MEM]');
+  await mode('MEM');
   await page.click('#cycle-start');
   await until('the alarm', async () => (await api('/api/state')).alarm);
   await page.click('[data-show=alarm]');
-  await until('ALARM page', async () => (await shown('alarm-current')).includes('F_84020'));
-  const text = await shown('alarm-current');
+  const text = await untilShown('alarm-current', /F_84020/);
   assert.match(text, /alarm\.nc:3:1/);
-  assert.match(await shown('alarm-block'), /^3: G01 X10\./);
-  await until('the history row', async () => (await page.$$('#alarm-history tbody tr')).length >= 1);
-  assert.match(await page.$eval('#alarm-history tbody', (e) => e.textContent), /F_84020/);
-  assert.match(await shown('st-alarm'), /F_84020/);
+  await untilShown('alarm-block', /^3: G01 X10\./);
+  await until('the history row', async () => /F_84020/.test(await page.$eval('#alarm-history tbody', (e) => e.textContent)));
+  await untilShown('st-alarm', /F_84020/);
   await shot('alarm');
   await page.click('#reset');
-  await until('cleared', async () => (await api('/api/state')).alarm === null);
+  await until('cleared', async () => (await api('/api/state')).alarm === null && (await pageState()).alarm === null);
 });
 
 test('GRAPH draws the planned path and the tool', async () => {
-  await page.click('[data-mode=EDIT]');
+  await mode('EDIT');
   await page.click('[data-show=prog]');
   await page.setInputFiles('#prog-file', join(work, 'long.nc'));
-  await until('loaded', async () => (await api('/api/state')).path.done);
+  // The path of the program loaded before is done too: wait for this one's.
+  const s = await loadedAndTraced('long.nc');
   await page.click('[data-show=graph]');
-  const s = await api('/api/state');
   await until('all points', async () => page.evaluate((n) => window.kerf.graph && window.kerf.graph.points === n, s.path.points));
   // Start, rapid, three feeds, rapid: 6 points.
   assert.equal(s.path.points, 6);
   for (const v of ['iso', 'top', 'front', 'side']) {
+    const frames = await page.evaluate(() => window.kerf.graph.frames);
     await page.click(`[data-view=${v}]`);
-    await page.waitForTimeout(150);
+    await frameAfter(frames);
     // Something other than the background is drawn.
     const lit = await page.evaluate(() => {
       const c = document.querySelector('#graph-view canvas');
@@ -246,8 +322,9 @@ test('GRAPH draws the planned path and the tool', async () => {
 
 test('a click on the path selects its block in PROG; the executing block is drawn on the path', async () => {
   await page.click('[data-show=graph]');
+  const frames = await page.evaluate(() => window.kerf.graph.frames);
   await page.click('[data-view=top]');
-  await page.waitForTimeout(150);
+  await frameAfter(frames);
   // The pixel of a work point in the view, from the page's own camera.
   const pixel = (x, y, z) => page.evaluate(([x, y, z]) => {
     const g = window.kerf.graph;
@@ -265,10 +342,10 @@ test('a click on the path selects its block in PROG; the executing block is draw
   // One segment drawn for the selection: two vertices.
   assert.equal(await page.evaluate(() => window.kerf.graph.hlSelected.geometry.drawRange.count), 2);
   await shot('graph-selected');
-  await page.click('[data-mode=MEM]');
+  await mode('MEM');
   await page.click('[data-show=prog]');
   await until('the selected line', async () => (await page.$eval('#prog-list li.selected', (e) => e.dataset.n).catch(() => null)) === '6');
-  assert.equal(await page.$eval('#restart-line', (e) => e.value), '6');
+  await until('RESTART N set', async () => (await page.$eval('#restart-line', (e) => e.value)) === '6');
   await shot('prog-selected');
   // The reverse: a line clicked on PROG is drawn on the path.
   await page.click('#prog-list li[data-n="5"]');
@@ -279,10 +356,11 @@ test('a click on the path selects its block in PROG; the executing block is draw
   await page.click('[data-show=graph]');
   await until('the current block drawn', async () => page.evaluate(() => window.kerf.graph.hlCurrent.shownLine === 5
     && window.kerf.graph.hlCurrent.geometry.drawRange.count === 2));
-  await page.waitForTimeout(300);
+  await redrawn();
   await shot('graph-running');
   await page.click('#reset');
-  await until('reset', async () => (await pageState()).execution !== 'ACTIVE');
+  await until('reset', async () => (await api('/api/state')).execution === 'READY'
+    && (await pageState()).execution === 'READY');
 });
 
 test('ORIGIN and PRESET set the RELATIVE counters per axis', async () => {
@@ -292,7 +370,8 @@ test('ORIGIN and PRESET set the RELATIVE counters per axis', async () => {
   await until('Y preset', async () => (await shown('pos-relative-Y')) === '12.500');
   await page.fill('#rel-entry', 'X');
   await page.click('#rel-origin');
-  await until('X zeroed', async () => (await shown('pos-relative-X')) === '0.000');
+  await untilShown('pos-relative-X', '0.000');
+  await until('the entry cleared by the answer', async () => (await page.$eval('#rel-entry', (e) => e.value)) === '');
   const s = await api('/api/state');
   assert.equal(s.position.relative.X, 0);
   assert.equal(s.position.relative.Y, 12.5);
@@ -343,17 +422,38 @@ test('every page of the other skins (PUMA, Hurco)', async () => {
     'hurco-lathe': join(repo, 'examples/hurco/g78_straight_od.nc'),
   };
   for (const m of ['puma-lathe', 'hurco-lathe']) {
-    const s = await serve([programs[m], '--machine', m, '--rate', '5']);
+    const s = await serveExtra([programs[m], '--machine', m, '--rate', '5']);
     const p2 = await ctx.newPage();
+    p2.on('pageerror', (e) => { throw e; });
     await p2.goto(s.url);
     await p2.waitForFunction(() => window.kerf && window.kerf.state);
     assert.equal(await p2.evaluate(() => document.body.className), m === 'hurco-lathe' ? 'hurco' : 'fanuc');
-    // Run it a little so the pages show a program under way.
+    const st = () => p2.evaluate(() => window.kerf.state);
+    // Run it a little so the pages show a program under way: a few
+    // blocks in (or its end, for a short program), the path traced.
+    if ((await st()).mode !== 'MEM') {
+      await p2.click('[data-mode=MEM]');
+      await until('MEM', async () => (await st()).mode === 'MEM');
+    }
     await p2.click('#cycle-start');
-    await p2.waitForTimeout(1500);
+    await until('the program under way', async () => {
+      const x = await st();
+      return x.path.done && (x.program.line >= 5 || x.execution === 'PROGRAM_COMPLETED');
+    });
+    // Each page drawn before its picture: its own content there.
+    const ready = {
+      pos: () => p2.$eval('#pos-work', (e) => e.rows.length > 0),
+      prog: () => p2.$eval('#prog-list', (e) => e.children.length > 0),
+      mdi: () => p2.$eval('#mdi-modal', (e) => e.children.length > 0),
+      offset: () => p2.$eval('#ofs-tool', (e) => !!e.querySelector('input')),
+      alarm: () => p2.$eval('#alarm-current', (e) => e.textContent.length > 0),
+      graph: () => p2.evaluate(() => !!window.kerf.graph && window.kerf.graph.done && window.kerf.graph.frames > 0),
+    };
     for (const pg of ['pos', 'prog', 'mdi', 'offset', 'alarm', 'graph']) {
       await p2.click(`[data-show=${pg}]`);
-      await p2.waitForTimeout(150);
+      await until(`${m} ${pg} drawn`, ready[pg]);
+      if (pg === 'graph') await redrawn(p2);
+      else await p2.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
       await p2.screenshot({ path: join(shots, `${m}-${pg}.png`) });
     }
     await p2.close();
@@ -363,14 +463,15 @@ test('every page of the other skins (PUMA, Hurco)', async () => {
 
 test('GRAPH shows the simulated part with --stock', async () => {
   const repo = join(here, '..', '..', '..', '..');
-  const s = await serve([join(repo, 'examples/hx/contour.nc'), '--machine', 'hx-mc', '--stock', 'box:-20,-20,-5,70,70,0']);
+  const s = await serveExtra([join(repo, 'examples/hx/contour.nc'), '--machine', 'hx-mc', '--stock', 'box:-20,-20,-5,70,70,0']);
   const p2 = await ctx.newPage();
+  p2.on('pageerror', (e) => { throw e; });
   await p2.goto(`${s.url}#graph`);
   await p2.waitForFunction(() => window.kerf && window.kerf.graph && window.kerf.graph.partTriangles > 0, null, { timeout: 90000 });
   const n = await p2.evaluate(() => window.kerf.graph.partTriangles);
   const stl = await (await fetch(new URL('/api/part.stl', s.url))).arrayBuffer();
   assert.equal(n, new DataView(stl).getUint32(80, true));
-  await p2.waitForTimeout(300);
+  await redrawn(p2);
   await p2.screenshot({ path: join(shots, 'graph-part.png') });
   await p2.close();
   await s.stop();

@@ -162,7 +162,7 @@ impl Interp {
                 }
             }
             Phase::Frames => {
-                let rdata = self.rotary_interp_codes()?;
+                let rdata = self.rotary_codes_and_event()?;
                 b.xdata = self.transform_codes(b.one_shot())? || rdata;
             }
             Phase::ToolLength => self.tool_length_codes()?,

@@ -197,22 +197,6 @@ impl Interp {
         Ok(())
     }
 
-    /// The rotary-axis interpolation in force, read from the modal state
-    /// without building the modal page: `Some((true, _))` for G112 polar
-    /// coordinate interpolation, `Some((false, plane))` for G107
-    /// cylindrical interpolation in `plane`, `None` for neither. Cheap
-    /// enough for a sink to ask on every move.
-    pub fn rotary_interpolation(&self) -> Option<(bool, kerf_canon::Plane)> {
-        let m = &self.st.modal;
-        if m.polar_interp.means {
-            Some((true, m.plane.means))
-        } else if m.cylindrical.means {
-            Some((false, m.plane.means))
-        } else {
-            None
-        }
-    }
-
     /// The G codes in force, one per modal group in group order, as the
     /// control's modal page prints them (`G01`, `G17`, `G54`, `G84.2`).
     pub fn modal_codes(&self) -> Vec<String> {

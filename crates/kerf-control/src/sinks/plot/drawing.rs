@@ -1,5 +1,6 @@
 //! The shapes of a plot, collected from the motions in view coordinates
-//! (u to the right, v up, mm or degrees) and bounded by the picture.
+//! (u to the right, v up, mm; G107's C developed to mm on its cylinder)
+//! and bounded by the picture.
 //!
 //! Every shape is snapped to a grid of `quantum` mm for its key and a
 //! shape already kept at that grid is not kept again; runs of lines too
@@ -12,7 +13,7 @@
 use std::collections::HashSet;
 use std::f64::consts::PI;
 
-use kerf_canon::{ArcDir, Canon, Event, Plane, Pos};
+use kerf_canon::{ArcDir, Canon, Event, Plane, Pos, RotaryMode};
 use kerf_interp::MachineKind;
 
 /// Most shapes kept in the main panel (each at most a few dozen bytes of
@@ -26,20 +27,12 @@ pub const MAX_DEV_SHAPES: usize = 20_000;
 pub const FIRST_QUANTUM: f64 = 1e-4;
 
 /// The rotary-axis interpolation a motion was made in (HX G112 / G107),
-/// as the sink reads it from the interpreter's modal codes.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Rot {
-    /// Neither: the ordinary view.
-    #[default]
-    Off,
-    /// G112: X (signed radius) and C (degrees) drawn as the Cartesian
-    /// contour on the part's face, C0 along +X.
-    Polar,
-    /// G107 in G18: the developed surface, Z to the right, C (degrees) up.
-    CylZc,
-    /// G107 in G17: the developed surface, C (degrees) to the right, Y up.
-    CylCy,
-}
+/// as the event stream reports it (`ModeChange::Rotary`): `Off` draws the
+/// ordinary view; `Polar` draws X (signed radius) and C (degrees) as the
+/// Cartesian contour on the part's face, C0 along +X; `Cylinder` draws
+/// the developed surface in a panel of its own, C as the arc length
+/// C·π·r/180 mm (G18: Z to the right, C up; G17: C to the right, Y up).
+pub type Rot = RotaryMode;
 
 /// Which panel of the picture.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -60,8 +53,8 @@ impl View {
         match self {
             View::MillXy => ("X mm", "Y mm"),
             View::LatheZx => ("Z mm", "X mm"),
-            View::DevZc => ("Z mm", "C deg"),
-            View::DevCy => ("C deg", "Y mm"),
+            View::DevZc => ("Z mm", "C mm"),
+            View::DevCy => ("C mm", "Y mm"),
         }
     }
 
@@ -70,7 +63,7 @@ impl View {
         match self {
             View::MillXy => "XY view, work coordinates",
             View::LatheZx => "ZX half-section, work coordinates, X a radius",
-            View::DevZc | View::DevCy => "G107 cylindrical interpolation: the developed surface",
+            View::DevZc | View::DevCy => "G107: the developed surface, C as arc length",
         }
     }
 }
@@ -147,6 +140,8 @@ pub struct Panel {
     pending: Option<Shape>,
     /// Shapes drawn in G112 (the title says so).
     pub polar: bool,
+    /// The smallest and largest G107 cylinder radius drawn here, mm.
+    pub radius: Option<(f64, f64)>,
     /// The end of the first rapid (the extent when nothing else is).
     start: Option<(f64, f64)>,
 }
@@ -166,6 +161,7 @@ impl Panel {
             cut_max: (f64::MIN, f64::MIN),
             pending: None,
             polar: false,
+            radius: None,
             start: None,
         }
     }
@@ -350,8 +346,13 @@ impl Drawing {
                 let c = p[C].to_radians();
                 (0, (p[0] * c.cos(), p[0] * c.sin()))
             }
-            (MachineKind::Mill, Rot::CylZc) => (1, (p[2], p[C])),
-            (MachineKind::Mill, Rot::CylCy) => (1, (p[C], p[1])),
+            (MachineKind::Mill, Rot::Cylinder { radius, plane }) => {
+                let arc = p[C].to_radians() * radius;
+                match plane {
+                    Plane::XY => (1, (arc, p[1])),
+                    _ => (1, (p[2], arc)),
+                }
+            }
         }
     }
 
@@ -413,12 +414,15 @@ impl Drawing {
         }
         let p = &mut self.panels[panel];
         p.polar |= rot == Rot::Polar;
-        if panel == 1 {
-            p.view = if rot == Rot::CylCy {
+        if let Rot::Cylinder { radius, plane } = rot {
+            p.view = if plane == Plane::XY {
                 View::DevCy
             } else {
                 View::DevZc
             };
+            p.radius = Some(p.radius.map_or((radius, radius), |(lo, hi)| {
+                (lo.min(radius), hi.max(radius))
+            }));
         }
         p.keep(Shape { class, a, b, form });
     }
@@ -535,6 +539,41 @@ mod tests {
         assert!((s.a.0 - 20.0).abs() < 1e-12 && s.a.1.abs() < 1e-12);
         assert!(s.b.0.abs() < 1e-12 && (s.b.1 - 20.0).abs() < 1e-12);
         assert!(d.panels[0].polar);
+    }
+
+    #[test]
+    fn g107_moves_are_unrolled_to_mm_on_their_cylinder() {
+        // G18 on a 30 mm cylinder: Z0 C0 to Z10 C90 ends a quarter of the
+        // circumference up, 2·π·30/4 = 47.1239 mm; in G17 C is across
+        // and Y up.
+        let mut d = Drawing::new(MachineKind::Mill);
+        let mut e = feed(1, 0.0, 0.0);
+        if let Canon::Feed { m, .. } = &mut e.cmd {
+            m.to = [0.0, 0.0, 10.0, 0.0, 0.0, 90.0];
+        }
+        let zx = Rot::Cylinder {
+            radius: 30.0,
+            plane: Plane::ZX,
+        };
+        d.add(&e, &[0.0; 6], zx);
+        let s = d.panels[1].shapes()[0];
+        assert_eq!(s.a, (0.0, 0.0));
+        assert!((s.b.0 - 10.0).abs() < 1e-12 && (s.b.1 - 47.123_889_8).abs() < 1e-6);
+        assert_eq!(d.panels[1].view, View::DevZc);
+        let xy = Rot::Cylinder {
+            radius: 10.0,
+            plane: Plane::XY,
+        };
+        e.cmd = feed(1, 0.0, 5.0).cmd;
+        if let Canon::Feed { m, .. } = &mut e.cmd {
+            m.to[5] = 180.0;
+        }
+        d.add(&e, &[0.0; 6], xy);
+        let s = *d.panels[1].shapes().last().unwrap();
+        // Half of a 10 mm cylinder: π·10 = 31.4159 mm across, Y5 up.
+        assert!((s.b.0 - 31.415_926_5).abs() < 1e-6 && (s.b.1 - 5.0).abs() < 1e-12);
+        assert_eq!(d.panels[1].view, View::DevCy);
+        assert_eq!(d.panels[1].radius, Some((10.0, 30.0)));
     }
 
     #[test]

@@ -3,7 +3,7 @@
 //! written by both the SVG and the PNG writer, so the two show the same.
 //!
 //! Per panel: a light grid at the ticks, the frame, tick marks and
-//! labels in mm (degrees for G107's C), the axis titles, the panel title;
+//! labels in mm (G107's C developed on its cylinder), the axis titles, the panel title;
 //! on a lathe the spindle centre line (dashed grey) and the chuck on the
 //! −Z side; the toolpath (rapids dashed red, cuts solid in one colour per
 //! tool, holes as rings); the alarm point as a red cross. Beside the
@@ -11,7 +11,7 @@
 
 use std::f64::consts::PI;
 
-use super::drawing::{Drawing, Form, Shape, View};
+use super::drawing::{Drawing, Form, Shape};
 use super::layout::{Layout, PanelLayout, LEGEND_X};
 
 /// A point, px.
@@ -246,12 +246,12 @@ fn title(pl: &PanelLayout, d: &Drawing) -> String {
     if d.panels[pl.index].polar {
         s.push_str("; G112 on the face, C0 along +X");
     }
-    let unit = if pl.view == View::MillXy || pl.view == View::LatheZx {
-        "mm"
-    } else {
-        "mm / deg"
-    };
-    format!("{s}; grid {} {unit}", pl.label(pl.step))
+    match d.panels[pl.index].radius {
+        Some((lo, hi)) if lo == hi => s.push_str(&format!(" on r {lo} mm")),
+        Some((lo, hi)) => s.push_str(&format!(" on r {lo} to {hi} mm")),
+        None => {}
+    }
+    format!("{s}; grid {} mm", pl.label(pl.step))
 }
 
 /// The spindle centre line across the area and the chuck left of `edge`,
