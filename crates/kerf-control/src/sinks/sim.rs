@@ -172,9 +172,9 @@ impl SimSink {
         res: Option<f64>,
         stl: Option<Box<dyn Write>>,
         png: Option<Box<dyn Write>>,
-    ) -> Result<SimSink, String> {
+    ) -> Result<SimSink, kerf_sim::ResolutionError> {
         Ok(SimSink {
-            sim: Sim::new(stock, tools, res).map_err(|e| e.to_string())?,
+            sim: Sim::new(stock, tools, res)?,
             seen: 0,
             done: 0,
             queue: VecDeque::new(),
