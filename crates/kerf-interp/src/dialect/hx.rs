@@ -239,7 +239,6 @@ pub static DIALECT: Dialect = Dialect {
         linear_rapid: false,
         stops_stop_spindle: false,
         max_m_per_block: 3,
-        m48_feed_override: false,
         offsets_wait_for_move: false,
         reset_keeps_tool_offset: false,
         part_zero_is_e1: false,

@@ -85,6 +85,9 @@ pub enum MAction {
     SubCall,
     /// M99 subprogram return.
     SubReturn,
+    /// 002 M48 (true) / M49: use / ignore the feedrate override (an
+    /// auxiliary event, then the mode).
+    FeedOverride(bool),
 }
 
 /// One M code of a dialect.
@@ -165,8 +168,6 @@ pub struct Caps {
     /// M codes one block may carry: 3 (Fanuc), as many as the block holds
     /// (002).
     pub max_m_per_block: usize,
-    /// 002: M48 / M49 switch the feedrate override on / off.
-    pub m48_feed_override: bool,
     /// 002 Table 16: the offsets of a T or E code take effect with the
     /// next move, and a move's words go to the position they name.
     pub offsets_wait_for_move: bool,

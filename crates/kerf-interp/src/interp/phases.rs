@@ -188,8 +188,10 @@ impl Interp {
             Phase::Comp => b.g39 = self.block_comp(b.one_shot(), b.cycle)?,
             Phase::OneShots => b.os = self.one_shots(b.one_shot())?,
             Phase::CssRadius => self.g96_r()?,
-            Phase::OverrideM => self.run_m(|m| matches!(m.0, 48 | 49))?,
-            Phase::CoolantM => self.run_m(|m| matches!(m.0, 7 | 8))?,
+            Phase::OverrideM => self.run_m(|m| matches!(m.2, MAction::FeedOverride(_)))?,
+            Phase::CoolantM => {
+                self.run_m(|m| matches!(m.2, MAction::CoolantMist | MAction::CoolantFlood))?
+            }
             Phase::ToolAndFixture => self.hurco_t_e()?,
             Phase::Feed => self.f_word(b.os.dwell)?,
             Phase::Tool => self.t_word()?,
@@ -198,9 +200,13 @@ impl Interp {
                 m.1 == MWhen::Before && !matches!(m.2, MAction::SpindleCw | MAction::SpindleCcw)
             })?,
             // Other before-motion machine functions, after the spindle.
-            Phase::HurcoMBefore => {
-                self.run_m(|m| m.1 == MWhen::Before && !matches!(m.0, 7 | 8 | 48 | 49))?
-            }
+            Phase::HurcoMBefore => self.run_m(|m| {
+                m.1 == MWhen::Before
+                    && !matches!(
+                        m.2,
+                        MAction::CoolantMist | MAction::CoolantFlood | MAction::FeedOverride(_)
+                    )
+            })?,
             Phase::Dwell => {
                 if b.os.dwell {
                     self.dwell()?;
