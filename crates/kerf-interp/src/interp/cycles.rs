@@ -104,10 +104,15 @@ impl Interp {
         was_cycle: bool,
         plane_changed: bool,
         motion: Option<(u16, u32)>,
+        kinds: crate::dialect::meaning::KindSet,
     ) -> R<bool> {
         if let Some((m, m_at)) = motion {
             // The block's first code of the cycle group, unless it is G80.
-            let first = self.block_g(|m| matches!(m, Means::Cycle(_)));
+            let first = if kinds.has(crate::dialect::meaning::Kind::Cycle) {
+                self.block_g(|m| matches!(m, Means::Cycle(_)))
+            } else {
+                None
+            };
             let cycle = |g: &(u16, u32)| {
                 self.gcode(g.0)
                     .is_some_and(|c| c.means != Means::Cycle(None))
