@@ -203,7 +203,7 @@ pub static MCODES: &[MCode] = &[
     m(7, "coolant mist on", Before, CoolantMist), // assumed (builder code, not in §11.1)
     m(8, "coolant on", Before, CoolantFlood),
     m(9, "coolant off", After, CoolantOff),
-    m(19, "spindle orientation", After, Aux), // assumed (builder code, not in §11.1)
+    m(19, "spindle orientation", After, Aux).and(MAlso::Orient), // assumed (builder code, not in §11.1)
     m(30, "end of tape", After, End),
     m(98, "sub-program call", After, SubCall),
     m(99, "end of sub-program", After, SubReturn),
