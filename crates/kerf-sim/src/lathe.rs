@@ -35,6 +35,9 @@ pub const VOL_EPS: f64 = 1e-12;
 /// Margin of a tile's integer frame beyond its own Z range and the
 /// stock's radius, mm.
 const MARGIN: f64 = 1.0;
+/// Margin around a tile's material to which a swept region is clipped
+/// before the boolean, mm (2^-10: a whole number of grid steps).
+const CLIP_MARGIN: f64 = 1.0 / 1024.0;
 
 /// A contour: closed, its last point joined to its first.
 pub type Contour = Vec<[f64; 2]>;
@@ -49,16 +52,21 @@ struct Tile {
     /// Least and greatest radius of the material (0, 0 when empty).
     lo: f64,
     hi: f64,
+    /// Least and greatest z of the material.
+    zlo: f64,
+    zhi: f64,
     vol: f64,
 }
 
 impl Tile {
     fn set(&mut self, shapes: Shapes, vol: f64) {
-        let rs = || shapes.iter().flatten().flatten().map(|p| p[1]);
-        self.lo = rs().fold(f64::INFINITY, f64::min);
-        self.hi = rs().fold(f64::NEG_INFINITY, f64::max);
+        let ps = || shapes.iter().flatten().flatten();
+        self.lo = ps().map(|p| p[1]).fold(f64::INFINITY, f64::min);
+        self.hi = ps().map(|p| p[1]).fold(f64::NEG_INFINITY, f64::max);
+        self.zlo = ps().map(|p| p[0]).fold(f64::INFINITY, f64::min);
+        self.zhi = ps().map(|p| p[0]).fold(f64::NEG_INFINITY, f64::max);
         if shapes.is_empty() {
-            (self.lo, self.hi) = (0.0, 0.0);
+            (self.lo, self.hi, self.zlo, self.zhi) = (0.0, 0.0, 0.0, 0.0);
         }
         self.shapes = shapes;
         self.vol = vol;
@@ -172,7 +180,12 @@ impl Section {
             if t.shapes.is_empty() {
                 continue;
             }
-            let (ta, tb) = (t.za, t.za + TILE);
+            // The region is clipped to the tile's material and a margin of
+            // CLIP_MARGIN (a whole number of grid steps): what it removes
+            // is the same, with fewer edges for the boolean.
+            let m = CLIP_MARGIN;
+            let zs = ((t.za).max(t.zlo - m), (t.za + TILE).min(t.zhi + m));
+            let rs = ((t.lo - m).max(0.0), (t.hi + m).min(rmax));
             used = 0;
             let mut reach = (f64::INFINITY, f64::NEG_INFINITY);
             for poly in region {
@@ -181,7 +194,7 @@ impl Section {
                         clips.push(Vec::new());
                     }
                     let c = &mut clips[used];
-                    clip_box(poly, sign, (ta, tb), (0.0, rmax), c);
+                    clip_box(poly, sign, zs, rs, c);
                     for p in c.iter() {
                         reach = (reach.0.min(p[1]), reach.1.max(p[1]));
                     }

@@ -162,7 +162,7 @@ mod tests {
                 m: Motion { to, mto: to },
                 linear: false,
             },
-            prog: (i % 7 == 0).then(|| Box::new(to)),
+            prog: i.is_multiple_of(7).then(|| Box::new(to)),
         }
     }
 
