@@ -10,7 +10,7 @@
 //! kerf-lang's `parse_block` gives for them (its fast number path, which
 //! it mirrors). Anything else (a comment, a macro word, N or O, a block
 //! delete, blanks inside a number, a number past the digit limit) is
-//! refused, and the block goes to the parser: [`BlockDims::from_block`]
+//! refused, and the block goes to the parser: [`BlockDims::read_parsed`]
 //! takes the same from its result.
 
 use kerf_lang::{Addr, Block, Val};
@@ -83,7 +83,7 @@ impl BlockDims {
     }
 
     /// The same from a parsed block.
-    pub fn from_block(&mut self, b: &Block, letters: &[u8]) {
+    pub fn read_parsed(&mut self, b: &Block, letters: &[u8]) {
         self.clear();
         for w in &b.words {
             if let (Addr::L(letter), Val::Num(n)) = (w.addr, w.val) {
@@ -202,7 +202,7 @@ mod tests {
         let mut b = Block::default();
         parse_block(text.as_bytes(), &LexOptions::default(), &mut b).unwrap();
         let mut d = BlockDims::default();
-        d.from_block(&b, HX);
+        d.read_parsed(&b, HX);
         (d.dims, d.skipped, d.inch)
     }
 

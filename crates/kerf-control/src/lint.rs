@@ -78,7 +78,7 @@ pub fn decimal_points(
             if parse_block(&raw.text, &opts, &mut block).is_err() {
                 continue;
             }
-            words.from_block(&block, letters);
+            words.read_parsed(&block, letters);
         }
         inch = words.inch.unwrap_or(inch);
         if words.skipped {

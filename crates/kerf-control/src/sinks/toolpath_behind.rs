@@ -18,7 +18,9 @@ use super::behind::Behind;
 use super::toolpath::Toolpath;
 use crate::sink::{Context, Sink, Timed};
 
-/// What the thread is handed.
+/// What the thread is handed. Nearly every item is the large variant, so
+/// it is kept inline: a box would be an allocation per item.
+#[allow(clippy::large_enum_variant)]
 enum Item {
     /// A file id and its name, before the file's first record.
     Name(u32, String),
