@@ -55,7 +55,7 @@ fn serve(a: Args) -> Result<(), String> {
         .bind
         .parse()
         .map_err(|_| format!("--bind {}: expected ADDR:PORT, e.g. 127.0.0.1:7878", a.bind))?;
-    let remote = kerf_hmi::check_bind(&addr, a.allow_remote)?;
+    let remote = kerf_hmi::check_bind(&addr, a.allow_remote).map_err(|e| e.to_string())?;
     if !(a.rate.is_finite() && a.rate > 0.0 && a.rate <= 10_000.0) {
         return Err(format!("--rate {}: must be in (0, 10000]", a.rate));
     }
@@ -63,7 +63,7 @@ fn serve(a: Args) -> Result<(), String> {
         (false, _) => None,
         (true, Some(t)) if t.len() >= 8 => Some(t),
         (true, Some(_)) => return Err("--token: at least 8 characters".into()),
-        (true, None) => Some(kerf_hmi::new_token()?),
+        (true, None) => Some(kerf_hmi::new_token().map_err(|e| e.to_string())?),
     };
     let profile = kerf_control::load_profile(&a.machine).map_err(|e| e.to_string())?;
     for d in &a.lib {
@@ -105,8 +105,9 @@ fn serve(a: Args) -> Result<(), String> {
         }
         None => None,
     };
-    let shared = kerf_hmi::Shared::new(make, profile.clone(), a.lib, token.clone(), a.rate)?;
-    *shared.stock.lock().unwrap_or_else(|p| p.into_inner()) = stock;
+    let shared = kerf_hmi::Shared::new(make, profile.clone(), a.lib, token.clone(), a.rate)
+        .map_err(|e| e.to_string())?;
+    shared.set_stock(stock).map_err(|e| e.message)?;
     if let Some((name, text)) = program {
         shared
             .load(&name, text)
@@ -127,4 +128,5 @@ fn serve(a: Args) -> Result<(), String> {
             eprintln!("kerf: serving {} at http://{at}/", profile.name);
         }
     })
+    .map_err(|e| e.to_string())
 }

@@ -18,8 +18,9 @@ use crate::server::Shared;
 
 /// Largest command, offsets or other JSON body, bytes.
 pub const MAX_JSON: usize = 64 * 1024;
-/// Largest program text, bytes.
-pub const MAX_PROGRAM: usize = 256 * 1024 * 1024;
+/// Largest program text, bytes: the runtime's own limit, so a body the
+/// server takes is one the runtime loads.
+pub const MAX_PROGRAM: usize = kerf_control::runtime::MAX_PROGRAM_BYTES;
 /// Most lines one `GET /api/program` returns.
 pub const MAX_LINES: usize = 2000;
 /// Most toolpath points one `GET /api/toolpath` returns.
@@ -377,14 +378,14 @@ async fn toolpath(
 }
 
 /// The simulated part of the loaded program (binary STL), when the server
-/// has a stock (`--stock`) and the trace is done.
+/// has a stock (`--stock`): as cut so far once a run has started, else the
+/// whole program's result once the trace is done.
 async fn part(AxState(s): S) -> Answer {
     let p = s
         .path
         .lock()
         .unwrap_or_else(|p| p.into_inner())
-        .part
-        .clone();
+        .shown_part();
     match p {
         Some(stl) => Ok((
             StatusCode::OK,

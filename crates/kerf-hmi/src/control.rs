@@ -51,4 +51,10 @@ pub trait Control: 'static {
     fn put_parameters(&mut self, params: &serde_json::Value) -> Result<(), Refusal>;
     /// The alarm and message history, oldest first.
     fn alarms(&self) -> Vec<AlarmInfo>;
+    /// Feeds the commands the axes finish to `feed` (the simulated part
+    /// following the cut), or stops with None. A controller without a
+    /// machine model ignores it.
+    fn follow_part(&mut self, feed: Option<crate::live_part::PartFeed>) {
+        let _ = feed;
+    }
 }

@@ -53,8 +53,23 @@ pub struct PathStore {
     /// Why the trace ended early, if it did (an alarm, a limit).
     pub note: Option<String>,
     /// The simulated part as binary STL (work coordinates, mm), when the
-    /// server was given a stock and the trace is done.
+    /// server was given a stock and the trace is done: the whole
+    /// program's result.
     pub part: Option<Arc<Vec<u8>>>,
+    /// The part as cut so far by the run under way (live_part.rs), shown
+    /// instead of `part` once a run of this program has started.
+    pub live: Option<Arc<Vec<u8>>>,
+    /// Changes whenever the part shown changes (a client refetches it).
+    pub part_seq: u32,
+    /// Programs loaded so far (a run's part belongs to one of them).
+    pub loads: u32,
+}
+
+impl PathStore {
+    /// The part shown: the one cut so far, else the trace's.
+    pub fn shown_part(&self) -> Option<Arc<Vec<u8>>> {
+        self.live.clone().or_else(|| self.part.clone())
+    }
 }
 
 impl PathStore {
@@ -91,6 +106,9 @@ pub fn clear(store: &Mutex<PathStore>) {
     s.min_step = 0.0;
     s.note = None;
     s.part = None;
+    s.live = None;
+    s.part_seq = s.part_seq.wrapping_add(1);
+    s.loads = s.loads.wrapping_add(1);
 }
 
 /// Starts tracing `text` on `profile` into `store` (its content replaced,
@@ -136,6 +154,7 @@ pub fn start(
                     let mut s = lock(&store);
                     if !flag.load(Ordering::Relaxed) {
                         s.part = Some(Arc::new(stl));
+                        s.part_seq = s.part_seq.wrapping_add(1);
                     }
                 }
             }
@@ -159,7 +178,7 @@ fn lock(s: &Mutex<PathStore>) -> std::sync::MutexGuard<'_, PathStore> {
 
 /// The simulation's cell size for the view: the stock's largest extent in
 /// 300 cells (a part of some 10^5 triangles, light for the browser).
-fn view_resolution(st: &kerf_sim::Stock) -> f64 {
+pub fn view_resolution(st: &kerf_sim::Stock) -> f64 {
     let extent = match st {
         kerf_sim::Stock::Box { min, max } => (0..3).map(|i| max[i] - min[i]).fold(0.0, f64::max),
         kerf_sim::Stock::Turn {

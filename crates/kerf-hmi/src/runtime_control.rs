@@ -23,6 +23,8 @@ pub struct RuntimeControl {
     relative: Relative,
     /// The history read so far.
     history: Vec<AlarmInfo>,
+    /// The simulated part following the cut (with `--stock`).
+    part: Option<crate::live_part::PartFeed>,
 }
 
 impl RuntimeControl {
@@ -39,6 +41,7 @@ impl RuntimeControl {
             relative: Relative::new(&machine),
             axes,
             history: Vec::new(),
+            part: None,
         };
         c.sync_history();
         c
@@ -213,7 +216,22 @@ impl Control for RuntimeControl {
             self.relative.set(i, *value, &machine);
             return Ok(());
         }
-        self.run(rt_command(cmd))
+        // A run of the program from its beginning cuts the stock afresh.
+        let from_start = matches!(cmd, Command::CycleStart)
+            && self.rt.mode() == rt::Mode::Mem
+            && matches!(
+                self.rt.execution(),
+                rt::Execution::Ready | rt::Execution::ProgramCompleted
+            );
+        self.run(rt_command(cmd))?;
+        if let (true, Some(p)) = (from_start, &self.part) {
+            let it = self.rt.interp();
+            p.start(
+                kerf_control::sinks::sim::offset_data(it),
+                it.work_position(),
+            );
+        }
+        Ok(())
     }
 
     fn advance(&mut self, seconds: f64) {
@@ -287,6 +305,7 @@ impl Control for RuntimeControl {
             alarm,
             t: s.t,
             alarm_seq: self.history.last().map(|a| a.seq).unwrap_or(0),
+            seq: 0,
             path: Default::default(),
             restart: self
                 .rt
@@ -378,6 +397,14 @@ impl Control for RuntimeControl {
 
     fn alarms(&self) -> Vec<AlarmInfo> {
         self.history.clone()
+    }
+
+    fn follow_part(&mut self, feed: Option<crate::live_part::PartFeed>) {
+        let watcher = feed
+            .clone()
+            .map(|f| Box::new(move |e: &kerf_canon::Event| f.event(e)) as rt::OnPassed);
+        self.rt.set_on_passed(watcher);
+        self.part = feed;
     }
 }
 

@@ -11,6 +11,7 @@ use tokio::sync::watch;
 
 use crate::control::Control;
 use crate::path::{PathStore, Trace};
+use crate::serve_error::ServeError;
 use crate::state::State;
 
 /// Period of the ticker: 50 Hz.
@@ -70,7 +71,8 @@ pub struct Frame {
 type Job = Box<dyn FnOnce(&mut dyn Control) + Send>;
 
 /// Makes the controller on its own thread.
-pub type MakeControl = Box<dyn FnOnce() -> Result<Box<dyn Control>, String> + Send>;
+pub type MakeControl =
+    Box<dyn FnOnce() -> Result<Box<dyn Control>, crate::serve_error::MakeError> + Send>;
 
 /// What every handler shares.
 pub struct Shared {
@@ -106,7 +108,7 @@ impl Shared {
         libs: Vec<PathBuf>,
         token: Option<String>,
         rate: f64,
-    ) -> Result<Arc<Shared>, String> {
+    ) -> Result<Arc<Shared>, ServeError> {
         let (jobs, rx) = std::sync::mpsc::channel::<Job>();
         let (ready_tx, ready_rx) = std::sync::mpsc::channel();
         let (weak_tx, weak_rx) = std::sync::mpsc::channel::<Weak<Shared>>();
@@ -125,11 +127,14 @@ impl Shared {
                     control_loop(c, rx, weak, rate);
                 }
             })
-            .map_err(|e| format!("controller thread: {e}"))?;
+            .map_err(ServeError::Thread)?;
         let state = ready_rx
             .recv()
-            .map_err(|_| "the controller did not start".to_string())??;
-        let frame = make_frame(state, &PathStore::default());
+            .map_err(|_| ServeError::ControlGone)?
+            .map_err(ServeError::Control)?;
+        let mut state = state;
+        state.path = path_info(&PathStore::default());
+        let frame = make_frame(state);
         let (tx, _) = watch::channel(Arc::new(frame));
         let shared = Arc::new(Shared {
             jobs: Mutex::new(jobs),
@@ -214,6 +219,16 @@ impl Shared {
         *lock(&self.trace) = Some(t);
     }
 
+    /// Sets the stock the part is simulated from (`--stock`): the trace
+    /// of each program loaded from now on makes its whole-program part,
+    /// and the controller feeds a simulation of the cut as it goes
+    /// (live_part.rs).
+    pub fn set_stock(&self, stock: Option<kerf_sim::Stock>) -> Result<(), crate::error::ApiError> {
+        *lock(&self.stock) = stock;
+        let feed = stock.map(|st| crate::live_part::spawn(st, self.path.clone()));
+        self.with(move |c| c.follow_part(feed))
+    }
+
     /// The loaded program.
     pub fn program(&self) -> Option<Arc<Program>> {
         lock(&self.program).clone()
@@ -242,35 +257,44 @@ impl Shared {
         self.publish_state(state);
     }
 
-    /// Publishes a state just read from the controller.
+    /// Publishes a state just read from the controller: numbered one
+    /// more than the state before it (`seq`), unless it is the same or
+    /// older.
     pub fn publish_state(&self, mut state: State) {
         if let Some(a) = state.alarm.as_mut() {
             self.fill_block(a);
         }
-        let path = lock(&self.path);
-        let frame = make_frame(state, &path);
-        drop(path);
+        state.path = path_info(&lock(&self.path));
         self.frames.send_if_modified(|old| {
             // A state read before the newest one published (a command's,
             // overtaken by a tick) is not sent: machine time never goes
             // back for a client.
-            if old.json == frame.json || frame.state.t < old.state.t {
+            if state.t < old.state.t {
                 return false;
             }
-            *old = Arc::new(frame);
+            state.seq = old.state.seq;
+            if state == old.state {
+                return false;
+            }
+            state.seq += 1;
+            *old = Arc::new(make_frame(state));
             true
         });
     }
 }
 
-fn make_frame(mut state: State, path: &PathStore) -> Frame {
-    state.path = crate::state::PathInfo {
+fn path_info(path: &PathStore) -> crate::state::PathInfo {
+    crate::state::PathInfo {
         id: path.id,
         points: path.points() as u32,
         done: path.done,
         note: path.note.clone(),
-        part: path.part.is_some(),
-    };
+        part: path.part.is_some() || path.live.is_some(),
+        part_seq: path.part_seq,
+    }
+}
+
+fn make_frame(state: State) -> Frame {
     let mut v = serde_json::to_value(&state).unwrap_or_default();
     if let Some(o) = v.as_object_mut() {
         o.insert("type".into(), "state".into());

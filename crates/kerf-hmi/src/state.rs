@@ -199,6 +199,10 @@ pub struct State {
     pub t: f64,
     /// Sequence number of the newest alarm-history entry (0: none).
     pub alarm_seq: u64,
+    /// Publication number of this state: one more for every state the
+    /// server publishes (a client drops a state numbered below one it
+    /// has drawn: a stream message overtaken by a command's answer).
+    pub seq: u64,
     /// The backplot of the loaded program: `{id, points, done, note}`.
     pub path: PathInfo,
     /// The program restart prepared by a `restart` command (line, tool,
@@ -219,4 +223,7 @@ pub struct PathInfo {
     pub note: Option<String>,
     /// The simulated part is ready at `GET /api/part.stl`.
     pub part: bool,
+    /// Changes whenever that part changes (the trace's whole-program part
+    /// made, the part cut so far by the run under way written again).
+    pub part_seq: u32,
 }

@@ -28,6 +28,7 @@ const app = {
   screens: null,
   graph: null,
   stats: { states: 0, lastStateAt: 0 },
+  lastSeq: -1, // `seq` of the newest state taken
 };
 window.kerf = app; // for the browser tests and the console
 
@@ -42,7 +43,7 @@ export function say(text, bad = false) {
 export async function command(body) {
   const r = await api('POST', '/api/command', JSON.stringify(body));
   if (r.ok) {
-    onState(r.body.state);
+    onState(r.body.state, true);
     say(`${body.cmd}: ok`);
   } else {
     say(`${body.cmd}: ${r.body.error ? r.body.error.message : r.status}`, true);
@@ -50,34 +51,63 @@ export async function command(body) {
   return r;
 }
 
-function onState(s) {
+/**
+ * A new state. The answer to a command is drawn at once (the operator's
+ * click repaints in the same task); the stream's states (50 a second) are
+ * drawn once per animation frame, the newest only, so a busy page does
+ * not spend its main thread on states it cannot show.
+ */
+function onState(s, now = false) {
+  // States are numbered as the server publishes them: one older than
+  // the one shown (a stream message overtaken by a command's answer) is
+  // dropped, so the screen never steps back.
+  if (s.seq < app.lastSeq) return;
+  app.lastSeq = s.seq;
   app.state = s;
   app.stats.states++;
   app.stats.lastStateAt = performance.now();
+  if (now) {
+    drawState();
+  } else if (!app.drawPending) {
+    app.drawPending = true;
+    requestAnimationFrame(drawState);
+  }
+}
+
+function drawState() {
+  app.drawPending = false;
+  const s = app.state;
+  if (s === app.drawn) return;
+  app.drawn = s;
   drawStatus(s);
   app.screens.draw(app.page, s);
   if (app.graph) app.graph.state(s, app.page === 'graph');
 }
 
+/** Sets a text only when it changes (no style work for the same text). */
+function setText(el, text) {
+  if (el.textContent !== text) el.textContent = text;
+}
+
 function drawStatus(s) {
-  $('st-mode').textContent = s.mode;
-  $('st-exec').textContent = s.execution.replace('_', ' ');
+  setText($('st-mode'), s.mode);
+  setText($('st-exec'), s.execution.replace('_', ' '));
   const a = s.alarm;
   const st = $('st-alarm');
-  st.textContent = a ? `ALM ${a.code}` : '';
+  setText(st, a ? `ALM ${a.code}` : '');
   st.className = a ? 'st-alarm' : '';
-  $('st-time').textContent = clock(s.t);
+  setText($('st-time'), clock(s.t));
   for (const b of document.querySelectorAll('[data-mode]')) b.classList.toggle('on', b.dataset.mode === s.mode);
   for (const b of document.querySelectorAll('[data-switch]')) b.classList.toggle('on', !!s.switches[b.dataset.switch]);
   for (const b of document.querySelectorAll('[data-skip]')) b.classList.toggle('on', s.switches.block_skip.includes(+b.dataset.skip));
   for (const b of document.querySelectorAll('[data-rapid]')) b.classList.toggle('on', +b.dataset.rapid === s.overrides.rapid);
-  $('feed-ovr-val').textContent = s.overrides.feed;
-  $('rapid-ovr-val').textContent = s.overrides.rapid;
+  setText($('feed-ovr-val'), String(s.overrides.feed));
+  setText($('rapid-ovr-val'), String(s.overrides.rapid));
   if (document.activeElement !== $('feed-ovr')) $('feed-ovr').value = s.overrides.feed;
   $('cycle-start').classList.toggle('lit', s.execution === 'ACTIVE');
   $('feed-hold').classList.toggle('lit', s.execution === 'FEED_HOLD');
-  $('title-prog').textContent = s.program.name || 'O----';
-  $('title-line').textContent = s.program.line ? `LINE ${s.program.line}` : 'LINE -';
+  setText($('title-prog'), s.program.name || 'O----');
+  setText($('title-line'), s.program.line ? `LINE ${s.program.line}` : 'LINE -');
 }
 
 /** h:mm:ss.s */
@@ -128,7 +158,10 @@ function connect() {
   const proto = location.protocol === 'https:' ? 'wss' : 'ws';
   const ws = new WebSocket(`${proto}://${location.host}/api/stream${token ? `?token=${token}` : ''}`);
   ws.binaryType = 'arraybuffer';
-  ws.onopen = () => { $('st-link').textContent = 'ONLINE'; };
+  ws.onopen = () => {
+    $('st-link').textContent = 'ONLINE';
+    app.lastSeq = -1; // a restarted server numbers from 0 again
+  };
   ws.onclose = () => {
     $('st-link').textContent = 'OFFLINE';
     setTimeout(connect, 1000);
@@ -198,7 +231,7 @@ async function start() {
   app.screens = new Screens(app, { api, command, say });
   wirePanel();
   const s = await api('GET', '/api/state');
-  if (s.ok) onState(s.body);
+  if (s.ok) onState(s.body, true);
   show(location.hash ? location.hash.slice(1) : 'pos');
   connect();
 }

@@ -345,11 +345,28 @@ export class Graph {
     this.render();
   }
 
-  /** The simulated part (binary STL from the server) as a translucent mesh. */
-  async loadPart(id) {
-    this.partFor = id;
+  /**
+   * The simulated part (binary STL from the server) as a translucent
+   * mesh: fetched again whenever the state's `part_seq` changes (the part
+   * cut so far while the program runs), one fetch at a time.
+   */
+  async loadPart(seq) {
+    this.partSeq = seq;
+    if (this.partLoading) return;
+    this.partLoading = true;
+    try {
+      for (let want = seq; ; want = this.partSeq) {
+        await this.fetchPart();
+        if (this.partSeq === want) break;
+      }
+    } finally {
+      this.partLoading = false;
+    }
+  }
+
+  async fetchPart() {
     const r = await fetch('/api/part.stl');
-    if (!r.ok || this.pathId !== id) return;
+    if (!r.ok) return;
     const dv = new DataView(await r.arrayBuffer());
     const n = dv.byteLength >= 84 ? dv.getUint32(80, true) : 0;
     if (84 + n * 50 > dv.byteLength) return;
@@ -368,10 +385,12 @@ export class Graph {
     g.setAttribute('position', new THREE.BufferAttribute(pos, 3));
     g.setAttribute('normal', new THREE.BufferAttribute(nor, 3));
     if (this.part) { this.scene.remove(this.part); this.part.geometry.dispose(); }
-    this.part = new THREE.Mesh(g, new THREE.MeshNormalMaterial({ transparent: true, opacity: 0.55, side: THREE.DoubleSide, depthWrite: false }));
+    this.partMaterial ||= new THREE.MeshNormalMaterial({ transparent: true, opacity: 0.55, side: THREE.DoubleSide, depthWrite: false });
+    this.part = new THREE.Mesh(g, this.partMaterial);
     this.part.renderOrder = 1;
     this.scene.add(this.part);
     this.partTriangles = n;
+    this.partLoads = (this.partLoads || 0) + 1;
     this.render();
   }
 
@@ -380,8 +399,14 @@ export class Graph {
     // The server may finish the trace after sending the last points: the
     // state then says the path is complete.
     if (!this.done && s.path.done && s.path.id === this.pathId && this.points === s.path.points) this.complete();
-    if (s.path.part && this.partFor !== s.path.id && this.pathId === s.path.id) this.loadPart(s.path.id);
-    if (!s.path.part && this.part) { this.scene.remove(this.part); this.part = null; this.partFor = null; }
+    if (s.path.part && this.partSeq !== s.path.part_seq) this.loadPart(s.path.part_seq);
+    if (!s.path.part && this.part) {
+      this.scene.remove(this.part);
+      this.part.geometry.dispose();
+      this.part = null;
+      this.partTriangles = 0;
+      this.partSeq = undefined;
+    }
     // The executing block on the path (blocks of the main program).
     const cur = s.program.file === s.program.name ? s.program.line : 0;
     if (cur !== this.hlCurrent.shownLine || (cur && this.hlCurrent.shownN !== this.n && this.done)) this.showLine(this.hlCurrent, cur);

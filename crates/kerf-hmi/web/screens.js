@@ -3,6 +3,8 @@
 // every state for the visible page (cheap: text of fixed cells).
 
 const $ = (id) => document.getElementById(id);
+/** Sets a text only when it changes. */
+const setText = (el, text) => { if (el.textContent !== text) el.textContent = text; };
 const fmt = (v, d = 3) => (v === undefined || v === null ? '' : Number(v).toFixed(d));
 const LINES_SHOWN = 24;
 const CHUNK = 200;
@@ -94,20 +96,20 @@ export class Screens {
   drawPos(s) {
     const p = s.position;
     for (const a of this.app.machine.axes) {
-      $(`pos-work-${a}`).textContent = fmt(p.work[a]);
-      $(`pos-relative-${a}`).textContent = fmt(p.relative[a]);
-      $(`pos-machine-${a}`).textContent = fmt(p.machine[a]);
-      $(`pos-dtg-${a}`).textContent = fmt(p.distance_to_go[a]);
+      setText($(`pos-work-${a}`), fmt(p.work[a]));
+      setText($(`pos-relative-${a}`), fmt(p.relative[a]));
+      setText($(`pos-machine-${a}`), fmt(p.machine[a]));
+      setText($(`pos-dtg-${a}`), fmt(p.distance_to_go[a]));
     }
-    $('feed-actual').textContent = fmt(s.feed.actual, 0);
+    setText($('feed-actual'), fmt(s.feed.actual, 0));
     // mm/min, or mm/rev in G95/G99 (a small number: shown to 0.001).
-    $('feed-prog').textContent = fmt(s.feed.programmed, s.feed.programmed < 10 ? 3 : 0);
-    $('spindle-actual').textContent = fmt(s.spindle.rpm, 0);
-    $('spindle-prog').textContent = fmt(s.spindle.programmed, 0);
-    $('spindle-dir').textContent = s.spindle.direction.toUpperCase();
-    $('tool').textContent = String(s.tool).padStart(2, '0');
-    $('run-time').textContent = this.clock(s.t);
-    $('pos-block').textContent = s.program.block;
+    setText($('feed-prog'), fmt(s.feed.programmed, s.feed.programmed < 10 ? 3 : 0));
+    setText($('spindle-actual'), fmt(s.spindle.rpm, 0));
+    setText($('spindle-prog'), fmt(s.spindle.programmed, 0));
+    setText($('spindle-dir'), s.spindle.direction.toUpperCase());
+    setText($('tool'), String(s.tool).padStart(2, '0'));
+    setText($('run-time'), this.clock(s.t));
+    setText($('pos-block'), s.program.block);
   }
 
   clock(t) {

@@ -49,6 +49,7 @@ mod offset_error;
 mod offsets_doc;
 mod ops;
 mod pages;
+mod passed;
 mod persist;
 mod program;
 mod restart;
@@ -69,7 +70,9 @@ pub use alarms::{AlarmLog, Record, RecordKind};
 pub use command::{Command, Op, Refusal};
 pub use mode::{Execution, Mode};
 pub use pages::{OffsetWrite, VarWrite};
+pub use passed::OnPassed;
 pub use persist::PersistError;
+pub use program::MAX_PROGRAM_BYTES;
 pub use restart::{RestartAt, RestartPlan};
 pub use snapshot::{AlarmInfo, AxisValues, Positions, ProgramAt, Spindle, State};
 pub use switches::{Overrides, PanelError, Switches};
@@ -154,6 +157,8 @@ pub struct Runtime {
     /// Blocks the interpreter may execute in one call of the clock
     /// (bounds the work of one `advance` on a program of statements).
     block_budget: usize,
+    /// The watcher of the commands the axes finish (`passed.rs`).
+    on_passed: Option<passed::OnPassed>,
 }
 
 /// A runtime that could not be built or set up.
@@ -227,6 +232,7 @@ impl Runtime {
             last_line: 0,
             buffer,
             block_budget: 20_000,
+            on_passed: None,
         })
     }
 

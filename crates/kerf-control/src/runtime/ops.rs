@@ -132,8 +132,12 @@ impl Runtime {
     /// the program MEM runs, from its start.
     pub fn load_program(&mut self, name: &str, text: &str) -> Result<(), Refusal> {
         let next = self.check(Op::LoadProgram)?;
-        if text.len() > 64 << 20 {
-            return Err(self.refuse(Op::LoadProgram, "programs up to 64 MiB are kept in memory"));
+        if text.len() > super::MAX_PROGRAM_BYTES {
+            let mib = super::MAX_PROGRAM_BYTES >> 20;
+            return Err(self.refuse(
+                Op::LoadProgram,
+                format!("programs up to {mib} MiB are kept in memory"),
+            ));
         }
         self.program = Some(Program::new(name, text));
         self.restart = None;

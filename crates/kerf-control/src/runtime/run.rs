@@ -210,8 +210,12 @@ impl Runtime {
         };
         let phys = &mut self.phys;
         let last = &mut self.last_line;
+        let watcher = &mut self.on_passed;
         self.clock.drop_finished(t, |s: &Sched| {
             *last = s.ev.src.line;
+            if let Some(f) = watcher.as_mut() {
+                f(&s.ev);
+            }
             match &s.ev.cmd {
                 Canon::Spindle { dir, rpm, .. } => {
                     phys.spindle = *dir;

@@ -1,6 +1,7 @@
 //! The outputs the `kerf` CLI writes, one [`Sink`](crate::Sink) per file:
 //!
-//! - [`Toolpath`]: one JSON line per motion and dwell, with its end time;
+//! - [`Toolpath`]: one JSON line per motion and dwell, with its end time
+//!   ([`ToolpathBehind`] formats and writes it on a thread of its own);
 //! - [`Report`]: the JSON summary of the run;
 //! - [`Plot`]: an SVG drawing of the path;
 //! - [`Sample`]: the smoothed axis setpoints at a fixed period (CSV);
@@ -11,8 +12,7 @@
 //!   (docs/expand.md).
 //!
 //! Each takes any `io::Write`; formats are in docs/formats.md.
-//! [`WriteBehind`] is an `io::Write` that writes on a thread of its own
-//! (the CLI's toolpath file).
+//! [`WriteBehind`] is an `io::Write` that writes on a thread of its own.
 
 pub mod expand;
 pub mod log;
@@ -22,6 +22,7 @@ pub mod report;
 pub mod sample;
 pub mod sim;
 pub mod toolpath;
+pub mod toolpath_behind;
 pub mod write_behind;
 
 pub use expand::Expand;
@@ -31,6 +32,7 @@ pub use report::Report;
 pub use sample::Sample;
 pub use sim::{SimHandle, SimSink};
 pub use toolpath::Toolpath;
+pub use toolpath_behind::ToolpathBehind;
 pub use write_behind::WriteBehind;
 
 use kerf_canon::Axis;

@@ -333,12 +333,15 @@ test('a click on the path selects its block in PROG; the executing block is draw
     return [r.left + (v.x + 1) / 2 * r.width, r.top + (1 - v.y) / 2 * r.height];
   }, [x, y, z]);
   // Line 5 is the feed X0 → X100 at Y0; line 6 the feed Y0 → Y50 at X100.
-  const [x5, y5] = await pixel(50, 0, -1);
-  await page.mouse.click(x5, y5 + 2);
-  assert.equal(await page.evaluate(() => window.kerf.graph.selected), 5);
-  const [x6, y6] = await pixel(100, 25, -1);
-  await page.mouse.click(x6 - 2, y6);
-  assert.equal(await page.evaluate(() => window.kerf.graph.selected), 6);
+  // A click 2 px off the segment; the pixel is taken again before each
+  // try, so a view that was still settling (a resize) is not a miss.
+  const clickNear = (line, [x, y, z], [dx, dy]) => until(`a click near line ${line} to pick it`, async () => {
+    const [px, py] = await pixel(x, y, z);
+    await page.mouse.click(px + dx, py + dy);
+    return (await page.evaluate(() => window.kerf.graph.selected)) === line;
+  }, 5000);
+  await clickNear(5, [50, 0, -1], [0, 2]);
+  await clickNear(6, [100, 25, -1], [-2, 0]);
   // One segment drawn for the selection: two vertices.
   assert.equal(await page.evaluate(() => window.kerf.graph.hlSelected.geometry.drawRange.count), 2);
   await shot('graph-selected');
@@ -379,7 +382,7 @@ test('ORIGIN and PRESET set the RELATIVE counters per axis', async () => {
 });
 
 // Tests never assert time: this one checks that each of 200 clicks
-// repaints the switch (within a 2 s bound, so it cannot hang) and prints
+// repaints the switch (within a 15 s bound, so it cannot hang) and prints
 // the click-to-repaint figures; docs/benchmarks.md holds the 50 ms p99
 // bar and how it was measured.
 test('every click repaints its switch (latency printed)', async () => {
@@ -397,22 +400,22 @@ test('every click repaints its switch (latency printed)', async () => {
         });
         mo.observe(b, { attributes: true });
       });
-      const late = new Promise((res) => setTimeout(() => res(false), 2000));
+      const late = new Promise((res) => setTimeout(() => res(false), 15000));
       b.click();
       const ok = await Promise.race([changed, late]);
       mo.disconnect();
-      if (!ok) return { missed: i };
+      if (!ok) return { missed: i, was, msg: document.getElementById('panel-msg').textContent, state: window.kerf.state.switches };
       await new Promise((r) => requestAnimationFrame(r));
       out.push(performance.now() - t0);
     }
     return { times: out.sort((a, b) => a - b) };
   });
-  assert.equal(times.missed, undefined, `click ${times.missed} did not repaint within 2 s`);
+  assert.equal(times.missed, undefined, `click ${times.missed} did not repaint within 15 s: ${JSON.stringify(times)}`);
   const sorted = times.times;
   assert.equal(sorted.length, 200);
   const p99 = sorted[Math.ceil(sorted.length * 0.99) - 1];
   const load = loadavg()[0];
-  console.log(`click→repaint: median ${sorted[100].toFixed(1)} ms, p99 ${p99.toFixed(1)} ms (load average ${load.toFixed(1)} on ${cpus().length} cores)`);
+  console.log(`click→repaint: median ${sorted[100].toFixed(1)} ms, p99 ${p99.toFixed(1)} ms, max ${sorted[199].toFixed(1)} ms (load average ${load.toFixed(1)} on ${cpus().length} cores)`);
 });
 
 test('every page of the other skins (PUMA, Hurco)', async () => {
@@ -461,18 +464,40 @@ test('every page of the other skins (PUMA, Hurco)', async () => {
   }
 });
 
-test('GRAPH shows the simulated part with --stock', async () => {
+test('GRAPH shows the simulated part with --stock, and the part as cut while the program runs', async () => {
   const repo = join(here, '..', '..', '..', '..');
-  const s = await serveExtra([join(repo, 'examples/hx/contour.nc'), '--machine', 'hx-mc', '--stock', 'box:-20,-20,-5,70,70,0']);
+  const s = await serveExtra([join(repo, 'examples/hx/contour.nc'), '--machine', 'hx-mc', '--rate', '4', '--stock', 'box:-20,-20,-5,70,70,0']);
   const p2 = await ctx.newPage();
   p2.on('pageerror', (e) => { throw e; });
+  const st = () => fetch(new URL('/api/state', s.url)).then((r) => r.json());
+  const stlCount = async () => new DataView(await (await fetch(new URL('/api/part.stl', s.url))).arrayBuffer()).getUint32(80, true);
   await p2.goto(`${s.url}#graph`);
+  // Before the run: the trace's part of the whole program.
   await p2.waitForFunction(() => window.kerf && window.kerf.graph && window.kerf.graph.partTriangles > 0, null, { timeout: 90000 });
-  const n = await p2.evaluate(() => window.kerf.graph.partTriangles);
-  const stl = await (await fetch(new URL('/api/part.stl', s.url))).arrayBuffer();
-  assert.equal(n, new DataView(stl).getUint32(80, true));
+  const first = await p2.evaluate(() => window.kerf.graph.partSeq);
+  assert.equal(await p2.evaluate(() => window.kerf.graph.partTriangles), await stlCount());
   await redrawn(p2);
   await p2.screenshot({ path: join(shots, 'graph-part.png') });
+  // The run: the part is the stock again, then cut as the axes go; the
+  // page fetches each part the server writes.
+  await p2.click('#cycle-start');
+  await until('the run under way', async () => (await st()).execution === 'ACTIVE');
+  await until('parts of the run in the page', () => p2.evaluate((f) => {
+    const g = window.kerf.graph;
+    return g.partSeq !== f && g.partLoads >= 3 && window.kerf.state.execution === 'ACTIVE';
+  }, first), 60000);
+  await redrawn(p2);
+  await p2.screenshot({ path: join(shots, 'graph-part-running.png') });
+  // At the end the page shows the last part written, the one served.
+  await until('the program end', async () => (await st()).execution === 'PROGRAM_COMPLETED', 120000);
+  const last = await until('the last part in the page', async () => {
+    const x = await st();
+    const g = await p2.evaluate(() => ({ seq: window.kerf.graph.partSeq, loading: window.kerf.graph.partLoading, n: window.kerf.graph.partTriangles }));
+    return g.seq === x.path.part_seq && !g.loading ? g : null;
+  });
+  assert.equal(last.n, await stlCount());
+  await redrawn(p2);
+  await p2.screenshot({ path: join(shots, 'graph-part-done.png') });
   await p2.close();
   await s.stop();
 });

@@ -6,6 +6,7 @@
 //! block's [`BlockRun`].
 
 use super::*;
+use crate::dialect::meaning::{HoleCycle, LatheCycle, OneShot as Os};
 use crate::dialect::Phase;
 
 /// What a phase tells the walk.
@@ -25,10 +26,10 @@ pub(super) struct OneShots {
     g09: bool,
     g60: Option<u32>,
     setting: bool,
-    refret: Option<(u16, u32)>,
+    refret: Option<(crate::dialect::meaning::RefReturn, u32)>,
     skip: Option<(u16, u32)>,
-    g45: Option<(u16, u32)>,
-    mrc: Option<(u16, u32)>,
+    g45: Option<(i8, u16, u32)>,
+    mrc: Option<(LatheCycle, u16, u32)>,
 }
 
 /// The state of one block's execution, passed from phase to phase.
@@ -68,6 +69,21 @@ impl BlockRun {
 }
 
 impl Interp {
+    /// The first G code of the block (code, byte) whose table meaning
+    /// satisfies `is`.
+    pub(super) fn block_g(&self, is: impl Fn(Means) -> bool) -> Option<(u16, u32)> {
+        self.words
+            .gs()
+            .iter()
+            .copied()
+            .find(|g| self.gcode(g.0).is_some_and(|c| is(c.means)))
+    }
+
+    /// What a G code of the block means (None: not in the table).
+    pub(super) fn means_of(&self, code10: u16) -> Option<Means> {
+        self.gcode(code10).map(|g| g.means)
+    }
+
     /// Executes the block in `self.words`: its codes checked, then the
     /// dialect's phases in order. Ok(false) when the program ended.
     pub(super) fn execute_block(&mut self) -> R<bool> {
@@ -109,7 +125,10 @@ impl Interp {
                     ),
                 ));
             }
-            if c == 650 || c == 660 {
+            if matches!(
+                g.means,
+                Means::OneShot(Os::MacroCall) | Means::ModalCall(true)
+            ) {
                 self.g65(c, at)?;
                 return Ok(None);
             }
@@ -235,7 +254,7 @@ impl Interp {
 
     /// The modal G codes (every group but 0 and 1) and the motion mode.
     fn apply_modal_codes(&mut self, b: &mut BlockRun) {
-        b.was_cycle = self.st.modal.cycle.means;
+        b.was_cycle = self.st.modal.cycle.means.is_some();
         b.plane_before = self.st.modal.plane.means;
         for i in 0..self.words.ng {
             let (c, _) = self.words.g[i];
@@ -264,10 +283,8 @@ impl Interp {
         }
         if self.words.has(b'H')
             || self
-                .words
-                .gs()
-                .iter()
-                .any(|g| matches!(g.0, 430 | 440 | 490))
+                .block_g(|m| matches!(m, Means::LengthComp(_)))
+                .is_some()
         {
             self.tool_length()?;
         }
@@ -294,16 +311,27 @@ impl Interp {
     /// Cutter / tool nose radius compensation codes, before the one-shots
     /// (a G92 or G28 ends a held move first). True for a G39 block.
     fn block_comp(&mut self, one_shot: &[(u16, u32)], cycle: bool) -> R<bool> {
-        let comp_words = self.words.has(b'D')
-            || self
-                .words
-                .gs()
-                .iter()
-                .any(|g| matches!(g.0, 170 | 180 | 190 | 390 | 400 | 410 | 420));
+        let comp_code = |m| {
+            matches!(
+                m,
+                Means::Plane(_) | Means::OneShot(Os::CompCorner) | Means::CutterComp(_)
+            )
+        };
+        let comp_words = self.words.has(b'D') || self.block_g(comp_code).is_some();
         if comp_words || (self.comp.is_some() && (!one_shot.is_empty() || cycle)) {
+            // The one-shots that move otherwise than by G00-G03.
             let special = cycle
                 || one_shot.iter().any(|g| {
-                    matches!(g.0, 270 | 280 | 290 | 300 | 530 | 310..=314 | 370..=374 | 450..=480 | 700..=760)
+                    matches!(
+                        self.gcode(g.0).map(|c| c.means),
+                        Some(Means::OneShot(
+                            Os::RefReturn(_)
+                                | Os::MachineCoords
+                                | Os::Skip
+                                | Os::ToolOffset(_)
+                                | Os::Mrc(_)
+                        ))
+                    )
                 });
             let setting = one_shot.iter().any(|g| self.is_coordinate_setting(g.0));
             self.comp_codes(one_shot, special, setting)
@@ -320,7 +348,8 @@ impl Interp {
             if self.mcode(m).is_none() {
                 // Fanuc programs ask for rigid tapping with M29 before G84;
                 // the HX has G84.2/G84.3 instead (000 §12.3.5-12.3.6).
-                let hint = if m == 29 && self.dialect.id == DialectId::Hx {
+                let rigid = Means::Cycle(Some(HoleCycle::RigidTap));
+                let hint = if m == 29 && self.dialect.gcodes.iter().any(|g| g.means == rigid) {
                     ": rigid tapping on this control is G84.2 (G84.3 left-hand), without M29"
                 } else {
                     ""
@@ -358,7 +387,7 @@ impl Interp {
             };
             match what {
                 Dwell => os.dwell = true,
-                RefReturn => os.refret = Some((c, at)),
+                RefReturn(kind) => os.refret = Some((kind, at)),
                 ExactStop => os.g09 = true,
                 SingleDirection => os.g60 = Some(at),
                 MachineCoords => {
@@ -368,18 +397,18 @@ impl Interp {
                     os.g53 = true
                 }
                 Skip => os.skip = Some((c, at)),
-                ToolOffset => os.g45 = Some((c, at)),
+                ToolOffset(k) => os.g45 = Some((k, c, at)),
                 DataSetting => {
                     os.setting = true;
                     self.g10(at)?
                 }
-                Mrc => os.mrc = Some((c, at)),
+                Mrc(kind) => os.mrc = Some((kind, c, at)),
                 CoordinateSetting => {
                     os.setting = true;
                     self.coordinate_setting(at)?
                 }
                 CancelWorkShift => self.st.shift = [0.0; NAXES],
-                MacroCall | Frame | CompCorner | Probe | ThreadCycle => {}
+                MacroCall | FrameData | LocalCoords | CompCorner | Probe | ThreadCycle => {}
             }
         }
         Ok(os)
@@ -396,12 +425,12 @@ impl Interp {
         cycles: (bool, bool, bool),
     ) -> R<()> {
         let (cycle, was_cycle, hurco_cycle) = cycles;
-        if let Some((c, at)) = os.refret {
-            self.reference_return(c, at)?;
+        if let Some((kind, at)) = os.refret {
+            self.reference_return(kind, at)?;
         } else if let Some((c, at)) = os.skip {
             self.skip_block(c, at)?;
-        } else if let Some((c, at)) = os.mrc {
-            self.mrc(c, at)?;
+        } else if let Some((kind, c, at)) = os.mrc {
+            self.mrc(kind, c, at)?;
         } else if !no_motion {
             if os.g53 {
                 self.g53()?;
@@ -413,8 +442,8 @@ impl Interp {
                 }
             } else if let Some(at) = os.g60 {
                 self.g60(at)?;
-            } else if let Some((c, at)) = os.g45 {
-                self.tool_offset_motion(c, at)?;
+            } else if let Some((k, c, at)) = os.g45 {
+                self.tool_offset_motion((k, c), at)?;
             } else {
                 self.motion()?;
             }
