@@ -5,7 +5,9 @@
 
 use std::collections::VecDeque;
 
-use kerf_canon::{Canon, Event, Feed, ModeChange, Motion, Plane, Pos, SpindleDir, SrcRef, NAXES};
+use kerf_canon::{
+    Axis, Canon, Event, Feed, ModeChange, Motion, Plane, Pos, SpindleDir, SrcRef, NAXES,
+};
 
 use crate::dynamics::Dynamics;
 use crate::geom::{line_len, Geom};
@@ -198,6 +200,9 @@ pub struct Planner {
     pub time: Breakdown,
     /// Cutting path length so far, mm.
     pub feed_length: f64,
+    /// In G107 cylindrical interpolation, the millimetres on the developed
+    /// surface per degree of C (F is then a speed on that surface).
+    surface_mm_per_deg: Option<f64>,
     /// Rapid path length so far, mm.
     pub rapid_length: f64,
     /// Spindle speed limit used with constant surface speed, rpm (the
@@ -296,6 +301,7 @@ impl Planner {
             pieces: None,
             time: Breakdown::default(),
             feed_length: 0.0,
+            surface_mm_per_deg: None,
             rapid_length: 0.0,
             max_rpm: f64::INFINITY,
             s_clamp: f64::INFINITY,
@@ -535,7 +541,10 @@ impl Planner {
                     p1: m.mto,
                 };
                 let off = comp_offset(m, e.prog.as_deref());
-                self.cut(g, *feed, m.to[0], false, off, 1.0);
+                let (len, surface) = (g.len(), self.surface_len(&self.pos, &m.mto));
+                let ratio = if surface > 0.0 { len / surface } else { 1.0 };
+                self.cut(g, *feed, m.to[0], false, off, ratio);
+                self.feed_length += surface - len;
             }
             Canon::Arc {
                 m,
@@ -664,12 +673,28 @@ impl Planner {
                     self.finalize_head();
                 }
             }
-            ModeChange::Stitch(_) | ModeChange::Rotary(_) => {}
+            ModeChange::Rotary(r) => self.surface_mm_per_deg = r.mm_per_degree(),
+            ModeChange::Stitch(_) => {}
             ModeChange::FeedOverride(on) => self.ignore_override = !on,
             ModeChange::SpindleClamp(rpm) => {
                 self.s_clamp = if rpm.is_nan() { f64::INFINITY } else { rpm };
             }
         }
+    }
+
+    /// The length of a line on the programmed surface: in G107 (000 §4.7)
+    /// C counts as the arc length on the cylinder, so that F is the speed
+    /// along the developed surface; otherwise the machine path length.
+    fn surface_len(&self, p0: &Pos, p1: &Pos) -> f64 {
+        let Some(k) = self.surface_mm_per_deg else {
+            return line_len(p0, p1);
+        };
+        let mut d = *p1;
+        for i in 0..NAXES {
+            d[i] -= p0[i];
+        }
+        d[Axis::C as usize] *= k;
+        dot(&d, &d).sqrt()
     }
 
     fn rapid(&mut self, to: Pos, linear: bool) {
@@ -1259,6 +1284,49 @@ mod tests {
             let y = if k.is_multiple_of(2) { 0.0 } else { 0.05 };
             pl.push(&feed_to(k as f64 * 5.0, y));
         }
+    }
+
+    /// G107 on a cylinder of radius 10: Z20 C180 is sqrt(20² + (10·π)²)
+    /// = 37.242 mm on the developed surface, 3.724 s at F600 mm/min (plus
+    /// the ramps). After G107 C0 the same move back is timed as the
+    /// control times a linear-and-rotary move, by its linear axes: 20 mm,
+    /// 2 s.
+    #[test]
+    fn g107_feed_is_a_speed_on_the_cylinder_surface() {
+        let d = Dynamics::uniform([true; NAXES], 24000.0, 2000.0, 1e5, 10000.0);
+        let mut pl = Planner::new(d, [0.0; NAXES], 0.0);
+        let mv = |z: f64, c: f64| {
+            let p = [0.0, 0.0, z, 0.0, 0.0, c];
+            ev(Canon::Feed {
+                m: Motion { to: p, mto: p },
+                feed: Feed::PerMin(600.0),
+            })
+        };
+        pl.push(&ev(Canon::Mode(ModeChange::Rotary(
+            kerf_canon::RotaryMode::Cylinder {
+                radius: 10.0,
+                plane: Plane::ZX,
+            },
+        ))));
+        pl.push(&mv(20.0, 180.0));
+        pl.push(&ev(Canon::Mode(ModeChange::Rotary(
+            kerf_canon::RotaryMode::Off,
+        ))));
+        pl.push(&mv(0.0, 0.0));
+        pl.finish();
+        let surface = (400.0 + (10.0 * std::f64::consts::PI).powi(2)).sqrt();
+        let machine = 20.0;
+        assert!(
+            (pl.feed_length - surface - machine).abs() < 1e-9,
+            "{} vs {surface} + {machine}",
+            pl.feed_length
+        );
+        let t0 = pl.next_done().unwrap().time;
+        // The ramps and the settling add a few per cent (C's 2000°/s²
+        // limits the path acceleration along a move this steep in C).
+        assert!(t0 > surface / 10.0 && t0 < surface / 10.0 * 1.05, "{t0}");
+        let t1 = pl.next_done().unwrap().time;
+        assert!(t1 > machine / 10.0 && t1 < machine / 10.0 * 1.1, "{t1}");
     }
 
     #[test]
