@@ -9,12 +9,14 @@
 //! - [`SimSink`]: the material-removal simulation (`--stock`), its STL
 //!   and PNG, and the report's `sim` section.
 //! - [`Expand`]: the program as plain G-code for a target control
-//!   (docs/expand.md).
+//!   (docs/expand.md; [`ExpandBehind`] writes it on a thread of its own).
 //!
 //! Each takes any `io::Write`; formats are in docs/formats.md.
 //! [`WriteBehind`] is an `io::Write` that writes on a thread of its own.
 
+pub(crate) mod behind;
 pub mod expand;
+pub mod expand_behind;
 pub mod log;
 pub mod number;
 pub mod plot;
@@ -26,6 +28,7 @@ pub mod toolpath_behind;
 pub mod write_behind;
 
 pub use expand::Expand;
+pub use expand_behind::ExpandBehind;
 pub use log::Log;
 pub use plot::Plot;
 pub use report::Report;

@@ -1,74 +1,51 @@
 //! [`ToolpathBehind`]: the [`Toolpath`] sink with its formatting and its
-//! writes on a thread of its own, so that a run with `--toolpath` uses
-//! both cores: the interpreter and the planner on the caller's thread,
-//! the JSON text (about 2,000 instructions a record, as much as the
-//! interpreter's block) and the system calls on the other.
+//! writes on a thread of its own ([`Behind`]), so that a run with
+//! `--toolpath` uses both cores: the interpreter and the planner on the
+//! caller's thread, the JSON text (about 2,000 instructions a record, half
+//! the interpreter's block) and the system calls on the other.
 //!
 //! The caller's side copies each timed record (the event, its end point,
-//! time and feed) into a batch of [`BATCH`] records; full batches go to
-//! the thread over a bounded channel and come back empty to be filled
-//! again, so nothing is allocated per record (an event with a programmed
-//! end point, `Event::prog`, copies its box) and memory is bounded: at
-//! most [`IN_FLIGHT`] + 1 batches exist. A file name is sent once, in the
-//! batch of its first record. The records are the same bytes, in the
-//! same order, as [`Toolpath`] writes on its own; the thread's first
-//! error is returned by the next `timed` or by `finish`.
+//! time and feed) into the batch; nothing is allocated per record but an
+//! event's boxed programmed end point (`Event::prog`). A file name is sent
+//! once, before its first record. The records are the same bytes, in the
+//! same order, as [`Toolpath`] writes on its own.
 
 use std::io::{self, Write};
-use std::mem;
-use std::sync::mpsc::{self, Receiver, SyncSender, TryRecvError};
-use std::thread::{self, JoinHandle};
 
 use kerf_canon::{Event, Pos};
 
+use super::behind::Behind;
 use super::toolpath::Toolpath;
 use crate::sink::{Context, Sink, Timed};
 
-/// Records in one batch.
-pub const BATCH: usize = 1024;
-/// Batches handed to the thread and not yet returned, at most.
-pub const IN_FLIGHT: usize = 2;
-
-/// One timed record as the thread formats it.
-struct Rec {
-    event: Event,
-    to: Pos,
-    t_end: f64,
-    feed_mm_min: Option<f64>,
+/// What the thread is handed. Nearly every item is the large variant, so
+/// it is kept inline: a box would be an allocation per item.
+#[allow(clippy::large_enum_variant)]
+enum Item {
+    /// A file id and its name, before the file's first record.
+    Name(u32, String),
+    /// One timed record.
+    Rec {
+        event: Event,
+        to: Pos,
+        t_end: f64,
+        feed_mm_min: Option<f64>,
+    },
 }
 
-/// Records and the file names first used by them.
-#[derive(Default)]
-struct Batch {
-    names: Vec<(u32, String)>,
-    recs: Vec<Rec>,
-}
-
-/// The thread's side: formats and writes each batch, returns it empty.
-fn format_loop<W: Write>(
-    mut tp: Toolpath<W>,
-    full: Receiver<Batch>,
-    empty: SyncSender<Batch>,
-) -> io::Result<()> {
-    for mut b in full {
-        for (id, name) in b.names.drain(..) {
+fn take<W: Write>(tp: &mut Toolpath<W>, item: Item) -> io::Result<()> {
+    match item {
+        Item::Name(id, name) => {
             tp.name_file(id, &name);
+            Ok(())
         }
-        for r in &b.recs {
-            tp.write_named(&r.event, &r.to, r.t_end, r.feed_mm_min)?;
-        }
-        b.recs.clear();
-        // The caller may have finished and stopped taking batches back.
-        let _ = empty.send(b);
+        Item::Rec {
+            event,
+            to,
+            t_end,
+            feed_mm_min,
+        } => tp.write_named(&event, &to, t_end, feed_mm_min),
     }
-    tp.flush()
-}
-
-/// Connected to the formatting thread (after `start`).
-struct Running {
-    full: SyncSender<Batch>,
-    empty: Receiver<Batch>,
-    thread: JoinHandle<io::Result<()>>,
 }
 
 /// A toolpath written by a thread of its own; see the module
@@ -76,10 +53,7 @@ struct Running {
 pub struct ToolpathBehind<W: Write + Send + 'static> {
     /// The sink until `start` moves it to the thread.
     idle: Option<Toolpath<W>>,
-    running: Option<Running>,
-    batch: Batch,
-    /// Batches made so far (at most `IN_FLIGHT + 1`).
-    made: usize,
+    behind: Option<Behind<Item, ()>>,
     /// Per file id: its name has been sent.
     named: Vec<bool>,
 }
@@ -90,49 +64,9 @@ impl<W: Write + Send + 'static> ToolpathBehind<W> {
     pub fn new(tp: Toolpath<W>) -> ToolpathBehind<W> {
         ToolpathBehind {
             idle: Some(tp),
-            running: None,
-            batch: Batch {
-                names: Vec::new(),
-                recs: Vec::with_capacity(BATCH),
-            },
-            made: 1,
+            behind: None,
             named: Vec::new(),
         }
-    }
-
-    /// The thread has stopped: its error (or one saying it stopped).
-    fn failed(&mut self) -> io::Error {
-        match self.running.take().map(|r| r.thread.join()) {
-            Some(Ok(Err(e))) => e,
-            _ => io::Error::other("the toolpath thread stopped"),
-        }
-    }
-
-    /// Hands the batch to the thread and takes an empty one.
-    fn send(&mut self) -> io::Result<()> {
-        let Some(r) = &self.running else {
-            return Err(io::Error::other("the toolpath was not started"));
-        };
-        let next = match r.empty.try_recv() {
-            Ok(b) => Some(b),
-            Err(TryRecvError::Empty) if self.made <= IN_FLIGHT => {
-                self.made += 1;
-                Some(Batch {
-                    names: Vec::new(),
-                    recs: Vec::with_capacity(BATCH),
-                })
-            }
-            Err(TryRecvError::Empty) => r.empty.recv().ok(),
-            Err(TryRecvError::Disconnected) => None,
-        };
-        let Some(next) = next else {
-            return Err(self.failed());
-        };
-        let full = mem::replace(&mut self.batch, next);
-        if r.full.send(full).is_err() {
-            return Err(self.failed());
-        }
-        Ok(())
     }
 }
 
@@ -146,18 +80,14 @@ impl<W: Write + Send + 'static> Sink for ToolpathBehind<W> {
             return Ok(());
         };
         tp.start(cx)?;
-        let (full, full_rx) = mpsc::sync_channel::<Batch>(IN_FLIGHT);
-        let (empty_tx, empty) = mpsc::sync_channel::<Batch>(IN_FLIGHT + 1);
-        let thread = thread::spawn(move || format_loop(tp, full_rx, empty_tx));
-        self.running = Some(Running {
-            full,
-            empty,
-            thread,
-        });
+        self.behind = Some(Behind::spawn(tp, take, |mut tp| tp.flush()));
         Ok(())
     }
 
     fn timed(&mut self, t: &Timed, cx: &Context) -> io::Result<()> {
+        let Some(b) = self.behind.as_mut() else {
+            return Err(io::Error::other("the toolpath was not started"));
+        };
         let id = t.event.src.file;
         let i = id as usize;
         if self.named.len() <= i {
@@ -165,34 +95,20 @@ impl<W: Write + Send + 'static> Sink for ToolpathBehind<W> {
         }
         if !self.named[i] {
             self.named[i] = true;
-            self.batch.names.push((id, cx.file(id).to_string()));
+            b.push(Item::Name(id, cx.file(id).to_string()))?;
         }
-        self.batch.recs.push(Rec {
+        b.push(Item::Rec {
             event: t.event.clone(),
             to: t.to,
             t_end: t.t_end,
             feed_mm_min: t.feed_mm_min,
-        });
-        if self.batch.recs.len() >= BATCH {
-            self.send()?;
-        }
-        Ok(())
+        })
     }
 
     fn finish(&mut self, _cx: &Context, _alarm: Option<&kerf_canon::Alarm>) -> io::Result<()> {
-        if self.running.is_none() {
-            return Ok(());
-        }
-        if !self.batch.recs.is_empty() || !self.batch.names.is_empty() {
-            self.send()?;
-        }
-        let Some(r) = self.running.take() else {
-            return Ok(());
-        };
-        drop(r.full);
-        match r.thread.join() {
-            Ok(res) => res,
-            Err(_) => Err(io::Error::other("the toolpath thread stopped")),
+        match self.behind.take() {
+            Some(b) => b.finish(),
+            None => Ok(()),
         }
     }
 }
@@ -200,6 +116,7 @@ impl<W: Write + Send + 'static> Sink for ToolpathBehind<W> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sinks::behind::{BATCH, IN_FLIGHT};
     use std::sync::{Arc, Mutex};
 
     use kerf_canon::{Canon, Motion, SrcRef};
