@@ -112,7 +112,8 @@ impl Outputs {
                 .transpose()
         };
         let res = self.sim_res()?;
-        let sink = SimSink::new(stock, tools, res, boxed(&self.stl)?, boxed(&self.png)?)?;
+        let sink = SimSink::new(stock, tools, res, boxed(&self.stl)?, boxed(&self.png)?)
+            .map_err(|e| e.to_string())?;
         Ok(Some(sink))
     }
 

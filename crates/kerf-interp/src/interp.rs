@@ -1176,12 +1176,10 @@ impl Interp {
                     self.emit_end(m)?;
                     self.finished = true;
                 }
-                MAction::Aux => {
+                MAction::Aux => self.emit(Canon::Aux { m, name: mc.name }),
+                MAction::FeedOverride(on) => {
                     self.emit(Canon::Aux { m, name: mc.name });
-                    // 002: M48 use / M49 ignore the feedrate override.
-                    if self.dialect.caps.m48_feed_override && (m == 48 || m == 49) {
-                        self.emit(Canon::Mode(ModeChange::FeedOverride(m == 48)));
-                    }
+                    self.emit(Canon::Mode(ModeChange::FeedOverride(on)));
                 }
                 MAction::SpindleCw
                 | MAction::SpindleCcw

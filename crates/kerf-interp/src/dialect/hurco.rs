@@ -114,8 +114,8 @@ const M_LOW: [MCode; 12] = [
     m(8, "primary coolant on", Before, CoolantFlood), // beginning of block
     m(9, "coolant off", After, CoolantOff),  // "usually ... at the end of the block"
     m(30, "end of program (rewind)", After, End), // end of block system M code
-    m(48, "use feedrate override", Before, Aux), // feedrate override stage
-    m(49, "ignore feedrate override", Before, Aux),
+    m(48, "use feedrate override", Before, FeedOverride(true)), // feedrate override stage
+    m(49, "ignore feedrate override", Before, FeedOverride(false)),
 ];
 
 /// M codes of 002 after the job-syncing range.
@@ -246,7 +246,6 @@ pub static DIALECT: Dialect = Dialect {
         linear_rapid: true,
         stops_stop_spindle: true,
         max_m_per_block: crate::words::MAX_CODES,
-        m48_feed_override: true,
         offsets_wait_for_move: true,
         reset_keeps_tool_offset: true,
         part_zero_is_e1: true,

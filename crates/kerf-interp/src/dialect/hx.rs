@@ -203,7 +203,7 @@ pub static MCODES: &[MCode] = &[
     m(7, "coolant mist on", Before, CoolantMist), // assumed (builder code, not in §11.1)
     m(8, "coolant on", Before, CoolantFlood),
     m(9, "coolant off", After, CoolantOff),
-    m(19, "spindle orientation", After, Aux), // assumed (builder code, not in §11.1)
+    m(19, "spindle orientation", After, Aux).and(MAlso::Orient), // assumed (builder code, not in §11.1)
     m(30, "end of tape", After, End),
     m(98, "sub-program call", After, SubCall),
     m(99, "end of sub-program", After, SubReturn),
@@ -239,7 +239,6 @@ pub static DIALECT: Dialect = Dialect {
         linear_rapid: false,
         stops_stop_spindle: false,
         max_m_per_block: 3,
-        m48_feed_override: false,
         offsets_wait_for_move: false,
         reset_keeps_tool_offset: false,
         part_zero_is_e1: false,

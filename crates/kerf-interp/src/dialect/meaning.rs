@@ -313,6 +313,30 @@ pub enum Kind {
     Diameter,
 }
 
+/// A set of [`Kind`]s: which kinds of code one block carries, found
+/// once as its codes are checked, so that a phase with nothing to do
+/// for the block skips it with one test instead of looking its codes up
+/// again.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct KindSet(u32);
+
+impl KindSet {
+    /// Adds a kind.
+    pub fn insert(&mut self, k: Kind) {
+        self.0 |= 1 << k as u32;
+    }
+
+    /// Whether the set holds `k`.
+    pub fn has(self, k: Kind) -> bool {
+        self.0 & (1 << k as u32) != 0
+    }
+
+    /// Whether the set holds any of `ks`.
+    pub fn any(self, ks: &[Kind]) -> bool {
+        ks.iter().any(|&k| self.has(k))
+    }
+}
+
 impl Means {
     /// The kind of state this meaning sets.
     pub const fn kind(self) -> Kind {
@@ -394,4 +418,51 @@ pub(crate) const fn common(code10: u16) -> Option<Means> {
         970 => Means::Css(false),
         _ => return None,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every kind has its own bit: a set holds what was put in, nothing
+    /// else.
+    #[test]
+    fn kind_sets() {
+        let all = [
+            Kind::OneShot,
+            Kind::Motion,
+            Kind::Css,
+            Kind::Distance,
+            Kind::FeedMode,
+            Kind::Units,
+            Kind::CutterComp,
+            Kind::Stroke,
+            Kind::Cycle,
+            Kind::Scaling,
+            Kind::ModalCall,
+            Kind::LengthComp,
+            Kind::Work,
+            Kind::CuttingMode,
+            Kind::Plane,
+            Kind::PolarCommand,
+            Kind::Rotation,
+            Kind::CycleReturn,
+            Kind::PolarInterp,
+            Kind::HighSpeed,
+            Kind::Cylindrical,
+            Kind::Stitch,
+            Kind::Diameter,
+        ];
+        assert!(all.len() <= 32);
+        for (i, &a) in all.iter().enumerate() {
+            let mut s = KindSet::default();
+            assert!(!s.has(a));
+            s.insert(a);
+            for (j, &b) in all.iter().enumerate() {
+                assert_eq!(s.has(b), i == j, "{a:?} {b:?}");
+            }
+            assert!(s.any(&[Kind::Diameter, a]));
+        }
+        assert!(!KindSet::default().any(&all));
+    }
 }

@@ -85,6 +85,9 @@ pub enum MAction {
     SubCall,
     /// M99 subprogram return.
     SubReturn,
+    /// 002 M48 (true) / M49: use / ignore the feedrate override (an
+    /// auxiliary event, then the mode).
+    FeedOverride(bool),
 }
 
 /// One M code of a dialect.
@@ -94,6 +97,24 @@ pub struct MCode {
     pub name: &'static str,
     pub when: MWhen,
     pub action: MAction,
+    /// What the code does besides its action.
+    pub also: MAlso,
+}
+
+/// What an M code does besides its [`MAction`] (a PUMA compound code,
+/// the orientation a cycle emits).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MAlso {
+    Nothing,
+    /// PUMA M63/M64: the coolant on with the spindle, before the motion.
+    CoolantOn,
+    /// PUMA M65: the coolant off with the spindle, after the motion.
+    CoolantOff,
+    /// PUMA M76 (true) / M77: thread chamfering in G92/G76.
+    ThreadChamfer(bool),
+    /// The spindle orientation code the HX cycles G76/G87 emit for their
+    /// oriented stop.
+    Orient,
 }
 
 /// The language of one control.
@@ -165,8 +186,6 @@ pub struct Caps {
     /// M codes one block may carry: 3 (Fanuc), as many as the block holds
     /// (002).
     pub max_m_per_block: usize,
-    /// 002: M48 / M49 switch the feedrate override on / off.
-    pub m48_feed_override: bool,
     /// 002 Table 16: the offsets of a T or E code take effect with the
     /// next move, and a move's words go to the position they name.
     pub offsets_wait_for_move: bool,
@@ -399,6 +418,14 @@ pub(crate) const fn m(code: u16, name: &'static str, when: MWhen, action: MActio
         name,
         when,
         action,
+        also: MAlso::Nothing,
+    }
+}
+
+impl MCode {
+    /// The same code doing `also` besides its action.
+    pub(crate) const fn and(self, also: MAlso) -> MCode {
+        MCode { also, ..self }
     }
 }
 
@@ -441,6 +468,27 @@ mod tests {
                     assert_ne!(a.code, b.code, "{id:?} duplicate M{}", a.code);
                 }
             }
+        }
+    }
+
+    /// 001's compound M codes and the orientation code of the HX cycles
+    /// (M19) are in the tables.
+    #[test]
+    fn m_codes_besides_their_action() {
+        let also = |id, code| Dialect::get(id).mcode(code).map(|m| m.also);
+        assert_eq!(also(DialectId::Hx, 19), Some(MAlso::Orient));
+        assert_eq!(also(DialectId::Puma, 63), Some(MAlso::CoolantOn));
+        assert_eq!(also(DialectId::Puma, 64), Some(MAlso::CoolantOn));
+        assert_eq!(also(DialectId::Puma, 65), Some(MAlso::CoolantOff));
+        assert_eq!(also(DialectId::Puma, 76), Some(MAlso::ThreadChamfer(true)));
+        assert_eq!(also(DialectId::Puma, 77), Some(MAlso::ThreadChamfer(false)));
+        for id in [DialectId::Hx, DialectId::Puma, DialectId::Hurco] {
+            let n = Dialect::get(id)
+                .mcodes
+                .iter()
+                .filter(|m| m.also == MAlso::Orient)
+                .count();
+            assert!(n <= 1, "{id:?}: {n} orientation codes");
         }
     }
 

@@ -149,7 +149,7 @@ pub static MCODES: &[MCode] = &[
     m(15, "air blow off", After, Aux),
     m(17, "machine lock on (MDI only)", Before, Aux),
     m(18, "machine lock off (MDI only)", After, Aux),
-    m(19, "main spindle orientation", After, Aux),
+    m(19, "main spindle orientation", After, Aux).and(MAlso::Orient),
     m(24, "chip conveyor run", Before, Aux),
     m(25, "chip conveyor stop", After, Aux),
     m(30, "program end and rewind", After, End),
@@ -175,9 +175,9 @@ pub static MCODES: &[MCode] = &[
     m(59, "steady rest 2 unclamp", After, Aux),
     m(61, "switching low speed (aP60 spindle motor, Y connection)", Before, Aux),
     m(62, "switching high speed (aP60 spindle motor, delta connection)", Before, Aux),
-    m(63, "main spindle CW and coolant on", Before, SpindleCw), // coolant part not modelled
-    m(64, "main spindle CCW and coolant on", Before, SpindleCcw), // list: "coolant off"; text: "on"
-    m(65, "main spindle and coolant stop", After, SpindleStop),
+    m(63, "main spindle CW and coolant on", Before, SpindleCw).and(MAlso::CoolantOn),
+    m(64, "main spindle CCW and coolant on", Before, SpindleCcw).and(MAlso::CoolantOn), // list: "coolant off"; text: "on"
+    m(65, "main spindle and coolant stop", After, SpindleStop).and(MAlso::CoolantOff),
     m(66, "dual chucking low clamp", Before, Aux),
     m(67, "dual chucking high clamp", Before, Aux),
     m(68, "main chuck clamp", Before, Aux),
@@ -185,8 +185,8 @@ pub static MCODES: &[MCode] = &[
     m(70, "dual tailstock low advance", Before, Aux),
     m(74, "error detect on", Before, Aux),
     m(75, "error detect off", Before, Aux), // power-on state
-    m(76, "thread chamfering on", Before, Aux),
-    m(77, "thread chamfering off", Before, Aux), // modal; power-on state assumed
+    m(76, "thread chamfering on", Before, Aux).and(MAlso::ThreadChamfer(true)),
+    m(77, "thread chamfering off", Before, Aux).and(MAlso::ThreadChamfer(false)), // modal; power-on state assumed
     m(78, "tailstock quill advance", Before, Aux),
     m(79, "tailstock quill retract", After, Aux),
     m(80, "Q-setter swing arm down", Before, Aux),
@@ -257,7 +257,6 @@ pub static DIALECT: Dialect = Dialect {
         linear_rapid: false,
         stops_stop_spindle: false,
         max_m_per_block: 3,
-        m48_feed_override: false,
         offsets_wait_for_move: false,
         reset_keeps_tool_offset: false,
         part_zero_is_e1: false,

@@ -10,12 +10,11 @@
 
 use super::*;
 use crate::dialect::meaning::HoleCycle;
+use crate::dialect::MAlso;
 
 /// Most moves one canned-cycle block may queue (K repeats × pecks); more
 /// is an alarm rather than an unbounded queue.
 const MAX_CYCLE_MOVES: f64 = 100_000.0;
-/// The orientation M code emitted for an oriented spindle stop (G76/G87).
-const ORIENT_M: u32 = 19;
 
 /// Profile parameters the cycles read, fetched once at start.
 #[derive(Clone, Copy, Debug, Default)]
@@ -104,10 +103,15 @@ impl Interp {
         was_cycle: bool,
         plane_changed: bool,
         motion: Option<(u16, u32)>,
+        kinds: crate::dialect::meaning::KindSet,
     ) -> R<bool> {
         if let Some((m, m_at)) = motion {
             // The block's first code of the cycle group, unless it is G80.
-            let first = self.block_g(|m| matches!(m, Means::Cycle(_)));
+            let first = if kinds.has(crate::dialect::meaning::Kind::Cycle) {
+                self.block_g(|m| matches!(m, Means::Cycle(_)))
+            } else {
+                None
+            };
             let cycle = |g: &(u16, u32)| {
                 self.gcode(g.0)
                     .is_some_and(|c| c.means != Means::Cycle(None))
@@ -489,11 +493,14 @@ impl Interp {
     fn orient(&mut self) {
         self.st.spindle = SpindleDir::Stop;
         self.st.last_rpm = 0.0;
-        let name = self
-            .mcode(ORIENT_M)
-            .map(|m| m.name)
-            .unwrap_or("spindle orientation");
-        self.emit(Canon::Aux { m: ORIENT_M, name });
+        // The table's orientation code (M19 on the HX).
+        let orient = self.dialect.mcodes.iter().find(|m| m.also == MAlso::Orient);
+        if let Some(mc) = orient {
+            self.emit(Canon::Aux {
+                m: u32::from(mc.code),
+                name: mc.name,
+            });
+        }
     }
 
     /// The cutting mode of group 15 in force, re-emitted after tapping.

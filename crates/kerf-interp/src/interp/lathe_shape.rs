@@ -308,7 +308,8 @@ impl Interp {
             }
         }
         for &(m, mat) in self.words.ms() {
-            if matches!(m, 98 | 99) {
+            let call = self.mcode(m).map(|c| c.action);
+            if matches!(call, Some(MAction::SubCall | MAction::SubReturn)) {
                 return Err(ShapeErr::Here(self.alarm(
                     AlarmKind::MrcIllegal,
                     mat,

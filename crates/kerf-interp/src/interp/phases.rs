@@ -6,7 +6,7 @@
 //! block's [`BlockRun`].
 
 use super::*;
-use crate::dialect::meaning::{HoleCycle, LatheCycle, OneShot as Os};
+use crate::dialect::meaning::{HoleCycle, Kind, KindSet, LatheCycle, OneShot as Os};
 use crate::dialect::Phase;
 
 /// What a phase tells the walk.
@@ -41,6 +41,8 @@ pub(super) struct BlockRun {
     n_one: usize,
     /// M98 / M99.
     transfer: Option<(MAction, u32)>,
+    /// The kinds of G code in the block.
+    kinds: KindSet,
     /// Hurco: the block is a G78 / G38 macro cycle (code, byte, face M).
     hurco_macro: Option<(u16, u32, Option<WVal>)>,
     /// HX: a canned cycle mode was in force before the block.
@@ -105,6 +107,7 @@ impl Interp {
         let mut motion: Option<(u16, u32)> = None;
         let mut one_shot: [(u16, u32); MAX_CODES] = [(0, 0); MAX_CODES];
         let mut n_one = 0;
+        let mut kinds = KindSet::default();
         for i in 0..self.words.ng {
             let (c, at) = self.words.g[i];
             let Some(g) = self.gcode(c) else {
@@ -125,6 +128,7 @@ impl Interp {
                     ),
                 ));
             }
+            kinds.insert(g.means.kind());
             if matches!(
                 g.means,
                 Means::OneShot(Os::MacroCall) | Means::ModalCall(true)
@@ -150,6 +154,7 @@ impl Interp {
             one_shot,
             n_one,
             transfer,
+            kinds,
             hurco_macro: None,
             was_cycle: false,
             plane_before: self.st.modal.plane.means,
@@ -172,7 +177,7 @@ impl Interp {
             Phase::ModalG => self.apply_modal_codes(b),
             Phase::HxCycleMode => {
                 let plane_changed = self.st.modal.plane.means != b.plane_before;
-                b.cycle = self.cycle_mode(b.was_cycle, plane_changed, b.motion)?;
+                b.cycle = self.cycle_mode(b.was_cycle, plane_changed, b.motion, b.kinds)?;
             }
             Phase::HurcoCycleMode => b.hurco_cycle = self.hurco_cycle_mode(b.motion)?,
             Phase::HurcoMacro => {
@@ -181,15 +186,21 @@ impl Interp {
                 }
             }
             Phase::Frames => {
-                let rdata = self.rotary_codes_and_event()?;
-                b.xdata = self.transform_codes(b.one_shot())? || rdata;
+                // G112/G113/G107 in the block, or a mode in force to check
+                // the block against.
+                let rotary = b.kinds.any(&[Kind::PolarInterp, Kind::Cylindrical])
+                    || self.st.rot != polar_interp::RotInterp::Off;
+                let rdata = rotary && self.rotary_codes_and_event()?;
+                b.xdata = self.transform_codes(b.one_shot(), b.kinds)? || rdata;
             }
-            Phase::ToolLength => self.tool_length_codes()?,
-            Phase::Comp => b.g39 = self.block_comp(b.one_shot(), b.cycle)?,
+            Phase::ToolLength => self.tool_length_codes(b.kinds)?,
+            Phase::Comp => b.g39 = self.block_comp(b.one_shot(), b.cycle, b.kinds)?,
             Phase::OneShots => b.os = self.one_shots(b.one_shot())?,
             Phase::CssRadius => self.g96_r()?,
-            Phase::OverrideM => self.run_m(|m| matches!(m.0, 48 | 49))?,
-            Phase::CoolantM => self.run_m(|m| matches!(m.0, 7 | 8))?,
+            Phase::OverrideM => self.run_m(|m| matches!(m.2, MAction::FeedOverride(_)))?,
+            Phase::CoolantM => {
+                self.run_m(|m| matches!(m.2, MAction::CoolantMist | MAction::CoolantFlood))?
+            }
             Phase::ToolAndFixture => self.hurco_t_e()?,
             Phase::Feed => self.f_word(b.os.dwell)?,
             Phase::Tool => self.t_word()?,
@@ -198,9 +209,13 @@ impl Interp {
                 m.1 == MWhen::Before && !matches!(m.2, MAction::SpindleCw | MAction::SpindleCcw)
             })?,
             // Other before-motion machine functions, after the spindle.
-            Phase::HurcoMBefore => {
-                self.run_m(|m| m.1 == MWhen::Before && !matches!(m.0, 7 | 8 | 48 | 49))?
-            }
+            Phase::HurcoMBefore => self.run_m(|m| {
+                m.1 == MWhen::Before
+                    && !matches!(
+                        m.2,
+                        MAction::CoolantMist | MAction::CoolantFlood | MAction::FeedOverride(_)
+                    )
+            })?,
             Phase::Dwell => {
                 if b.os.dwell {
                     self.dwell()?;
@@ -277,15 +292,11 @@ impl Interp {
     }
 
     /// D, and G43/G44/G49 or H: the tool length offset.
-    fn tool_length_codes(&mut self) -> R<()> {
+    fn tool_length_codes(&mut self, kinds: KindSet) -> R<()> {
         if let Some(dw) = self.words.get(b'D') {
             self.sys.d = dw.v;
         }
-        if self.words.has(b'H')
-            || self
-                .block_g(|m| matches!(m, Means::LengthComp(_)))
-                .is_some()
-        {
+        if self.words.has(b'H') || kinds.has(Kind::LengthComp) {
             self.tool_length()?;
         }
         Ok(())
@@ -310,14 +321,11 @@ impl Interp {
 
     /// Cutter / tool nose radius compensation codes, before the one-shots
     /// (a G92 or G28 ends a held move first). True for a G39 block.
-    fn block_comp(&mut self, one_shot: &[(u16, u32)], cycle: bool) -> R<bool> {
-        let comp_code = |m| {
-            matches!(
-                m,
-                Means::Plane(_) | Means::OneShot(Os::CompCorner) | Means::CutterComp(_)
-            )
-        };
-        let comp_words = self.words.has(b'D') || self.block_g(comp_code).is_some();
+    fn block_comp(&mut self, one_shot: &[(u16, u32)], cycle: bool, kinds: KindSet) -> R<bool> {
+        let g39 = Some(Means::OneShot(Os::CompCorner));
+        let comp_words = self.words.has(b'D')
+            || kinds.any(&[Kind::Plane, Kind::CutterComp])
+            || one_shot.iter().any(|g| self.means_of(g.0) == g39);
         if comp_words || (self.comp.is_some() && (!one_shot.is_empty() || cycle)) {
             // The one-shots that move otherwise than by G00-G03.
             let special = cycle

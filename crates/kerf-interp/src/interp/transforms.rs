@@ -6,7 +6,7 @@
 //! The geometry lives in [`crate::xform`].
 
 use super::*;
-use crate::dialect::meaning::OneShot;
+use crate::dialect::meaning::{Kind, KindSet, OneShot};
 use crate::xform::{Rotation, Scale};
 
 impl Interp {
@@ -14,10 +14,65 @@ impl Interp {
     /// modal codes, before the other one-shot codes and motion). Returns
     /// true when the block's axis words were the data of one of them: the
     /// block then makes no move.
-    pub(super) fn transform_codes(&mut self, one_shot: &[(u16, u32)]) -> R<bool> {
+    pub(super) fn transform_codes(&mut self, one_shot: &[(u16, u32)], kinds: KindSet) -> R<bool> {
         if !self.dialect.caps.frame_codes {
             return Ok(false);
         }
+        let frame = [
+            Kind::PolarCommand,
+            Kind::Scaling,
+            Kind::Rotation,
+            Kind::Stroke,
+        ];
+        let mut data = kinds.any(&frame) && self.frame_modal_codes()?;
+        if let Some(r) = self.st.xf.rot {
+            if r.plane != self.st.modal.plane.means {
+                let at = self
+                    .block_g(|m| matches!(m, Means::Plane(_)))
+                    .map_or(0, |g| g.1);
+                return Err(self.alarm(
+                    AlarmKind::TransformConflict,
+                    at,
+                    "plane change in coordinate rotation mode (cancel with G69 first)",
+                ));
+            }
+        }
+        for &(c, at) in one_shot {
+            let Some(Means::OneShot(what)) = self.gcode(c).map(|g| g.means) else {
+                continue;
+            };
+            let not_in_xf = matches!(what, OneShot::RefReturn(_) | OneShot::CoordinateSetting);
+            if self.st.xf.active() && not_in_xf {
+                let what = if self.st.xf.rot.is_some() {
+                    "coordinate rotation (G69 first)"
+                } else {
+                    "scaling (G50 first)"
+                };
+                return Err(self.alarm(
+                    AlarmKind::TransformConflict,
+                    at,
+                    format!("G{} is not allowed in {what}", fmt_code(c)),
+                ));
+            }
+            match what {
+                OneShot::LocalCoords => {
+                    self.g52();
+                    data = true;
+                }
+                OneShot::FrameData => {
+                    self.g10(at)?;
+                    data = true;
+                }
+                _ => {}
+            }
+        }
+        Ok(data)
+    }
+
+    /// The block's G15/G16, G50/G51, G68/G69 and G22 (only called for a
+    /// block that has one). True when the axis words were G51's, G68's
+    /// or G22's data.
+    fn frame_modal_codes(&mut self) -> R<bool> {
         let mut data = false;
         // Cutter compensation works on the transformed path, so G68/G69
         // may change the rotation in offset mode (000 §15.4.2's N1-N8).
@@ -63,47 +118,6 @@ impl Interp {
                 }
                 Some(Means::Stroke(true)) => {
                     self.g22(at)?;
-                    data = true;
-                }
-                _ => {}
-            }
-        }
-        if let Some(r) = self.st.xf.rot {
-            if r.plane != self.st.modal.plane.means {
-                let at = self
-                    .block_g(|m| matches!(m, Means::Plane(_)))
-                    .map_or(0, |g| g.1);
-                return Err(self.alarm(
-                    AlarmKind::TransformConflict,
-                    at,
-                    "plane change in coordinate rotation mode (cancel with G69 first)",
-                ));
-            }
-        }
-        for &(c, at) in one_shot {
-            let Some(Means::OneShot(what)) = self.gcode(c).map(|g| g.means) else {
-                continue;
-            };
-            let not_in_xf = matches!(what, OneShot::RefReturn(_) | OneShot::CoordinateSetting);
-            if self.st.xf.active() && not_in_xf {
-                let what = if self.st.xf.rot.is_some() {
-                    "coordinate rotation (G69 first)"
-                } else {
-                    "scaling (G50 first)"
-                };
-                return Err(self.alarm(
-                    AlarmKind::TransformConflict,
-                    at,
-                    format!("G{} is not allowed in {what}", fmt_code(c)),
-                ));
-            }
-            match what {
-                OneShot::LocalCoords => {
-                    self.g52();
-                    data = true;
-                }
-                OneShot::FrameData => {
-                    self.g10(at)?;
                     data = true;
                 }
                 _ => {}
