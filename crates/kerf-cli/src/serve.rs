@@ -101,7 +101,8 @@ fn serve(a: Args) -> Result<(), String> {
     });
     let stock = match &a.stock {
         Some(spec) => {
-            Some(kerf_sim::Stock::parse(spec).map_err(|e| format!("--stock {spec}: {e}"))?)
+            // The error names the option and the spec itself.
+            Some(kerf_sim::Stock::parse(spec).map_err(|e| e.to_string())?)
         }
         None => None,
     };

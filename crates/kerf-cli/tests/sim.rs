@@ -143,3 +143,15 @@ fn without_stock_the_report_has_no_sim_section() {
     let text = std::fs::read_to_string(&rep).unwrap();
     assert!(!text.contains("\"sim\""));
 }
+
+#[test]
+fn serve_refuses_a_bad_stock_before_binding_and_names_it_once() {
+    let o = kerf()
+        .args(["serve", "--machine", "hx-mc", "--stock", "box:1,2"])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert_eq!(e.matches("--stock box:1,2").count(), 1, "{e}");
+    assert!(e.contains("box needs 6 values"), "{e}");
+}
