@@ -7,7 +7,7 @@ use std::io::{BufWriter, Write};
 use std::path::Path;
 use std::process::ExitCode;
 
-use kerf_control::{sinks::Expand, Sink};
+use kerf_control::{sinks::ExpandBehind, Sink};
 use kerf_expand::Target;
 
 use crate::args::Common;
@@ -31,14 +31,15 @@ pub fn expand(c: &Common, to: &str, out: Option<&Path>) -> ExitCode {
         Err(e) => return usage_error(e),
     };
     runner.interpret_only();
-    let w: Box<dyn Write> = match out {
+    // Written by a thread of its own (the interpreter keeps this one).
+    let w: Box<dyn Write + Send> = match out {
         Some(p) => match File::create(p) {
             Ok(f) => Box::new(f),
             Err(e) => return usage_error(format!("{}: {e}", p.display())),
         },
-        None => Box::new(std::io::stdout().lock()),
+        None => Box::new(std::io::stdout()),
     };
-    let mut sink = Expand::new(BufWriter::with_capacity(1 << 16, w), target);
+    let mut sink = ExpandBehind::new(BufWriter::with_capacity(1 << 16, w), target);
     let mut refs: [&mut dyn Sink; 1] = [&mut sink];
     let outcome = match progress::run_to_end(runner, &mut refs, c.quiet) {
         Ok(o) => o,

@@ -47,8 +47,11 @@ fn main() -> ExitCode {
     }
 }
 
+/// Prints `kerf: MESSAGE` (a system message without its `(os error N)`)
+/// and gives exit status 2.
 fn usage_error(msg: impl std::fmt::Display) -> ExitCode {
-    eprintln!("kerf: {msg}");
+    let msg = msg.to_string();
+    eprintln!("kerf: {}", output_paths::strip_os_error(&msg));
     ExitCode::from(2)
 }
 

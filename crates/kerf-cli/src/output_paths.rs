@@ -54,9 +54,17 @@ pub fn check_writable(option: &'static str, path: &Path) -> Result<(), OutputPat
 
 /// The system's message for `e` without the trailing `(os error N)`.
 pub fn io_reason(e: &io::Error) -> String {
-    let s = e.to_string();
+    strip_os_error(&e.to_string()).to_string()
+}
+
+/// `s` without a trailing ` (os error N)`.
+pub fn strip_os_error(s: &str) -> &str {
     match s.rfind(" (os error ") {
-        Some(i) if s.ends_with(')') => s[..i].to_string(),
+        Some(i)
+            if s.ends_with(')') && s[i + 11..s.len() - 1].bytes().all(|b| b.is_ascii_digit()) =>
+        {
+            &s[..i]
+        }
         _ => s,
     }
 }
@@ -114,5 +122,13 @@ mod tests {
         assert_eq!(io_reason(&e), "Permission denied");
         let e = io::Error::other("plain");
         assert_eq!(io_reason(&e), "plain");
+        assert_eq!(
+            strip_os_error("a.nc: No such file or directory (os error 2)"),
+            "a.nc: No such file or directory"
+        );
+        assert_eq!(
+            strip_os_error("see (os error notes)"),
+            "see (os error notes)"
+        );
     }
 }

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use kerf_control::sinks::plot::PlotFormat;
 use kerf_control::sinks::sim::check_stock;
-use kerf_control::sinks::{Log, Plot, Report, Sample, SimSink, Toolpath, WriteBehind};
+use kerf_control::sinks::{Log, Plot, Report, Sample, SimSink, Toolpath, ToolpathBehind};
 use kerf_control::Sink;
 use kerf_interp::machine::MachineKind;
 use kerf_interp::Profile;
@@ -23,11 +23,11 @@ fn create(path: &Path) -> Result<Out, String> {
         .map_err(|e| format!("{}: {}", path.display(), io_reason(&e)))
 }
 
-/// A large output (the toolpath): written by a thread of its own in 1 MiB
-/// pieces, so that the system calls run beside the interpreter.
-fn create_behind(path: &Path) -> Result<WriteBehind, String> {
+/// The toolpath: formatted and written by a thread of its own (the
+/// interpreter and the planner keep this one), in 1 MiB writes.
+fn toolpath(path: &Path) -> Result<ToolpathBehind<Out>, String> {
     File::create(path)
-        .map(|f| WriteBehind::new(f, 1 << 20))
+        .map(|f| ToolpathBehind::new(Toolpath::new(BufWriter::with_capacity(1 << 20, f))))
         .map_err(|e| format!("{}: {}", path.display(), io_reason(&e)))
 }
 
@@ -112,7 +112,8 @@ impl Outputs {
                 .transpose()
         };
         let res = self.sim_res()?;
-        let sink = SimSink::new(stock, tools, res, boxed(&self.stl)?, boxed(&self.png)?)?;
+        let sink = SimSink::new(stock, tools, res, boxed(&self.stl)?, boxed(&self.png)?)
+            .map_err(|e| e.to_string())?;
         Ok(Some(sink))
     }
 
@@ -130,7 +131,7 @@ impl Outputs {
     pub fn open(&self) -> Result<Vec<Box<dyn Sink>>, String> {
         let mut sinks: Vec<Box<dyn Sink>> = Vec::new();
         if let Some(p) = &self.toolpath {
-            sinks.push(Box::new(Toolpath::new(create_behind(p)?)));
+            sinks.push(Box::new(toolpath(p)?));
         }
         if let Some((dt, p)) = sample_arg(&self.sample)? {
             sinks.push(Box::new(Sample::new(dt, create(&p)?)));

@@ -66,7 +66,8 @@ impl Progress {
             return;
         }
         let (read, len) = r.source_progress().unwrap_or((0, 0));
-        let bar = self.bar.get_or_insert_with(|| new_bar(len));
+        let since = self.start.elapsed();
+        let bar = self.bar.get_or_insert_with(|| new_bar(len, since));
         bar.set_position(read);
         bar.set_message(format!("{} blocks", r.interp().blocks()));
     }
@@ -79,12 +80,27 @@ impl Progress {
     }
 }
 
-fn new_bar(len: u64) -> ProgressBar {
-    let bar = ProgressBar::new(len);
+/// A bar of `len` bytes shown `since` the run started (its clock counts
+/// from the run's start, not from when it appears).
+fn new_bar(len: u64, since: Duration) -> ProgressBar {
+    let bar = ProgressBar::new(len).with_elapsed(since);
     let style =
         ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {bytes}/{total_bytes} {msg}")
             .unwrap_or_else(|_| ProgressStyle::default_bar())
             .progress_chars("=> ");
     bar.set_style(style);
     bar
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_bar_counts_from_the_run_start() {
+        // A bar that appears 1.5 s into the run shows at least 1.5 s.
+        let bar = new_bar(100, Duration::from_millis(1500));
+        assert!(bar.elapsed() >= Duration::from_millis(1500));
+        assert!(bar.elapsed() < Duration::from_secs(60));
+    }
 }

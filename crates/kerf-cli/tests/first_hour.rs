@@ -328,3 +328,39 @@ fn columns_after_non_ascii_comments_count_characters() {
         "{err}"
     );
 }
+
+#[test]
+fn misspelt_machine_and_set_names_get_the_valid_one() {
+    let p = tmp("names.nc", b"G0 X1.\nM30\n");
+    let err = |args: &[&str]| {
+        let out = run(args, &p);
+        assert_eq!(out.status.code(), Some(2));
+        assert!(out.stdout.is_empty());
+        text(&out.stderr)
+    };
+    assert_eq!(
+        err(&["run", "--machine", "hx-mx"]),
+        "kerf: unknown machine 'hx-mx': did you mean 'hx-mc'? (built-in: hx-mc, puma-lathe, hurco-lathe)\n"
+    );
+    // A part of one name only.
+    assert!(err(&["run", "--machine", "puma"]).contains("did you mean 'puma-lathe'?"));
+    assert_eq!(
+        err(&["check", "--set", "singel_block=on"]),
+        "kerf: --set singel_block: unknown key; did you mean 'single_block'? (see docs/formats.md)\n"
+    );
+    assert_eq!(
+        err(&["run", "--set", "dry_run=maybe"]),
+        "kerf: --set dry_run=maybe: expected on or off\n"
+    );
+}
+
+#[test]
+fn a_missing_program_is_named_without_the_os_error_number() {
+    let missing = dir().join("no_such_program.nc");
+    let out = run(&["run"], &missing);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        text(&out.stderr),
+        format!("kerf: {}: No such file or directory\n", missing.display())
+    );
+}

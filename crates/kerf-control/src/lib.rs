@@ -35,6 +35,7 @@
 // Axis arithmetic indexes several parallel position arrays by slot.
 #![allow(clippy::needless_range_loop)]
 
+mod block_dims;
 pub mod dynamics;
 pub mod job;
 pub mod lint;

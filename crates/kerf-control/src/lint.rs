@@ -5,9 +5,10 @@
 //! point is set). In a program that otherwise writes its dimensions
 //! with a point, the few without one are almost always a slip.
 //!
-//! The check reads the program text with kerf-lang's reader and parser (a
-//! second pass, run beside the interpreter on its own thread by
-//! [`crate::Job::load`]); it looks at literal X Y Z U V W I J words, K on
+//! The check reads the program text with kerf-lang's reader (a second
+//! pass, run beside the interpreter on its own thread by
+//! [`crate::Job::load`]), plain blocks with `block_dims.rs`
+//! and the rest with kerf-lang's parser; it looks at literal X Y Z U V W I J words, K on
 //! the lathes (on the HX K is a cycle's repeat count) and R on the HX
 //! (an arc radius or a cycle's R level; on the lathes R counts or is
 //! coded), leaves out zero (the same either way) and blocks with G04
@@ -18,7 +19,9 @@
 use std::io;
 
 use kerf_interp::{Dialect, DialectId, Profile};
-use kerf_lang::{parse_block, Addr, Block, LexOptions, LineSource, ProgramRead, RawBlock, Val};
+use kerf_lang::{parse_block, Block, LexOptions, LineSource, ProgramRead, RawBlock};
+
+use crate::block_dims::BlockDims;
 
 use crate::warnings::Warning;
 
@@ -45,23 +48,6 @@ fn lex_options(profile: &Profile, d: &Dialect) -> LexOptions {
     }
 }
 
-fn skipped_block(b: &Block) -> bool {
-    b.words.iter().any(|w| match (w.addr, w.val) {
-        (Addr::L(b'G'), Val::Num(n)) => [4.0, 10.0, 65.0, 66.0].contains(&n.value),
-        (Addr::L(b'M'), Val::Num(n)) => n.value == 98.0,
-        _ => false,
-    })
-}
-
-/// The block's G20 (inch, true) or G21 (metric, false), if it has one.
-fn units(b: &Block) -> Option<bool> {
-    b.words.iter().find_map(|w| match (w.addr, w.val) {
-        (Addr::L(b'G'), Val::Num(n)) if n.value == 20.0 => Some(true),
-        (Addr::L(b'G'), Val::Num(n)) if n.value == 21.0 => Some(false),
-        _ => None,
-    })
-}
-
 /// Checks the program read from `reader` (named `file` in the warnings).
 pub fn decimal_points(
     profile: &Profile,
@@ -84,30 +70,29 @@ pub fn decimal_points(
     let mut inch = false;
     let mut src = LineSource::new(reader, profile.max_block_chars.max(1), d.hurco_syntax);
     let (mut raw, mut block) = (RawBlock::default(), Block::default());
+    let mut words = BlockDims::default();
     let mut t = Tally::default();
     while src.next_block(&mut raw)? {
-        if parse_block(&raw.text, &opts, &mut block).is_err() {
-            continue;
-        }
-        inch = units(&block).unwrap_or(inch);
-        if skipped_block(&block) {
-            continue;
-        }
-        for w in &block.words {
-            let (Addr::L(l), Val::Num(n)) = (w.addr, w.val) else {
-                continue;
-            };
-            if !letters.contains(&l) || n.value == 0.0 {
+        // Plain blocks without the parser; the rest through it.
+        if !words.read_plain(&raw.text, letters, opts.max_digits) {
+            if parse_block(&raw.text, &opts, &mut block).is_err() {
                 continue;
             }
-            if n.point {
+            words.read_parsed(&block, letters);
+        }
+        inch = words.inch.unwrap_or(inch);
+        if words.skipped {
+            continue;
+        }
+        for w in &words.dims {
+            if w.point {
                 t.with_point += 1;
                 continue;
             }
             t.without += 1;
             if t.first.len() < MAX_SHOWN {
                 let (line, col) = raw.line_col(w.at as usize);
-                t.first.push((line, col, (l as char, n.value, inch)));
+                t.first.push((line, col, (w.letter as char, w.value, inch)));
             }
         }
     }

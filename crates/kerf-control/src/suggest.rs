@@ -25,15 +25,33 @@ pub fn distance(a: &str, b: &str) -> usize {
 }
 
 /// The candidate closest to `name`, when it is close enough to be a slip
-/// (at most a third of its length, and 3, edits away).
+/// (at most a third of its length, and 3, edits away); failing that, the
+/// one candidate that holds `name` (two characters or more) as a part
+/// (`puma` for `puma-lathe`), when only one does.
 pub fn closest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let candidates: Vec<&'a str> = candidates.into_iter().collect();
     let limit = (name.chars().count() / 3).clamp(1, 3);
-    candidates
-        .into_iter()
-        .map(|c| (distance(name, c), c))
+    let near = candidates
+        .iter()
+        .map(|c| (distance(name, c), *c))
         .filter(|(d, _)| *d <= limit)
         .min_by_key(|(d, _)| *d)
-        .map(|(_, c)| c)
+        .map(|(_, c)| c);
+    near.or_else(|| holding(name, &candidates))
+}
+
+/// The only candidate that contains `name` (case-insensitive, at least two
+/// characters), None when none or several do.
+fn holding<'a>(name: &str, candidates: &[&'a str]) -> Option<&'a str> {
+    let n = name.to_lowercase();
+    if n.chars().count() < 2 {
+        return None;
+    }
+    let mut hits = candidates.iter().filter(|c| c.to_lowercase().contains(&n));
+    match (hits.next(), hits.next()) {
+        (Some(c), None) => Some(*c),
+        _ => None,
+    }
 }
 
 #[cfg(test)]
@@ -54,7 +72,11 @@ mod tests {
         let names = ["hx-mc", "puma-lathe", "hurco-lathe"];
         assert_eq!(closest("hx-mx", names), Some("hx-mc"));
         assert_eq!(closest("hurco-lath", names), Some("hurco-lathe"));
+        // A part of one name only; a part of two is no suggestion.
+        assert_eq!(closest("puma", names), Some("puma-lathe"));
+        assert_eq!(closest("HURCO", names), Some("hurco-lathe"));
         assert_eq!(closest("lathe", names), None);
+        assert_eq!(closest("x", ["hx-mc"]), None);
         assert_eq!(
             closest("dryrun", ["dry_run", "single_block"]),
             Some("dry_run")

@@ -16,7 +16,7 @@ use crate::arc::{self, ArcError};
 use crate::dialect::meaning::{
     CompSide, CuttingMode, CycleReturn, FeedMode, LengthComp, MotionMode,
 };
-use crate::dialect::{Dialect, DialectId, GCode, MAction, MWhen, Means, Support};
+use crate::dialect::{Dialect, GCode, MAction, MWhen, Means, Support};
 use crate::machine::{MachineKind, Profile};
 use crate::macros::{round_to, Vars};
 use crate::offsets::OffsetTable;
@@ -1048,7 +1048,8 @@ impl Interp {
 
     /// The block is a G65/G66 call: its letters are macro arguments.
     fn macro_args(&self) -> bool {
-        self.words.has_g(650) || self.words.has_g(660) || self.code_call_block()
+        let [call, modal_call] = self.dialect.macro_calls;
+        self.words.has_g(call) || self.words.has_g(modal_call) || self.code_call_block()
     }
 
     /// Letters that name an axis but are arguments of a code on machines
@@ -1175,12 +1176,10 @@ impl Interp {
                     self.emit_end(m)?;
                     self.finished = true;
                 }
-                MAction::Aux => {
+                MAction::Aux => self.emit(Canon::Aux { m, name: mc.name }),
+                MAction::FeedOverride(on) => {
                     self.emit(Canon::Aux { m, name: mc.name });
-                    // 002: M48 use / M49 ignore the feedrate override.
-                    if self.dialect.caps.m48_feed_override && (m == 48 || m == 49) {
-                        self.emit(Canon::Mode(ModeChange::FeedOverride(m == 48)));
-                    }
+                    self.emit(Canon::Mode(ModeChange::FeedOverride(on)));
                 }
                 MAction::SpindleCw
                 | MAction::SpindleCcw

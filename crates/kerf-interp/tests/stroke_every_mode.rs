@@ -5,7 +5,9 @@
 //!
 //! The areas are machine coordinates; on the hx-mc profile work =
 //! machine + (400, 250, 250) (G54), and the tool starts at machine
-//! (0, 0, 0) = work (400, 250, 250). (The lathe cycles and the Hurco
+//! (0, 0, 0) = work (400, 250, 250). The modes: G00-G03, canned cycles,
+//! `,C`/`,R`, cutter compensation, G112/G107, G31/G37, G33, G28/G29,
+//! G45-G48, G60 and G53. (The lathe cycles and the Hurco
 //! cycles, whose controls have no G22, are checked through the same seam
 //! in the unit tests of interp/mover.rs.)
 
@@ -191,5 +193,58 @@ fn reference_return() {
         &format!("{AREA_XY}G00 X200.\nY125.\nG28 X200.\n"),
         4,
         (200.0, 125.0, 250.0),
+    );
+}
+
+/// G45 with D1 = 15 from work (300, 125): `G01 X290.` is a move of -10,
+/// lengthened by D to -25 (000 §13.3), ending at X275, inside X 210…280.
+/// The same block without G45 ends at X290, outside.
+#[test]
+fn tool_offset_increase() {
+    let text = format!("{AREA_XY}G00 X300. Y125.\nG45 G01 X290. D1 F1000\n");
+    let mut it = Interp::new(Profile::builtin("hx-mc").unwrap(), Settings::default());
+    it.offsets_mut().d_mut(1).unwrap().geom = 15.0;
+    let r = run_interp(it, "t.nc", &text);
+    // At the block's motion code (column 5).
+    assert_eq!(alarm(&r), ("F_84100", 3, 5), "{text}");
+    let end = moves(&r).last().map(|m| (m.1, m.2, m.3));
+    assert_eq!(end, Some((300.0, 125.0, 250.0)));
+    let plain = format!("{AREA_XY}G00 X300. Y125.\nG01 X290. D1 F1000\n");
+    ok(&run_on("hx-mc", &plain));
+}
+
+/// G60 X200 from (300, 125): a rapid along Y125 through the area (the
+/// hx-mc has no overrun, so the approach is the move itself).
+#[test]
+fn single_direction_positioning() {
+    alarms_at(
+        &format!("{AREA_XY}G00 X300. Y125.\nG60 X200.\n"),
+        3,
+        (300.0, 125.0, 250.0),
+    );
+}
+
+/// G53 X-200. from work (300, 125) = machine (-100, -125): a rapid along
+/// machine Y -125 from X -100 to X -200 crosses X -120…-190.
+#[test]
+fn machine_coordinates() {
+    alarms_at(
+        &format!("{AREA_XY}G00 X300. Y125.\nG53 X-200.\n"),
+        3,
+        (300.0, 125.0, 250.0),
+    );
+}
+
+/// G29 X200. Y125. after `G28 X300. Y160.` (intermediate point work
+/// (300, 160), reference = work (400, 250)): back through (300, 160),
+/// then the HX rapid's diagonal towards (200, 125) reaches (265, 125),
+/// entering the area at X280, Y140. Nothing of the G29 block is handed
+/// out: the last move is the G28's, at the reference.
+#[test]
+fn return_from_reference() {
+    alarms_at(
+        &format!("{AREA_XY}G00 X300. Y160.\nG28 X300. Y160.\nG29 X200. Y125.\n"),
+        4,
+        (400.0, 250.0, 250.0),
     );
 }

@@ -61,23 +61,20 @@ impl Grid {
     pub fn for_rows(&self, s: &Sweep, r: f64, mut f: impl FnMut(usize, f64, usize, usize)) {
         let (xa, xb) = (s.p0[0].min(s.p1[0]) - r, s.p0[0].max(s.p1[0]) + r);
         let (ya, yb) = (s.p0[1].min(s.p1[1]) - r, s.p0[1].max(s.p1[1]) + r);
-        let Some((i0, i1)) = range(xa, xb, self.x0, self.dx, self.nx) else {
+        let (ix, iy) = (1.0 / self.dx, 1.0 / self.dy);
+        let Some((i0, i1)) = range(xa, xb, self.x0, ix, self.nx) else {
             return;
         };
-        let Some((j0, j1)) = range(ya, yb, self.y0, self.dy, self.ny) else {
+        let Some((j0, j1)) = range(ya, yb, self.y0, iy, self.ny) else {
             return;
         };
+        let cap = Capsule::new(s, r);
         for j in j0..=j1 {
             let y = self.y0 + (j as f64 + 0.5) * self.dy;
             // The X span of the capsule on this row narrows the scan.
-            let (lo, hi) = capsule_span(s, r, y);
-            let Some((a, b)) = range(
-                (lo - 1e-9).max(xa),
-                (hi + 1e-9).min(xb),
-                self.x0,
-                self.dx,
-                self.nx,
-            ) else {
+            let (lo, hi) = cap.span(y);
+            let Some((a, b)) = range(max(lo - 1e-9, xa), min(hi + 1e-9, xb), self.x0, ix, self.nx)
+            else {
                 continue;
             };
             let (a, b) = (a.max(i0), b.min(i1));
@@ -88,55 +85,138 @@ impl Grid {
     }
 }
 
-/// Cell index range (inclusive) whose centres lie within [lo, hi].
-fn range(lo: f64, hi: f64, o: f64, d: f64, n: usize) -> Option<(usize, usize)> {
-    let a = ((lo - o) / d - 0.5).ceil().max(0.0);
-    let b = ((hi - o) / d - 0.5).floor().min(n as f64 - 1.0);
+/// Cell index range (inclusive) whose centres lie within [lo, hi], cells
+/// of 1 / `inv` from `o`.
+#[inline]
+fn range(lo: f64, hi: f64, o: f64, inv: f64, n: usize) -> Option<(usize, usize)> {
+    // Clamped to [-1, n] first, so that the integer rounding below (the
+    // baseline x86-64 has no instruction for ceil and floor) is exact.
+    let top = n as f64;
+    let a = ceil(min(max((lo - o) * inv - 0.5, -1.0), top)).max(0);
+    let b = floor(min(max((hi - o) * inv - 0.5, -1.0), top)).min(n as i64 - 1);
     (a <= b).then_some((a as usize, b as usize))
 }
 
-/// X interval of the capsule (points within `r` of the move's XY
-/// segment) on the row at `y`: the end discs and the band between them.
-fn capsule_span(s: &Sweep, r: f64, y: f64) -> (f64, f64) {
-    let mut lo = f64::INFINITY;
-    let mut hi = f64::NEG_INFINITY;
-    for p in [s.p0, s.p1] {
-        let dy = y - p[1];
-        if dy.abs() <= r {
-            let w = (r * r - dy * dy).sqrt();
-            lo = lo.min(p[0] - w);
-            hi = hi.max(p[0] + w);
-        }
+/// ⌈v⌉ of a finite v of moderate size (NaN gives 0).
+#[inline]
+fn ceil(v: f64) -> i64 {
+    let t = v as i64;
+    if (t as f64) < v {
+        t + 1
+    } else {
+        t
     }
-    let (dx, dy) = (s.p1[0] - s.p0[0], s.p1[1] - s.p0[1]);
-    let l = dx.hypot(dy);
-    if l > 1e-12 {
-        let (ux, uy) = (dx / l, dy / l);
-        let yy = y - s.p0[1];
-        // cross = xx uy - yy ux in [-r, r]; along = xx ux + yy uy in [0, l],
-        // with xx = x - x0: each a linear interval in xx.
-        let (a1, b1) = lin_interval(uy, -yy * ux, -r, r);
-        let (a2, b2) = lin_interval(ux, yy * uy, 0.0, l);
-        let (a, b) = (a1.max(a2), b1.min(b2));
-        if a <= b {
-            lo = lo.min(s.p0[0] + a);
-            hi = hi.max(s.p0[0] + b);
-        }
-    }
-    (lo, hi)
 }
 
-/// The x with `k x + c` in [lo, hi].
-fn lin_interval(k: f64, c: f64, lo: f64, hi: f64) -> (f64, f64) {
-    if k.abs() < 1e-12 {
+/// ⌊v⌋ of a finite v of moderate size (NaN gives 0).
+#[inline]
+fn floor(v: f64) -> i64 {
+    let t = v as i64;
+    if (t as f64) > v {
+        t - 1
+    } else {
+        t
+    }
+}
+
+/// The points within `r` of a move's XY segment, prepared for its X
+/// interval on a row.
+struct Capsule {
+    p0: [f64; 2],
+    p1: [f64; 2],
+    r: f64,
+    /// Unit direction, its reciprocals (infinite along an axis) and the
+    /// length; None for a vertical move.
+    dir: Option<([f64; 2], [f64; 2], f64)>,
+}
+
+impl Capsule {
+    fn new(s: &Sweep, r: f64) -> Capsule {
+        let (dx, dy) = (s.p1[0] - s.p0[0], s.p1[1] - s.p0[1]);
+        let l = dx.hypot(dy);
+        let dir = (l > 1e-12).then(|| {
+            let u = [dx / l, dy / l];
+            let inv = |v: f64| {
+                if v.abs() < 1e-12 {
+                    f64::INFINITY
+                } else {
+                    1.0 / v
+                }
+            };
+            (u, [inv(u[0]), inv(u[1])], l)
+        });
+        Capsule {
+            p0: [s.p0[0], s.p0[1]],
+            p1: [s.p1[0], s.p1[1]],
+            r,
+            dir,
+        }
+    }
+
+    /// The X interval on the row at `y`: the end discs and the band
+    /// between them (empty: lo > hi).
+    #[inline]
+    fn span(&self, y: f64) -> (f64, f64) {
+        let r = self.r;
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        for p in [self.p0, self.p1] {
+            let dy = y - p[1];
+            if dy * dy <= r * r {
+                let w = (r * r - dy * dy).sqrt();
+                lo = min(lo, p[0] - w);
+                hi = max(hi, p[0] + w);
+            }
+        }
+        if let Some(([ux, uy], [iux, iuy], l)) = self.dir {
+            let yy = y - self.p0[1];
+            // cross = xx uy - yy ux in [-r, r]; along = xx ux + yy uy in
+            // [0, l], with xx = x - x0: each a linear interval in xx.
+            let (a1, b1) = lin_interval(uy, iuy, -yy * ux, -r, r);
+            let (a2, b2) = lin_interval(ux, iux, yy * uy, 0.0, l);
+            let (a, b) = (max(a1, a2), min(b1, b2));
+            if a <= b {
+                lo = min(lo, self.p0[0] + a);
+                hi = max(hi, self.p0[0] + b);
+            }
+        }
+        (lo, hi)
+    }
+}
+
+/// The x with `k x + c` in [lo, hi] (`inv` = 1 / k, infinite for k 0).
+#[inline]
+fn lin_interval(k: f64, inv: f64, c: f64, lo: f64, hi: f64) -> (f64, f64) {
+    if inv.is_infinite() || k.abs() < 1e-12 {
         if (lo..=hi).contains(&c) {
             (f64::NEG_INFINITY, f64::INFINITY)
         } else {
             (f64::INFINITY, f64::NEG_INFINITY)
         }
     } else {
-        let (a, b) = ((lo - c) / k, (hi - c) / k);
-        (a.min(b), a.max(b))
+        let (a, b) = ((lo - c) * inv, (hi - c) * inv);
+        (min(a, b), max(a, b))
+    }
+}
+
+/// The lesser of two numbers that are not NaN (a plain comparison: the
+/// library's `f64::min` also orders NaN, in several more instructions).
+#[inline]
+fn min(a: f64, b: f64) -> f64 {
+    if a < b {
+        a
+    } else {
+        b
+    }
+}
+
+/// The greater of two numbers that are not NaN.
+#[inline]
+fn max(a: f64, b: f64) -> f64 {
+    if a > b {
+        a
+    } else {
+        b
     }
 }
 
@@ -174,6 +254,10 @@ mod tests {
         }
         assert_eq!(got, want);
         assert_eq!(g.cell_at(11.5, 9.99), Some((11, 9)));
+        for v in [-2.5, -2.0, -0.5, 0.0, 0.3, 1.0, 7.999, 8.0] {
+            assert_eq!(ceil(v), v.ceil() as i64, "{v}");
+            assert_eq!(floor(v), v.floor() as i64, "{v}");
+        }
         assert_eq!(g.cell_at(12.0, 1.0), None);
     }
 }

@@ -22,6 +22,7 @@ pub mod events;
 pub mod grid;
 pub mod holder;
 pub mod hull;
+pub mod kernels;
 pub mod lathe;
 pub mod lathe_tool;
 pub mod mesh;

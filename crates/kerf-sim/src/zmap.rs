@@ -2,11 +2,10 @@
 //! at cell centres over the stock's XY rectangle, each column of
 //! material running from the stock bottom up to its height.
 
-use crate::ball::{BallRow, BallSweep};
 use crate::envelope::Sweep;
 use crate::grid::Grid;
-use crate::shape::Shape;
-use crate::tool::{MillKind, MillTool};
+use crate::kernels::Pass;
+use crate::tool::MillTool;
 
 /// Most cells a height field may have (256 MB of f32).
 pub const MAX_CELLS: usize = 64 << 20;
@@ -33,10 +32,16 @@ pub struct ZMap {
     /// Heights, row-major (`grid.nx` per row).
     pub h: Vec<f32>,
     /// An upper bound of the heights in each run of [`CHUNK`] cells of a
-    /// row (`nc` runs per row): a move skips the runs it cannot lower.
+    /// row (`nc` runs per row), and in each square of [`BLOCK`] rows by
+    /// [`CHUNK`] cells (`nc` per band of rows): a move skips the squares
+    /// and the runs it cannot lower with one comparison each.
     cmax: Vec<f32>,
+    bmax: Vec<f32>,
     nc: usize,
 }
+
+/// The rows of one band that a move covers: (row, y, first, last, floor).
+type Band = [(usize, f64, usize, usize, f32); BLOCK];
 
 /// What one move does to the stock.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -45,66 +50,6 @@ pub struct Cut {
     pub removed: f64,
     /// Material the non-cutting part (shank, holder) met, mm³.
     pub holder: f64,
-}
-
-/// How a move's heights are worked out over the cells of a run.
-#[derive(Clone, Copy)]
-enum Kernel {
-    /// A level flat end mill without shank or holder: every covered cell
-    /// goes down to the one height.
-    LevelFlat(f64),
-    /// A ball end mill without shank or holder (ball.rs).
-    Ball(BallSweep),
-    /// Any tool: the envelope by [`Sweep::tool_above`] and the holder's
-    /// cylinders.
-    General,
-}
-
-/// The shank and holder cylinders: (radius, bottom above the tip, length).
-#[derive(Clone, Copy, Default)]
-struct Guards {
-    c: [(f64, f64, f64); 8],
-    n: usize,
-}
-
-impl Guards {
-    fn of(tool: &MillTool) -> Guards {
-        let mut g = Guards::default();
-        if tool.flute_length < 1.0e4 {
-            let mut b = tool.flute_length;
-            if tool.holder.is_empty() {
-                g.c[0] = (tool.radius, b, f64::INFINITY);
-                g.n = 1;
-            }
-            for &(r, l) in tool.holder.iter().take(8 - g.n) {
-                g.c[g.n] = (r, b, l);
-                b += l;
-                g.n += 1;
-            }
-        }
-        g
-    }
-
-    fn all(&self) -> &[(f64, f64, f64)] {
-        &self.c[..self.n]
-    }
-
-    /// The lowest of the cylinders above the tip.
-    fn lowest(&self) -> f64 {
-        self.all().iter().map(|g| g.1).fold(f64::INFINITY, f64::min)
-    }
-}
-
-/// One move over the cells: everything the row loop needs.
-struct Pass<'a> {
-    s: &'a Sweep,
-    shape: Shape,
-    guards: Guards,
-    kernel: Kernel,
-    zmin: f64,
-    write: bool,
-    undo: Option<&'a mut Vec<(u32, f32)>>,
-    cut: Cut,
 }
 
 impl ZMap {
@@ -150,6 +95,7 @@ impl ZMap {
             ztop: max[2],
             h: vec![max[2] as f32; nx * ny],
             cmax: vec![max[2] as f32; nc * ny],
+            bmax: vec![max[2] as f32; nc * ny.div_ceil(BLOCK)],
             nc,
         })
     }
@@ -189,24 +135,7 @@ impl ZMap {
         write: bool,
         undo: Option<&mut Vec<(u32, f32)>>,
     ) -> Cut {
-        let guards = Guards::of(tool);
-        let kernel = match tool.kind {
-            _ if guards.n > 0 => Kernel::General,
-            MillKind::Flat if s.level() => Kernel::LevelFlat(s.p0[2].max(self.zmin)),
-            MillKind::Ball => BallSweep::new(s, tool.radius).map_or(Kernel::General, Kernel::Ball),
-            _ => Kernel::General,
-        };
-        let mut pass = Pass {
-            s,
-            shape: Shape::of(tool),
-            guards,
-            kernel,
-            zmin: self.zmin,
-            write,
-            undo,
-            cut: Cut::default(),
-        };
-        let reach = tool.reach();
+        let mut pass = Pass::new(tool, s, self.zmin, write, undo);
         let grid = self.grid;
         // Nothing at or below the move's lowest tip height can change (the
         // tool's profile and the holder are above the tip). On a row at
@@ -217,44 +146,61 @@ impl ZMap {
         let zlow = s.p0[2].min(s.p1[2]);
         let bmin = pass.guards.lowest();
         let (ya, yb) = (s.p0[1].min(s.p1[1]), s.p0[1].max(s.p1[1]));
-        grid.for_rows(s, reach, |j, y, a, b| {
+        let mut band: Band = [(0, 0.0, 0, 0, 0.0); BLOCK];
+        let mut n = 0;
+        grid.for_rows(s, tool.reach(), |j, y, a, b| {
+            if n > 0 && band[0].0 / BLOCK != j / BLOCK {
+                self.band(&mut pass, &band[..n]);
+                n = 0;
+            }
             let dy = (ya - y).max(y - yb).max(0.0).min(tool.radius);
             let floor = (zlow + pass.shape.profile(dy).min(bmin)).max(self.zmin) as f32;
-            self.row(&mut pass, j, y, (a, b), floor);
+            band[n] = (j, y, a, b, floor);
+            n += 1;
         });
+        if n > 0 {
+            self.band(&mut pass, &band[..n]);
+        }
         let a = grid.cell_area();
         Cut {
-            removed: pass.cut.removed * a,
-            holder: pass.cut.holder * a,
+            removed: pass.removed * a,
+            holder: pass.holder * a,
         }
     }
 
-    /// The cells `span` of row `j` (at `y`), run by run, skipping the runs
-    /// whose greatest height is at or below `floor`.
-    fn row(&mut self, pass: &mut Pass, j: usize, y: f64, span: (usize, usize), floor: f32) {
-        let nx = self.grid.nx;
-        let (base, crow) = (j * nx, j * self.nc);
-        let ball_row = match pass.kernel {
-            Kernel::Ball(b) => Some(b.row(y)),
-            _ => None,
-        };
-        let mut i = span.0;
-        while i <= span.1 {
-            let c = i / CHUNK;
-            let end = ((c + 1) * CHUNK - 1).min(span.1);
-            let first = i;
-            i = end + 1;
-            if self.cmax[crow + c] <= floor {
+    /// The rows of one band, square by square: a square whose greatest
+    /// height is at or below every row's floor is skipped, then each row's
+    /// run whose greatest height is at or below its floor.
+    fn band(&mut self, pass: &mut Pass, rows: &[(usize, f64, usize, usize, f32)]) {
+        let (nx, nc) = (self.grid.nx, self.nc);
+        let bj = rows[0].0 / BLOCK;
+        let lo = rows.iter().map(|r| r.2).min().unwrap_or(0);
+        let hi = rows.iter().map(|r| r.3).max().unwrap_or(0);
+        let floor = rows.iter().map(|r| r.4).fold(f32::INFINITY, f32::min);
+        for c in lo / CHUNK..=hi / CHUNK {
+            if self.bmax[bj * nc + c] <= floor {
                 continue;
             }
-            let changed = (first..=end).fold(false, |w, k| {
-                let x = self.grid.x0 + (k as f64 + 0.5) * self.grid.dx;
-                let v = &mut self.h[base + k];
-                cell(pass, ball_row.as_ref(), v, (base + k) as u32, x, y, floor) || w
-            });
+            let mut changed = false;
+            for &(j, y, a, b, floor) in rows {
+                let (first, last) = (a.max(c * CHUNK), b.min(c * CHUNK + CHUNK - 1));
+                if first > last || self.cmax[j * nc + c] <= floor {
+                    continue;
+                }
+                let x0 = self.grid.x0 + (first as f64 + 0.5) * self.grid.dx;
+                let (i0, i1) = (j * nx + first, j * nx + last);
+                let h = &mut self.h[i0..=i1];
+                if pass.run(h, i0 as u32, x0, self.grid.dx, y, floor) {
+                    let run = &self.h[j * nx + c * CHUNK..j * nx + ((c + 1) * CHUNK).min(nx)];
+                    self.cmax[j * nc + c] = run.iter().fold(f32::NEG_INFINITY, |m, &v| m.max(v));
+                    changed = true;
+                }
+            }
             if changed {
-                let run = &self.h[base + c * CHUNK..base + ((c + 1) * CHUNK).min(nx)];
-                self.cmax[crow + c] = run.iter().fold(f32::NEG_INFINITY, |m, &v| m.max(v));
+                let rows = bj * BLOCK..((bj + 1) * BLOCK).min(self.grid.ny);
+                self.bmax[bj * nc + c] = rows
+                    .map(|j| self.cmax[j * nc + c])
+                    .fold(f32::NEG_INFINITY, f32::max);
             }
         }
     }
@@ -264,8 +210,10 @@ impl ZMap {
         for &(i, z) in undo.iter().rev() {
             let i = i as usize;
             self.h[i] = z;
-            let c = (i / self.grid.nx) * self.nc + (i % self.grid.nx) / CHUNK;
-            self.cmax[c] = self.cmax[c].max(z);
+            let (j, c) = (i / self.grid.nx, (i % self.grid.nx) / CHUNK);
+            let (k, b) = (j * self.nc + c, (j / BLOCK) * self.nc + c);
+            self.cmax[k] = self.cmax[k].max(z);
+            self.bmax[b] = self.bmax[b].max(z);
         }
         undo.clear();
     }
@@ -275,64 +223,6 @@ impl ZMap {
         let (i, j) = self.grid.cell_at(x, y)?;
         Some(self.at(i, j))
     }
-}
-
-/// One cell of height `v` (index `idx`, centre x, y) under the pass:
-/// its new height written (when the pass writes) and the volumes added.
-/// True when the height changed.
-#[inline]
-fn cell(
-    pass: &mut Pass,
-    ball: Option<&BallRow>,
-    v: &mut f32,
-    idx: u32,
-    x: f64,
-    y: f64,
-    floor: f32,
-) -> bool {
-    if *v <= floor {
-        return false;
-    }
-    let old = *v as f64;
-    let z = match pass.kernel {
-        Kernel::LevelFlat(z) => Some(z),
-        Kernel::Ball(b) => {
-            if old <= pass.zmin + EPS {
-                return false;
-            }
-            let row = ball.expect("a ball pass has its row");
-            b.lowest(row, x).map(|z| z.max(pass.zmin))
-        }
-        Kernel::General => {
-            if old <= pass.zmin + EPS {
-                return false;
-            }
-            for &(r, b, l) in pass.guards.all() {
-                if let Some(z) = pass.s.flat(x, y, r, b) {
-                    if old > z + EPS {
-                        pass.cut.holder += old.min(z + l) - z;
-                    }
-                }
-            }
-            let z = pass.s.tool_above(&pass.shape, x, y, old - EPS);
-            z.map(|z| z.max(pass.zmin))
-        }
-    };
-    let Some(z) = z else {
-        return false;
-    };
-    if z >= old - EPS {
-        return false;
-    }
-    pass.cut.removed += old - z;
-    if !pass.write {
-        return false;
-    }
-    if let Some(u) = pass.undo.as_deref_mut() {
-        u.push((idx, *v));
-    }
-    *v = z as f32;
-    true
 }
 
 /// A `--sim-res` refused.
@@ -352,4 +242,89 @@ pub enum ResolutionError {
     /// More than [`MAX_CELLS`] after rounding up to whole blocks.
     #[error("--sim-res {res}: {cells} cells, more than {max}", max = MAX_CELLS)]
     TooManyBlocks { res: f64, cells: usize },
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::Shape;
+    use crate::tool::MillKind;
+    use proptest::prelude::*;
+
+    /// The height field after `moves` worked out cell by cell with the
+    /// general envelope only (no skipped squares or runs, no fast kernel),
+    /// and the material removed, mm³.
+    fn reference(z: &ZMap, tool: &MillTool, moves: &[([f64; 3], [f64; 3])]) -> (Vec<f32>, f64) {
+        let (g, mut h, mut removed) = (z.grid, z.h.clone(), 0.0);
+        let shape = Shape::of(tool);
+        for &(a, b) in moves {
+            let s = Sweep::new(a, b);
+            for j in 0..g.ny {
+                for i in 0..g.nx {
+                    let (x, y) = g.centre(i, j);
+                    let v = &mut h[j * g.nx + i];
+                    let old = *v as f64;
+                    if old <= z.zmin + EPS {
+                        continue;
+                    }
+                    let Some(n) = s.tool_above(&shape, x, y, old - EPS) else {
+                        continue;
+                    };
+                    let n = n.max(z.zmin);
+                    if n < old - EPS {
+                        removed += old - n;
+                        *v = n as f32;
+                    }
+                }
+            }
+        }
+        (h, removed * g.cell_area())
+    }
+
+    fn tool(kind: u8, r: f64) -> MillTool {
+        let kind = match kind {
+            0 => MillKind::Flat,
+            1 => MillKind::Ball,
+            2 => MillKind::Drill { point_angle: 118.0 },
+            _ => MillKind::Bull { corner: r / 3.0 },
+        };
+        MillTool {
+            kind,
+            ..MillTool::flat(r)
+        }
+    }
+
+    /// A move: random, or level, or vertical (the fast kernels' cases).
+    fn a_move() -> impl Strategy<Value = ([f64; 3], [f64; 3])> {
+        let p = || (-2.0f64..22.0, -2.0f64..17.0, -6.0f64..1.0);
+        (p(), p(), 0u8..3).prop_map(|((x0, y0, z0), (x1, y1, z1), how)| match how {
+            0 => ([x0, y0, z0], [x1, y1, z1]),
+            1 => ([x0, y0, z0], [x1, y1, z0]),
+            _ => ([x0, y0, z0], [x0, y0, z1]),
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+        /// Random moves of a flat, ball, drill or bull tool: the same
+        /// heights and volume as the cell-by-cell general evaluation.
+        #[test]
+        fn fast_paths_agree_with_the_general_envelope(
+            kind in 0u8..4,
+            r in 0.4f64..4.0,
+            moves in prop::collection::vec(a_move(), 1..5),
+        ) {
+            let mut z = ZMap::new([0.0, 0.0, -5.0], [20.0, 15.0, 0.0], 0.25).unwrap();
+            let t = tool(kind, r);
+            let (want, removed) = reference(&z, &t, &moves);
+            let mut got = 0.0;
+            for &(a, b) in &moves {
+                got += z.cut(&t, &Sweep::new(a, b), true, None).removed;
+            }
+            let bad = (0..want.len()).find(|&i| (z.h[i] - want[i]).abs() > 1e-6);
+            prop_assert!(bad.is_none(), "cell {:?}: {:?} vs {:?}", bad,
+                bad.map(|i| z.h[i]), bad.map(|i| want[i]));
+            prop_assert!((got - removed).abs() <= 1e-9 * (1.0 + removed), "{got} vs {removed}");
+        }
+    }
 }

@@ -19,6 +19,23 @@ pub fn control_of(d: DialectId) -> Control {
     }
 }
 
+/// An expander onto `out` for `target`, set up from the run's profile
+/// (dialect, axes) and start position, its heading written.
+pub(crate) fn started<W: Write>(out: W, target: Target, cx: &Context) -> io::Result<Expander<W>> {
+    let it = cx.interp;
+    let p = it.profile();
+    let sp = Spelling::new(target, control_of(p.dialect));
+    let mut x = Expander::new(
+        out,
+        sp,
+        super::axes_of(p),
+        it.work_position(),
+        it.machine_position(),
+    );
+    x.start(cx.file(0))?;
+    Ok(x)
+}
+
 /// Writes the program as plain G-code onto `out`.
 pub struct Expand<W: Write> {
     target: Target,
@@ -54,18 +71,7 @@ impl<W: Write> Sink for Expand<W> {
         let Some(out) = self.out.take() else {
             return Ok(());
         };
-        let it = cx.interp;
-        let p = it.profile();
-        let sp = Spelling::new(self.target, control_of(p.dialect));
-        let mut x = Expander::new(
-            out,
-            sp,
-            super::axes_of(p),
-            it.work_position(),
-            it.machine_position(),
-        );
-        x.start(cx.file(0))?;
-        self.x = Some(x);
+        self.x = Some(started(out, self.target, cx)?);
         Ok(())
     }
 

@@ -1,6 +1,7 @@
 //! The outputs the `kerf` CLI writes, one [`Sink`](crate::Sink) per file:
 //!
-//! - [`Toolpath`]: one JSON line per motion and dwell, with its end time;
+//! - [`Toolpath`]: one JSON line per motion and dwell, with its end time
+//!   ([`ToolpathBehind`] formats and writes it on a thread of its own);
 //! - [`Report`]: the JSON summary of the run;
 //! - [`Plot`]: an SVG drawing of the path;
 //! - [`Sample`]: the smoothed axis setpoints at a fixed period (CSV);
@@ -8,13 +9,14 @@
 //! - [`SimSink`]: the material-removal simulation (`--stock`), its STL
 //!   and PNG, and the report's `sim` section.
 //! - [`Expand`]: the program as plain G-code for a target control
-//!   (docs/expand.md).
+//!   (docs/expand.md; [`ExpandBehind`] writes it on a thread of its own).
 //!
 //! Each takes any `io::Write`; formats are in docs/formats.md.
-//! [`WriteBehind`] is an `io::Write` that writes on a thread of its own
-//! (the CLI's toolpath file).
+//! [`WriteBehind`] is an `io::Write` that writes on a thread of its own.
 
+pub(crate) mod behind;
 pub mod expand;
+pub mod expand_behind;
 pub mod log;
 pub mod number;
 pub mod plot;
@@ -22,15 +24,18 @@ pub mod report;
 pub mod sample;
 pub mod sim;
 pub mod toolpath;
+pub mod toolpath_behind;
 pub mod write_behind;
 
 pub use expand::Expand;
+pub use expand_behind::ExpandBehind;
 pub use log::Log;
 pub use plot::Plot;
 pub use report::Report;
 pub use sample::Sample;
 pub use sim::{SimHandle, SimSink};
 pub use toolpath::Toolpath;
+pub use toolpath_behind::ToolpathBehind;
 pub use write_behind::WriteBehind;
 
 use kerf_canon::Axis;

@@ -3,11 +3,12 @@
 //! X up, the spindle centre line dashed and the chuck on the −Z side),
 //! axes with ticks labelled in mm, rapids dashed red, cuts solid in one
 //! colour per tool, holes and plunges as rings, the alarm point as a red
-//! cross, a legend beside the drawing. HX G112 contours are drawn on the
-//! part's face (X and C as the Cartesian point), G107 moves in a panel of
-//! their own on the developed surface (Z or Y against C unrolled to mm:
-//! the arc length C·π·r/180 on the cylinder of radius r). Both modes are
-//! read from the `ModeChange::Rotary` events.
+//! cross, the program start as a square, a legend beside the drawing. HX
+//! G112 contours are drawn on the part's face (X and C as the Cartesian
+//! point), G107 moves in a panel of their own on the developed surface (Z
+//! or Y against C unrolled to mm: the arc length C·π·r/180 on the
+//! cylinder of radius r). Both modes are read from the
+//! `ModeChange::Rotary` events.
 //!
 //! - [`drawing`]: the shapes, collected and bounded by the picture;
 //! - [`layout`]: the pixel geometry (areas, scale, ticks);
@@ -91,7 +92,8 @@ pub fn render(d: &mut Drawing, format: PlotFormat) -> io::Result<Vec<u8>> {
 }
 
 /// Rows of the legend: rapid, the tools, holes, the centre line, the
-/// alarm.
+/// program start (a row kept even when the start falls outside the view,
+/// at the legend's end: left blank), the alarm.
 fn legend_rows(d: &Drawing) -> usize {
     let holes = d
         .panels
@@ -101,6 +103,7 @@ fn legend_rows(d: &Drawing) -> usize {
     1 + d.tools.len()
         + usize::from(holes)
         + usize::from(d.kind() == MachineKind::Lathe)
+        + usize::from(d.panels.iter().any(|p| p.start().is_some()))
         + usize::from(d.stop.is_some())
 }
 

@@ -74,9 +74,10 @@ fn timed_kind(e: &Event) -> bool {
     e.motion().is_some() || matches!(e.cmd, Canon::Dwell { .. })
 }
 
-/// A `--stock` that does not suit the machine.
+/// A `--stock` that does not fit the machine (kerf_sim::StockError is one
+/// that does not parse).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum StockError {
+pub enum StockFitError {
     /// A box side outside the X or Y travel (machine coordinates at the
     /// first work offset).
     #[error("--stock: {axis} {min}..{max} is machine {lo}..{hi}, outside the {axis} travel {travel_min}..{travel_max}")]
@@ -109,7 +110,7 @@ pub enum StockError {
 /// Checks that the stock suits the machine: a box on the machining
 /// center, within the X/Y travel at the first work offset; a bar or tube
 /// on a lathe, its radius within the X travel.
-pub fn check_stock(stock: &Stock, p: &Profile) -> Result<(), StockError> {
+pub fn check_stock(stock: &Stock, p: &Profile) -> Result<(), StockFitError> {
     match (stock, p.kind) {
         (Stock::Box { min, max }, MachineKind::Mill) => {
             let origin = p.work_offsets.values().next();
@@ -122,7 +123,7 @@ pub fn check_stock(stock: &Stock, p: &Profile) -> Result<(), StockError> {
                 };
                 let (lo, hi) = (min[i] + o, max[i] + o);
                 if lo < ax.min - 1e-9 || hi > ax.max + 1e-9 {
-                    return Err(StockError::Travel {
+                    return Err(StockFitError::Travel {
                         axis: name.to_uppercase(),
                         min: min[i],
                         max: max[i],
@@ -136,14 +137,14 @@ pub fn check_stock(stock: &Stock, p: &Profile) -> Result<(), StockError> {
             Ok(())
         }
         (Stock::Turn { r_out, .. }, MachineKind::Lathe) => match p.axes.get("x") {
-            Some(ax) if 2.0 * r_out > 2.0 * (ax.max - ax.min) => Err(StockError::Diameter {
+            Some(ax) if 2.0 * r_out > 2.0 * (ax.max - ax.min) => Err(StockFitError::Diameter {
                 diameter: 2.0 * r_out,
                 radius: ax.max - ax.min,
             }),
             _ => Ok(()),
         },
-        (Stock::Box { .. }, MachineKind::Lathe) => Err(StockError::BoxOnLathe(p.name.clone())),
-        (Stock::Turn { .. }, MachineKind::Mill) => Err(StockError::TurnOnMill(p.name.clone())),
+        (Stock::Box { .. }, MachineKind::Lathe) => Err(StockFitError::BoxOnLathe(p.name.clone())),
+        (Stock::Turn { .. }, MachineKind::Mill) => Err(StockFitError::TurnOnMill(p.name.clone())),
     }
 }
 
@@ -171,9 +172,9 @@ impl SimSink {
         res: Option<f64>,
         stl: Option<Box<dyn Write>>,
         png: Option<Box<dyn Write>>,
-    ) -> Result<SimSink, String> {
+    ) -> Result<SimSink, kerf_sim::ResolutionError> {
         Ok(SimSink {
-            sim: Sim::new(stock, tools, res).map_err(|e| e.to_string())?,
+            sim: Sim::new(stock, tools, res)?,
             seen: 0,
             done: 0,
             queue: VecDeque::new(),

@@ -188,6 +188,48 @@ impl<W: Write> Toolpath<W> {
     }
 }
 
+impl<W: Write> Toolpath<W> {
+    /// Names file `id` for [`Toolpath::write_named`].
+    pub(crate) fn name_file(&mut self, id: u32, name: &str) {
+        let id = id as usize;
+        if self.heads.len() <= id {
+            self.heads.resize(id + 1, None);
+        }
+        let mut h = Vec::new();
+        head_of(&mut h, name);
+        self.heads[id] = Some(h);
+    }
+
+    /// The record of a timed event whose file was named by
+    /// [`Toolpath::name_file`] (as [`Sink::timed`] writes it).
+    pub(crate) fn write_named(
+        &mut self,
+        e: &Event,
+        to: &Pos,
+        t_end: f64,
+        feed_mm_min: Option<f64>,
+    ) -> io::Result<()> {
+        let id = e.src.file as usize;
+        if self.heads.len() <= id {
+            self.heads.resize(id + 1, None);
+        }
+        // An unnamed file (not done by ToolpathBehind) has an empty name.
+        let head = self.heads[id].take().unwrap_or_else(|| {
+            let mut h = Vec::new();
+            head_of(&mut h, "");
+            h
+        });
+        let r = self.record(e, &head, to, t_end, feed_mm_min);
+        self.heads[id] = Some(head);
+        r
+    }
+
+    /// Flushes the writer.
+    pub(crate) fn flush(&mut self) -> io::Result<()> {
+        self.w.flush()
+    }
+}
+
 impl<W: Write> Sink for Toolpath<W> {
     fn name(&self) -> &str {
         "toolpath"

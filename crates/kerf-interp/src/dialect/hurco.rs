@@ -45,8 +45,13 @@ const fn means(code10: u16, group: u8) -> Means {
         80 => Means::Diameter(true),
         330 => Means::Motion(MotionMode::ThreadKI),
         700 => Means::Units(Units::Inch),
-        800 => Means::Cycle(false),
-        730 | 740 | 810..=840 => Means::Cycle(true),
+        800 => Means::Cycle(None),
+        730 => Means::Cycle(Some(HoleCycle::PeckChipBreak)),
+        740 => Means::Cycle(Some(HoleCycle::TapLeft)),
+        810 => Means::Cycle(Some(HoleCycle::Drill)),
+        820 => Means::Cycle(Some(HoleCycle::DrillDwell)),
+        830 => Means::Cycle(Some(HoleCycle::Peck)),
+        840 => Means::Cycle(Some(HoleCycle::Tap)),
         980 => Means::CycleReturn(CycleReturn::Initial),
         990 => Means::CycleReturn(CycleReturn::RPoint),
         _ => panic!("Hurco modal G code without a meaning"),
@@ -109,8 +114,8 @@ const M_LOW: [MCode; 12] = [
     m(8, "primary coolant on", Before, CoolantFlood), // beginning of block
     m(9, "coolant off", After, CoolantOff),  // "usually ... at the end of the block"
     m(30, "end of program (rewind)", After, End), // end of block system M code
-    m(48, "use feedrate override", Before, Aux), // feedrate override stage
-    m(49, "ignore feedrate override", Before, Aux),
+    m(48, "use feedrate override", Before, FeedOverride(true)), // feedrate override stage
+    m(49, "ignore feedrate override", Before, FeedOverride(false)),
 ];
 
 /// M codes of 002 after the job-syncing range.
@@ -222,6 +227,8 @@ pub static DIALECT: Dialect = Dialect {
     uvw_incremental: false,
     hurco_syntax: true,
     order: super::HURCO_TABLE_1,
+    alarm_column: alarm_codes::AlarmColumn::Hurco,
+    macro_calls: [650, 660],
     caps: Caps {
         bracket_nesting: 5,
         power_on_params: false,
@@ -239,12 +246,18 @@ pub static DIALECT: Dialect = Dialect {
         linear_rapid: true,
         stops_stop_spindle: true,
         max_m_per_block: crate::words::MAX_CODES,
-        m48_feed_override: true,
+        offsets_wait_for_move: true,
+        reset_keeps_tool_offset: true,
         part_zero_is_e1: true,
         gcode_system_b: false,
         short_r_half_circle: false,
         direct_drawing: false,
         hx_variables: false,
+        comp: CompParams {
+            type_b: ("comp_exit_normal", 1.0, 0.0),
+            idle_blocks: 2.0,
+            circular_joining: true,
+        },
         restricted_words: false,
     },
 };

@@ -25,10 +25,14 @@ const fn means(code10: u16, group: u8) -> Means {
     use super::meaning::*;
     if group == 0 {
         return Means::OneShot(match code10 {
-            100 | 520 => OneShot::Frame,
+            100 => OneShot::FrameData,
+            520 => OneShot::LocalCoords,
             310..=314 | 370..=374 => OneShot::Skip,
             390 => OneShot::CompCorner,
-            450 | 460 | 470 | 480 => OneShot::ToolOffset,
+            450 => OneShot::ToolOffset(1),
+            460 => OneShot::ToolOffset(-1),
+            470 => OneShot::ToolOffset(2),
+            480 => OneShot::ToolOffset(-2),
             600 => OneShot::SingleDirection,
             920 => OneShot::CoordinateSetting,
             c => match common_one_shot(c) {
@@ -61,8 +65,21 @@ const fn means(code10: u16, group: u8) -> Means {
         632 => Means::Stitch(false),
         680 => Means::Rotation(true),
         690 => Means::Rotation(false),
-        800 => Means::Cycle(false),
-        730 | 740 | 760 | 810..=890 => Means::Cycle(true),
+        800 => Means::Cycle(None),
+        730 => Means::Cycle(Some(HoleCycle::PeckChipBreak)),
+        740 => Means::Cycle(Some(HoleCycle::TapLeft)),
+        760 => Means::Cycle(Some(HoleCycle::FineBore)),
+        810 => Means::Cycle(Some(HoleCycle::Drill)),
+        820 => Means::Cycle(Some(HoleCycle::DrillDwell)),
+        830 => Means::Cycle(Some(HoleCycle::Peck)),
+        840 => Means::Cycle(Some(HoleCycle::Tap)),
+        842 => Means::Cycle(Some(HoleCycle::RigidTap)),
+        843 => Means::Cycle(Some(HoleCycle::RigidTapLeft)),
+        850 => Means::Cycle(Some(HoleCycle::Bore)),
+        860 => Means::Cycle(Some(HoleCycle::BoreStop)),
+        870 => Means::Cycle(Some(HoleCycle::BackBore)),
+        880 => Means::Cycle(Some(HoleCycle::ManualBore)),
+        890 => Means::Cycle(Some(HoleCycle::BoreDwell)),
         980 => Means::CycleReturn(CycleReturn::Initial),
         990 => Means::CycleReturn(CycleReturn::RPoint),
         1070 => Means::Cylindrical(true),
@@ -186,7 +203,7 @@ pub static MCODES: &[MCode] = &[
     m(7, "coolant mist on", Before, CoolantMist), // assumed (builder code, not in §11.1)
     m(8, "coolant on", Before, CoolantFlood),
     m(9, "coolant off", After, CoolantOff),
-    m(19, "spindle orientation", After, Aux), // assumed (builder code, not in §11.1)
+    m(19, "spindle orientation", After, Aux).and(MAlso::Orient), // assumed (builder code, not in §11.1)
     m(30, "end of tape", After, End),
     m(98, "sub-program call", After, SubCall),
     m(99, "end of sub-program", After, SubReturn),
@@ -203,6 +220,8 @@ pub static DIALECT: Dialect = Dialect {
     uvw_incremental: false,
     hurco_syntax: false,
     order: super::FANUC_MILL,
+    alarm_column: alarm_codes::AlarmColumn::Hx,
+    macro_calls: [650, 660],
     caps: Caps {
         bracket_nesting: 10,
         power_on_params: true,
@@ -220,12 +239,18 @@ pub static DIALECT: Dialect = Dialect {
         linear_rapid: false,
         stops_stop_spindle: false,
         max_m_per_block: 3,
-        m48_feed_override: false,
+        offsets_wait_for_move: false,
+        reset_keeps_tool_offset: false,
         part_zero_is_e1: false,
         gcode_system_b: false,
         short_r_half_circle: false,
         direct_drawing: false,
         hx_variables: true,
+        comp: CompParams {
+            type_b: ("PI 128", 0.0, 1.0),
+            idle_blocks: 2.0,
+            circular_joining: false,
+        },
         restricted_words: false,
     },
 };

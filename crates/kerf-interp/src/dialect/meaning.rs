@@ -24,8 +24,9 @@ pub enum Means {
     CutterComp(CompSide),
     /// G22 (true) / G23: stored stroke check.
     Stroke(bool),
-    /// The canned (drill) cycle group: G80 (false) or a cycle code (true).
-    Cycle(bool),
+    /// The canned (drill) cycle group: G80 (None) or the cycle a code
+    /// selects.
+    Cycle(Option<HoleCycle>),
     /// G51 (true) / G50: scaling and mirror image (HX).
     Scaling(bool),
     /// G66 (true) / G67: the macro modal call.
@@ -65,15 +66,18 @@ pub enum OneShot {
     /// G09.
     ExactStop,
     /// G27-G30: reference position return and its check.
-    RefReturn,
+    RefReturn(RefReturn),
     /// G53: a move in machine coordinates.
     MachineCoords,
     /// G65: the macro call (run as the block is classified).
     MacroCall,
     /// G92 (HX, Hurco), G50 (PUMA system A): coordinate setting.
     CoordinateSetting,
-    /// HX G10 and G52: run with the frame codes (interp/transforms.rs).
-    Frame,
+    /// HX G10: offset data, run with the frame codes
+    /// (interp/transforms.rs).
+    FrameData,
+    /// HX G52: the local coordinate system, run with the frame codes.
+    LocalCoords,
     /// PUMA G10: offset value setting, before the motion.
     DataSetting,
     /// G31-G31.4 and HX G37-G37.4: skip and tool length measurement.
@@ -81,17 +85,51 @@ pub enum OneShot {
     /// HX G39: the corner arc of cutter compensation.
     CompCorner,
     /// HX G45-G48: tool offset increase / decrease.
-    ToolOffset,
+    /// The move amount changes by this many times the D offset: G45 +1,
+    /// G46 -1, G47 +2, G48 -2 (000 §13.3).
+    ToolOffset(i8),
     /// HX G60: single direction positioning.
     SingleDirection,
     /// PUMA G70-G76: the multiple repetitive cycles.
-    Mrc,
+    Mrc(LatheCycle),
     /// Hurco G38: the turret probe.
     Probe,
     /// Hurco G59: cancel the work coordinate shift.
     CancelWorkShift,
     /// Hurco G78: the threading cycle.
     ThreadCycle,
+}
+
+/// A reference position code (G27-G30, on all three controls).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RefReturn {
+    /// G27: move to the programmed point and check it is the reference.
+    Check,
+    /// G28: through the intermediate point to the reference position.
+    Home,
+    /// G29: from the reference through the stored intermediate point.
+    Back,
+    /// G30: to the 2nd (3rd, 4th by P) reference position.
+    Other,
+}
+
+/// A multiple repetitive cycle of the lathe (001 G70-G76).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LatheCycle {
+    /// G70: the finishing shape once.
+    Finish,
+    /// G71: stock removal in turning (cuts along Z).
+    RoughTurn,
+    /// G72: stock removal in facing (cuts along X).
+    RoughFace,
+    /// G73: pattern repeating.
+    Pattern,
+    /// G74: peck drilling along Z (columns stepped in X).
+    PeckZ,
+    /// G75: grooving along X (grooves stepped in Z).
+    GrooveX,
+    /// G76: multiple thread cutting.
+    Thread,
 }
 
 /// The motion mode (group 01).
@@ -177,6 +215,65 @@ pub enum CuttingMode {
     Cutting,
 }
 
+/// A canned (drill) cycle: what one hole does between the R level and
+/// the return (000 chapter 12 on the HX, 002 G73-G84 on the Hurco).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HoleCycle {
+    /// G81: feed to the bottom, rapid out.
+    Drill,
+    /// G82: G81 with a dwell at the bottom.
+    DrillDwell,
+    /// G73: peck with a short retract that breaks the chip.
+    PeckChipBreak,
+    /// G83: peck, out to R after each peck.
+    Peck,
+    /// G84: tapping, spindle reversed at the bottom.
+    Tap,
+    /// G74: left-hand (counter) tapping.
+    TapLeft,
+    /// HX G84.2: rigid tapping.
+    RigidTap,
+    /// HX G84.3: rigid counter tapping.
+    RigidTapLeft,
+    /// HX G85: bore in and out at feed.
+    Bore,
+    /// HX G89: G85 with a dwell at the bottom.
+    BoreDwell,
+    /// HX G86: bore, spindle stopped at the bottom, rapid out.
+    BoreStop,
+    /// HX G88: bore, dwell, stop; the operator retracts by hand.
+    ManualBore,
+    /// HX G76: fine boring (oriented stop and shift at the bottom).
+    FineBore,
+    /// HX G87: back boring (from below the bore, upwards).
+    BackBore,
+}
+
+impl HoleCycle {
+    /// G73 and G83: the depth is cut in pecks of Q.
+    pub const fn pecks(self) -> bool {
+        matches!(self, HoleCycle::PeckChipBreak | HoleCycle::Peck)
+    }
+
+    /// G76 and G87: the tool is shifted off the wall by I/J or Q.
+    pub const fn shifts(self) -> bool {
+        matches!(self, HoleCycle::FineBore | HoleCycle::BackBore)
+    }
+
+    /// The tapping cycles.
+    pub const fn taps(self) -> bool {
+        matches!(
+            self,
+            HoleCycle::Tap | HoleCycle::TapLeft | HoleCycle::RigidTap | HoleCycle::RigidTapLeft
+        )
+    }
+
+    /// A tapping cycle that cuts with the spindle CCW (left hand).
+    pub const fn left_hand(self) -> bool {
+        matches!(self, HoleCycle::TapLeft | HoleCycle::RigidTapLeft)
+    }
+}
+
 /// Where a canned cycle returns after a hole (group 19 on the HX and the
 /// Hurco).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -216,6 +313,30 @@ pub enum Kind {
     Diameter,
 }
 
+/// A set of [`Kind`]s: which kinds of code one block carries, found
+/// once as its codes are checked, so that a phase with nothing to do
+/// for the block skips it with one test instead of looking its codes up
+/// again.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct KindSet(u32);
+
+impl KindSet {
+    /// Adds a kind.
+    pub fn insert(&mut self, k: Kind) {
+        self.0 |= 1 << k as u32;
+    }
+
+    /// Whether the set holds `k`.
+    pub fn has(self, k: Kind) -> bool {
+        self.0 & (1 << k as u32) != 0
+    }
+
+    /// Whether the set holds any of `ks`.
+    pub fn any(self, ks: &[Kind]) -> bool {
+        ks.iter().any(|&k| self.has(k))
+    }
+}
+
 impl Means {
     /// The kind of state this meaning sets.
     pub const fn kind(self) -> Kind {
@@ -253,7 +374,10 @@ pub(crate) const fn common_one_shot(code10: u16) -> Option<OneShot> {
     Some(match code10 {
         40 => OneShot::Dwell,
         90 => OneShot::ExactStop,
-        270 | 280 | 290 | 300 => OneShot::RefReturn,
+        270 => OneShot::RefReturn(RefReturn::Check),
+        280 => OneShot::RefReturn(RefReturn::Home),
+        290 => OneShot::RefReturn(RefReturn::Back),
+        300 => OneShot::RefReturn(RefReturn::Other),
         530 => OneShot::MachineCoords,
         650 => OneShot::MacroCall,
         _ => return None,
@@ -294,4 +418,51 @@ pub(crate) const fn common(code10: u16) -> Option<Means> {
         970 => Means::Css(false),
         _ => return None,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every kind has its own bit: a set holds what was put in, nothing
+    /// else.
+    #[test]
+    fn kind_sets() {
+        let all = [
+            Kind::OneShot,
+            Kind::Motion,
+            Kind::Css,
+            Kind::Distance,
+            Kind::FeedMode,
+            Kind::Units,
+            Kind::CutterComp,
+            Kind::Stroke,
+            Kind::Cycle,
+            Kind::Scaling,
+            Kind::ModalCall,
+            Kind::LengthComp,
+            Kind::Work,
+            Kind::CuttingMode,
+            Kind::Plane,
+            Kind::PolarCommand,
+            Kind::Rotation,
+            Kind::CycleReturn,
+            Kind::PolarInterp,
+            Kind::HighSpeed,
+            Kind::Cylindrical,
+            Kind::Stitch,
+            Kind::Diameter,
+        ];
+        assert!(all.len() <= 32);
+        for (i, &a) in all.iter().enumerate() {
+            let mut s = KindSet::default();
+            assert!(!s.has(a));
+            s.insert(a);
+            for (j, &b) in all.iter().enumerate() {
+                assert_eq!(s.has(b), i == j, "{a:?} {b:?}");
+            }
+            assert!(s.any(&[Kind::Diameter, a]));
+        }
+        assert!(!KindSet::default().any(&all));
+    }
 }

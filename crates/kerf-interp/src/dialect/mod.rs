@@ -2,10 +2,12 @@
 //! defaults, M codes with their execution category) and the few switches
 //! in which the controls' languages differ. One interpreter reads them all.
 
+pub mod alarm_codes;
 pub mod hurco;
 pub mod hx;
 pub mod meaning;
 pub mod puma;
+pub mod system_b;
 
 pub use meaning::Means;
 
@@ -83,6 +85,9 @@ pub enum MAction {
     SubCall,
     /// M99 subprogram return.
     SubReturn,
+    /// 002 M48 (true) / M49: use / ignore the feedrate override (an
+    /// auxiliary event, then the mode).
+    FeedOverride(bool),
 }
 
 /// One M code of a dialect.
@@ -92,6 +97,24 @@ pub struct MCode {
     pub name: &'static str,
     pub when: MWhen,
     pub action: MAction,
+    /// What the code does besides its action.
+    pub also: MAlso,
+}
+
+/// What an M code does besides its [`MAction`] (a PUMA compound code,
+/// the orientation a cycle emits).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MAlso {
+    Nothing,
+    /// PUMA M63/M64: the coolant on with the spindle, before the motion.
+    CoolantOn,
+    /// PUMA M65: the coolant off with the spindle, after the motion.
+    CoolantOff,
+    /// PUMA M76 (true) / M77: thread chamfering in G92/G76.
+    ThreadChamfer(bool),
+    /// The spindle orientation code the HX cycles G76/G87 emit for their
+    /// oriented stop.
+    Orient,
 }
 
 /// The language of one control.
@@ -115,6 +138,13 @@ pub struct Dialect {
     pub order: &'static [Phase],
     /// What the control's language has or lacks beyond its tables.
     pub caps: Caps,
+    /// The alarm codes the control shows.
+    pub alarm_column: alarm_codes::AlarmColumn,
+    /// The codes of the macro call and the macro modal call (G65, G66):
+    /// a block with one reads its letters as arguments. The Hurco, whose
+    /// table has neither, lists them too, so that such a block alarms on
+    /// the unknown code rather than on one of its arguments.
+    pub macro_calls: [u16; 2],
 }
 
 /// The features in which the three controls' languages differ, one fact
@@ -156,8 +186,12 @@ pub struct Caps {
     /// M codes one block may carry: 3 (Fanuc), as many as the block holds
     /// (002).
     pub max_m_per_block: usize,
-    /// 002: M48 / M49 switch the feedrate override on / off.
-    pub m48_feed_override: bool,
+    /// 002 Table 16: the offsets of a T or E code take effect with the
+    /// next move, and a move's words go to the position they name.
+    pub offsets_wait_for_move: bool,
+    /// 002: RESET keeps the T offset in force (with its number) and drops
+    /// the drill data and an offset change waiting for its move.
+    pub reset_keeps_tool_offset: bool,
     /// 002: the part zero is fixture offset E1.
     pub part_zero_is_e1: bool,
     /// The PUMA's G-code system B (profile `gcode_system_b`).
@@ -171,9 +205,26 @@ pub struct Caps {
     /// 001: direct drawing dimension input (the angle A, the direct
     /// chamfer and corner R of the next block).
     pub direct_drawing: bool,
+    /// How cutter / nose radius compensation reads the profile.
+    pub comp: CompParams,
     /// The HX numbering of system variables (000 §14: #2001-, #5001-)
     /// and its calls by G, M and T code (PI 85-105).
     pub hx_variables: bool,
+}
+
+/// The profile parameters of a control's compensation.
+#[derive(Debug)]
+pub struct CompParams {
+    /// The parameter that selects start-up and cancel type B, its
+    /// default, and the value that means type B: HX PI 128 = 1, PUMA
+    /// `comp_type_b` = 1, Hurco `comp_exit_normal` = 0 (type B unless
+    /// the exit is along the normal).
+    pub type_b: (&'static str, f64, f64),
+    /// The default of `comp_idle_blocks`, the blocks without a move in
+    /// the plane the look-ahead waits: 2 (HX, Hurco), 1 (PUMA).
+    pub idle_blocks: f64,
+    /// 002: circular joining of outside corners (`comp_circular_joining`).
+    pub circular_joining: bool,
 }
 
 /// One step of executing a block. A dialect lists its steps in the
@@ -367,6 +418,14 @@ pub(crate) const fn m(code: u16, name: &'static str, when: MWhen, action: MActio
         name,
         when,
         action,
+        also: MAlso::Nothing,
+    }
+}
+
+impl MCode {
+    /// The same code doing `also` besides its action.
+    pub(crate) const fn and(self, also: MAlso) -> MCode {
+        MCode { also, ..self }
     }
 }
 
@@ -408,6 +467,50 @@ mod tests {
                 for b in &d.mcodes[i + 1..] {
                     assert_ne!(a.code, b.code, "{id:?} duplicate M{}", a.code);
                 }
+            }
+        }
+    }
+
+    /// 001's compound M codes and the orientation code of the HX cycles
+    /// (M19) are in the tables.
+    #[test]
+    fn m_codes_besides_their_action() {
+        let also = |id, code| Dialect::get(id).mcode(code).map(|m| m.also);
+        assert_eq!(also(DialectId::Hx, 19), Some(MAlso::Orient));
+        assert_eq!(also(DialectId::Puma, 63), Some(MAlso::CoolantOn));
+        assert_eq!(also(DialectId::Puma, 64), Some(MAlso::CoolantOn));
+        assert_eq!(also(DialectId::Puma, 65), Some(MAlso::CoolantOff));
+        assert_eq!(also(DialectId::Puma, 76), Some(MAlso::ThreadChamfer(true)));
+        assert_eq!(also(DialectId::Puma, 77), Some(MAlso::ThreadChamfer(false)));
+        for id in [DialectId::Hx, DialectId::Puma, DialectId::Hurco] {
+            let n = Dialect::get(id)
+                .mcodes
+                .iter()
+                .filter(|m| m.also == MAlso::Orient)
+                .count();
+            assert!(n <= 1, "{id:?}: {n} orientation codes");
+        }
+    }
+
+    /// The macro call codes are the table's G65 (`OneShot::MacroCall`)
+    /// and G66 (`ModalCall(true)`) where the table has them.
+    #[test]
+    fn macro_call_codes() {
+        use meaning::OneShot;
+        for id in [DialectId::Hx, DialectId::Puma, DialectId::Hurco] {
+            let d = Dialect::get(id);
+            assert_eq!(d.macro_calls, [650, 660], "{id:?}");
+            for g in d.gcodes {
+                let call = matches!(
+                    g.means,
+                    Means::OneShot(OneShot::MacroCall) | Means::ModalCall(true)
+                );
+                assert_eq!(
+                    call,
+                    d.macro_calls.contains(&g.code10),
+                    "{id:?} G{}",
+                    g.code10
+                );
             }
         }
     }

@@ -36,7 +36,13 @@ const fn means(code10: u16, group: u8) -> Means {
             100 => OneShot::DataSetting,
             310 => OneShot::Skip,
             500 => OneShot::CoordinateSetting,
-            700..=760 => OneShot::Mrc,
+            700 => OneShot::Mrc(LatheCycle::Finish),
+            710 => OneShot::Mrc(LatheCycle::RoughTurn),
+            720 => OneShot::Mrc(LatheCycle::RoughFace),
+            730 => OneShot::Mrc(LatheCycle::Pattern),
+            740 => OneShot::Mrc(LatheCycle::PeckZ),
+            750 => OneShot::Mrc(LatheCycle::GrooveX),
+            760 => OneShot::Mrc(LatheCycle::Thread),
             c => match common_one_shot(c) {
                 Some(o) => o,
                 None => panic!("PUMA one-shot G code without a meaning"),
@@ -56,7 +62,7 @@ const fn means(code10: u16, group: u8) -> Means {
     match code10 {
         220 => Means::Stroke(true),
         230 => Means::Stroke(false),
-        800 => Means::Cycle(false),
+        800 => Means::Cycle(None),
         9000 => Means::Distance(Distance::Absolute),
         9010 => Means::Distance(Distance::Incremental),
         980 => Means::FeedMode(FeedMode::PerMin),
@@ -143,7 +149,7 @@ pub static MCODES: &[MCode] = &[
     m(15, "air blow off", After, Aux),
     m(17, "machine lock on (MDI only)", Before, Aux),
     m(18, "machine lock off (MDI only)", After, Aux),
-    m(19, "main spindle orientation", After, Aux),
+    m(19, "main spindle orientation", After, Aux).and(MAlso::Orient),
     m(24, "chip conveyor run", Before, Aux),
     m(25, "chip conveyor stop", After, Aux),
     m(30, "program end and rewind", After, End),
@@ -169,9 +175,9 @@ pub static MCODES: &[MCode] = &[
     m(59, "steady rest 2 unclamp", After, Aux),
     m(61, "switching low speed (aP60 spindle motor, Y connection)", Before, Aux),
     m(62, "switching high speed (aP60 spindle motor, delta connection)", Before, Aux),
-    m(63, "main spindle CW and coolant on", Before, SpindleCw), // coolant part not modelled
-    m(64, "main spindle CCW and coolant on", Before, SpindleCcw), // list: "coolant off"; text: "on"
-    m(65, "main spindle and coolant stop", After, SpindleStop),
+    m(63, "main spindle CW and coolant on", Before, SpindleCw).and(MAlso::CoolantOn),
+    m(64, "main spindle CCW and coolant on", Before, SpindleCcw).and(MAlso::CoolantOn), // list: "coolant off"; text: "on"
+    m(65, "main spindle and coolant stop", After, SpindleStop).and(MAlso::CoolantOff),
     m(66, "dual chucking low clamp", Before, Aux),
     m(67, "dual chucking high clamp", Before, Aux),
     m(68, "main chuck clamp", Before, Aux),
@@ -179,8 +185,8 @@ pub static MCODES: &[MCode] = &[
     m(70, "dual tailstock low advance", Before, Aux),
     m(74, "error detect on", Before, Aux),
     m(75, "error detect off", Before, Aux), // power-on state
-    m(76, "thread chamfering on", Before, Aux),
-    m(77, "thread chamfering off", Before, Aux), // modal; power-on state assumed
+    m(76, "thread chamfering on", Before, Aux).and(MAlso::ThreadChamfer(true)),
+    m(77, "thread chamfering off", Before, Aux).and(MAlso::ThreadChamfer(false)), // modal; power-on state assumed
     m(78, "tailstock quill advance", Before, Aux),
     m(79, "tailstock quill retract", After, Aux),
     m(80, "Q-setter swing arm down", Before, Aux),
@@ -232,6 +238,8 @@ pub static DIALECT: Dialect = Dialect {
     uvw_incremental: true,
     hurco_syntax: false,
     order: super::FANUC_LATHE,
+    alarm_column: alarm_codes::AlarmColumn::Fanuc,
+    macro_calls: [650, 660],
     caps: Caps {
         bracket_nesting: 5,
         power_on_params: false,
@@ -249,12 +257,18 @@ pub static DIALECT: Dialect = Dialect {
         linear_rapid: false,
         stops_stop_spindle: false,
         max_m_per_block: 3,
-        m48_feed_override: false,
+        offsets_wait_for_move: false,
+        reset_keeps_tool_offset: false,
         part_zero_is_e1: false,
         gcode_system_b: true,
         short_r_half_circle: true,
         direct_drawing: true,
         hx_variables: false,
+        comp: CompParams {
+            type_b: ("comp_type_b", 0.0, 1.0),
+            idle_blocks: 1.0,
+            circular_joining: false,
+        },
         restricted_words: true,
     },
 };

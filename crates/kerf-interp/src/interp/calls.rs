@@ -817,7 +817,8 @@ impl Interp {
     /// one block, everything but P and L an argument. G65 calls at once;
     /// G66 only records the call for the move blocks that follow.
     pub(super) fn g65(&mut self, code10: u16, at: u32) -> R<()> {
-        let name = if code10 == 650 { "G65" } else { "G66" };
+        let modal = self.means_of(code10) == Some(Means::ModalCall(true));
+        let name = if modal { "G66" } else { "G65" };
         if let Some((_, w)) = self.words.corner() {
             return Err(self.alarm(
                 AlarmKind::CornerNoMove,
@@ -845,7 +846,7 @@ impl Interp {
         };
         let count = self.int_word(b'L', 9999.0)?.map(|l| l.0).unwrap_or(1);
         let args = self.g65_args(false)?;
-        if code10 == 660 {
+        if modal {
             let max = self.profile.param("max_macro_nesting", 4.0) as usize;
             if self.calls.modal.len() >= max {
                 return Err(self.alarm(

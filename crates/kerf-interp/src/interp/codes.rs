@@ -347,7 +347,8 @@ impl Interp {
     /// G92 (HX, Hurco) / G50 (PUMA): make the current position read as the
     /// given values; an S alone sets the spindle speed clamp.
     pub(super) fn coordinate_setting(&mut self, at: u32) -> R<()> {
-        if self.dialect.id == DialectId::Hurco {
+        // 002 checks the S word's range (and refuses a negative clamp).
+        if self.dialect.caps.word_ranges {
             self.g92_s()?;
         } else if let Some(s) = self.words.get(b'S') {
             self.st.s_clamp = Some(s.v);
@@ -400,14 +401,8 @@ impl Interp {
         if !any {
             return Ok(());
         }
-        let at = self
-            .words
-            .g
-            .iter()
-            .take(self.words.ng)
-            .find(|g| g.0 == 530)
-            .map(|g| g.1)
-            .unwrap_or(0);
+        let g53 = Means::OneShot(crate::dialect::meaning::OneShot::MachineCoords);
+        let at = self.block_g(|m| m == g53).map_or(0, |g| g.1);
         self.rapid_machine_always(to, at)
     }
 

@@ -21,6 +21,7 @@
 use super::motion::Speed;
 use super::*;
 use crate::comp::{self, CompError, CornerOpt, Join, Piece, Seg, P};
+use crate::dialect::meaning::OneShot;
 
 /// A move held until the next one is known.
 pub(crate) struct Held {
@@ -138,23 +139,12 @@ fn psub(a: P, b: P) -> P {
 
 impl Interp {
     fn comp_new(&self) -> CompState {
-        let (type_b, limit, circular) = match self.dialect.id {
-            DialectId::Hx => (
-                self.profile.param("PI 128", 0.0) == 1.0,
-                self.profile.param("comp_idle_blocks", 2.0),
-                false,
-            ),
-            DialectId::Puma => (
-                self.profile.param("comp_type_b", 0.0) == 1.0,
-                self.profile.param("comp_idle_blocks", 1.0),
-                false,
-            ),
-            DialectId::Hurco => (
-                self.profile.param("comp_exit_normal", 1.0) == 0.0,
-                self.profile.param("comp_idle_blocks", 2.0),
-                self.profile.param("comp_circular_joining", 0.0) == 1.0,
-            ),
-        };
+        let cp = &self.dialect.caps.comp;
+        let (key, default, b) = cp.type_b;
+        let type_b = self.profile.param(key, default) == b;
+        let limit = self.profile.param("comp_idle_blocks", cp.idle_blocks);
+        let circular =
+            cp.circular_joining && self.profile.param("comp_circular_joining", 0.0) == 1.0;
         CompState {
             on: false,
             r: 0.0,
@@ -220,11 +210,17 @@ impl Interp {
                 }
             }
         }
-        if let Some(&(g, _)) = one_shot
-            .iter()
-            .find(|g| matches!(g.0, 270 | 280 | 290 | 300 | 530))
-        {
-            if let Some(&(c, at)) = self.words.gs().iter().find(|x| matches!(x.0, 410 | 420)) {
+        let no_startup = |g: &&(u16, u32)| {
+            matches!(
+                self.gcode(g.0).map(|c| c.means),
+                Some(Means::OneShot(
+                    OneShot::RefReturn(_) | OneShot::MachineCoords
+                ))
+            )
+        };
+        if let Some(&(g, _)) = one_shot.iter().find(no_startup) {
+            let on = |m| matches!(m, Means::CutterComp(CompSide::Left | CompSide::Right));
+            if let Some((c, at)) = self.block_g(on) {
                 return Err(self.alarm(
                     AlarmKind::CompArc,
                     at,
@@ -250,10 +246,13 @@ impl Interp {
         setting: bool,
     ) -> R<bool> {
         self.comp_check_words(one_shot)?;
-        let mode = self.st.modal.cutter_comp.code10;
-        let g39 = one_shot.iter().find(|g| g.0 == 390).map(|g| g.1);
+        let mode = self.st.modal.cutter_comp.means;
+        let g39 = one_shot
+            .iter()
+            .find(|g| self.gcode(g.0).map(|c| c.means) == Some(Means::OneShot(OneShot::CompCorner)))
+            .map(|g| g.1);
         if self.comp.is_none() {
-            if mode == 400 {
+            if mode == CompSide::Off {
                 if let Some(at) = g39 {
                     return Err(self.alarm(
                         AlarmKind::CompG39,
@@ -272,12 +271,8 @@ impl Interp {
         };
         if on && plane != cplane {
             let at = self
-                .words
-                .gs()
-                .iter()
-                .find(|g| matches!(g.0, 170 | 180 | 190))
-                .map(|g| g.1)
-                .unwrap_or(0);
+                .block_g(|m| matches!(m, Means::Plane(_)))
+                .map_or(0, |g| g.1);
             return Err(self.alarm(
                 AlarmKind::CompPlane,
                 at,
@@ -303,7 +298,7 @@ impl Interp {
             let (u, w) = (v(a1), v(a2));
             (u.is_some() || w.is_some()).then(|| (u.unwrap_or(0.0), w.unwrap_or(0.0)))
         };
-        let dir = if mode == 400 {
+        let dir = if mode == CompSide::Off {
             ijk(self).map(|d| self.xf_dir(d))
         } else {
             None
@@ -336,9 +331,9 @@ impl Interp {
 
     /// G40 (`dir`: its I/J/K direction), G41 or G42 in force from now on
     /// (the state exists, or is made for G41/G42).
-    pub(super) fn comp_set_mode(&mut self, mode: u16, dir: Option<P>) {
+    pub(super) fn comp_set_mode(&mut self, mode: CompSide, dir: Option<P>) {
         if self.comp.is_none() {
-            if mode == 400 {
+            if mode == CompSide::Off {
                 return;
             }
             self.comp = Some(Box::new(self.comp_new()));
@@ -347,8 +342,8 @@ impl Interp {
         let (value, tip) = self.comp_value();
         let c = self.comp.as_deref_mut().expect("set");
         match mode {
-            410 | 420 => {
-                let side = if mode == 410 { 1.0 } else { -1.0 };
+            CompSide::Left | CompSide::Right => {
+                let side = if mode == CompSide::Left { 1.0 } else { -1.0 };
                 c.side = side;
                 c.r = side * value;
                 c.tip = if value < 0.0 { (0.0, 0.0) } else { tip };
@@ -358,7 +353,7 @@ impl Interp {
                     c.startup = c.held.is_none();
                 }
             }
-            _ => {
+            CompSide::Off => {
                 if c.on {
                     c.on = false;
                     c.ij = dir;
@@ -367,17 +362,17 @@ impl Interp {
         }
     }
 
-    /// The G40/G41/G42 code (×10) in force: 400 when off.
-    pub(super) fn comp_mode_code(&self) -> u16 {
+    /// The compensation side in force (Off when none is).
+    pub(super) fn comp_side(&self) -> CompSide {
         match self.comp.as_deref() {
             Some(c) if c.on => {
                 if c.side > 0.0 {
-                    410
+                    CompSide::Left
                 } else {
-                    420
+                    CompSide::Right
                 }
             }
-            _ => 400,
+            _ => CompSide::Off,
         }
     }
 

@@ -297,7 +297,14 @@ impl Interp {
     /// one-shot G codes other than G09/G10 (G04, G27-G30, G53, G92 …),
     /// M98/M99.
     pub(super) fn corner_gate(&self, one_shot: &[(u16, u32)], transfer: Option<MAction>) -> R<()> {
-        let what = if let Some(&(c, _)) = one_shot.iter().find(|g| !matches!(g.0, 90 | 100)) {
+        use crate::dialect::meaning::OneShot::{DataSetting, ExactStop, FrameData};
+        let allowed = |c: u16| {
+            matches!(
+                self.means_of(c),
+                Some(Means::OneShot(ExactStop | FrameData | DataSetting))
+            )
+        };
+        let what = if let Some(&(c, _)) = one_shot.iter().find(|g| !allowed(g.0)) {
             format!("G{}", fmt_code(c))
         } else {
             match transfer {

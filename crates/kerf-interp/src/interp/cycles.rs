@@ -9,12 +9,12 @@
 //! The decisions where 000 is unreadable are in docs/dialects.md.
 
 use super::*;
+use crate::dialect::meaning::HoleCycle;
+use crate::dialect::MAlso;
 
 /// Most moves one canned-cycle block may queue (K repeats × pecks); more
 /// is an alarm rather than an unbounded queue.
 const MAX_CYCLE_MOVES: f64 = 100_000.0;
-/// The orientation M code emitted for an oriented spindle stop (G76/G87).
-const ORIENT_M: u32 = 19;
 
 /// Profile parameters the cycles read, fetched once at start.
 #[derive(Clone, Copy, Debug, Default)]
@@ -77,7 +77,7 @@ impl CycleData {
 /// The hole data of one cycle block, resolved.
 #[derive(Clone, Copy)]
 struct Hole {
-    code: u16,
+    kind: HoleCycle,
     /// Drilling-axis index.
     n: usize,
     initial: f64,
@@ -103,13 +103,20 @@ impl Interp {
         was_cycle: bool,
         plane_changed: bool,
         motion: Option<(u16, u32)>,
+        kinds: crate::dialect::meaning::KindSet,
     ) -> R<bool> {
-        let cyc_code = self.words.gs().iter().copied().find(|g| {
-            self.gcode(g.0)
-                .is_some_and(|c| matches!(c.means, Means::Cycle(_)))
-        });
         if let Some((m, m_at)) = motion {
-            if let Some((c, _)) = cyc_code.filter(|c| c.0 != 800) {
+            // The block's first code of the cycle group, unless it is G80.
+            let first = if kinds.has(crate::dialect::meaning::Kind::Cycle) {
+                self.block_g(|m| matches!(m, Means::Cycle(_)))
+            } else {
+                None
+            };
+            let cycle = |g: &(u16, u32)| {
+                self.gcode(g.0)
+                    .is_some_and(|c| c.means != Means::Cycle(None))
+            };
+            if let Some((c, _)) = first.filter(cycle) {
                 return Err(self.alarm(
                     AlarmKind::CannedCycle,
                     m_at,
@@ -122,23 +129,18 @@ impl Interp {
             }
             // A motion code cancels the cycle mode (a table search, so
             // only when one is in force: this runs for every G01 block).
-            if self.st.modal.cycle.means {
-                self.st.modal.set_meaning(self.dialect, Means::Cycle(false));
+            if self.st.modal.cycle.means.is_some() {
+                self.st.modal.set_meaning(self.dialect, Means::Cycle(None));
             }
         }
-        if !self.st.modal.cycle.means {
+        if self.st.modal.cycle.means.is_none() {
             if was_cycle {
                 self.cyc.clear();
             }
             return Ok(false);
         }
         if was_cycle && plane_changed {
-            if let Some(&(c, at)) = self
-                .words
-                .gs()
-                .iter()
-                .find(|g| matches!(g.0, 170 | 180 | 190))
-            {
+            if let Some((c, at)) = self.block_g(|m| matches!(m, Means::Plane(_))) {
                 return Err(self.alarm(
                     AlarmKind::CannedCycle,
                     at,
@@ -154,7 +156,7 @@ impl Interp {
 
     /// The cycle data words Q (peck, shift), P (dwell) and, for G76/G87,
     /// the shift I/J along the plane axes `axes`.
-    fn cycle_qpij(&mut self, code: u16, axes: (usize, usize)) -> R<()> {
+    fn cycle_qpij(&mut self, kind: HoleCycle, axes: (usize, usize)) -> R<()> {
         let (a1, a2) = axes;
         if let Some(w) = self.words.get(b'Q') {
             let v = self.linear(w);
@@ -177,7 +179,7 @@ impl Interp {
             }
             self.cyc.p = Some(w.v / 1000.0);
         }
-        if matches!(code, 760 | 870) {
+        if kind.shifts() {
             let (l1, l2) = (b"IJK"[a1], b"IJK"[a2]);
             let (w1, w2) = (self.words.get(l1), self.words.get(l2));
             if w1.is_some() || w2.is_some() {
@@ -192,6 +194,9 @@ impl Interp {
     /// if the block names a position, R or the depth, drills K holes.
     pub(super) fn canned_cycle(&mut self, entered: bool, g60: bool) -> R<()> {
         let code = self.st.modal.cycle.code10;
+        let Some(kind) = self.st.modal.cycle.means else {
+            return Ok(());
+        };
         let at = self
             .words
             .gs()
@@ -250,7 +255,7 @@ impl Interp {
                     }
                 });
         }
-        self.cycle_qpij(code, (a1, a2))?;
+        self.cycle_qpij(kind, (a1, a2))?;
         let count = match self.words.get(b'K') {
             None => 1,
             Some(k) if k.v >= 0.0 && k.v <= 9999.0 && k.v.fract() == 0.0 => k.v as u32,
@@ -266,7 +271,7 @@ impl Interp {
         if count == 0 || !(self.has_axis_word() || self.words.has(b'R')) {
             return Ok(());
         }
-        let hole = self.resolve_hole(code, n, initial, at)?;
+        let hole = self.resolve_hole((kind, code), n, initial, at)?;
         let (t, _) = self.target()?;
         let mut step = [0.0; NAXES];
         if !abs {
@@ -301,7 +306,8 @@ impl Interp {
     }
 
     /// Checks the stored data for one cycle and resolves the levels.
-    fn resolve_hole(&self, code: u16, n: usize, initial: f64, at: u32) -> R<Hole> {
+    fn resolve_hole(&self, cycle: (HoleCycle, u16), n: usize, initial: f64, at: u32) -> R<Hole> {
+        let (kind, code) = cycle;
         // Only alarms need the name: built on demand, not for every hole.
         let name = || format!("G{}", fmt_code(code));
         let Some(z) = self.cyc.z else {
@@ -322,7 +328,7 @@ impl Interp {
                 format!("{}: no R level given", name()),
             ));
         };
-        let peck = matches!(code, 730 | 830);
+        let peck = kind.pecks();
         let q = match self.cyc.q {
             Some(q) => q,
             None if peck => {
@@ -335,7 +341,7 @@ impl Interp {
             None => 0.0,
         };
         let g99 = self.st.modal.cycle_return.means == CycleReturn::RPoint;
-        if code == 870 && g99 {
+        if kind == HoleCycle::BackBore && g99 {
             return Err(self.alarm(
                 AlarmKind::CannedCycle,
                 at,
@@ -363,7 +369,7 @@ impl Interp {
             ));
         }
         let mut shift = [0.0; NAXES];
-        if matches!(code, 760 | 870) {
+        if kind.shifts() {
             let (a1, a2, _) = self.st.modal.plane.means.axes();
             match self.cyc.ij {
                 Some((i, j)) => {
@@ -380,7 +386,7 @@ impl Interp {
             }
         }
         Ok(Hole {
-            code,
+            kind,
             n,
             initial,
             r,
@@ -487,11 +493,14 @@ impl Interp {
     fn orient(&mut self) {
         self.st.spindle = SpindleDir::Stop;
         self.st.last_rpm = 0.0;
-        let name = self
-            .mcode(ORIENT_M)
-            .map(|m| m.name)
-            .unwrap_or("spindle orientation");
-        self.emit(Canon::Aux { m: ORIENT_M, name });
+        // The table's orientation code (M19 on the HX).
+        let orient = self.dialect.mcodes.iter().find(|m| m.also == MAlso::Orient);
+        if let Some(mc) = orient {
+            self.emit(Canon::Aux {
+                m: u32::from(mc.code),
+                name: mc.name,
+            });
+        }
     }
 
     /// The cutting mode of group 15 in force, re-emitted after tapping.
@@ -511,28 +520,29 @@ impl Interp {
         } else {
             dir0
         };
-        if h.code == 870 {
+        use HoleCycle::*;
+        if h.kind == BackBore {
             return self.back_boring(h, restart);
         }
         // Action 2: rapid to R.
         self.level(true, n, h.r, at)?;
-        match h.code {
-            810 | 820 => {
+        match h.kind {
+            Drill | DrillDwell => {
                 self.level(false, n, h.z, at)?;
-                if h.code == 820 {
+                if h.kind == DrillDwell {
                     self.dwell_secs(h.dwell);
                 }
                 self.level(true, n, h.ret, at)?;
             }
-            730 | 830 => {
+            PeckChipBreak | Peck => {
                 self.peck(h)?;
                 self.level(true, n, h.ret, at)?;
             }
-            840 | 740 | 842 | 843 => {
-                let (inward, outward) = if matches!(h.code, 840 | 842) {
-                    (SpindleDir::Cw, SpindleDir::Ccw)
-                } else {
+            Tap | TapLeft | RigidTap | RigidTapLeft => {
+                let (inward, outward) = if h.kind.left_hand() {
                     (SpindleDir::Ccw, SpindleDir::Cw)
+                } else {
+                    (SpindleDir::Cw, SpindleDir::Ccw)
                 };
                 self.emit(Canon::Mode(ModeChange::TappingMode));
                 self.level(false, n, h.z, at)?;
@@ -544,21 +554,21 @@ impl Interp {
                 self.restore_cut_mode();
                 self.level(true, n, h.ret, at)?;
             }
-            850 | 890 => {
+            Bore | BoreDwell => {
                 self.level(false, n, h.z, at)?;
-                if h.code == 890 {
+                if h.kind == BoreDwell {
                     self.dwell_secs(h.dwell);
                 }
                 self.level(false, n, h.r, at)?;
                 self.level(true, n, h.ret, at)?;
             }
-            860 => {
+            BoreStop => {
                 self.level(false, n, h.z, at)?;
                 self.cycle_spindle(SpindleDir::Stop);
                 self.level(true, n, h.ret, at)?;
                 self.cycle_spindle(restart);
             }
-            880 => {
+            ManualBore => {
                 self.level(false, n, h.z, at)?;
                 self.dwell_secs(h.dwell);
                 self.cycle_spindle(SpindleDir::Stop);
@@ -567,7 +577,7 @@ impl Interp {
                 self.level(true, n, h.ret, at)?;
                 self.cycle_spindle(restart);
             }
-            760 => {
+            FineBore => {
                 self.level(false, n, h.z, at)?;
                 self.dwell_secs(h.dwell);
                 self.orient();
@@ -576,7 +586,7 @@ impl Interp {
                 self.shift(&h.shift, -1.0, at)?;
                 self.cycle_spindle(restart);
             }
-            _ => {}
+            BackBore => {}
         }
         Ok(())
     }
@@ -598,7 +608,7 @@ impl Interp {
             let prev = done;
             done = (done + q).min(total);
             if prev > 0.0 {
-                if h.code == 830 {
+                if h.kind == HoleCycle::Peck {
                     // G83: back to R, then rapid down to d above the last depth.
                     self.level(true, n, h.r, at)?;
                     let to = (prev - d).max(0.0);

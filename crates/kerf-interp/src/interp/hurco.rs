@@ -6,6 +6,7 @@
 
 use super::work_offsets::WorkId;
 use super::*;
+use crate::dialect::meaning::OneShot as Os;
 
 pub(super) use super::work_offsets::MAX_FIXTURE;
 
@@ -196,7 +197,7 @@ impl Interp {
     /// G96 R in the block (Table 14): radius in G07, diameter in G08; 0
     /// returns to the X position; absent keeps the previous R.
     pub(super) fn g96_r(&mut self) -> R<()> {
-        if !self.words.has_g(960) {
+        if self.block_g(|m| m == Means::Css(true)).is_none() {
             return Ok(());
         }
         if let Some(r) = self.words.take(b'R') {
@@ -314,7 +315,10 @@ impl Interp {
     ) -> R<Option<(u16, u32, Option<WVal>)>> {
         let mut found: Option<(u16, u32)> = None;
         for &(c, at) in one_shot {
-            if matches!(c, 380 | 780) {
+            if matches!(
+                self.means_of(c),
+                Some(Means::OneShot(Os::Probe | Os::ThreadCycle))
+            ) {
                 if found.is_some() {
                     return Err(self.alarm(
                         AlarmKind::HurcoMode,
@@ -354,7 +358,8 @@ impl Interp {
             return Ok(None);
         };
         let mut face = None;
-        if c == 780 && self.words.nm > 0 {
+        let thread = self.means_of(c) == Some(Means::OneShot(Os::ThreadCycle));
+        if thread && self.words.nm > 0 {
             if self.words.nm > 1 {
                 return Err(self.alarm(
                     AlarmKind::DuplicateAddress,
@@ -377,7 +382,7 @@ impl Interp {
     /// before-motion M codes, the cycle, the after-motion M codes.
     pub(super) fn hurco_macro_block(&mut self, c: u16, at: u32, face: Option<WVal>) -> R<bool> {
         self.run_m(|m| m.1 == MWhen::Before)?;
-        if c == 780 {
+        if self.means_of(c) == Some(Means::OneShot(Os::ThreadCycle)) {
             self.g78(at, face)?;
             self.hurco_moved();
         } else {

@@ -14,6 +14,7 @@
 
 use super::motion::Speed;
 use super::*;
+use crate::dialect::meaning::HoleCycle;
 
 /// Modal drill cycle data (program coordinates, mm).
 #[derive(Clone, Copy, Debug, Default)]
@@ -37,7 +38,7 @@ impl Interp {
     /// G00 in the block) and clears the modal data but the R plane.
     /// Returns whether a cycle is modal for this block's motion.
     pub(super) fn hurco_cycle_mode(&mut self, motion: Option<(u16, u32)>) -> R<bool> {
-        if self.words.has_g(800) {
+        if self.block_g(|m| m == Means::Cycle(None)).is_some() {
             if let Some((0, at)) = motion {
                 return Err(self.alarm(
                     AlarmKind::HurcoMode,
@@ -57,7 +58,7 @@ impl Interp {
             };
             return Ok(false);
         }
-        Ok(self.st.modal.cycle.means && motion.is_none())
+        Ok(self.st.modal.cycle.means.is_some() && motion.is_none())
     }
 
     /// A length word in mm (no diameter rule).
@@ -68,13 +69,12 @@ impl Interp {
     /// One drill cycle (the block's X/Z/R/Q/P/A and the modal data).
     pub(super) fn hurco_drill(&mut self) -> R<()> {
         let code = self.st.modal.cycle.code10;
+        let Some(kind) = self.st.modal.cycle.means else {
+            return Ok(());
+        };
         let at = self
-            .words
-            .gs()
-            .iter()
-            .find(|g| matches!(g.0, 730 | 740 | 810..=840))
-            .map(|g| g.1)
-            .unwrap_or(0);
+            .block_g(|m| matches!(m, Means::Cycle(Some(_))))
+            .map_or(0, |g| g.1);
         self.drill_qpa()?;
         let cur = self.prog_pos();
         let init = *self.hurco.drill.init.get_or_insert(cur[2]);
@@ -115,15 +115,15 @@ impl Interp {
         self.drill_go(Speed::Rapid, None, Some(r), at)?;
         let dir = if z < r { -1.0 } else { 1.0 };
         let clear = self.profile.param("peck_clearance_mm", 0.254);
-        match code {
-            810 | 820 => {
+        match kind {
+            HoleCycle::Drill | HoleCycle::DrillDwell => {
                 self.drill_go(Speed::Modal, None, Some(z), at)?;
-                if code == 820 {
+                if kind == HoleCycle::DrillDwell {
                     self.drill_dwell(d.p.unwrap_or(0.0));
                 }
                 self.drill_go(Speed::Rapid, None, Some(ret), at)?;
             }
-            730 | 830 => {
+            HoleCycle::PeckChipBreak | HoleCycle::Peck => {
                 let q = match d.q {
                     Some(q) if q > 0.0 => q,
                     _ => {
@@ -154,7 +154,7 @@ impl Interp {
                     if k as f64 >= n {
                         break;
                     }
-                    if code == 830 {
+                    if kind == HoleCycle::Peck {
                         self.drill_go(Speed::Rapid, None, Some(r), at)?;
                     } else {
                         let a = d.a.unwrap_or(clear);
@@ -163,7 +163,8 @@ impl Interp {
                 }
                 self.drill_go(Speed::Rapid, None, Some(ret), at)?;
             }
-            840 | 740 => self.drill_tap(code, (r, z, ret), at)?,
+            HoleCycle::Tap | HoleCycle::TapLeft => self.drill_tap(kind, (r, z, ret), at)?,
+            // Not Hurco cycles.
             _ => {}
         }
         Ok(())
@@ -193,14 +194,14 @@ impl Interp {
     }
 
     /// G84 / G74 tapping from R to Z (Q in-feeds), back to `ret`.
-    fn drill_tap(&mut self, code: u16, levels: (f64, f64, f64), at: u32) -> R<()> {
+    fn drill_tap(&mut self, kind: HoleCycle, levels: (f64, f64, f64), at: u32) -> R<()> {
         let (r, z, ret) = levels;
         let d = self.hurco.drill;
         let dir = if z < r { -1.0 } else { 1.0 };
-        let (fwd, rev) = if code == 840 {
-            (SpindleDir::Cw, SpindleDir::Ccw)
-        } else {
+        let (fwd, rev) = if kind.left_hand() {
             (SpindleDir::Ccw, SpindleDir::Cw)
+        } else {
+            (SpindleDir::Cw, SpindleDir::Ccw)
         };
         let q = d.q.unwrap_or(0.0);
         let n = if q > 0.0 {

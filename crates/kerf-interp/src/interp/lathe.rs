@@ -6,6 +6,7 @@
 //! [`Interp::thread_to`]) in program coordinates.
 
 use super::*;
+use crate::dialect::MAlso;
 use crate::turning::{self, Mv, P};
 
 /// The lathe cycle state of one interpreter: the modal data of the single
@@ -29,16 +30,15 @@ pub(super) struct LatheData {
 }
 
 impl Interp {
-    /// The PUMA M codes the dialect table cannot express with one action,
-    /// before the block's motion: M76/M77 (001 "M76, M77") switch thread
-    /// chamfering; M63/M64 (main spindle CW/CCW and coolant on) start the
-    /// coolant too (the table's action is the spindle part).
+    /// What the PUMA's compound M codes do besides their action (the
+    /// table's `MAlso`), before the block's motion: M76/M77 (001 "M76,
+    /// M77") switch thread chamfering; M63/M64 (main spindle CW/CCW and
+    /// coolant on) start the coolant too (the action is the spindle part).
     pub(super) fn lathe_m_codes(&mut self) {
         for i in 0..self.words.nm {
-            match self.words.m[i].0 {
-                76 => self.lathe.chamfer_on = true,
-                77 => self.lathe.chamfer_on = false,
-                63 | 64 => self.lathe_coolant(true),
+            match self.mcode(self.words.m[i].0).map(|c| c.also) {
+                Some(MAlso::ThreadChamfer(on)) => self.lathe.chamfer_on = on,
+                Some(MAlso::CoolantOn) => self.lathe_coolant(true),
                 _ => {}
             }
         }
@@ -47,7 +47,8 @@ impl Interp {
     /// After the block's motion: M65 (main spindle and coolant stop) stops
     /// the coolant too.
     pub(super) fn lathe_m_after(&mut self) {
-        if self.words.ms().iter().any(|m| m.0 == 65) {
+        let off = |m: &(u32, u32)| self.mcode(m.0).is_some_and(|c| c.also == MAlso::CoolantOff);
+        if self.words.ms().iter().any(off) {
             self.lathe_coolant(false);
         }
     }

@@ -321,10 +321,13 @@ impl Interp {
                 continue;
             }
             self.collect(nwords)?;
+            // The block's last motion code other than G01 (G01 if none).
             let mut mode = 10;
             for &(g, _) in self.words.gs() {
-                if matches!(g, 0 | 20 | 30 | 320 | 900 | 920 | 940) {
-                    mode = g;
+                if let Some(Means::Motion(m)) = self.means_of(g) {
+                    if m != MotionMode::Linear {
+                        mode = g;
+                    }
                 }
             }
             let half = if self.st.modal.diameter.means {

@@ -6,6 +6,7 @@
 
 use super::lathe_shape::{Shape, ShapeErr};
 use super::*;
+use crate::dialect::meaning::LatheCycle::{self, *};
 use crate::turning::{self, Mv, P};
 
 /// The modal first-block values (fanuc-semantics §1.1: they overwrite the
@@ -32,11 +33,12 @@ pub(super) struct MrcModal {
 }
 
 impl Interp {
-    /// A G70-G76 block (`code` × 10), `at` the G word.
-    pub(super) fn mrc(&mut self, code: u16, at: u32) -> R<()> {
-        match code {
-            700..=730 => self.mrc_shape_cycle(code, at),
-            740 | 750 => self.mrc_peck(code, at),
+    /// A G70-G76 block (`kind`, its code `code` × 10 for the alarms),
+    /// `at` the G word.
+    pub(super) fn mrc(&mut self, kind: LatheCycle, code: u16, at: u32) -> R<()> {
+        match kind {
+            Finish | RoughTurn | RoughFace | Pattern => self.mrc_shape_cycle(kind, code, at),
+            PeckZ | GrooveX => self.mrc_peck(kind, code, at),
             _ => self.mrc_thread(at),
         }
     }
@@ -65,20 +67,20 @@ impl Interp {
 
     /// The first block of G71/G72 (U or W: Δd, R: escape) or G73 (U, W:
     /// relief, R: divisions): modal data only.
-    fn mrc_first_block(&mut self, code: u16) -> R<()> {
+    fn mrc_first_block(&mut self, kind: LatheCycle) -> R<()> {
         // G71 reads U R, G72 W R, G73 U W R; nothing else is read here.
-        let unread: &[u8] = match code {
-            710 => b"WDIK",
-            720 => b"UDIK",
+        let unread: &[u8] = match kind {
+            RoughTurn => b"WDIK",
+            RoughFace => b"UDIK",
             _ => b"DIK",
         };
         if let Some(&l) = unread.iter().find(|&&l| self.words.has(l)) {
             let w = self.words.get(l).expect("present");
             return Err(self.unused_word(l, w.at, "the cycle block with P and Q"));
         }
-        match code {
-            710 | 720 => {
-                let l = if code == 710 { b'U' } else { b'W' };
+        match kind {
+            RoughTurn | RoughFace => {
+                let l = if kind == RoughTurn { b'U' } else { b'W' };
                 if let Some(d) = self.positive(l, "depth of cut Δd")? {
                     self.lathe.mrc.depth = Some(d);
                 }
@@ -104,13 +106,13 @@ impl Interp {
     }
 
     /// G70, G71, G72, G73.
-    fn mrc_shape_cycle(&mut self, code: u16, at: u32) -> R<()> {
+    fn mrc_shape_cycle(&mut self, kind: LatheCycle, code: u16, at: u32) -> R<()> {
         let has_pq = self.words.has(b'P') || self.words.has(b'Q');
         if !has_pq {
-            if code == 700 {
+            if kind == Finish {
                 return Err(self.alarm(AlarmKind::MrcNoPq, at, "G70 without P (ns) and Q (nf)"));
             }
-            return self.mrc_first_block(code);
+            return self.mrc_first_block(kind);
         }
         let (ns, nf) = match (self.words.get(b'P'), self.words.get(b'Q')) {
             (Some(p), Some(q)) => (self.seq_word(p)?, self.seq_word(q)?),
@@ -135,7 +137,7 @@ impl Interp {
             .map(|w| self.linear(w) * half)
             .unwrap_or(0.0);
         let dw = self.words.get(b'W').map(|w| self.linear(w)).unwrap_or(0.0);
-        self.mrc_one_block_shape(code)?;
+        self.mrc_one_block_shape(kind)?;
         let p_at = self.words.get(b'P').map(|w| w.at).unwrap_or(at);
         let q_at = self.words.get(b'Q').map(|w| w.at).unwrap_or(at);
         let a = self.zx_pos();
@@ -150,10 +152,10 @@ impl Interp {
         // G70 goes on after its own block; G71-G73 after N(nf) when the
         // shape follows the cycle, else after the cycle block too.
         let after_nf = self.src.as_ref().expect("loaded").tell();
-        if code == 700 || after_nf.offset <= resume.offset {
+        if kind == Finish || after_nf.offset <= resume.offset {
             self.seek(resume)?;
         }
-        if code == 700 {
+        if kind == Finish {
             return self.g70(a, &shape, at);
         }
         // Type II (pockets) when block ns moves both axes.
@@ -168,8 +170,8 @@ impl Interp {
             None => (shape.start, std::mem::take(&mut shape.segs)),
         };
         let mut out = Vec::with_capacity(64 + segs.len());
-        let res = match code {
-            710 | 720 => {
+        let res = match kind {
+            RoughTurn | RoughFace => {
                 let r = turning::Rough {
                     depth: self
                         .lathe
@@ -184,9 +186,13 @@ impl Interp {
                     allow_x: du,
                     allow_z: dw,
                 };
-                match (code, type2) {
-                    (710, false) => turning::g71(a, start, &segs, r, shape.ns_rapid, &mut out),
-                    (710, true) => turning::g71_type2(a, start, &segs, r, shape.ns_rapid, &mut out),
+                match (kind, type2) {
+                    (RoughTurn, false) => {
+                        turning::g71(a, start, &segs, r, shape.ns_rapid, &mut out)
+                    }
+                    (RoughTurn, true) => {
+                        turning::g71_type2(a, start, &segs, r, shape.ns_rapid, &mut out)
+                    }
                     _ => turning::g72(a, start, &segs, r, shape.ns_rapid, type2, &mut out),
                 }
             }
@@ -236,7 +242,7 @@ impl Interp {
     /// divisions. Like the first block of the 0-T form they are modal. `I`
     /// or `K` where the cycle does not read them is an alarm (`D` is
     /// checked with the block's addresses, interp/puma_words.rs).
-    fn mrc_one_block_shape(&mut self, code: u16) -> R<()> {
+    fn mrc_one_block_shape(&mut self, kind: LatheCycle) -> R<()> {
         let one_block = self.tape_format_10_11();
         if let Some(w) = self.words.get(b'R') {
             return Err(self.unused_word(
@@ -247,12 +253,12 @@ impl Interp {
         }
         for l in [b'I', b'K'] {
             if let Some(w) = self.words.get(l) {
-                if !(one_block && code == 730) {
+                if !(one_block && kind == Pattern) {
                     return Err(self.unused_word(l, w.at, "a one-block G73 (relief Δi, Δk)"));
                 }
             }
         }
-        if code == 730 {
+        if kind == Pattern {
             let (mut i, mut k) = self.lathe.mrc.relief.unwrap_or((None, None));
             if let Some(w) = self.words.get(b'I') {
                 i = Some(self.linear(w));
@@ -266,7 +272,7 @@ impl Interp {
             if let Some(w) = self.words.get(b'D') {
                 self.lathe.mrc.divisions = Some(self.mrc_divisions(w, "G73 D")?);
             }
-        } else if code != 700 {
+        } else if kind != Finish {
             if let Some(d) = self.positive(b'D', "depth of cut Δd")? {
                 self.lathe.mrc.depth = Some(d);
             }
@@ -305,13 +311,13 @@ impl Interp {
     /// compensation. The compensation state, position and modal codes are
     /// left as before the cycle.
     fn shape_tip_path(&mut self, a: P, s: &Shape, at: u32) -> R<Option<(P, Vec<turning::Seg>)>> {
-        let before = self.comp_mode_code();
-        if before == 400 && !s.comp_on {
+        let before = self.comp_side();
+        if before == CompSide::Off && !s.comp_on {
             return Ok(None);
         }
         let saved = self.comp.take();
         let pos = self.st.mover.pos();
-        if before != 400 {
+        if before != CompSide::Off {
             self.comp_set_mode(before, None);
         }
         self.comp_capture = Some(Vec::with_capacity(2 * s.segs.len() + 4));
@@ -381,13 +387,13 @@ impl Interp {
             match c {
                 Some(c) if g70 => {
                     self.comp_set_mode(c, None);
-                    if let Some(g) = self.gcode(c) {
-                        self.st.modal.set(g);
-                    }
+                    self.st
+                        .modal
+                        .set_meaning(self.dialect, Means::CutterComp(c));
                 }
                 // Roughing: the whole shape is offset, a G40 in it does not
                 // cancel (docs/dialects.md).
-                Some(c) if c != 400 => self.comp_set_mode(c, None),
+                Some(c) if c != CompSide::Off => self.comp_set_mode(c, None),
                 _ => {}
             }
             if g70 {
@@ -431,7 +437,7 @@ impl Interp {
     /// G70: the shape once, each block in its own mode at the F of the
     /// shape (or the modal F), then a rapid back to the start point.
     fn g70(&mut self, a: P, s: &Shape, at: u32) -> R<()> {
-        if s.comp_on || self.comp_mode_code() != 400 {
+        if s.comp_on || self.comp_side() != CompSide::Off {
             let s0 = self.st.s;
             self.shape_run(a, s, at, true)?;
             self.emit_moves(&[Mv::Rapid(a)], None, at)?;
@@ -483,9 +489,9 @@ impl Interp {
     }
 
     /// G74 / G75.
-    fn mrc_peck(&mut self, code: u16, at: u32) -> R<()> {
+    fn mrc_peck(&mut self, kind: LatheCycle, code: u16, at: u32) -> R<()> {
         // The axis along which the columns (G74) / grooves (G75) step.
-        let (cross, cross_inc) = if code == 740 {
+        let (cross, cross_inc) = if kind == PeckZ {
             (b'X', b'U')
         } else {
             (b'Z', b'W')
@@ -530,7 +536,7 @@ impl Interp {
         let (li, lk, ld) = self.mrc_peck_letters(code)?;
         let amount = |me: &Self, l: u8| me.words.get(l).map(|w| me.linear(w).abs());
         let (pv, qv) = (amount(self, li), amount(self, lk));
-        let (shift, peck) = if code == 740 { (pv, qv) } else { (qv, pv) };
+        let (shift, peck) = if kind == PeckZ { (pv, qv) } else { (qv, pv) };
         let (shift, peck) = (shift.unwrap_or(0.0), peck.unwrap_or(0.0));
         let relief = self.words.get(ld).map(|w| self.linear(w)).unwrap_or(0.0);
         let escape = self
@@ -539,7 +545,7 @@ impl Interp {
             .peck_escape
             .unwrap_or_else(|| self.mrc_param(5139, 0.1));
         let end = turning::p(xend.unwrap_or(a.x), zend.unwrap_or(a.z));
-        self.mrc_peck_amounts(code, a, end, (li, lk), (pv, qv), at)?;
+        self.mrc_peck_amounts((kind, code), a, end, (li, lk), (pv, qv), at)?;
         let k = turning::Peck {
             end,
             shift,
@@ -549,7 +555,7 @@ impl Interp {
             columns,
         };
         let mut out = Vec::new();
-        let r = if code == 740 {
+        let r = if kind == PeckZ {
             turning::g74(a, k, &mut out)
         } else {
             turning::g75(a, k, &mut out)
@@ -557,7 +563,7 @@ impl Interp {
         if let Err(e) = r {
             let wat = self
                 .words
-                .get(if code == 740 { lk } else { li })
+                .get(if kind == PeckZ { lk } else { li })
                 .map(|w| w.at)
                 .unwrap_or(at);
             return Err(self.alarm(AlarmKind::MrcValue, wat, super::lathe::cycle_msg(&e)));
@@ -628,7 +634,7 @@ impl Interp {
     /// their axis moves; the alarm names the cycle's own letter.
     fn mrc_peck_amounts(
         &self,
-        code: u16,
+        (kind, code): (LatheCycle, u16),
         a: P,
         end: P,
         (li, lk): (u8, u8),
@@ -643,7 +649,7 @@ impl Interp {
                 dx,
                 li,
                 vi,
-                if code == 740 {
+                if kind == PeckZ {
                     "shift Δi"
                 } else {
                     "peck depth Δi"
@@ -653,7 +659,7 @@ impl Interp {
                 dz,
                 lk,
                 vk,
-                if code == 740 {
+                if kind == PeckZ {
                     "peck depth Δk"
                 } else {
                     "shift Δk"

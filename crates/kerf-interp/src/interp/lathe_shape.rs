@@ -10,6 +10,7 @@
 //! parsed-block cache and the alarm positions stay right.
 
 use super::*;
+use crate::dialect::meaning::OneShot;
 use crate::turning::{self, Seg, P};
 
 /// Most blocks a finishing shape may have (memory bound; more is an
@@ -36,11 +37,11 @@ pub(super) struct Shape {
     pub(super) ns_speed: Option<f64>,
     /// F in block ns.
     pub(super) ns_feed: Option<f64>,
-    /// G40/G41/G42 (×10) written in block ns / taking effect with each
+    /// G40/G41/G42 written in block ns / taking effect with each
     /// segment (a code in a block without a move goes with the next
     /// segment).
-    pub(super) ns_comp: Option<u16>,
-    pub(super) comps: Vec<Option<u16>>,
+    pub(super) ns_comp: Option<CompSide>,
+    pub(super) comps: Vec<Option<CompSide>>,
     /// A G41/G42 anywhere in the shape.
     pub(super) comp_on: bool,
     /// Where block ns / each segment's block is (alarms of the
@@ -118,7 +119,7 @@ impl Interp {
         let mut feed: Option<f64> = None;
         let mut speed: Option<f64> = None;
         let mut shape = Shape::empty(a, self.cur);
-        let mut comp_pending: Option<u16> = None;
+        let mut comp_pending: Option<CompSide> = None;
         let mut count = 0usize;
         let mut corners: Vec<ShapeCorner> = Vec::new();
         let mut seg_blocks: Vec<(usize, u32)> = Vec::new();
@@ -274,19 +275,25 @@ impl Interp {
     /// switches compensation on).
     fn shape_block_codes(
         &self,
-        comp_pending: &mut Option<u16>,
+        comp_pending: &mut Option<CompSide>,
         comp_on: &mut bool,
     ) -> Result<Option<u16>, ShapeErr> {
         let mut blk_mode = None;
+        use MotionMode::{ArcCcw, ArcCw, Linear, Rapid};
         for &(g, gat) in self.words.gs() {
-            match g {
-                0 | 10 | 20 | 30 => blk_mode = Some(g),
-                40 | 200 | 210 | 960 | 970 | 980 | 990 => {}
+            match self.gcode(g).map(|c| c.means) {
+                Some(Means::Motion(Rapid | Linear | ArcCw | ArcCcw)) => blk_mode = Some(g),
+                Some(
+                    Means::OneShot(OneShot::Dwell)
+                    | Means::Units(_)
+                    | Means::Css(_)
+                    | Means::FeedMode(_),
+                ) => {}
                 // Nose radius compensation: G70 runs the shape with
                 // it, G71-G73 offset the shape (interp/lathe_mrc.rs).
-                400 | 410 | 420 => {
-                    *comp_pending = Some(g);
-                    *comp_on |= g != 400;
+                Some(Means::CutterComp(side)) => {
+                    *comp_pending = Some(side);
+                    *comp_on |= side != CompSide::Off;
                 }
                 _ => {
                     return Err(ShapeErr::Here(self.alarm(
@@ -301,7 +308,8 @@ impl Interp {
             }
         }
         for &(m, mat) in self.words.ms() {
-            if matches!(m, 98 | 99) {
+            let call = self.mcode(m).map(|c| c.action);
+            if matches!(call, Some(MAction::SubCall | MAction::SubReturn)) {
                 return Err(ShapeErr::Here(self.alarm(
                     AlarmKind::MrcIllegal,
                     mat,

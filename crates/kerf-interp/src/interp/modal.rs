@@ -6,7 +6,8 @@
 use kerf_canon::Plane;
 
 use crate::dialect::meaning::{
-    CompSide, CuttingMode, CycleReturn, Distance, FeedMode, Kind, LengthComp, MotionMode, Units,
+    CompSide, CuttingMode, CycleReturn, Distance, FeedMode, HoleCycle, Kind, LengthComp,
+    MotionMode, Units,
 };
 use crate::dialect::{Dialect, GCode, Means};
 
@@ -36,8 +37,8 @@ pub(crate) struct Modal {
     pub(crate) units: Active<Units>,
     pub(crate) cutter_comp: Active<CompSide>,
     pub(crate) stroke: Active<bool>,
-    /// A canned (drill) cycle mode in force; its code says which cycle.
-    pub(crate) cycle: Active<bool>,
+    /// The canned (drill) cycle in force (None: G80).
+    pub(crate) cycle: Active<Option<HoleCycle>>,
     pub(crate) scaling: Active<bool>,
     pub(crate) modal_call: Active<bool>,
     pub(crate) length_comp: Active<LengthComp>,
@@ -71,7 +72,7 @@ impl Modal {
             cutter_comp: Active::none(CompSide::Off),
             // A control without G22/G23 checks a stored area always.
             stroke: Active::none(true),
-            cycle: Active::none(false),
+            cycle: Active::none(None),
             scaling: Active::none(false),
             modal_call: Active::none(false),
             length_comp: Active::none(LengthComp::Off),
@@ -275,7 +276,7 @@ mod tests {
         assert_eq!(hx.work.means, 0);
         assert_eq!(hx.cutting_mode.means, Some(CuttingMode::Cutting));
         assert_eq!(hx.cycle_return.means, CycleReturn::Initial);
-        assert!(hx.stroke.means && !hx.cycle.means && !hx.diameter.means);
+        assert!(hx.stroke.means && hx.cycle.means.is_none() && !hx.diameter.means);
         let puma = Modal::power_on(Dialect::get(DialectId::Puma), Plane::ZX);
         assert_eq!(puma.feed_mode.means, FeedMode::PerRev);
         assert_eq!(puma.feed_mode.code10, 990);

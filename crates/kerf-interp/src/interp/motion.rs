@@ -2,6 +2,7 @@
 //! G53, tool length offset and the reference-position returns G27-G30.
 
 use super::*;
+use crate::dialect::meaning::RefReturn;
 
 pub(super) use super::mover::Speed;
 
@@ -14,8 +15,8 @@ impl Interp {
         let mut t = cur;
         let mut any = false;
         let mut programmed = [false; NAXES];
-        let hurco = self.dialect.id == DialectId::Hurco;
-        if hurco {
+        let table16 = self.dialect.caps.offsets_wait_for_move;
+        if table16 {
             // Table 16: after a T/E code, before the next move.
             self.hurco_base(&mut cur);
         }
@@ -48,7 +49,7 @@ impl Interp {
                 any = true;
             }
         }
-        if any && hurco {
+        if any && table16 {
             self.hurco_immediate(&mut t, &programmed);
         }
         if self.st.polar {
@@ -163,7 +164,19 @@ impl Interp {
         self.words
             .gs()
             .iter()
-            .find(|g| matches!(g.0, 0 | 10 | 20 | 30 | 330))
+            .find(|g| {
+                matches!(
+                    self.gcode(g.0).map(|c| c.means),
+                    Some(Means::Motion(
+                        MotionMode::Rapid
+                            | MotionMode::Linear
+                            | MotionMode::ArcCw
+                            | MotionMode::ArcCcw
+                            | MotionMode::ThreadF
+                            | MotionMode::ThreadKI
+                    ))
+                )
+            })
             .map(|g| g.1)
             .unwrap_or(0)
     }
@@ -493,7 +506,7 @@ impl Interp {
 
     /// G27 check, G28 / G30 return via an intermediate point, G29 return
     /// from the reference point through the stored intermediate point.
-    pub(super) fn reference_return(&mut self, c: u16, at: u32) -> R<()> {
+    pub(super) fn reference_return(&mut self, kind: RefReturn, at: u32) -> R<()> {
         let (tw, _) = self.target()?;
         let mut named = [false; NAXES];
         for ax in Axis::ALL {
@@ -501,8 +514,8 @@ impl Interp {
                 && (self.words.has(ax_letter(ax)) || self.uvw(ax).is_some());
         }
         let rapid_to = |me: &mut Self, mto: Pos| me.rapid_machine(mto, at);
-        match c {
-            270 => {
+        match kind {
+            RefReturn::Check => {
                 let mto = self.to_machine(&tw);
                 rapid_to(self, mto)?;
                 for ax in Axis::ALL {
@@ -524,8 +537,8 @@ impl Interp {
                     }
                 }
             }
-            280 | 300 => {
-                let n = if c == 280 {
+            RefReturn::Home | RefReturn::Other => {
+                let n = if kind == RefReturn::Home {
                     1
                 } else {
                     match self.words.get(b'P') {
@@ -557,7 +570,7 @@ impl Interp {
                 }
                 rapid_to(self, r)?;
             }
-            290 => {
+            RefReturn::Back => {
                 // Through the stored intermediate point to the commanded point.
                 let mut mid = self.programmed_position();
                 for ax in Axis::ALL {
@@ -596,7 +609,6 @@ impl Interp {
                 let me = self.to_machine(&end);
                 rapid_to(self, me)?;
             }
-            _ => {}
         }
         Ok(())
     }

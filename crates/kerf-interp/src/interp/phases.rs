@@ -6,6 +6,7 @@
 //! block's [`BlockRun`].
 
 use super::*;
+use crate::dialect::meaning::{HoleCycle, Kind, KindSet, LatheCycle, OneShot as Os};
 use crate::dialect::Phase;
 
 /// What a phase tells the walk.
@@ -25,10 +26,10 @@ pub(super) struct OneShots {
     g09: bool,
     g60: Option<u32>,
     setting: bool,
-    refret: Option<(u16, u32)>,
+    refret: Option<(crate::dialect::meaning::RefReturn, u32)>,
     skip: Option<(u16, u32)>,
-    g45: Option<(u16, u32)>,
-    mrc: Option<(u16, u32)>,
+    g45: Option<(i8, u16, u32)>,
+    mrc: Option<(LatheCycle, u16, u32)>,
 }
 
 /// The state of one block's execution, passed from phase to phase.
@@ -40,6 +41,8 @@ pub(super) struct BlockRun {
     n_one: usize,
     /// M98 / M99.
     transfer: Option<(MAction, u32)>,
+    /// The kinds of G code in the block.
+    kinds: KindSet,
     /// Hurco: the block is a G78 / G38 macro cycle (code, byte, face M).
     hurco_macro: Option<(u16, u32, Option<WVal>)>,
     /// HX: a canned cycle mode was in force before the block.
@@ -68,6 +71,21 @@ impl BlockRun {
 }
 
 impl Interp {
+    /// The first G code of the block (code, byte) whose table meaning
+    /// satisfies `is`.
+    pub(super) fn block_g(&self, is: impl Fn(Means) -> bool) -> Option<(u16, u32)> {
+        self.words
+            .gs()
+            .iter()
+            .copied()
+            .find(|g| self.gcode(g.0).is_some_and(|c| is(c.means)))
+    }
+
+    /// What a G code of the block means (None: not in the table).
+    pub(super) fn means_of(&self, code10: u16) -> Option<Means> {
+        self.gcode(code10).map(|g| g.means)
+    }
+
     /// Executes the block in `self.words`: its codes checked, then the
     /// dialect's phases in order. Ok(false) when the program ended.
     pub(super) fn execute_block(&mut self) -> R<bool> {
@@ -89,6 +107,7 @@ impl Interp {
         let mut motion: Option<(u16, u32)> = None;
         let mut one_shot: [(u16, u32); MAX_CODES] = [(0, 0); MAX_CODES];
         let mut n_one = 0;
+        let mut kinds = KindSet::default();
         for i in 0..self.words.ng {
             let (c, at) = self.words.g[i];
             let Some(g) = self.gcode(c) else {
@@ -109,7 +128,11 @@ impl Interp {
                     ),
                 ));
             }
-            if c == 650 || c == 660 {
+            kinds.insert(g.means.kind());
+            if matches!(
+                g.means,
+                Means::OneShot(Os::MacroCall) | Means::ModalCall(true)
+            ) {
                 self.g65(c, at)?;
                 return Ok(None);
             }
@@ -131,6 +154,7 @@ impl Interp {
             one_shot,
             n_one,
             transfer,
+            kinds,
             hurco_macro: None,
             was_cycle: false,
             plane_before: self.st.modal.plane.means,
@@ -153,7 +177,7 @@ impl Interp {
             Phase::ModalG => self.apply_modal_codes(b),
             Phase::HxCycleMode => {
                 let plane_changed = self.st.modal.plane.means != b.plane_before;
-                b.cycle = self.cycle_mode(b.was_cycle, plane_changed, b.motion)?;
+                b.cycle = self.cycle_mode(b.was_cycle, plane_changed, b.motion, b.kinds)?;
             }
             Phase::HurcoCycleMode => b.hurco_cycle = self.hurco_cycle_mode(b.motion)?,
             Phase::HurcoMacro => {
@@ -162,15 +186,21 @@ impl Interp {
                 }
             }
             Phase::Frames => {
-                let rdata = self.rotary_codes_and_event()?;
-                b.xdata = self.transform_codes(b.one_shot())? || rdata;
+                // G112/G113/G107 in the block, or a mode in force to check
+                // the block against.
+                let rotary = b.kinds.any(&[Kind::PolarInterp, Kind::Cylindrical])
+                    || self.st.rot != polar_interp::RotInterp::Off;
+                let rdata = rotary && self.rotary_codes_and_event()?;
+                b.xdata = self.transform_codes(b.one_shot(), b.kinds)? || rdata;
             }
-            Phase::ToolLength => self.tool_length_codes()?,
-            Phase::Comp => b.g39 = self.block_comp(b.one_shot(), b.cycle)?,
+            Phase::ToolLength => self.tool_length_codes(b.kinds)?,
+            Phase::Comp => b.g39 = self.block_comp(b.one_shot(), b.cycle, b.kinds)?,
             Phase::OneShots => b.os = self.one_shots(b.one_shot())?,
             Phase::CssRadius => self.g96_r()?,
-            Phase::OverrideM => self.run_m(|m| matches!(m.0, 48 | 49))?,
-            Phase::CoolantM => self.run_m(|m| matches!(m.0, 7 | 8))?,
+            Phase::OverrideM => self.run_m(|m| matches!(m.2, MAction::FeedOverride(_)))?,
+            Phase::CoolantM => {
+                self.run_m(|m| matches!(m.2, MAction::CoolantMist | MAction::CoolantFlood))?
+            }
             Phase::ToolAndFixture => self.hurco_t_e()?,
             Phase::Feed => self.f_word(b.os.dwell)?,
             Phase::Tool => self.t_word()?,
@@ -179,9 +209,13 @@ impl Interp {
                 m.1 == MWhen::Before && !matches!(m.2, MAction::SpindleCw | MAction::SpindleCcw)
             })?,
             // Other before-motion machine functions, after the spindle.
-            Phase::HurcoMBefore => {
-                self.run_m(|m| m.1 == MWhen::Before && !matches!(m.0, 7 | 8 | 48 | 49))?
-            }
+            Phase::HurcoMBefore => self.run_m(|m| {
+                m.1 == MWhen::Before
+                    && !matches!(
+                        m.2,
+                        MAction::CoolantMist | MAction::CoolantFlood | MAction::FeedOverride(_)
+                    )
+            })?,
             Phase::Dwell => {
                 if b.os.dwell {
                     self.dwell()?;
@@ -235,7 +269,7 @@ impl Interp {
 
     /// The modal G codes (every group but 0 and 1) and the motion mode.
     fn apply_modal_codes(&mut self, b: &mut BlockRun) {
-        b.was_cycle = self.st.modal.cycle.means;
+        b.was_cycle = self.st.modal.cycle.means.is_some();
         b.plane_before = self.st.modal.plane.means;
         for i in 0..self.words.ng {
             let (c, _) = self.words.g[i];
@@ -258,17 +292,11 @@ impl Interp {
     }
 
     /// D, and G43/G44/G49 or H: the tool length offset.
-    fn tool_length_codes(&mut self) -> R<()> {
+    fn tool_length_codes(&mut self, kinds: KindSet) -> R<()> {
         if let Some(dw) = self.words.get(b'D') {
             self.sys.d = dw.v;
         }
-        if self.words.has(b'H')
-            || self
-                .words
-                .gs()
-                .iter()
-                .any(|g| matches!(g.0, 430 | 440 | 490))
-        {
+        if self.words.has(b'H') || kinds.has(Kind::LengthComp) {
             self.tool_length()?;
         }
         Ok(())
@@ -293,17 +321,25 @@ impl Interp {
 
     /// Cutter / tool nose radius compensation codes, before the one-shots
     /// (a G92 or G28 ends a held move first). True for a G39 block.
-    fn block_comp(&mut self, one_shot: &[(u16, u32)], cycle: bool) -> R<bool> {
+    fn block_comp(&mut self, one_shot: &[(u16, u32)], cycle: bool, kinds: KindSet) -> R<bool> {
+        let g39 = Some(Means::OneShot(Os::CompCorner));
         let comp_words = self.words.has(b'D')
-            || self
-                .words
-                .gs()
-                .iter()
-                .any(|g| matches!(g.0, 170 | 180 | 190 | 390 | 400 | 410 | 420));
+            || kinds.any(&[Kind::Plane, Kind::CutterComp])
+            || one_shot.iter().any(|g| self.means_of(g.0) == g39);
         if comp_words || (self.comp.is_some() && (!one_shot.is_empty() || cycle)) {
+            // The one-shots that move otherwise than by G00-G03.
             let special = cycle
                 || one_shot.iter().any(|g| {
-                    matches!(g.0, 270 | 280 | 290 | 300 | 530 | 310..=314 | 370..=374 | 450..=480 | 700..=760)
+                    matches!(
+                        self.gcode(g.0).map(|c| c.means),
+                        Some(Means::OneShot(
+                            Os::RefReturn(_)
+                                | Os::MachineCoords
+                                | Os::Skip
+                                | Os::ToolOffset(_)
+                                | Os::Mrc(_)
+                        ))
+                    )
                 });
             let setting = one_shot.iter().any(|g| self.is_coordinate_setting(g.0));
             self.comp_codes(one_shot, special, setting)
@@ -320,7 +356,8 @@ impl Interp {
             if self.mcode(m).is_none() {
                 // Fanuc programs ask for rigid tapping with M29 before G84;
                 // the HX has G84.2/G84.3 instead (000 §12.3.5-12.3.6).
-                let hint = if m == 29 && self.dialect.id == DialectId::Hx {
+                let rigid = Means::Cycle(Some(HoleCycle::RigidTap));
+                let hint = if m == 29 && self.dialect.gcodes.iter().any(|g| g.means == rigid) {
                     ": rigid tapping on this control is G84.2 (G84.3 left-hand), without M29"
                 } else {
                     ""
@@ -358,7 +395,7 @@ impl Interp {
             };
             match what {
                 Dwell => os.dwell = true,
-                RefReturn => os.refret = Some((c, at)),
+                RefReturn(kind) => os.refret = Some((kind, at)),
                 ExactStop => os.g09 = true,
                 SingleDirection => os.g60 = Some(at),
                 MachineCoords => {
@@ -368,18 +405,18 @@ impl Interp {
                     os.g53 = true
                 }
                 Skip => os.skip = Some((c, at)),
-                ToolOffset => os.g45 = Some((c, at)),
+                ToolOffset(k) => os.g45 = Some((k, c, at)),
                 DataSetting => {
                     os.setting = true;
                     self.g10(at)?
                 }
-                Mrc => os.mrc = Some((c, at)),
+                Mrc(kind) => os.mrc = Some((kind, c, at)),
                 CoordinateSetting => {
                     os.setting = true;
                     self.coordinate_setting(at)?
                 }
                 CancelWorkShift => self.st.shift = [0.0; NAXES],
-                MacroCall | Frame | CompCorner | Probe | ThreadCycle => {}
+                MacroCall | FrameData | LocalCoords | CompCorner | Probe | ThreadCycle => {}
             }
         }
         Ok(os)
@@ -396,12 +433,12 @@ impl Interp {
         cycles: (bool, bool, bool),
     ) -> R<()> {
         let (cycle, was_cycle, hurco_cycle) = cycles;
-        if let Some((c, at)) = os.refret {
-            self.reference_return(c, at)?;
+        if let Some((kind, at)) = os.refret {
+            self.reference_return(kind, at)?;
         } else if let Some((c, at)) = os.skip {
             self.skip_block(c, at)?;
-        } else if let Some((c, at)) = os.mrc {
-            self.mrc(c, at)?;
+        } else if let Some((kind, c, at)) = os.mrc {
+            self.mrc(kind, c, at)?;
         } else if !no_motion {
             if os.g53 {
                 self.g53()?;
@@ -413,8 +450,8 @@ impl Interp {
                 }
             } else if let Some(at) = os.g60 {
                 self.g60(at)?;
-            } else if let Some((c, at)) = os.g45 {
-                self.tool_offset_motion(c, at)?;
+            } else if let Some((k, c, at)) = os.g45 {
+                self.tool_offset_motion((k, c), at)?;
             } else {
                 self.motion()?;
             }

@@ -34,30 +34,17 @@ const CHORD_TOL: f64 = 0.001;
 /// G codes that neither mode accepts: coordinate systems and offsets
 /// (G10, G52, G53, G54-G59, G92), reference returns (G27-G30), plane
 /// and unit changes, G16 polar command, G51 scaling, G68 rotation.
-fn forbidden_in_mode(c: u16) -> bool {
+fn forbidden_in_mode(m: Means) -> bool {
+    use crate::dialect::meaning::OneShot::*;
     matches!(
-        c,
-        100 | 160
-            | 170
-            | 180
-            | 190
-            | 200
-            | 210
-            | 270
-            | 280
-            | 290
-            | 300
-            | 510
-            | 520
-            | 530
-            | 540
-            | 550
-            | 560
-            | 570
-            | 580
-            | 590
-            | 680
-            | 920
+        m,
+        Means::OneShot(FrameData | LocalCoords | MachineCoords | CoordinateSetting | RefReturn(_))
+            | Means::PolarCommand(true)
+            | Means::Plane(_)
+            | Means::Units(_)
+            | Means::Scaling(true)
+            | Means::Work(_)
+            | Means::Rotation(true)
     )
 }
 
@@ -74,9 +61,9 @@ impl Interp {
         let mut data = false;
         for i in 0..self.words.ng {
             let (c, at) = self.words.g[i];
-            match c {
-                1120 | 1130 => self.g112_g113(c == 1120, at)?,
-                1070 => {
+            match self.means_of(c) {
+                Some(Means::PolarInterp(on)) => self.g112_g113(on, at)?,
+                Some(Means::Cylindrical(true)) => {
                     self.g107(at)?;
                     data = true;
                 }
@@ -89,7 +76,7 @@ impl Interp {
         let (kind, name, cancel) = self.mode_names();
         for i in 0..self.words.ng {
             let (c, at) = self.words.g[i];
-            if forbidden_in_mode(c) {
+            if self.means_of(c).is_some_and(forbidden_in_mode) {
                 return Err(self.alarm(
                     kind,
                     at,

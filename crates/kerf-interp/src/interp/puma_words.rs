@@ -12,6 +12,7 @@
 //! - `L`: the repetitions of `M98` (and `G10 L2`).
 
 use super::*;
+use crate::dialect::meaning::{LatheCycle, OneShot};
 
 impl Interp {
     /// Whether the profile reads the one-block G71-G76 of the Fanuc 10/11
@@ -23,15 +24,18 @@ impl Interp {
     /// A, D, E, L on the PUMA: allowed only where a code of the block
     /// reads them; E in a thread block becomes its F.
     pub(super) fn puma_words(&mut self) -> R<()> {
+        // G71-G76 (not G70: it reads none of these).
         let mrc = self
             .words
             .gs()
             .iter()
-            .find(|g| (710..=760).contains(&g.0))
-            .map(|g| g.0);
+            .find_map(|g| match self.means_of(g.0) {
+                Some(Means::OneShot(OneShot::Mrc(k))) if k != LatheCycle::Finish => Some(k),
+                _ => None,
+            });
         let one_block = self.tape_format_10_11();
         if let Some(w) = self.words.get(b'A') {
-            if !(one_block && mrc == Some(760)) {
+            if !(one_block && mrc == Some(LatheCycle::Thread)) {
                 return Err(self.unused_word(b'A', w.at, "the tool angle of a one-block G76"));
             }
         }
@@ -46,18 +50,26 @@ impl Interp {
             }
         }
         if let Some(w) = self.words.get(b'L') {
-            let m98 = self.words.ms().iter().any(|m| m.0 == 98);
-            if !m98 && !self.words.has_g(100) {
+            let m98 = self.words.ms().iter().any(|m| {
+                self.mcode(m.0)
+                    .is_some_and(|c| c.action == MAction::SubCall)
+            });
+            let g10 = Means::OneShot(OneShot::DataSetting);
+            if !m98 && self.block_g(|m| m == g10).is_none() {
                 return Err(self.unused_word(b'L', w.at, "M98 (repetitions) and G10 L2"));
             }
         }
         if let Some(w) = self.words.get(b'E') {
-            let thread_code = |c: u16| matches!(c, 320 | 920 | 760);
-            let motion_g = self.words.gs().iter().find(|g| {
-                self.gcode(g.0).is_some_and(|d| d.group == 1) || (700..=760).contains(&g.0)
-            });
+            let motion_g =
+                self.block_g(|m| matches!(m, Means::Motion(_) | Means::OneShot(OneShot::Mrc(_))));
             let thread = match motion_g {
-                Some(g) => thread_code(g.0),
+                Some(g) => matches!(
+                    self.means_of(g.0),
+                    Some(
+                        Means::Motion(MotionMode::ThreadLathe | MotionMode::ThreadCycle)
+                            | Means::OneShot(OneShot::Mrc(LatheCycle::Thread))
+                    )
+                ),
                 None => matches!(
                     self.st.modal.motion.means,
                     MotionMode::ThreadLathe | MotionMode::ThreadCycle

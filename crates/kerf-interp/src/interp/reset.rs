@@ -69,7 +69,7 @@ impl Interp {
         // Canned-cycle data goes with the cycle mode (G80 is the power-on
         // state); a move held for its ,C/,R is dropped.
         self.cyc.clear();
-        if self.dialect.id == DialectId::Hurco {
+        if self.dialect.caps.reset_keeps_tool_offset {
             // The T offset stays active with its number; drill data and an
             // offset change waiting for its move go.
             st.tlo = old.tlo;

@@ -15,47 +15,7 @@
 //! does in system A. #4001-#4031 give the system-B numbers back.
 
 use super::*;
-
-/// The PUMA table's code for system B's G90 (absolute).
-pub(super) const ABS: u16 = 9000;
-/// The PUMA table's code for system B's G91 (incremental).
-pub(super) const INC: u16 = 9010;
-
-/// A system-B G code (× 10) as the system-A code kerf executes; `None`
-/// for the system-A numbers system B does not have (G32, G50, G98, G99:
-/// in system B G98/G99 select the canned-cycle return level of drilling
-/// cycles the PUMA has not got).
-pub(super) fn to_a(c10: u16) -> Option<u16> {
-    Some(match c10 {
-        330 => 320,
-        770 => 900,
-        780 => 920,
-        790 => 940,
-        920 => 500,
-        940 => 980,
-        950 => 990,
-        900 => ABS,
-        910 => INC,
-        320 | 500 | 980 | 990 => return None,
-        c => c,
-    })
-}
-
-/// The system-B number of a system-A code (for #4001-#4031).
-pub(super) fn to_b(a10: u16) -> u16 {
-    match a10 {
-        320 => 330,
-        900 => 770,
-        920 => 780,
-        940 => 790,
-        500 => 920,
-        980 => 940,
-        990 => 950,
-        ABS => 900,
-        INC => 910,
-        c => c,
-    }
-}
+use crate::dialect::system_b::{to_a, ABS, INC};
 
 impl Interp {
     /// Whether the PUMA reads G-code system B (`gcode_system_b = 1`).

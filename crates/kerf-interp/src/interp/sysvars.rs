@@ -334,7 +334,7 @@ impl Interp {
             Modal(g) => {
                 let c = u8::try_from(g).map_or(0, |g| self.st.modal.code_of_group(self.dialect, g));
                 let c = if self.system_b() {
-                    super::system_b::to_b(c)
+                    crate::dialect::system_b::to_b(c)
                 } else {
                     c
                 };

@@ -19,8 +19,9 @@
 use super::*;
 
 impl Interp {
-    /// The block's move under G45-G48 (`code` ×10), `at` the code's column.
-    pub(super) fn tool_offset_motion(&mut self, code: u16, at: u32) -> R<()> {
+    /// The block's move under G45-G48: `times` D (the code's meaning) and
+    /// its `code` ×10 for the alarms, `at` the code's column.
+    pub(super) fn tool_offset_motion(&mut self, (times, code): (i8, u16), at: u32) -> R<()> {
         let mode = self.st.modal.motion.means;
         if !matches!(
             mode,
@@ -43,12 +44,7 @@ impl Interp {
             ));
         }
         let d = self.d_value(at)?;
-        let amount = match code {
-            450 => d,
-            460 => -d,
-            470 => 2.0 * d,
-            _ => -2.0 * d,
-        };
+        let amount = f64::from(times) * d;
         // A signed move `v` lengthened by `amount` along its own direction.
         let adj = |v: f64| if v < 0.0 { v - amount } else { v + amount };
         let (tw, any) = self.target()?;

@@ -6,6 +6,7 @@
 //! The geometry lives in [`crate::xform`].
 
 use super::*;
+use crate::dialect::meaning::{Kind, KindSet, OneShot};
 use crate::xform::{Rotation, Scale};
 
 impl Interp {
@@ -13,72 +14,22 @@ impl Interp {
     /// modal codes, before the other one-shot codes and motion). Returns
     /// true when the block's axis words were the data of one of them: the
     /// block then makes no move.
-    pub(super) fn transform_codes(&mut self, one_shot: &[(u16, u32)]) -> R<bool> {
+    pub(super) fn transform_codes(&mut self, one_shot: &[(u16, u32)], kinds: KindSet) -> R<bool> {
         if !self.dialect.caps.frame_codes {
             return Ok(false);
         }
-        let mut data = false;
-        // Cutter compensation works on the transformed path, so G68/G69
-        // may change the rotation in offset mode (000 §15.4.2's N1-N8).
-        // Scaling is set before G41/G42 and cancelled after G40 (000
-        // §15.4.2: G51, G68, G41 … G40, G69, G50).
-        if self.comp.as_deref().is_some_and(|c| c.on())
-            && self.st.modal.cutter_comp.means != CompSide::Off
-        {
-            for i in 0..self.words.ng {
-                let (c, at) = self.words.g[i];
-                if matches!(c, 500 | 510) {
-                    return Err(self.alarm(
-                        AlarmKind::TransformConflict,
-                        at,
-                        format!(
-                            "G{} in cutter compensation mode: command scaling before G41/G42 and cancel it after G40 (000 §15.4.2)",
-                            fmt_code(c)
-                        ),
-                    ));
-                }
-            }
-        }
-        // Cancels first, so `G69 G28 …` and `G50 G92 …` are legal.
-        for i in 0..self.words.ng {
-            match self.words.g[i].0 {
-                150 => self.st.polar = false,
-                160 if !self.st.polar => {
-                    self.st.polar = true;
-                    self.st.polar_origin.set((0.0, 0.0));
-                }
-                500 => self.st.xf.scale = None,
-                690 => self.st.xf.rot = None,
-                _ => {}
-            }
-        }
-        for i in 0..self.words.ng {
-            let (c, at) = self.words.g[i];
-            match c {
-                510 => {
-                    self.g51(at)?;
-                    data = true;
-                }
-                680 => {
-                    self.g68(at)?;
-                    data = true;
-                }
-                220 => {
-                    self.g22(at)?;
-                    data = true;
-                }
-                _ => {}
-            }
-        }
+        let frame = [
+            Kind::PolarCommand,
+            Kind::Scaling,
+            Kind::Rotation,
+            Kind::Stroke,
+        ];
+        let mut data = kinds.any(&frame) && self.frame_modal_codes()?;
         if let Some(r) = self.st.xf.rot {
             if r.plane != self.st.modal.plane.means {
                 let at = self
-                    .words
-                    .gs()
-                    .iter()
-                    .find(|g| matches!(g.0, 170 | 180 | 190))
-                    .map(|g| g.1)
-                    .unwrap_or(0);
+                    .block_g(|m| matches!(m, Means::Plane(_)))
+                    .map_or(0, |g| g.1);
                 return Err(self.alarm(
                     AlarmKind::TransformConflict,
                     at,
@@ -87,7 +38,11 @@ impl Interp {
             }
         }
         for &(c, at) in one_shot {
-            if self.st.xf.active() && matches!(c, 270 | 280 | 290 | 300 | 920) {
+            let Some(Means::OneShot(what)) = self.gcode(c).map(|g| g.means) else {
+                continue;
+            };
+            let not_in_xf = matches!(what, OneShot::RefReturn(_) | OneShot::CoordinateSetting);
+            if self.st.xf.active() && not_in_xf {
                 let what = if self.st.xf.rot.is_some() {
                     "coordinate rotation (G69 first)"
                 } else {
@@ -99,13 +54,70 @@ impl Interp {
                     format!("G{} is not allowed in {what}", fmt_code(c)),
                 ));
             }
-            match c {
-                520 => {
+            match what {
+                OneShot::LocalCoords => {
                     self.g52();
                     data = true;
                 }
-                100 => {
+                OneShot::FrameData => {
                     self.g10(at)?;
+                    data = true;
+                }
+                _ => {}
+            }
+        }
+        Ok(data)
+    }
+
+    /// The block's G15/G16, G50/G51, G68/G69 and G22 (only called for a
+    /// block that has one). True when the axis words were G51's, G68's
+    /// or G22's data.
+    fn frame_modal_codes(&mut self) -> R<bool> {
+        let mut data = false;
+        // Cutter compensation works on the transformed path, so G68/G69
+        // may change the rotation in offset mode (000 §15.4.2's N1-N8).
+        // Scaling is set before G41/G42 and cancelled after G40 (000
+        // §15.4.2: G51, G68, G41 … G40, G69, G50).
+        if self.comp.as_deref().is_some_and(|c| c.on())
+            && self.st.modal.cutter_comp.means != CompSide::Off
+        {
+            if let Some((c, at)) = self.block_g(|m| matches!(m, Means::Scaling(_))) {
+                return Err(self.alarm(
+                    AlarmKind::TransformConflict,
+                    at,
+                    format!(
+                        "G{} in cutter compensation mode: command scaling before G41/G42 and cancel it after G40 (000 §15.4.2)",
+                        fmt_code(c)
+                    ),
+                ));
+            }
+        }
+        // Cancels first, so `G69 G28 …` and `G50 G92 …` are legal.
+        for i in 0..self.words.ng {
+            match self.gcode(self.words.g[i].0).map(|g| g.means) {
+                Some(Means::PolarCommand(false)) => self.st.polar = false,
+                Some(Means::PolarCommand(true)) if !self.st.polar => {
+                    self.st.polar = true;
+                    self.st.polar_origin.set((0.0, 0.0));
+                }
+                Some(Means::Scaling(false)) => self.st.xf.scale = None,
+                Some(Means::Rotation(false)) => self.st.xf.rot = None,
+                _ => {}
+            }
+        }
+        for i in 0..self.words.ng {
+            let (c, at) = self.words.g[i];
+            match self.gcode(c).map(|g| g.means) {
+                Some(Means::Scaling(true)) => {
+                    self.g51(at)?;
+                    data = true;
+                }
+                Some(Means::Rotation(true)) => {
+                    self.g68(at)?;
+                    data = true;
+                }
+                Some(Means::Stroke(true)) => {
+                    self.g22(at)?;
                     data = true;
                 }
                 _ => {}

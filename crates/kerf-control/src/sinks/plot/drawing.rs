@@ -186,6 +186,13 @@ impl Panel {
         }
     }
 
+    /// Where the program's first rapid ended (its first position: the
+    /// rapid itself, from the power-on position, is not drawn), when it
+    /// ended in this panel.
+    pub fn start(&self) -> Option<(f64, f64)> {
+        self.start
+    }
+
     /// The extent of the cutting moves, None without any.
     pub fn cut_bounds(&self) -> Option<((f64, f64), (f64, f64))> {
         (self.cut_min.0 <= self.cut_max.0).then_some((self.cut_min, self.cut_max))

@@ -46,6 +46,8 @@ pub const ALARM: Rgb = (0xdd, 0x00, 0x00);
 pub const HOLE_R: f64 = 4.0;
 /// Half size of the alarm cross, px.
 pub const CROSS: f64 = 7.0;
+/// Half the side of the program start's square, px.
+pub const START: f64 = 4.0;
 /// Tick label size, px.
 pub const SMALL: f64 = 12.0;
 /// Title and legend text size, px.
@@ -175,6 +177,9 @@ pub fn build(d: &Drawing, l: &Layout) -> Vec<Item> {
         items.push(Item::Clip(Some(((pl.left, pl.top), pl.w, pl.h))));
         toolpath(&mut items, pl, d.panels[pl.index].shapes(), d.tools.len());
         items.push(Item::Clip(None));
+        if let Some(p) = start_in_view(d, pl) {
+            start_mark(&mut items, p);
+        }
         if let Some((i, p, _)) = &d.stop {
             if *i == pl.index {
                 cross(&mut items, pl.px(*p));
@@ -183,6 +188,25 @@ pub fn build(d: &Drawing, l: &Layout) -> Vec<Item> {
     }
     legend(&mut items, d, l);
     items
+}
+
+/// The pixel point of the panel's program start, when it is inside the
+/// panel's plot area.
+fn start_in_view(d: &Drawing, pl: &PanelLayout) -> Option<P> {
+    let (x, y) = pl.px(d.panels[pl.index].start()?);
+    let inside = |v: f64, lo: f64, len: f64| v >= lo - 0.5 && v <= lo + len + 0.5;
+    (inside(x, pl.left, pl.w) && inside(y, pl.top, pl.h)).then_some((x, y))
+}
+
+/// The hollow square of the program start.
+fn start_mark(items: &mut Vec<Item>, (x, y): P) {
+    items.push(Item::Rect {
+        at: (x - START, y - START),
+        w: 2.0 * START,
+        h: 2.0 * START,
+        fill: None,
+        pen: Some(Pen::solid(INK, 1.5)),
+    });
 }
 
 /// The red cross of the alarm point.
@@ -332,6 +356,7 @@ fn legend(items: &mut Vec<Item>, d: &Drawing, l: &Layout) {
     enum Mark {
         Line(Pen),
         Ring,
+        Square,
         Cross,
         Nothing,
     }
@@ -350,6 +375,9 @@ fn legend(items: &mut Vec<Item>, d: &Drawing, l: &Layout) {
     if d.kind() == kerf_interp::MachineKind::Lathe {
         let centre = Pen::dashed(GREY, 1.0, 12.0, 4.0);
         rows.push((Mark::Line(centre), "spindle centre".into()));
+    }
+    if l.panels.iter().any(|pl| start_in_view(d, pl).is_some()) {
+        rows.push((Mark::Square, "program start".into()));
     }
     if let Some((_, _, label)) = &d.stop {
         // "alarm CODE" and "line N" on rows of their own.
@@ -372,6 +400,7 @@ fn legend(items: &mut Vec<Item>, d: &Drawing, l: &Layout) {
                 r: HOLE_R,
                 pen: Pen::solid(INK, 1.5),
             }),
+            Mark::Square => start_mark(items, (x + 13.0, y)),
             Mark::Cross => cross(items, (x + 13.0, y)),
             Mark::Nothing => {}
         }

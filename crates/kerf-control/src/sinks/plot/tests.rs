@@ -192,3 +192,34 @@ fn a_dense_raster_stays_under_5_mb() {
     let png = render(&mut d, PlotFormat::Png).unwrap();
     assert!(png.len() < 5_000_000, "{}", png.len());
 }
+
+#[test]
+fn the_program_start_is_a_square_where_the_first_rapid_ends() {
+    // The first rapid ends at X0 Y0: (120.91, 705.09), a square of 8 px
+    // about it, and a legend row.
+    let svg = String::from_utf8(render(&mut square_and_hole(), PlotFormat::Svg).unwrap()).unwrap();
+    assert!(
+        svg.contains("<rect x=\"116.91\" y=\"701.09\" width=\"8\" height=\"8\" fill=\"none\" stroke=\"#222222\""),
+        "{svg}"
+    );
+    assert!(svg.contains(">program start<"));
+}
+
+#[test]
+fn a_program_start_out_of_view_is_not_drawn_nor_listed() {
+    // First to X2000 Y2000, far beyond 25 % of the 100 mm square around
+    // the cuts: the start is cut off, so neither square nor legend row.
+    let mut d = Drawing::new(MachineKind::Mill);
+    run(
+        &mut d,
+        &[
+            motion(true, 1, xyz(2000.0, 2000.0, 0.0)),
+            motion(true, 1, xyz(0.0, 0.0, 0.0)),
+            motion(false, 1, xyz(100.0, 0.0, 0.0)),
+            motion(false, 1, xyz(100.0, 100.0, 0.0)),
+        ],
+    );
+    let svg = String::from_utf8(render(&mut d, PlotFormat::Svg).unwrap()).unwrap();
+    assert!(!svg.contains(">program start<"), "{svg}");
+    assert!(!svg.contains("width=\"8\" height=\"8\""), "{svg}");
+}

@@ -1,0 +1,220 @@
+//! [`ExpandBehind`]: the expansion sink ([`super::Expand`]) with kerf-expand's
+//! writer on a thread of its own ([`Behind`]), so that `kerf expand`
+//! uses both cores: the interpreter on the caller's thread, the G-code
+//! text (about 1,150 instructions an output block) and the writes on the
+//! other. The caller's side copies each event into the batch (a message
+//! event copies its text); a file name is sent once, before its first
+//! event; the alarm that stopped the run is written after the last one.
+//! The output is the same bytes as [`super::Expand`] writes on its own.
+
+use std::io::{self, Write};
+
+use kerf_canon::{Alarm, Event, Pos};
+use kerf_expand::{Expander, Target};
+
+use super::behind::Behind;
+use super::expand::started;
+use crate::sink::{Context, Sink};
+
+/// What the thread is handed. Nearly every item is the large variant, so
+/// it is kept inline: a box would be an allocation per item.
+#[allow(clippy::large_enum_variant)]
+enum Item {
+    /// A file id and its name, before the file's first event.
+    Name(u32, String),
+    /// One canonical command.
+    Event(Event),
+    /// The alarm that stopped the run, after the last event.
+    Alarm(Alarm),
+}
+
+/// The writer and the file names it has been sent.
+struct Writer<W: Write> {
+    x: Expander<W>,
+    names: Vec<String>,
+}
+
+impl<W: Write> Writer<W> {
+    fn name(&self, id: u32) -> &str {
+        self.names.get(id as usize).map_or("", String::as_str)
+    }
+
+    fn take(&mut self, item: Item) -> io::Result<()> {
+        match item {
+            Item::Name(id, name) => {
+                let i = id as usize;
+                if self.names.len() <= i {
+                    self.names.resize(i + 1, String::new());
+                }
+                self.names[i] = name;
+                Ok(())
+            }
+            Item::Event(e) => {
+                let Writer { x, names } = self;
+                let file = names.get(e.src.file as usize).map_or("", String::as_str);
+                x.event(&e, file)
+            }
+            Item::Alarm(a) => {
+                let file = self.name(a.src.file).to_string();
+                self.x.alarm(&a, &file)
+            }
+        }
+    }
+
+    /// Output blocks written, after the last flush.
+    fn end(self) -> io::Result<u64> {
+        let blocks = self.x.blocks();
+        self.x.finish().map(|_| blocks)
+    }
+}
+
+/// Writes the program as plain G-code onto `out`, on a thread of its own.
+pub struct ExpandBehind<W: Write + Send + 'static> {
+    target: Target,
+    out: Option<W>,
+    behind: Option<Behind<Item, u64>>,
+    /// Per file id: its name has been sent.
+    named: Vec<bool>,
+    blocks: u64,
+}
+
+impl<W: Write + Send + 'static> ExpandBehind<W> {
+    /// G-code for `target` written onto `out` (the machine's control and
+    /// axes are read from the run's profile at the start).
+    pub fn new(out: W, target: Target) -> ExpandBehind<W> {
+        ExpandBehind {
+            target,
+            out: Some(out),
+            behind: None,
+            named: Vec::new(),
+            blocks: 0,
+        }
+    }
+
+    /// Output blocks written (after the run).
+    pub fn blocks(&self) -> u64 {
+        self.blocks
+    }
+
+    /// Sends the name of file `id` if it has not been sent.
+    fn name(&mut self, id: u32, cx: &Context) -> io::Result<()> {
+        let i = id as usize;
+        if self.named.len() <= i {
+            self.named.resize(i + 1, false);
+        }
+        if self.named[i] {
+            return Ok(());
+        }
+        self.named[i] = true;
+        match self.behind.as_mut() {
+            Some(b) => b.push(Item::Name(id, cx.file(id).to_string())),
+            None => Ok(()),
+        }
+    }
+}
+
+impl<W: Write + Send + 'static> Sink for ExpandBehind<W> {
+    fn name(&self) -> &str {
+        "expand"
+    }
+
+    fn start(&mut self, cx: &Context) -> io::Result<()> {
+        let Some(out) = self.out.take() else {
+            return Ok(());
+        };
+        let w = Writer {
+            x: started(out, self.target, cx)?,
+            names: Vec::new(),
+        };
+        self.behind = Some(Behind::spawn(w, Writer::take, Writer::end));
+        Ok(())
+    }
+
+    fn event(&mut self, e: &Event, _from: &Pos, cx: &Context) -> io::Result<()> {
+        self.name(e.src.file, cx)?;
+        match self.behind.as_mut() {
+            Some(b) => b.push(Item::Event(e.clone())),
+            None => Ok(()),
+        }
+    }
+
+    fn finish(&mut self, cx: &Context, alarm: Option<&Alarm>) -> io::Result<()> {
+        if let Some(a) = alarm {
+            self.name(a.src.file, cx)?;
+            if let Some(b) = self.behind.as_mut() {
+                b.push(Item::Alarm(a.clone()))?;
+            }
+        }
+        if let Some(b) = self.behind.take() {
+            self.blocks = b.finish()?;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sinks::Expand;
+    use crate::Job;
+    use std::sync::{Arc, Mutex};
+
+    /// An `io::Write` into a shared buffer (the thread owns the writer).
+    #[derive(Clone, Default)]
+    struct Shared(Arc<Mutex<Vec<u8>>>);
+
+    impl Write for Shared {
+        fn write(&mut self, b: &[u8]) -> io::Result<usize> {
+            self.0.lock().unwrap().extend_from_slice(b);
+            Ok(b.len())
+        }
+        fn flush(&mut self) -> io::Result<()> {
+            Ok(())
+        }
+    }
+
+    /// (text, output blocks, alarm code) through `sink`.
+    fn run(text: &str, sink: &mut dyn Sink) -> Option<String> {
+        let mut runner = Job::text("part.nc", text).machine("hx-mc").load().unwrap();
+        runner.interpret_only();
+        runner.run(&mut [sink]).unwrap().alarm.map(|a| a.code)
+    }
+
+    #[test]
+    fn the_same_text_as_the_expansion_on_its_own() {
+        // A macro loop of 3,000 moves (several batches) and a full circle.
+        let text = "#1=0\nWHILE[#1LT3000]DO1\nG1 X[#1*0.01] Y[#1MOD7] F500.\n#1=#1+1\nEND1\n\
+                    G0 X10. Y0\nG2 I-5.\nM30\n";
+        let mut alone = Vec::new();
+        let mut sink = Expand::new(&mut alone, Target::Fanuc);
+        assert_eq!(run(text, &mut sink), None);
+        let blocks = sink.blocks();
+        drop(sink);
+        let out = Shared::default();
+        let mut behind = ExpandBehind::new(out.clone(), Target::Fanuc);
+        assert_eq!(run(text, &mut behind), None);
+        assert_eq!(behind.blocks(), blocks);
+        assert!(blocks > 3000, "{blocks}");
+        assert!(*out.0.lock().unwrap() == alone, "the texts differ");
+    }
+
+    #[test]
+    fn the_alarm_comes_after_the_last_block() {
+        // The arc's end is 50.99 mm from the centre, its start 40: F_82112.
+        let text = "G0 X0 Y0\nG2 X50. Y50. I40. F100.\nM30\n";
+        let mut alone = Vec::new();
+        let mut sink = Expand::new(&mut alone, Target::LinuxCnc);
+        assert_eq!(run(text, &mut sink).as_deref(), Some("F_82112"));
+        drop(sink);
+        let out = Shared::default();
+        let mut behind = ExpandBehind::new(out.clone(), Target::LinuxCnc);
+        assert_eq!(run(text, &mut behind).as_deref(), Some("F_82112"));
+        let text = String::from_utf8(out.0.lock().unwrap().clone()).unwrap();
+        assert_eq!(text.as_bytes(), &alone[..]);
+        assert!(text
+            .lines()
+            .last()
+            .unwrap()
+            .starts_with("(ALARM F_82112 part.nc:2"));
+    }
+}

@@ -1,0 +1,221 @@
+//! [`ToolpathBehind`]: the [`Toolpath`] sink with its formatting and its
+//! writes on a thread of its own ([`Behind`]), so that a run with
+//! `--toolpath` uses both cores: the interpreter and the planner on the
+//! caller's thread, the JSON text (about 2,000 instructions a record, half
+//! the interpreter's block) and the system calls on the other.
+//!
+//! The caller's side copies each timed record (the event, its end point,
+//! time and feed) into the batch; nothing is allocated per record but an
+//! event's boxed programmed end point (`Event::prog`). A file name is sent
+//! once, before its first record. The records are the same bytes, in the
+//! same order, as [`Toolpath`] writes on its own.
+
+use std::io::{self, Write};
+
+use kerf_canon::{Event, Pos};
+
+use super::behind::Behind;
+use super::toolpath::Toolpath;
+use crate::sink::{Context, Sink, Timed};
+
+/// What the thread is handed. Nearly every item is the large variant, so
+/// it is kept inline: a box would be an allocation per item.
+#[allow(clippy::large_enum_variant)]
+enum Item {
+    /// A file id and its name, before the file's first record.
+    Name(u32, String),
+    /// One timed record.
+    Rec {
+        event: Event,
+        to: Pos,
+        t_end: f64,
+        feed_mm_min: Option<f64>,
+    },
+}
+
+fn take<W: Write>(tp: &mut Toolpath<W>, item: Item) -> io::Result<()> {
+    match item {
+        Item::Name(id, name) => {
+            tp.name_file(id, &name);
+            Ok(())
+        }
+        Item::Rec {
+            event,
+            to,
+            t_end,
+            feed_mm_min,
+        } => tp.write_named(&event, &to, t_end, feed_mm_min),
+    }
+}
+
+/// A toolpath written by a thread of its own; see the module
+/// documentation.
+pub struct ToolpathBehind<W: Write + Send + 'static> {
+    /// The sink until `start` moves it to the thread.
+    idle: Option<Toolpath<W>>,
+    behind: Option<Behind<Item, ()>>,
+    /// Per file id: its name has been sent.
+    named: Vec<bool>,
+}
+
+impl<W: Write + Send + 'static> ToolpathBehind<W> {
+    /// Formats and writes `tp`'s records on a thread started by
+    /// [`Sink::start`].
+    pub fn new(tp: Toolpath<W>) -> ToolpathBehind<W> {
+        ToolpathBehind {
+            idle: Some(tp),
+            behind: None,
+            named: Vec::new(),
+        }
+    }
+}
+
+impl<W: Write + Send + 'static> Sink for ToolpathBehind<W> {
+    fn name(&self) -> &str {
+        "toolpath"
+    }
+
+    fn start(&mut self, cx: &Context) -> io::Result<()> {
+        let Some(mut tp) = self.idle.take() else {
+            return Ok(());
+        };
+        tp.start(cx)?;
+        self.behind = Some(Behind::spawn(tp, take, |mut tp| tp.flush()));
+        Ok(())
+    }
+
+    fn timed(&mut self, t: &Timed, cx: &Context) -> io::Result<()> {
+        let Some(b) = self.behind.as_mut() else {
+            return Err(io::Error::other("the toolpath was not started"));
+        };
+        let id = t.event.src.file;
+        let i = id as usize;
+        if self.named.len() <= i {
+            self.named.resize(i + 1, false);
+        }
+        if !self.named[i] {
+            self.named[i] = true;
+            b.push(Item::Name(id, cx.file(id).to_string()))?;
+        }
+        b.push(Item::Rec {
+            event: t.event.clone(),
+            to: t.to,
+            t_end: t.t_end,
+            feed_mm_min: t.feed_mm_min,
+        })
+    }
+
+    fn finish(&mut self, _cx: &Context, _alarm: Option<&kerf_canon::Alarm>) -> io::Result<()> {
+        match self.behind.take() {
+            Some(b) => b.finish(),
+            None => Ok(()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sinks::behind::{BATCH, IN_FLIGHT};
+    use std::sync::{Arc, Mutex};
+
+    use kerf_canon::{Canon, Motion, SrcRef};
+    use kerf_interp::{Interp, Profile, Settings};
+    use kerf_motion::{Dynamics, Planner};
+
+    /// An `io::Write` into a shared buffer (the thread owns the writer).
+    #[derive(Clone, Default)]
+    struct Shared(Arc<Mutex<Vec<u8>>>);
+
+    impl Write for Shared {
+        fn write(&mut self, b: &[u8]) -> io::Result<usize> {
+            self.0.lock().unwrap().extend_from_slice(b);
+            Ok(b.len())
+        }
+        fn flush(&mut self) -> io::Result<()> {
+            Ok(())
+        }
+    }
+
+    /// Fails every write.
+    struct Broken;
+
+    impl Write for Broken {
+        fn write(&mut self, _: &[u8]) -> io::Result<usize> {
+            Err(io::Error::other("disk full"))
+        }
+        fn flush(&mut self) -> io::Result<()> {
+            Ok(())
+        }
+    }
+
+    fn feed(i: usize) -> Event {
+        let mut to = [0.0; kerf_canon::NAXES];
+        to[0] = i as f64 * 0.125;
+        to[2] = -(i as f64) / 3.0;
+        Event {
+            src: SrcRef {
+                file: 0,
+                line: i as u32 + 1,
+                col: 1,
+            },
+            tool: 1,
+            cmd: Canon::Rapid {
+                m: Motion { to, mto: to },
+                linear: false,
+            },
+            prog: i.is_multiple_of(7).then(|| Box::new(to)),
+        }
+    }
+
+    /// Feeds `n` records to `sink` as the runner would.
+    fn run(sink: &mut dyn Sink, n: usize) -> io::Result<()> {
+        let it = Interp::new(Profile::builtin("hx-mc").unwrap(), Settings::default());
+        let d = Dynamics::uniform(
+            [true; kerf_canon::NAXES],
+            10_000.0,
+            1_000.0,
+            10_000.0,
+            5_000.0,
+        );
+        let planner = Planner::new(d, [0.0; kerf_canon::NAXES], 0.0);
+        let cx = Context {
+            interp: &it,
+            planner: &planner,
+            warnings: &[],
+        };
+        sink.start(&cx)?;
+        for i in 0..n {
+            let e = feed(i);
+            let to = e.motion().unwrap().to;
+            let t = Timed {
+                event: &e,
+                from: to,
+                to,
+                t_end: i as f64 * 0.01,
+                time: 0.01,
+                feed_mm_min: None,
+            };
+            sink.timed(&t, &cx)?;
+        }
+        sink.finish(&cx, None)
+    }
+
+    #[test]
+    fn the_same_bytes_as_the_toolpath_on_its_own() {
+        // More than two batches in flight, and a last one part full.
+        let n = BATCH * (IN_FLIGHT + 2) + 17;
+        let (a, b) = (Shared::default(), Shared::default());
+        run(&mut Toolpath::new(a.clone()), n).unwrap();
+        run(&mut ToolpathBehind::new(Toolpath::new(b.clone())), n).unwrap();
+        let (a, b) = (a.0.lock().unwrap(), b.0.lock().unwrap());
+        assert_eq!(a.iter().filter(|c| **c == b'\n').count(), n);
+        assert!(*a == *b, "the records differ");
+    }
+
+    #[test]
+    fn a_write_error_is_returned() {
+        let e = run(&mut ToolpathBehind::new(Toolpath::new(Broken)), BATCH * 4).unwrap_err();
+        assert_eq!(e.to_string(), "disk full");
+    }
+}

@@ -1,0 +1,228 @@
+//! How one move lowers the cells of a run (up to [`crate::zmap::CHUNK`]
+//! cells of one row): a tight loop per case, each giving the same
+//! heights as the general evaluation ([`Sweep::tool_above`], the exact
+//! envelope at the cell centre) where it applies:
+//!
+//! - a level flat end mill without shank or holder: every covered cell
+//!   goes down to the one height;
+//! - a vertical move (a plunge, a drill's peck) of any tool without shank
+//!   or holder: the lowest tip height plus the profile at the cell's
+//!   distance from the axis;
+//! - a ball end mill without shank or holder: the capsule (ball.rs);
+//! - anything else: the general envelope and the holder's cylinders.
+
+use crate::ball::{BallRow, BallSweep};
+use crate::envelope::Sweep;
+use crate::shape::Shape;
+use crate::tool::{MillKind, MillTool};
+use crate::zmap::EPS;
+
+/// The evaluation a move uses.
+#[derive(Clone, Copy, Debug)]
+pub enum Kernel {
+    /// Level flat end mill: the height.
+    LevelFlat(f64),
+    /// Vertical move: the axis and the lowest tip height.
+    Vertical { x: f64, y: f64, z: f64 },
+    /// Ball end mill.
+    Ball(BallSweep),
+    /// The general envelope and the guards.
+    General,
+}
+
+/// The shank and holder cylinders: (radius, bottom above the tip, length).
+#[derive(Clone, Copy, Default)]
+pub struct Guards {
+    c: [(f64, f64, f64); 8],
+    n: usize,
+}
+
+impl Guards {
+    /// The cylinders of `tool` above its flutes (none with unlimited
+    /// flutes).
+    pub fn of(tool: &MillTool) -> Guards {
+        let mut g = Guards::default();
+        if tool.flute_length < 1.0e4 {
+            let mut b = tool.flute_length;
+            if tool.holder.is_empty() {
+                g.c[0] = (tool.radius, b, f64::INFINITY);
+                g.n = 1;
+            }
+            for &(r, l) in tool.holder.iter().take(8 - g.n) {
+                g.c[g.n] = (r, b, l);
+                b += l;
+                g.n += 1;
+            }
+        }
+        g
+    }
+
+    fn all(&self) -> &[(f64, f64, f64)] {
+        &self.c[..self.n]
+    }
+
+    /// The lowest of the cylinders above the tip (infinite without any).
+    pub fn lowest(&self) -> f64 {
+        self.all().iter().map(|g| g.1).fold(f64::INFINITY, f64::min)
+    }
+}
+
+/// One move over the cells: the kernel, what it needs and what it found.
+pub struct Pass<'a> {
+    pub s: &'a Sweep,
+    pub shape: Shape,
+    pub guards: Guards,
+    pub kernel: Kernel,
+    pub zmin: f64,
+    pub write: bool,
+    pub undo: Option<&'a mut Vec<(u32, f32)>>,
+    /// Σ (old - new) of the cutting part and of the guards, mm.
+    pub removed: f64,
+    pub holder: f64,
+}
+
+impl<'a> Pass<'a> {
+    /// The pass of `tool` along `s` over a stock whose bottom is `zmin`.
+    pub fn new(
+        tool: &MillTool,
+        s: &'a Sweep,
+        zmin: f64,
+        write: bool,
+        undo: Option<&'a mut Vec<(u32, f32)>>,
+    ) -> Pass<'a> {
+        let guards = Guards::of(tool);
+        let kernel = if guards.n > 0 {
+            Kernel::General
+        } else if s.vertical() {
+            Kernel::Vertical {
+                x: s.p0[0],
+                y: s.p0[1],
+                z: s.p0[2].min(s.p1[2]),
+            }
+        } else {
+            match tool.kind {
+                MillKind::Flat if s.level() => Kernel::LevelFlat(s.p0[2].max(zmin)),
+                MillKind::Ball => {
+                    BallSweep::new(s, tool.radius).map_or(Kernel::General, Kernel::Ball)
+                }
+                _ => Kernel::General,
+            }
+        };
+        Pass {
+            s,
+            shape: Shape::of(tool),
+            guards,
+            kernel,
+            zmin,
+            write,
+            undo,
+            removed: 0.0,
+            holder: 0.0,
+        }
+    }
+
+    /// The cells `h` of the row at `y` (the first, of index `idx`, centred
+    /// at `x0`; `dx` apart), those at or below `floor` left alone. True
+    /// when a height changed.
+    #[inline]
+    pub fn run(&mut self, h: &mut [f32], idx: u32, x0: f64, dx: f64, y: f64, floor: f32) -> bool {
+        match self.kernel {
+            Kernel::LevelFlat(z) => self.level_flat(h, idx, z, floor),
+            Kernel::Vertical { x, y: ya, z } => {
+                let r2 = self.shape.radius * self.shape.radius;
+                let dy2 = (y - ya) * (y - ya);
+                let shape = self.shape;
+                let zmin = self.zmin;
+                self.each(h, idx, floor, |k, _| {
+                    let d = x0 + k as f64 * dx - x;
+                    let e2 = d * d + dy2;
+                    (e2 <= r2).then(|| (z + shape.profile(e2.sqrt())).max(zmin))
+                })
+            }
+            Kernel::Ball(b) => {
+                let row: BallRow = b.row(y);
+                let zmin = self.zmin;
+                self.each(h, idx, floor, |k, _| {
+                    b.lowest(&row, x0 + k as f64 * dx).map(|z| z.max(zmin))
+                })
+            }
+            Kernel::General => {
+                let (s, shape, guards, zmin) = (self.s, self.shape, self.guards, self.zmin);
+                let mut met = 0.0;
+                let changed = self.each(h, idx, floor, |k, old| {
+                    let x = x0 + k as f64 * dx;
+                    for &(r, b, l) in guards.all() {
+                        if let Some(z) = s.flat(x, y, r, b) {
+                            if old > z + EPS {
+                                met += old.min(z + l) - z;
+                            }
+                        }
+                    }
+                    s.tool_above(&shape, x, y, old - EPS).map(|z| z.max(zmin))
+                });
+                self.holder += met;
+                changed
+            }
+        }
+    }
+
+    /// A level flat end mill: one height for every covered cell.
+    #[inline]
+    fn level_flat(&mut self, h: &mut [f32], idx: u32, z: f64, floor: f32) -> bool {
+        let zf = z as f32;
+        let mut removed = 0.0;
+        let mut changed = false;
+        for (k, v) in h.iter_mut().enumerate() {
+            let old = *v as f64;
+            if *v <= floor || z >= old - EPS {
+                continue;
+            }
+            removed += old - z;
+            if self.write {
+                if let Some(u) = self.undo.as_deref_mut() {
+                    u.push((idx + k as u32, *v));
+                }
+                *v = zf;
+                changed = true;
+            }
+        }
+        self.removed += removed;
+        changed
+    }
+
+    /// Every cell above `floor` (and above the stock's bottom) lowered to
+    /// `f(k, old)` where that is lower.
+    #[inline]
+    fn each(
+        &mut self,
+        h: &mut [f32],
+        idx: u32,
+        floor: f32,
+        mut f: impl FnMut(usize, f64) -> Option<f64>,
+    ) -> bool {
+        let mut removed = 0.0;
+        let mut changed = false;
+        for (k, v) in h.iter_mut().enumerate() {
+            let old = *v as f64;
+            if *v <= floor || old <= self.zmin + EPS {
+                continue;
+            }
+            let Some(z) = f(k, old) else {
+                continue;
+            };
+            if z >= old - EPS {
+                continue;
+            }
+            removed += old - z;
+            if self.write {
+                if let Some(u) = self.undo.as_deref_mut() {
+                    u.push((idx + k as u32, *v));
+                }
+                *v = z as f32;
+                changed = true;
+            }
+        }
+        self.removed += removed;
+        changed
+    }
+}
