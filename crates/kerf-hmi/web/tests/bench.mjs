@@ -12,11 +12,11 @@ import { readFileSync } from 'node:fs';
 import { launch, serve } from './browser.mjs';
 
 const file = process.argv[2];
-const LOOP = `G90 G17 G21 G54 G00 X0. Y0. Z5.
+const LOOP = `G90 G17 G21 G54 G00 X-150. Y-150. Z5.
 G01 Z0. F6000.
 #1 = 0
 WHILE [#1 LT 10000000] DO1
-G01 X[[#1 MOD 1000] * 0.3] Y[FIX[#1 / 1000] * 0.03] Z[SIN[#1 * 3.6]]
+G01 X[[#1 MOD 1000] * 0.3 - 150.] Y[FIX[#1 / 1000] * 0.03 - 150.] Z[SIN[#1 * 3.6]]
 #1 = #1 + 1
 END1
 M30
