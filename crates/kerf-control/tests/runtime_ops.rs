@@ -406,9 +406,9 @@ fn the_m00_comment_goes_to_the_history() {
 }
 
 #[test]
-fn programs_up_to_256_mib_load_and_larger_are_refused() {
+fn programs_up_to_512_mib_load_and_larger_are_refused() {
     use kerf_control::runtime::MAX_PROGRAM_BYTES;
-    assert_eq!(MAX_PROGRAM_BYTES, 256 * 1024 * 1024);
+    assert_eq!(MAX_PROGRAM_BYTES, 512 * 1024 * 1024);
     let mut rt = machine("hx-mc");
     rt.command(Command::Mode { mode: Mode::Mem }).unwrap();
     // 65 MiB (over the 64 MiB this runtime took before): 8-byte blocks.
@@ -419,6 +419,6 @@ fn programs_up_to_256_mib_load_and_larger_are_refused() {
     // One byte over the limit: refused, and the program before stays.
     let over = "\n".repeat(MAX_PROGRAM_BYTES + 1);
     let e = rt.load_program("over.nc", &over).unwrap_err();
-    assert!(e.to_string().contains("programs up to 256 MiB"), "{e}");
+    assert!(e.to_string().contains("programs up to 512 MiB"), "{e}");
     assert_eq!(rt.state().program.name, "big.nc");
 }

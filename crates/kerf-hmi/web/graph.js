@@ -7,6 +7,7 @@ import * as THREE from 'three';
 import { OrbitControls } from './vendor/OrbitControls.js';
 import { pick, LineIndex } from './lines.js';
 import { Coarse } from './coarse.js';
+import { ViewCopy } from './lod.js';
 
 const RECORD = 20;
 const KIND_COLOURS = {
@@ -27,6 +28,21 @@ const TOOL_PALETTE = [
  */
 const COARSE_MAX = 10000;
 
+/** A path of at most this many vertices is drawn whole in every frame. */
+const FULL_MAX = 50000;
+/**
+ * Larger paths are drawn decimated for the view (lod.js): while the
+ * camera moves, at most MOVE_MAX vertices about MOVE_PX pixels apart
+ * (made again every MOVE_REBUILD_MS, or at once when the zoom changed by
+ * a quarter); with the camera still, at most STILL_MAX vertices STILL_PX
+ * apart: at that spacing the frame looks as the whole path's does.
+ */
+const MOVE_MAX = 20000;
+const MOVE_PX = 1.5;
+const MOVE_REBUILD_MS = 200;
+const STILL_MAX = 400000;
+const STILL_PX = 0.5;
+
 /** Most segments one highlighted line draws. */
 const HIGHLIGHT_MAX = 200000;
 
@@ -38,6 +54,18 @@ function grow(b, x, y, z) {
   if (x > b.max.x) b.max.x = x;
   if (y > b.max.y) b.max.y = y;
   if (z > b.max.z) b.max.z = z;
+}
+
+/** True when WebGL is drawn by a software rasteriser (no GPU). */
+function softwareGL() {
+  const c = document.createElement('canvas');
+  const gl = c.getContext('webgl2') || c.getContext('webgl');
+  if (!gl) return false;
+  const ext = gl.getExtension('WEBGL_debug_renderer_info');
+  const name = ext ? String(gl.getParameter(ext.UNMASKED_RENDERER_WEBGL)) : '';
+  const lose = gl.getExtension('WEBGL_lose_context');
+  if (lose) lose.loseContext();
+  return /swiftshader|llvmpipe|softpipe|software/i.test(name);
 }
 
 export class Graph {
@@ -68,7 +96,11 @@ export class Graph {
     this.frameTimes = [];
     this.firstFrameAt = null;
 
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    // Multisampling costs a software rasteriser (SwiftShader, llvmpipe) 4
+    // samples a pixel of every line, where the frame's cost is the pixels
+    // the path covers; a GPU does it for free.
+    this.software = softwareGL();
+    this.renderer = new THREE.WebGLRenderer({ antialias: !this.software, preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(Math.min(devicePixelRatio, 2));
     el.append(this.renderer.domElement);
     this.scene = new THREE.Scene();
@@ -87,6 +119,12 @@ export class Graph {
     this.coarseLine.frustumCulled = false;
     this.coarseLine.visible = false;
     this.scene.add(this.coarseLine);
+    this.moveCopy = new ViewCopy(MOVE_MAX);
+    this.stillCopy = new ViewCopy(STILL_MAX);
+    this.moveLine = this.copyLine(this.moveCopy);
+    this.stillLine = this.copyLine(this.stillCopy);
+    this.vp = new THREE.Matrix4();
+    this.drewLod = null; // which copy the last frame drew
 
     this.axes = new THREE.AxesHelper(20);
     this.scene.add(this.axes);
@@ -104,6 +142,47 @@ export class Graph {
     byTool.onchange = () => { this.byTool = byTool.checked; this.recolour(); };
     this.resize();
     this.view(this.lathe ? 'front' : 'iso');
+  }
+
+  /** A line drawing a ViewCopy's arrays. */
+  copyLine(copy) {
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(copy.pos, 3));
+    g.setAttribute('color', new THREE.BufferAttribute(copy.col, 3, true));
+    g.setDrawRange(0, 0);
+    const l = new THREE.Line(g, this.material);
+    l.frustumCulled = false;
+    l.visible = false;
+    this.scene.add(l);
+    return l;
+  }
+
+  /**
+   * Makes `copy` again for the camera now when it was made for another
+   * view or path (while moving, at most every MOVE_REBUILD_MS unless the
+   * zoom changed by a quarter): the vertices `px` pixels apart.
+   */
+  refresh(copy, line, px, moving) {
+    this.camera.updateMatrixWorld();
+    const m = this.vp.multiplyMatrices(this.camera.projectionMatrix, this.camera.matrixWorldInverse).elements;
+    if (copy.fits(m, this.n)) return;
+    const worldPx = (this.camera.top - this.camera.bottom) / this.camera.zoom / Math.max(this.renderer.domElement.height, 1);
+    if (moving && copy.builtN === this.n) {
+      const zoom = copy.worldPx / worldPx;
+      if (performance.now() - copy.at < MOVE_REBUILD_MS && zoom < 1.25 && zoom > 0.8) return;
+    }
+    const g = this.line.geometry;
+    copy.build(g.attributes.position.array, g.attributes.color.array, this.keys, this.n, m, worldPx * px);
+    copy.worldPx = worldPx;
+    copy.at = performance.now();
+    const lg = line.geometry;
+    lg.attributes.position.clearUpdateRanges();
+    lg.attributes.color.clearUpdateRanges();
+    lg.attributes.position.addUpdateRange(0, copy.n * 3);
+    lg.attributes.color.addUpdateRange(0, copy.n * 3);
+    lg.attributes.position.needsUpdate = true;
+    lg.attributes.color.needsUpdate = true;
+    lg.setDrawRange(0, copy.n);
   }
 
   makeTool() {
@@ -246,6 +325,8 @@ export class Graph {
     this.line.geometry.setDrawRange(0, 0);
     this.index = new LineIndex();
     this.coarse.clear();
+    this.moveCopy.reset();
+    this.stillCopy.reset();
     for (const hl of [this.hlCurrent, this.hlSelected]) { hl.geometry.setDrawRange(0, 0); hl.shownLine = 0; }
   }
 
@@ -342,6 +423,8 @@ export class Graph {
     this.line.geometry.attributes.color.clearUpdateRanges();
     this.line.geometry.attributes.color.needsUpdate = true;
     this.coarse.recolour(col);
+    this.moveCopy.builtN = -1;
+    this.stillCopy.builtN = -1;
     this.render();
   }
 
@@ -486,22 +569,38 @@ export class Graph {
   }
 
   /**
-   * Draws the scene now: the coarse copy while the camera moves or the
-   * path streams in (when the path is larger than the copy), else the
-   * whole path.
+   * Draws the scene now. A path of FULL_MAX vertices or fewer is drawn
+   * whole; a larger one as the coarse copy while it streams in, then
+   * decimated for the view: MOVE_MAX vertices while the camera moves,
+   * STILL_MAX when it is still (lod.js).
    */
   draw() {
-    const coarse = this.n > COARSE_MAX && (this.moving || !this.done);
-    if (coarse && this.coarse.changed) {
-      const g = this.coarseLine.geometry;
-      g.attributes.position.needsUpdate = true;
-      g.attributes.color.needsUpdate = true;
-      g.setDrawRange(0, this.coarse.n);
-      this.coarse.changed = false;
+    let show = this.line;
+    if (this.n > FULL_MAX && !this.done) {
+      show = this.coarseLine;
+      if (this.coarse.changed) {
+        const g = this.coarseLine.geometry;
+        g.attributes.position.needsUpdate = true;
+        g.attributes.color.needsUpdate = true;
+        g.setDrawRange(0, this.coarse.n);
+        this.coarse.changed = false;
+      }
+    } else if (this.n > FULL_MAX) {
+      const moving = this.moving;
+      const copy = moving ? this.moveCopy : this.stillCopy;
+      show = moving ? this.moveLine : this.stillLine;
+      this.refresh(copy, show, moving ? MOVE_PX : STILL_PX, moving);
+      // A view no copy of that size can hold: the coarse copy instead.
+      if (copy.failed) show = this.coarseLine;
     }
-    this.coarseLine.visible = coarse;
-    this.line.visible = !coarse;
-    this.drewCoarse = coarse;
+    this.line.visible = show === this.line;
+    this.coarseLine.visible = show === this.coarseLine;
+    this.moveLine.visible = show === this.moveLine;
+    this.stillLine.visible = show === this.stillLine;
+    this.drewCoarse = show === this.coarseLine;
+    this.drewLod = show === this.moveLine ? 'move' : show === this.stillLine ? 'still' : show === this.line ? 'full' : 'coarse';
+    this.drewVertices = show === this.line ? this.n : show === this.coarseLine ? this.coarse.n
+      : (show === this.moveLine ? this.moveCopy : this.stillCopy).n;
     this.renderer.render(this.scene, this.camera);
   }
 

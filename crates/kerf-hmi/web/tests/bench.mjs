@@ -6,16 +6,17 @@
 // With no file it makes a 10-million-segment macro loop. It prints the
 // time from the load request to the first frame with geometry, the time
 // to the whole path, the points held, and the frame rate over 5 s of
-// orbiting the camera.
+// orbiting the camera (whole view and zoomed 20 times) with the vertices
+// drawn, and one frame with the camera still.
 import { readFileSync } from 'node:fs';
 import { launch, serve } from './browser.mjs';
 
 const file = process.argv[2];
-const LOOP = `G90 G17 G21 G54 G00 X0. Y0. Z5.
+const LOOP = `G90 G17 G21 G54 G00 X-150. Y-150. Z5.
 G01 Z0. F6000.
 #1 = 0
 WHILE [#1 LT 10000000] DO1
-G01 X[[#1 MOD 1000] * 0.3] Y[FIX[#1 / 1000] * 0.03] Z[SIN[#1 * 3.6]]
+G01 X[[#1 MOD 1000] * 0.3 - 150.] Y[FIX[#1 / 1000] * 0.03 - 150.] Z[SIN[#1 * 3.6]]
 #1 = #1 + 1
 END1
 M30
@@ -53,40 +54,53 @@ const r = await page.evaluate(async ({ text, name }) => {
   console.log(`whole path ${all} ms, ${g.n} vertices, ${g.coarse.n} coarse`);
   g.view('iso');
   // Orbit: the camera turned about the target every frame for 5 s, as a
-  // drag does (the coarse copy drawn while it moves).
-  const orbit = async (moving, secs) => {
-    g.moving = moving;
+  // drag does (the copy decimated for the view drawn while it moves), at
+  // the whole view and zoomed 20 times on the part's centre. Frames are
+  // counted when drawn (the GL queue drained every 10th frame, so a slow
+  // rasteriser cannot hide behind the queue). No allocation per frame.
+  const d = g.camera.position.clone();
+  const orbit = async (zoom, secs) => {
+    g.camera.zoom = zoom;
+    g.camera.updateProjectionMatrix();
+    g.moving = true;
     const c = g.camera, tgt = g.controls.target;
-    let frames = 0;
+    let frames = 0, vertices = 0, lod = null;
     const t1 = performance.now();
     await new Promise((res) => {
       const step = () => {
-        const d = c.position.clone().sub(tgt);
-        d.applyAxisAngle(c.up, 0.02);
+        d.copy(c.position).sub(tgt).applyAxisAngle(c.up, 0.02);
         c.position.copy(tgt).add(d);
         c.lookAt(tgt);
         g.draw();
-        frames++;
+        if (++frames % 10 === 0) finish();
+        vertices = Math.max(vertices, g.drewVertices);
+        lod = g.drewLod;
         if (performance.now() - t1 < secs * 1000) requestAnimationFrame(step); else res();
       };
       requestAnimationFrame(step);
     });
     finish();
-    return frames / ((performance.now() - t1) / 1000);
+    const fps = frames / ((performance.now() - t1) / 1000);
+    // One frame with the camera still at this zoom: the still copy made
+    // for the view and drawn, to the end.
+    g.moving = false;
+    finish();
+    const t2 = performance.now();
+    g.draw();
+    finish();
+    const still = { ms: performance.now() - t2, vertices: g.drewVertices, lod: g.drewLod, build_ms: g.stillCopy.buildMs };
+    console.log(`orbit at zoom ${zoom}: ${fps.toFixed(1)} frames/s, ${vertices} vertices (${lod}); still frame ${JSON.stringify(still)}`);
+    return { fps, vertices, lod, move_build_ms: g.moveCopy.buildMs, move_build: g.moveCopy.last, still: { ...still, build: g.stillCopy.last } };
   };
-  const fps = await orbit(true, 5);
-  console.log(`orbit ${fps} frames/s`);
-  // The whole path, camera still: one frame drawn to the end.
-  g.moving = false;
-  finish();
-  const t2 = performance.now();
-  g.draw();
-  finish();
-  const fullFrame = performance.now() - t2;
+  const whole = await orbit(1, 5);
+  const zoomed = await orbit(20, 5);
+  const fps = whole.fps;
+  const fullFrame = whole.still.ms;
   return {
     load_ms: loaded, first_records_ms: first.records, first_frame_ms: first.frame, first_frame_drawn_ms: first.drawn,
     first_frame_points: first.points, whole_path_ms: all, points: g.points, vertices: g.n,
-    coarse_vertices: g.coarse.n, orbit_fps: fps, full_frame_ms: fullFrame, state: window.kerf.state.path,
+    coarse_vertices: g.coarse.n, orbit_fps: fps, still_frame_ms: fullFrame, orbit: whole, orbit_zoom20: zoomed,
+    state: window.kerf.state.path,
   };
 }, { text, name });
 console.log(JSON.stringify({ program: name, lines: text.split('\n').length - 1, ...r }));
