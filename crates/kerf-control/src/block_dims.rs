@@ -7,19 +7,13 @@
 //! Most blocks of a long program are plain words (`G01 X6.7292 Y0.
 //! Z43.0946 F1500.`); [`BlockDims::read_plain`] reads those in one pass
 //! over the bytes without building the parser's [`Block`], and finds what
-//! kerf-lang's `parse_block` gives for them (its fast number path, which
-//! it mirrors). Anything else (a comment, a macro word, N or O, a block
-//! delete, blanks inside a number, a number past the digit limit) is
-//! refused, and the block goes to the parser: [`BlockDims::read_parsed`]
-//! takes the same from its result.
+//! kerf-lang's `parse_block` gives for them: its numbers are read by the
+//! parser's own fast path, [`kerf_lang::plain_number`]. Anything else (a
+//! comment, a macro word, N or O, a block delete, blanks inside a number,
+//! a number past the digit limit) is refused, and the block goes to the
+//! parser: [`BlockDims::read_parsed`] takes the same from its result.
 
-use kerf_lang::{Addr, Block, Val};
-
-/// Powers of ten as the parser divides by them (exact doubles).
-const POW10: [f64; 19] = [
-    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
-    1e17, 1e18,
-];
+use kerf_lang::{is_blank, plain_number, Addr, Block, Val};
 
 /// One non-zero literal dimension word.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,11 +38,6 @@ pub(crate) struct BlockDims {
     pub skipped: bool,
     /// Its first G20 (true) or G21 (false).
     pub inch: Option<bool>,
-}
-
-#[inline]
-fn is_blank(c: u8) -> bool {
-    c == b' ' || c == b'\t' || c == b'\r' || c == 0x0c
 }
 
 impl BlockDims {
@@ -116,78 +105,14 @@ impl BlockDims {
             i += 1;
             let neg = i < n && text[i] == b'-';
             i += usize::from(neg);
-            let Some(num) = number(text, i, max) else {
+            let Some((num, end)) = plain_number(text, i, max) else {
                 return false;
             };
-            i = num.end;
-            // The parser's value: the mantissa over the power of ten.
-            let value = if num.frac == 0 {
-                num.mant as f64
-            } else if num.mant == 0 {
-                0.0
-            } else {
-                num.mant as f64 / POW10[num.frac]
-            };
-            let value = if neg { -value } else { value };
+            i = end;
+            let value = if neg { -num.value } else { num.value };
             self.word(letters, letter, value, num.point, at);
         }
     }
-}
-
-/// A number as the parser's fast path reads it.
-struct Number {
-    mant: u64,
-    frac: usize,
-    point: bool,
-    /// Index after the number and the blanks after it.
-    end: usize,
-}
-
-/// The parser's fast number path at `s`, or `None` where the parser
-/// would take its slow path (no digit, past `max` digits, digits after
-/// blanks).
-#[inline]
-fn number(t: &[u8], s: usize, max: usize) -> Option<Number> {
-    let n = t.len();
-    let mut i = s;
-    let mut mant: u64 = 0;
-    while i < n {
-        let d = t[i].wrapping_sub(b'0');
-        if d >= 10 {
-            break;
-        }
-        mant = mant.wrapping_mul(10).wrapping_add(u64::from(d));
-        i += 1;
-    }
-    let int_end = i;
-    let point = i < n && t[i] == b'.';
-    if point {
-        i += 1;
-        while i < n {
-            let d = t[i].wrapping_sub(b'0');
-            if d >= 10 {
-                break;
-            }
-            mant = mant.wrapping_mul(10).wrapping_add(u64::from(d));
-            i += 1;
-        }
-    }
-    let frac = i - int_end - usize::from(point);
-    let digits = int_end - s + frac;
-    let mut end = i;
-    while end < n && is_blank(t[end]) {
-        end += 1;
-    }
-    let more = end < n && (t[end].is_ascii_digit() || (t[end] == b'.' && !point));
-    if digits == 0 || digits > max || more {
-        return None;
-    }
-    Some(Number {
-        mant,
-        frac,
-        point,
-        end,
-    })
 }
 
 #[cfg(test)]

@@ -14,7 +14,9 @@ pub mod parse;
 pub mod source;
 
 pub use block::{Addr, BinOp, Block, Expr, ExprId, Func, LoopCmd, Num, Stmt, Val, Word};
-pub use parse::{loop_command, parse_block, LexError, LexErrorKind, LexOptions};
+pub use parse::{
+    is_blank, loop_command, parse_block, plain_number, LexError, LexErrorKind, LexOptions,
+};
 pub use source::{LineSource, Mark, ProgramRead, RawBlock};
 
 #[cfg(test)]

@@ -136,8 +136,9 @@ impl Kw {
     }
 }
 
+/// A blank between words or after a number, as the parser skips it.
 #[inline]
-fn is_blank(c: u8) -> bool {
+pub fn is_blank(c: u8) -> bool {
     c == b' ' || c == b'\t' || c == b'\r' || c == 0x0c
 }
 
@@ -550,59 +551,19 @@ impl<'a> P<'a> {
 
     /// Unsigned decimal number; spaces between digits are ignored.
     ///
-    /// The common form (digits, a point, digits, no blank between them) is
-    /// read here in two tight loops; anything else is
-    /// read again by [`P::number_slow`], which gives the same value for
-    /// the common form.
+    /// The common form is read by [`plain_number`]; anything else is read
+    /// again by [`P::number_slow`], which gives the same value for the
+    /// common form.
     #[inline]
     fn number(&mut self, at: usize) -> R<Num> {
-        let t = self.t;
-        let s = self.i;
-        let mut i = s;
-        let mut mant: u64 = 0;
-        // Wrapping: a run long enough to overflow is past the digit
-        // limit and read again below.
-        while let Some(d) = t.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d < 10) {
-            mant = mant.wrapping_mul(10).wrapping_add(d as u64);
-            i += 1;
-        }
-        let int_end = i;
-        let point = t.get(i) == Some(&b'.');
-        if point {
-            i += 1;
-            while let Some(d) = t.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d < 10) {
-                mant = mant.wrapping_mul(10).wrapping_add(d as u64);
-                i += 1;
-            }
-        }
-        let frac = i - int_end - point as usize;
-        let digits = int_end - s + frac;
         let max = (self.o.max_digits as usize).min(18);
-        // Blanks after the number are read with it (as the slow path
-        // does); digits or a first point after them continue it.
-        let mut j = i;
-        while j < t.len() && is_blank(t[j]) {
-            j += 1;
+        match plain_number(self.t, self.i, max) {
+            Some((num, end)) => {
+                self.i = end;
+                Ok(num)
+            }
+            None => self.number_slow(at),
         }
-        let more = t
-            .get(j)
-            .is_some_and(|c| c.is_ascii_digit() || (*c == b'.' && !point));
-        if digits == 0 || digits > max || more {
-            // Leading zeros may bring a long run under the limit; blanks
-            // between digits, errors: digit by digit.
-            return self.number_slow(at);
-        }
-        self.i = j;
-        let value = if frac == 0 {
-            mant as f64
-        } else {
-            mant as f64 / POW10[frac]
-        };
-        Ok(Num {
-            value,
-            point,
-            digits: digits as u8,
-        })
     }
 
     /// [`P::number`] digit by digit: blanks between the digits, and the
@@ -859,6 +820,61 @@ impl<'a> P<'a> {
             _ => err(LexErrorKind::BadExpression, at),
         }
     }
+}
+
+/// The parser's fast path for an unsigned number at `s` in `t`: digits,
+/// a point, digits, with no blank between them and at most `max` digits
+/// (at most 18). Gives the number and the index after it and after the
+/// blanks that follow it; `None` where the parser reads digit by digit
+/// instead (no digit, past `max` digits, digits or a first point after
+/// blanks), which is also where a reader mirroring the parser must hand
+/// the block to it.
+#[inline]
+pub fn plain_number(t: &[u8], s: usize, max: usize) -> Option<(Num, usize)> {
+    let mut i = s;
+    let mut mant: u64 = 0;
+    // Wrapping: a run long enough to overflow is past the digit limit and
+    // refused below.
+    while let Some(d) = t.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d < 10) {
+        mant = mant.wrapping_mul(10).wrapping_add(d as u64);
+        i += 1;
+    }
+    let int_end = i;
+    let point = t.get(i) == Some(&b'.');
+    if point {
+        i += 1;
+        while let Some(d) = t.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d < 10) {
+            mant = mant.wrapping_mul(10).wrapping_add(d as u64);
+            i += 1;
+        }
+    }
+    let frac = i - int_end - point as usize;
+    let digits = int_end - s + frac;
+    // Blanks after the number are read with it (as the slow path does);
+    // digits or a first point after them continue it.
+    let mut j = i;
+    while j < t.len() && is_blank(t[j]) {
+        j += 1;
+    }
+    let more = t
+        .get(j)
+        .is_some_and(|c| c.is_ascii_digit() || (*c == b'.' && !point));
+    if digits == 0 || digits > max.min(18) || more {
+        // Leading zeros may bring a long run under the limit; blanks
+        // between digits, errors: digit by digit.
+        return None;
+    }
+    let value = if frac == 0 {
+        mant as f64
+    } else {
+        mant as f64 / POW10[frac]
+    };
+    let num = Num {
+        value,
+        point,
+        digits: digits as u8,
+    };
+    Some((num, j))
 }
 
 const POW10: [f64; 19] = [
