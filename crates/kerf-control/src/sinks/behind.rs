@@ -112,6 +112,39 @@ impl<T: Send + 'static, R: Send + 'static> Behind<T, R> {
     }
 }
 
+/// The file ids whose names have gone to the thread: each is sent once,
+/// before the first item that refers to it.
+#[derive(Debug, Default)]
+pub(crate) struct Named(Vec<bool>);
+
+impl Named {
+    /// True the first time `id` is asked for (its name must be sent).
+    pub fn first(&mut self, id: u32) -> bool {
+        let i = id as usize;
+        if self.0.len() <= i {
+            self.0.resize(i + 1, false);
+        }
+        !std::mem::replace(&mut self.0[i], true)
+    }
+}
+
+/// An `io::Write` into a shared buffer, for tests (the thread owns the
+/// writer, the test reads what it wrote).
+#[cfg(test)]
+#[derive(Clone, Default)]
+pub(crate) struct SharedBuf(pub std::sync::Arc<std::sync::Mutex<Vec<u8>>>);
+
+#[cfg(test)]
+impl io::Write for SharedBuf {
+    fn write(&mut self, b: &[u8]) -> io::Result<usize> {
+        self.0.lock().unwrap().extend_from_slice(b);
+        Ok(b.len())
+    }
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

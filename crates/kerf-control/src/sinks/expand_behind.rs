@@ -12,7 +12,7 @@ use std::io::{self, Write};
 use kerf_canon::{Alarm, Event, Pos};
 use kerf_expand::{Expander, Target};
 
-use super::behind::Behind;
+use super::behind::{Behind, Named};
 use super::expand::started;
 use crate::sink::{Context, Sink};
 
@@ -73,8 +73,7 @@ pub struct ExpandBehind<W: Write + Send + 'static> {
     target: Target,
     out: Option<W>,
     behind: Option<Behind<Item, u64>>,
-    /// Per file id: its name has been sent.
-    named: Vec<bool>,
+    named: Named,
     blocks: u64,
 }
 
@@ -86,7 +85,7 @@ impl<W: Write + Send + 'static> ExpandBehind<W> {
             target,
             out: Some(out),
             behind: None,
-            named: Vec::new(),
+            named: Named::default(),
             blocks: 0,
         }
     }
@@ -98,14 +97,9 @@ impl<W: Write + Send + 'static> ExpandBehind<W> {
 
     /// Sends the name of file `id` if it has not been sent.
     fn name(&mut self, id: u32, cx: &Context) -> io::Result<()> {
-        let i = id as usize;
-        if self.named.len() <= i {
-            self.named.resize(i + 1, false);
-        }
-        if self.named[i] {
+        if !self.named.first(id) {
             return Ok(());
         }
-        self.named[i] = true;
         match self.behind.as_mut() {
             Some(b) => b.push(Item::Name(id, cx.file(id).to_string())),
             None => Ok(()),
@@ -157,21 +151,8 @@ mod tests {
     use super::*;
     use crate::sinks::Expand;
     use crate::Job;
-    use std::sync::{Arc, Mutex};
 
-    /// An `io::Write` into a shared buffer (the thread owns the writer).
-    #[derive(Clone, Default)]
-    struct Shared(Arc<Mutex<Vec<u8>>>);
-
-    impl Write for Shared {
-        fn write(&mut self, b: &[u8]) -> io::Result<usize> {
-            self.0.lock().unwrap().extend_from_slice(b);
-            Ok(b.len())
-        }
-        fn flush(&mut self) -> io::Result<()> {
-            Ok(())
-        }
-    }
+    use crate::sinks::behind::SharedBuf as Shared;
 
     /// (text, output blocks, alarm code) through `sink`.
     fn run(text: &str, sink: &mut dyn Sink) -> Option<String> {

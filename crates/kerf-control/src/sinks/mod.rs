@@ -12,7 +12,6 @@
 //!   (docs/expand.md; [`ExpandBehind`] writes it on a thread of its own).
 //!
 //! Each takes any `io::Write`; formats are in docs/formats.md.
-//! [`WriteBehind`] is an `io::Write` that writes on a thread of its own.
 
 pub(crate) mod behind;
 pub mod expand;
@@ -25,7 +24,6 @@ pub mod sample;
 pub mod sim;
 pub mod toolpath;
 pub mod toolpath_behind;
-pub mod write_behind;
 
 pub use expand::Expand;
 pub use expand_behind::ExpandBehind;
@@ -36,7 +34,6 @@ pub use sample::Sample;
 pub use sim::{SimHandle, SimSink};
 pub use toolpath::Toolpath;
 pub use toolpath_behind::ToolpathBehind;
-pub use write_behind::WriteBehind;
 
 use kerf_canon::Axis;
 use kerf_interp::Profile;

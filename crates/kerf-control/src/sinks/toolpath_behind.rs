@@ -14,7 +14,7 @@ use std::io::{self, Write};
 
 use kerf_canon::{Event, Pos};
 
-use super::behind::Behind;
+use super::behind::{Behind, Named};
 use super::toolpath::Toolpath;
 use crate::sink::{Context, Sink, Timed};
 
@@ -54,8 +54,7 @@ pub struct ToolpathBehind<W: Write + Send + 'static> {
     /// The sink until `start` moves it to the thread.
     idle: Option<Toolpath<W>>,
     behind: Option<Behind<Item, ()>>,
-    /// Per file id: its name has been sent.
-    named: Vec<bool>,
+    named: Named,
 }
 
 impl<W: Write + Send + 'static> ToolpathBehind<W> {
@@ -65,7 +64,7 @@ impl<W: Write + Send + 'static> ToolpathBehind<W> {
         ToolpathBehind {
             idle: Some(tp),
             behind: None,
-            named: Vec::new(),
+            named: Named::default(),
         }
     }
 }
@@ -89,12 +88,7 @@ impl<W: Write + Send + 'static> Sink for ToolpathBehind<W> {
             return Err(io::Error::other("the toolpath was not started"));
         };
         let id = t.event.src.file;
-        let i = id as usize;
-        if self.named.len() <= i {
-            self.named.resize(i + 1, false);
-        }
-        if !self.named[i] {
-            self.named[i] = true;
+        if self.named.first(id) {
             b.push(Item::Name(id, cx.file(id).to_string()))?;
         }
         b.push(Item::Rec {
@@ -117,25 +111,12 @@ impl<W: Write + Send + 'static> Sink for ToolpathBehind<W> {
 mod tests {
     use super::*;
     use crate::sinks::behind::{BATCH, IN_FLIGHT};
-    use std::sync::{Arc, Mutex};
 
     use kerf_canon::{Canon, Motion, SrcRef};
     use kerf_interp::{Interp, Profile, Settings};
     use kerf_motion::{Dynamics, Planner};
 
-    /// An `io::Write` into a shared buffer (the thread owns the writer).
-    #[derive(Clone, Default)]
-    struct Shared(Arc<Mutex<Vec<u8>>>);
-
-    impl Write for Shared {
-        fn write(&mut self, b: &[u8]) -> io::Result<usize> {
-            self.0.lock().unwrap().extend_from_slice(b);
-            Ok(b.len())
-        }
-        fn flush(&mut self) -> io::Result<()> {
-            Ok(())
-        }
-    }
+    use crate::sinks::behind::SharedBuf as Shared;
 
     /// Fails every write.
     struct Broken;
