@@ -87,7 +87,7 @@ impl BlockDims {
     /// letters, `max_digits` the parser's digit limit.
     pub fn read_plain(&mut self, text: &[u8], letters: &[u8], max_digits: u8) -> bool {
         self.clear();
-        let max = usize::from(max_digits).min(18);
+        let max = usize::from(max_digits);
         let n = text.len();
         let mut i = 0;
         loop {

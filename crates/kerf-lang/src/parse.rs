@@ -556,8 +556,7 @@ impl<'a> P<'a> {
     /// common form.
     #[inline]
     fn number(&mut self, at: usize) -> R<Num> {
-        let max = (self.o.max_digits as usize).min(18);
-        match plain_number(self.t, self.i, max) {
+        match plain_number(self.t, self.i, self.o.max_digits as usize) {
             Some((num, end)) => {
                 self.i = end;
                 Ok(num)
@@ -828,8 +827,8 @@ impl<'a> P<'a> {
 /// blanks that follow it; `None` where the parser reads digit by digit
 /// instead (no digit, past `max` digits, digits or a first point after
 /// blanks), which is also where a reader mirroring the parser must hand
-/// the block to it.
-#[inline]
+/// the block to it. Inlined into both (the parser's hot path).
+#[inline(always)]
 pub fn plain_number(t: &[u8], s: usize, max: usize) -> Option<(Num, usize)> {
     let mut i = s;
     let mut mant: u64 = 0;
