@@ -34,6 +34,7 @@ pub static ASSETS: &[Asset] = &[
     asset!("lines.js", JS),
     asset!("coarse.js", JS),
     asset!("lod.js", JS),
+    asset!("grid.js", JS),
     asset!("vendor/three.module.js", JS),
     asset!("vendor/three.core.js", JS),
     asset!("vendor/OrbitControls.js", JS),

@@ -8,6 +8,7 @@ import { OrbitControls } from './vendor/OrbitControls.js';
 import { pick, LineIndex } from './lines.js';
 import { Coarse } from './coarse.js';
 import { ViewCopy } from './lod.js';
+import { ScreenGrid } from './grid.js';
 
 const RECORD = 20;
 const KIND_COLOURS = {
@@ -31,14 +32,21 @@ const COARSE_MAX = 10000;
 /** A path of at most this many vertices is drawn whole in every frame. */
 const FULL_MAX = 50000;
 /**
- * Larger paths are drawn decimated for the view (lod.js): while the
- * camera moves, at most MOVE_MAX vertices about MOVE_PX pixels apart
- * (made again every MOVE_REBUILD_MS, or at once when the zoom changed by
- * a quarter); with the camera still, at most STILL_MAX vertices STILL_PX
- * apart: at that spacing the frame looks as the whole path's does.
+ * Larger paths are drawn decimated for the view. While the camera moves,
+ * in screen space (grid.js): chords within MOVE_TOL_PX of the path, kept
+ * only where they reach a cell MOVE_CELL_PX wide (or wider, to hold them)
+ * no chord of their colour reached before, at most MOVE_SEGMENTS (a
+ * software rasteriser spends a microsecond or more on each, a GPU
+ * nothing); made again every MOVE_REBUILD_MS, or at once when the zoom
+ * changed by a quarter. On a software rasteriser the moving view is
+ * drawn at MOVE_SCALE of its resolution. With the camera still, at most
+ * STILL_MAX vertices STILL_PX apart (lod.js), at full resolution: at that
+ * spacing the frame looks as the whole path's does.
  */
-const MOVE_MAX = 20000;
-const MOVE_PX = 1.5;
+const MOVE_SEGMENTS = { software: 4000, gpu: 60000 };
+const MOVE_CELL_PX = 2;
+const MOVE_TOL_PX = 1;
+const MOVE_SCALE = 0.5;
 const MOVE_REBUILD_MS = 200;
 const STILL_MAX = 400000;
 const STILL_PX = 0.5;
@@ -101,7 +109,8 @@ export class Graph {
     // the path covers; a GPU does it for free.
     this.software = softwareGL();
     this.renderer = new THREE.WebGLRenderer({ antialias: !this.software, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(Math.min(devicePixelRatio, 2));
+    this.pixelRatio = Math.min(devicePixelRatio, 2);
+    this.renderer.setPixelRatio(this.pixelRatio);
     el.append(this.renderer.domElement);
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(machine.style === 'hurco' ? 0xf4f6f9 : 0x05070a);
@@ -119,9 +128,9 @@ export class Graph {
     this.coarseLine.frustumCulled = false;
     this.coarseLine.visible = false;
     this.scene.add(this.coarseLine);
-    this.moveCopy = new ViewCopy(MOVE_MAX);
+    this.moveGrid = new ScreenGrid(this.software ? MOVE_SEGMENTS.software : MOVE_SEGMENTS.gpu);
     this.stillCopy = new ViewCopy(STILL_MAX);
-    this.moveLine = this.copyLine(this.moveCopy);
+    this.moveLine = this.copyLine(this.moveGrid, THREE.LineSegments);
     this.stillLine = this.copyLine(this.stillCopy);
     this.vp = new THREE.Matrix4();
     this.drewLod = null; // which copy the last frame drew
@@ -144,13 +153,13 @@ export class Graph {
     this.view(this.lathe ? 'front' : 'iso');
   }
 
-  /** A line drawing a ViewCopy's arrays. */
-  copyLine(copy) {
+  /** A line (or `Kind` of line) drawing a copy's arrays. */
+  copyLine(copy, Kind = THREE.Line) {
     const g = new THREE.BufferGeometry();
     g.setAttribute('position', new THREE.BufferAttribute(copy.pos, 3));
     g.setAttribute('color', new THREE.BufferAttribute(copy.col, 3, true));
     g.setDrawRange(0, 0);
-    const l = new THREE.Line(g, this.material);
+    const l = new Kind(g, this.material);
     l.frustumCulled = false;
     l.visible = false;
     this.scene.add(l);
@@ -166,13 +175,21 @@ export class Graph {
     this.camera.updateMatrixWorld();
     const m = this.vp.multiplyMatrices(this.camera.projectionMatrix, this.camera.matrixWorldInverse).elements;
     if (copy.fits(m, this.n)) return;
-    const worldPx = (this.camera.top - this.camera.bottom) / this.camera.zoom / Math.max(this.renderer.domElement.height, 1);
+    const canvas = this.renderer.domElement;
+    const worldPx = (this.camera.top - this.camera.bottom) / this.camera.zoom / Math.max(canvas.height, 1);
     if (moving && copy.builtN === this.n) {
       const zoom = copy.worldPx / worldPx;
-      if (performance.now() - copy.at < MOVE_REBUILD_MS && zoom < 1.25 && zoom > 0.8) return;
+      // A copy is 3-D: one made for a view a little turned still draws
+      // right, only its density lags; so it is made again at most every
+      // MOVE_REBUILD_MS, or four times its own build time (the build at
+      // most a fifth of the frames' time), unless the zoom changed.
+      const wait = Math.max(MOVE_REBUILD_MS, 4 * copy.buildMs);
+      if (performance.now() - copy.at < wait && zoom < 1.25 && zoom > 0.8) return;
     }
     const g = this.line.geometry;
-    copy.build(g.attributes.position.array, g.attributes.color.array, this.keys, this.n, m, worldPx * px);
+    const pos = g.attributes.position.array, col = g.attributes.color.array;
+    if (moving) copy.build(pos, col, this.keys, this.n, m, canvas.width, canvas.height, px, { tol: MOVE_TOL_PX, byTool: this.byTool });
+    else copy.build(pos, col, this.keys, this.n, m, worldPx * px);
     copy.worldPx = worldPx;
     copy.at = performance.now();
     const lg = line.geometry;
@@ -325,7 +342,7 @@ export class Graph {
     this.line.geometry.setDrawRange(0, 0);
     this.index = new LineIndex();
     this.coarse.clear();
-    this.moveCopy.reset();
+    this.moveGrid.reset();
     this.stillCopy.reset();
     for (const hl of [this.hlCurrent, this.hlSelected]) { hl.geometry.setDrawRange(0, 0); hl.shownLine = 0; }
   }
@@ -423,7 +440,7 @@ export class Graph {
     this.line.geometry.attributes.color.clearUpdateRanges();
     this.line.geometry.attributes.color.needsUpdate = true;
     this.coarse.recolour(col);
-    this.moveCopy.builtN = -1;
+    this.moveGrid.reset();
     this.stillCopy.builtN = -1;
     this.render();
   }
@@ -571,11 +588,12 @@ export class Graph {
   /**
    * Draws the scene now. A path of FULL_MAX vertices or fewer is drawn
    * whole; a larger one as the coarse copy while it streams in, then
-   * decimated for the view: MOVE_MAX vertices while the camera moves,
-   * STILL_MAX when it is still (lod.js).
+   * decimated for the view: on the screen grid while the camera moves
+   * (grid.js), STILL_MAX vertices when it is still (lod.js).
    */
   draw() {
     let show = this.line;
+    if (this.n <= FULL_MAX || !this.done) this.scaleFor(false);
     if (this.n > FULL_MAX && !this.done) {
       show = this.coarseLine;
       if (this.coarse.changed) {
@@ -587,10 +605,11 @@ export class Graph {
       }
     } else if (this.n > FULL_MAX) {
       const moving = this.moving;
-      const copy = moving ? this.moveCopy : this.stillCopy;
+      this.scaleFor(moving);
+      const copy = moving ? this.moveGrid : this.stillCopy;
       show = moving ? this.moveLine : this.stillLine;
-      this.refresh(copy, show, moving ? MOVE_PX : STILL_PX, moving);
-      // A view no copy of that size can hold: the coarse copy instead.
+      this.refresh(copy, show, moving ? MOVE_CELL_PX : STILL_PX, moving);
+      // A view the still copy cannot hold: the coarse copy instead.
       if (copy.failed) show = this.coarseLine;
     }
     this.line.visible = show === this.line;
@@ -600,8 +619,21 @@ export class Graph {
     this.drewCoarse = show === this.coarseLine;
     this.drewLod = show === this.moveLine ? 'move' : show === this.stillLine ? 'still' : show === this.line ? 'full' : 'coarse';
     this.drewVertices = show === this.line ? this.n : show === this.coarseLine ? this.coarse.n
-      : (show === this.moveLine ? this.moveCopy : this.stillCopy).n;
+      : (show === this.moveLine ? this.moveGrid : this.stillCopy).n;
     this.renderer.render(this.scene, this.camera);
+  }
+
+  /**
+   * On a software rasteriser a frame costs its pixels: while the camera
+   * moves over a large path the view is drawn at MOVE_SCALE of its
+   * resolution (the browser scales it up), at full resolution again when
+   * it is still.
+   */
+  scaleFor(moving) {
+    const ratio = this.pixelRatio * (moving && this.software ? MOVE_SCALE : 1);
+    if (this.renderer.getPixelRatio() === ratio) return;
+    this.renderer.setPixelRatio(ratio);
+    this.renderer.setSize(this.el.clientWidth || 1, this.el.clientHeight || 1, false);
   }
 
   render() {

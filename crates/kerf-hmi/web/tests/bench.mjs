@@ -7,7 +7,8 @@
 // time from the load request to the first frame with geometry, the time
 // to the whole path, the points held, and the frame rate over 5 s of
 // orbiting the camera (whole view and zoomed 20 times) with the vertices
-// drawn, and one frame with the camera still.
+// drawn, and one frame with the camera still. With KERF_BENCH_SHOTS=DIR it
+// saves the view moving and still, whole and zoomed, as PNGs in DIR.
 import { readFileSync } from 'node:fs';
 import { launch, serve } from './browser.mjs';
 
@@ -63,6 +64,8 @@ const r = await page.evaluate(async ({ text, name }) => {
     g.camera.zoom = zoom;
     g.camera.updateProjectionMatrix();
     g.moving = true;
+    g.moveGrid.builds = 0;
+    g.moveGrid.buildTotalMs = 0;
     const c = g.camera, tgt = g.controls.target;
     let frames = 0, vertices = 0, lod = null;
     const t1 = performance.now();
@@ -81,6 +84,8 @@ const r = await page.evaluate(async ({ text, name }) => {
     });
     finish();
     const fps = frames / ((performance.now() - t1) / 1000);
+    const canvas = `${g.renderer.domElement.width}x${g.renderer.domElement.height}`;
+    const builds = { count: g.moveGrid.builds, ms: Math.round(g.moveGrid.buildTotalMs) };
     // One frame with the camera still at this zoom: the still copy made
     // for the view and drawn, to the end.
     g.moving = false;
@@ -89,8 +94,8 @@ const r = await page.evaluate(async ({ text, name }) => {
     g.draw();
     finish();
     const still = { ms: performance.now() - t2, vertices: g.drewVertices, lod: g.drewLod, build_ms: g.stillCopy.buildMs };
-    console.log(`orbit at zoom ${zoom}: ${fps.toFixed(1)} frames/s, ${vertices} vertices (${lod}); still frame ${JSON.stringify(still)}`);
-    return { fps, vertices, lod, move_build_ms: g.moveCopy.buildMs, move_build: g.moveCopy.last, still: { ...still, build: g.stillCopy.last } };
+    console.log(`orbit at zoom ${zoom}: ${fps.toFixed(1)} frames/s, ${vertices} vertices (${lod}, canvas ${canvas}, builds ${JSON.stringify(builds)}); still frame ${JSON.stringify(still)}`);
+    return { fps, vertices, lod, canvas, builds, move_build_ms: g.moveGrid.buildMs, move_build: g.moveGrid.last, still: { ...still, build: g.stillCopy.last } };
   };
   const whole = await orbit(1, 5);
   const zoomed = await orbit(20, 5);
@@ -104,5 +109,17 @@ const r = await page.evaluate(async ({ text, name }) => {
   };
 }, { text, name });
 console.log(JSON.stringify({ program: name, lines: text.split('\n').length - 1, ...r }));
+const shots = process.env.KERF_BENCH_SHOTS;
+for (const [zoom, moving] of shots ? [[1, true], [1, false], [20, true], [20, false]] : []) {
+  await page.evaluate(({ zoom, moving }) => {
+    const g = window.kerf.graph;
+    g.view('iso');
+    g.camera.zoom = zoom;
+    g.camera.updateProjectionMatrix();
+    g.moving = moving;
+    g.draw();
+  }, { zoom, moving });
+  await page.screenshot({ path: `${shots}/${name}-zoom${zoom}-${moving ? 'moving' : 'still'}.png` });
+}
 await ctx.cleanup();
 await server.stop();
