@@ -218,16 +218,16 @@ async fn command(
     authorise(&s, &headers, q.token.as_deref())?;
     let bytes = read_body(body, MAX_JSON).await?;
     let cmd = crate::command::parse(&bytes)?;
-    // One trip to the controller: the command, then the state after it.
-    let s2 = s.clone();
-    tokio::task::spawn_blocking(move || {
-        let (r, state) = s2.with(move |c| (c.command(&cmd), c.state()))?;
-        s2.publish_state(state);
-        r.map_err(ApiError::from)
-    })
-    .await
-    .map_err(|e| ApiError::internal(e.to_string()))??;
-    let state = s.frames.borrow().state.clone();
+    // One trip to the controller: the command, then the state after it
+    // published there and answered.
+    let (r, state) = s
+        .ask(move |c, s| {
+            let r = c.command(&cmd);
+            s.publish_state(c.state());
+            (r, s.frames.borrow().state.clone())
+        })
+        .await?;
+    r.map_err(ApiError::from)?;
     Ok(Json(json!({"ok": true, "state": state})).into_response())
 }
 
@@ -237,9 +237,7 @@ async fn offsets(AxState(s): S) -> Answer {
 
 /// A GET answered by the controller.
 async fn read(s: Arc<Shared>, f: fn(&dyn crate::Control) -> serde_json::Value) -> Answer {
-    let v = tokio::task::spawn_blocking(move || s.with(move |c| f(c)))
-        .await
-        .map_err(|e| ApiError::internal(e.to_string()))??;
+    let v = s.ask(move |c, _| f(c)).await?;
     Ok(Json(v).into_response())
 }
 
@@ -283,14 +281,13 @@ async fn put_object(
     if !v.is_object() {
         return Err(ApiError::bad_json("the body must be a JSON object"));
     }
-    let s2 = s.clone();
-    let now = tokio::task::spawn_blocking(move || {
-        let r = s2.with(move |c| write(c, &v).map(|_| read(c)));
-        s2.publish();
-        r
-    })
-    .await
-    .map_err(|e| ApiError::internal(e.to_string()))???;
+    let now = s
+        .ask(move |c, s| {
+            let r = write(c, &v).map(|_| read(c));
+            s.publish_state(c.state());
+            r
+        })
+        .await??;
     Ok(Json(now).into_response())
 }
 
@@ -339,10 +336,7 @@ async fn alarms(
 ) -> Answer {
     let Query(q) = q.map_err(|e| ApiError::bad_request(e.body_text()))?;
     let since = q.since.unwrap_or(0);
-    let s2 = s.clone();
-    let all = tokio::task::spawn_blocking(move || s2.with(|c| c.alarms()))
-        .await
-        .map_err(|e| ApiError::internal(e.to_string()))??;
+    let all = s.ask(|c, _| c.alarms()).await?;
     let mut all: Vec<_> = all.into_iter().filter(|a| a.seq > since).collect();
     for a in &mut all {
         s.fill_block(a);

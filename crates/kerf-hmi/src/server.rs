@@ -68,7 +68,8 @@ pub struct Frame {
     pub json: axum::extract::ws::Utf8Bytes,
 }
 
-type Job = Box<dyn FnOnce(&mut dyn Control) + Send>;
+/// Work for the controller's thread, given the controller and the server.
+type Job = Box<dyn FnOnce(&mut dyn Control, &Shared) + Send>;
 
 /// Makes the controller on its own thread.
 pub type MakeControl =
@@ -90,6 +91,10 @@ pub struct Shared {
     trace: Mutex<Option<Trace>>,
     /// The newest state.
     pub frames: watch::Sender<Arc<Frame>>,
+    /// Held while a state is published (one at a time, numbered in turn).
+    publishing: Mutex<()>,
+    /// The runtime the state streams run on, when not the API's.
+    streams: std::sync::OnceLock<tokio::runtime::Handle>,
     /// Token needed for state-changing requests (None on loopback).
     pub token: Option<String>,
     /// Machine time per wall-clock second.
@@ -145,6 +150,8 @@ impl Shared {
             path: Arc::new(Mutex::new(PathStore::default())),
             trace: Mutex::new(None),
             frames: tx,
+            publishing: Mutex::new(()),
+            streams: std::sync::OnceLock::new(),
             token,
             rate,
         });
@@ -152,20 +159,49 @@ impl Shared {
         Ok(shared)
     }
 
-    /// Runs `f` on the controller's thread and waits for its answer.
+    /// Runs `f` on the controller's thread and waits for its answer
+    /// (blocking the calling thread: not for the runtime's, see [`Shared::ask`]).
     pub fn with<R: Send + 'static>(
         &self,
         f: impl FnOnce(&mut dyn Control) -> R + Send + 'static,
     ) -> Result<R, crate::error::ApiError> {
         let (tx, rx) = std::sync::mpsc::sync_channel(1);
-        let job: Job = Box::new(move |c| {
+        self.send(Box::new(move |c, _| {
             let _ = tx.send(f(c));
-        });
+        }))?;
+        rx.recv().map_err(|_| failed())
+    }
+
+    /// Runs `f` on the controller's thread (with the server, to publish
+    /// from there) and resolves to its answer: a handler awaits it without
+    /// holding a thread, so an answer takes one hop to the controller's
+    /// thread and one back.
+    pub async fn ask<R: Send + 'static>(
+        &self,
+        f: impl FnOnce(&mut dyn Control, &Shared) -> R + Send + 'static,
+    ) -> Result<R, crate::error::ApiError> {
+        let (tx, rx) = tokio::sync::oneshot::channel();
+        self.send(Box::new(move |c, s| {
+            let _ = tx.send(f(c, s));
+        }))?;
+        rx.await.map_err(|_| failed())
+    }
+
+    /// Runs the state streams' tasks on `rt` from now on (the first
+    /// runtime given is kept).
+    pub fn stream_on(&self, rt: tokio::runtime::Handle) {
+        let _ = self.streams.set(rt);
+    }
+
+    /// The runtime the state streams run on, if set apart.
+    pub fn streams(&self) -> Option<&tokio::runtime::Handle> {
+        self.streams.get()
+    }
+
+    fn send(&self, job: Job) -> Result<(), crate::error::ApiError> {
         lock(&self.jobs)
             .send(job)
-            .map_err(|_| crate::error::ApiError::internal("the controller has stopped"))?;
-        rx.recv()
-            .map_err(|_| crate::error::ApiError::internal("the controller failed on this request"))
+            .map_err(|_| crate::error::ApiError::internal("the controller has stopped"))
     }
 
     /// Loads a program: the backplot's trace starts first (on a thread of
@@ -249,38 +285,49 @@ impl Shared {
         }
     }
 
-    /// Publishes the state now (after a command, so clients see it at once).
+    /// Publishes the state now (after a command, so clients see it at
+    /// once), from the controller's thread.
     pub fn publish(&self) {
-        let Ok(state) = self.with(|c| c.state()) else {
-            return;
-        };
-        self.publish_state(state);
+        let (tx, rx) = std::sync::mpsc::sync_channel(1);
+        if self
+            .send(Box::new(move |c, s| {
+                s.publish_state(c.state());
+                let _ = tx.send(());
+            }))
+            .is_ok()
+        {
+            let _ = rx.recv();
+        }
     }
 
     /// Publishes a state just read from the controller: numbered one
     /// more than the state before it (`seq`), unless it is the same or
-    /// older.
+    /// older. Its JSON is made before the newest state is replaced, so
+    /// the clients' tasks reading the newest state never wait on it.
     pub fn publish_state(&self, mut state: State) {
         if let Some(a) = state.alarm.as_mut() {
             self.fill_block(a);
         }
         state.path = path_info(&lock(&self.path));
-        self.frames.send_if_modified(|old| {
-            // A state read before the newest one published (a command's,
-            // overtaken by a tick) is not sent: machine time never goes
-            // back for a client.
-            if state.t < old.state.t {
-                return false;
-            }
-            state.seq = old.state.seq;
-            if state == old.state {
-                return false;
-            }
-            state.seq += 1;
-            *old = Arc::new(make_frame(state));
-            true
-        });
+        let _turn = lock(&self.publishing);
+        let old = self.frames.borrow().clone();
+        // A state read before the newest one published (a command's,
+        // overtaken by a tick) is not sent: machine time never goes back
+        // for a client.
+        if state.t < old.state.t {
+            return;
+        }
+        state.seq = old.state.seq;
+        if state == old.state {
+            return;
+        }
+        state.seq += 1;
+        self.frames.send_replace(Arc::new(make_frame(state)));
     }
+}
+
+fn failed() -> crate::error::ApiError {
+    crate::error::ApiError::internal("the controller failed on this request")
 }
 
 fn path_info(path: &PathStore) -> crate::state::PathInfo {
@@ -323,8 +370,9 @@ fn control_loop(
             // A job that panics loses its answer (the caller gets an
             // error); the controller goes on.
             Ok(job) => {
+                let Some(shared) = weak.upgrade() else { break };
                 let c = &mut *c;
-                let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(c)));
+                let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job(c, &shared)));
             }
             Err(RecvTimeoutError::Timeout) => {
                 let now = Instant::now();
