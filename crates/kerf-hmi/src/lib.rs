@@ -85,16 +85,6 @@ pub fn serve(
         .enable_all()
         .build()
         .map_err(ServeError::Runtime)?;
-    // The state streams on threads of their own: a tick's sends to every
-    // client (100 of them in the load test) do not queue ahead of a
-    // command's request and answer on the API's threads.
-    let streams = tokio::runtime::Builder::new_multi_thread()
-        .worker_threads(2)
-        .thread_name("kerf-stream")
-        .enable_all()
-        .build()
-        .map_err(ServeError::Runtime)?;
-    shared.stream_on(streams.handle().clone());
     let bind = |source| ServeError::Bind { addr, source };
     rt.block_on(async move {
         let l = tokio::net::TcpListener::bind(addr).await.map_err(bind)?;

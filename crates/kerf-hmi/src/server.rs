@@ -93,8 +93,6 @@ pub struct Shared {
     pub frames: watch::Sender<Arc<Frame>>,
     /// Held while a state is published (one at a time, numbered in turn).
     publishing: Mutex<()>,
-    /// The runtime the state streams run on, when not the API's.
-    streams: std::sync::OnceLock<tokio::runtime::Handle>,
     /// Token needed for state-changing requests (None on loopback).
     pub token: Option<String>,
     /// Machine time per wall-clock second.
@@ -151,7 +149,6 @@ impl Shared {
             trace: Mutex::new(None),
             frames: tx,
             publishing: Mutex::new(()),
-            streams: std::sync::OnceLock::new(),
             token,
             rate,
         });
@@ -185,17 +182,6 @@ impl Shared {
             let _ = tx.send(f(c, s));
         }))?;
         rx.await.map_err(|_| failed())
-    }
-
-    /// Runs the state streams' tasks on `rt` from now on (the first
-    /// runtime given is kept).
-    pub fn stream_on(&self, rt: tokio::runtime::Handle) {
-        let _ = self.streams.set(rt);
-    }
-
-    /// The runtime the state streams run on, if set apart.
-    pub fn streams(&self) -> Option<&tokio::runtime::Handle> {
-        self.streams.get()
     }
 
     fn send(&self, job: Job) -> Result<(), crate::error::ApiError> {

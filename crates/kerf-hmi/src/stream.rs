@@ -41,12 +41,7 @@ pub(crate) async fn upgrade(
     }
     ws.max_message_size(MAX_CLIENT_MESSAGE)
         .max_frame_size(MAX_CLIENT_MESSAGE)
-        .on_upgrade(move |sock| async move {
-            match s.streams().cloned() {
-                Some(rt) => drop(rt.spawn(client(sock, s))),
-                None => client(sock, s).await,
-            }
-        })
+        .on_upgrade(move |sock| client(sock, s))
 }
 
 /// The 16-byte header of a toolpath message: path id, index of the first

@@ -115,56 +115,6 @@ async fn the_backplot_arrives_as_binary_records() {
 }
 
 #[tokio::test]
-async fn streams_on_a_runtime_of_their_own_carry_the_backplot_and_the_state() {
-    // As `kerf serve` runs them: the API on this test's runtime, the
-    // streams' tasks on `streams` (kept for the test binary's life: a
-    // runtime may not be dropped inside another).
-    let streams: &'static tokio::runtime::Runtime = Box::leak(Box::new(
-        tokio::runtime::Builder::new_multi_thread()
-            .worker_threads(1)
-            .enable_all()
-            .build()
-            .unwrap(),
-    ));
-    let at = common::http::start_with(
-        Box::new(Double::new()),
-        None,
-        Some(streams.handle().clone()),
-    )
-    .await;
-    assert_eq!(streams.metrics().num_alive_tasks(), 0);
-    let mut ws = connect(at).await;
-    request(
-        at,
-        "POST",
-        "/api/program?name=p.nc",
-        &[],
-        b"G90 G00 X10. Y20. Z5.\nM30\n",
-    )
-    .await;
-    let (mut points, mut state) = (0, false);
-    while points < 2 || !state {
-        let m = tokio::time::timeout(Duration::from_secs(10), ws.next())
-            .await
-            .expect("a message within 10 s")
-            .unwrap()
-            .unwrap();
-        match m {
-            Message::Binary(b) => points += (b.len() - 16) / 20,
-            Message::Text(t) => {
-                let v: serde_json::Value = serde_json::from_str(&t).unwrap();
-                state |= v["type"] == "state";
-            }
-            _ => {}
-        }
-    }
-    // The start point and the rapid's end, and the client's task on the
-    // streams' runtime.
-    assert_eq!(points, 2);
-    assert_eq!(streams.metrics().num_alive_tasks(), 1);
-}
-
-#[tokio::test]
 async fn an_oversized_client_message_closes_only_that_client() {
     let at = start(Box::new(Double::new()), None).await;
     let mut bad = connect(at).await;

@@ -31,23 +31,10 @@ pub async fn start(
     control: Box<dyn kerf_hmi::Control + Send>,
     token: Option<String>,
 ) -> SocketAddr {
-    start_with(control, token, None).await
-}
-
-/// [`start`], the state streams on `streams` when given (as `kerf serve`
-/// runs them).
-pub async fn start_with(
-    control: Box<dyn kerf_hmi::Control + Send>,
-    token: Option<String>,
-    streams: Option<tokio::runtime::Handle>,
-) -> SocketAddr {
     let profile = kerf_interp::Profile::builtin("hx-mc").unwrap();
     let make: kerf_hmi::server::MakeControl =
         Box::new(move || Ok(control as Box<dyn kerf_hmi::Control>));
     let shared = kerf_hmi::Shared::new(make, profile, vec![], token, 1.0).unwrap();
-    if let Some(rt) = streams {
-        shared.stream_on(rt);
-    }
     let l = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
     let at = l.local_addr().unwrap();
     tokio::spawn(kerf_hmi::run(l, shared));
