@@ -6,7 +6,7 @@
 use std::collections::VecDeque;
 
 use kerf_canon::{
-    Axis, Canon, Event, Feed, ModeChange, Motion, Plane, Pos, SpindleDir, SrcRef, NAXES,
+    Canon, Event, Feed, ModeChange, Motion, Plane, Pos, RotaryMode, SpindleDir, SrcRef, NAXES,
 };
 
 use crate::dynamics::Dynamics;
@@ -200,9 +200,9 @@ pub struct Planner {
     pub time: Breakdown,
     /// Cutting path length so far, mm.
     pub feed_length: f64,
-    /// In G107 cylindrical interpolation, the millimetres on the developed
-    /// surface per degree of C (F is then a speed on that surface).
-    surface_mm_per_deg: Option<f64>,
+    /// G112 / G107 in force: F is then a speed on the programmed surface
+    /// (the face's Cartesian plane, the developed cylinder).
+    rotary: RotaryMode,
     /// Rapid path length so far, mm.
     pub rapid_length: f64,
     /// Spindle speed limit used with constant surface speed, rpm (the
@@ -301,7 +301,7 @@ impl Planner {
             pieces: None,
             time: Breakdown::default(),
             feed_length: 0.0,
-            surface_mm_per_deg: None,
+            rotary: RotaryMode::Off,
             rapid_length: 0.0,
             max_rpm: f64::INFINITY,
             s_clamp: f64::INFINITY,
@@ -541,7 +541,9 @@ impl Planner {
                     p1: m.mto,
                 };
                 let off = comp_offset(m, e.prog.as_deref());
-                let (len, surface) = (g.len(), self.surface_len(&self.pos, &m.mto));
+                let r = (self.work_x, m.to[0]);
+                let surface = self.rotary.programmed_len(&self.pos, &m.mto, r.0, r.1);
+                let (len, surface) = (g.len(), surface.unwrap_or_else(|| g.len()));
                 let ratio = if surface > 0.0 { len / surface } else { 1.0 };
                 self.cut(g, *feed, m.to[0], false, off, ratio);
                 self.feed_length += surface - len;
@@ -673,28 +675,13 @@ impl Planner {
                     self.finalize_head();
                 }
             }
-            ModeChange::Rotary(r) => self.surface_mm_per_deg = r.mm_per_degree(),
+            ModeChange::Rotary(r) => self.rotary = r,
             ModeChange::Stitch(_) => {}
             ModeChange::FeedOverride(on) => self.ignore_override = !on,
             ModeChange::SpindleClamp(rpm) => {
                 self.s_clamp = if rpm.is_nan() { f64::INFINITY } else { rpm };
             }
         }
-    }
-
-    /// The length of a line on the programmed surface: in G107 (000 §4.7)
-    /// C counts as the arc length on the cylinder, so that F is the speed
-    /// along the developed surface; otherwise the machine path length.
-    fn surface_len(&self, p0: &Pos, p1: &Pos) -> f64 {
-        let Some(k) = self.surface_mm_per_deg else {
-            return line_len(p0, p1);
-        };
-        let mut d = *p1;
-        for i in 0..NAXES {
-            d[i] -= p0[i];
-        }
-        d[Axis::C as usize] *= k;
-        dot(&d, &d).sqrt()
     }
 
     fn rapid(&mut self, to: Pos, linear: bool) {
@@ -1284,6 +1271,50 @@ mod tests {
             let y = if k.is_multiple_of(2) { 0.0 } else { 0.05 };
             pl.push(&feed_to(k as f64 * 5.0, y));
         }
+    }
+
+    /// G112 (000 §4.6): F is the speed in the face's Cartesian plane. At
+    /// X20 C0, the virtual point (20, 10) is X √500, C 26.565°: 10 mm on
+    /// the face, 1 s at F600 (plus the ramps), though X moves 2.36 mm.
+    /// After G113 the same move back is timed by its linear axes.
+    #[test]
+    fn g112_feed_is_a_speed_on_the_face() {
+        let d = Dynamics::uniform([true; NAXES], 24000.0, 2000.0, 1e5, 10000.0);
+        let start = [20.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        let mut pl = Planner::new(d.clone(), start, 20.0);
+        let mv = |x: f64, c: f64| {
+            let p = [x, 0.0, 0.0, 0.0, 0.0, c];
+            ev(Canon::Feed {
+                m: Motion { to: p, mto: p },
+                feed: Feed::PerMin(600.0),
+            })
+        };
+        let r1 = 500f64.sqrt();
+        pl.push(&ev(Canon::Mode(ModeChange::Rotary(RotaryMode::Polar))));
+        pl.push(&mv(r1, 26.565_051_177));
+        pl.push(&ev(Canon::Mode(ModeChange::Rotary(RotaryMode::Off))));
+        pl.push(&mv(20.0, 0.0));
+        pl.finish();
+        let back = r1 - 20.0;
+        assert!(
+            (pl.feed_length - 10.0 - back).abs() < 1e-6,
+            "{}",
+            pl.feed_length
+        );
+        let t0 = pl.next_done().unwrap().time;
+        let t1 = pl.next_done().unwrap().time;
+        // The same stop after a plain 10 mm line in X: the ramps and the
+        // settling are the line's, so the two take the same time.
+        let mut line = Planner::new(d, start, 20.0);
+        line.push(&mv(30.0, 0.0));
+        line.push(&ev(Canon::Mode(ModeChange::Rotary(RotaryMode::Off))));
+        line.finish();
+        let t_line = line.next_done().unwrap().time;
+        assert!(
+            t_line > 1.0 && (t0 - t_line).abs() < 0.02 * t_line,
+            "{t0} vs {t_line}"
+        );
+        assert!(t1 > back / 10.0 && t1 < t_line, "{t1}");
     }
 
     /// G107 on a cylinder of radius 10: Z20 C180 is sqrt(20² + (10·π)²)
