@@ -15,7 +15,9 @@ use crate::trap::Trap;
 
 mod lag_memo;
 mod resume;
+mod turn;
 use lag_memo::LagMemo;
+use turn::turn_bound;
 pub use resume::Modes;
 
 /// Time totals by category, seconds.
@@ -172,6 +174,12 @@ pub struct Planner {
     d: Dynamics,
     t_smooth: f64,
     stages: usize,
+    /// `stages · t_smooth²` (the corner and arc tolerance limits' divisor).
+    k_tt: f64,
+    /// First and second moments of the smoothing kernel's positive half
+    /// (the corner rounding, see [`Planner::junction`]).
+    m1: f64,
+    m2: f64,
     q: VecDeque<Seg>,
     window: usize,
     head_v: f64,
@@ -277,9 +285,19 @@ impl Planner {
         } else {
             1.0
         };
+        let k = stages as f64;
+        let t = t_smooth;
+        let (m1, m2) = if stages == 1 {
+            (t / 8.0, t * t / 48.0)
+        } else {
+            (t / 6.0, t * t / 24.0)
+        };
         Planner {
             t_smooth,
             stages,
+            k_tt: k * t * t,
+            m1,
+            m2,
             q: VecDeque::with_capacity(window + 1),
             window,
             head_v: 0.0,
@@ -822,10 +840,8 @@ impl Planner {
                     // the path tolerance.
                     v = v.min((0.5 * amin * r).sqrt());
                     v = v.min((0.5 * jmin * r * r).cbrt());
-                    let k = self.stages as f64;
-                    let t = self.t_smooth;
-                    if t > 0.0 {
-                        v = v.min((24.0 * r * d.path_tolerance / (k * t * t)).sqrt());
+                    if self.t_smooth > 0.0 {
+                        v = v.min((24.0 * r * d.path_tolerance / self.k_tt).sqrt());
                     }
                 }
             }
@@ -861,11 +877,7 @@ impl Planner {
         // Corner rounding of the smoothing kernel: the first and second
         // moments of its positive half, times the speed and the
         // acceleration on either side.
-        let (m1, m2) = if self.stages == 1 {
-            (t / 8.0, t * t / 48.0)
-        } else {
-            (t / 6.0, t * t / 24.0)
-        };
+        let (m1, m2) = (self.m1, self.m2);
         if s > 1e-9 && m1 > 0.0 {
             let room = self.d.path_tolerance / s - m2 * p.acc.max(n.acc);
             if room <= 0.0 {
@@ -873,11 +885,20 @@ impl Planner {
             }
             v = v.min(room / m1);
         }
-        let th = c.acos();
-        if th > 1e-9 && t > 0.0 {
-            let r = lmin / th;
-            let k = self.stages as f64;
-            v = v.min((24.0 * r * self.d.path_tolerance / (k * t * t)).sqrt());
+        // The smoothing's radial error on the turn as an arc of radius
+        // lmin/θ; the `acos` is skipped when even the largest angle the
+        // chord allows would not lower v (the same v: each step below is
+        // monotonic in θ).
+        let th_max = turn_bound(s);
+        if th_max > 1e-9 && t > 0.0 {
+            let tol = self.d.path_tolerance;
+            if !(v <= (24.0 * (lmin / th_max) * tol / self.k_tt).sqrt()) {
+                let th = c.acos();
+                if th > 1e-9 {
+                    let r = lmin / th;
+                    v = v.min((24.0 * r * tol / self.k_tt).sqrt());
+                }
+            }
         }
         Some(v.max(0.0))
     }
@@ -1170,31 +1191,37 @@ impl Planner {
         }
     }
 
+    /// Plans the segment at the head of the queue and takes it out (read
+    /// where it lies: a pop would first copy the whole segment out).
     fn finalize_head(&mut self) {
-        let Some(s) = self.q.pop_front() else { return };
-        self.q_tmin = if self.q.is_empty() {
+        let Some(h) = self.q.front() else { return };
+        let (len, vmax, acc, stop) = (h.len, h.vmax, h.acc, h.stop);
+        let (last, id) = (h.last, h.id);
+        let next_vb = self.q.get(1).map(|n| n.vb);
+        self.q_tmin = if next_vb.is_none() {
             0.0
         } else {
-            self.q_tmin - s.len / s.vmax
+            self.q_tmin - len / vmax
         };
         let v0 = self.head_v;
-        let v1 = if s.stop {
+        let v1 = if stop {
             0.0
         } else {
-            match self.q.front() {
-                Some(n) => n.vb.min((v0 * v0 + 2.0 * s.acc * s.len).sqrt()),
+            match next_vb {
+                Some(vb) => vb.min((v0 * v0 + 2.0 * acc * len).sqrt()),
                 None => 0.0,
             }
         };
-        let trap = Trap::plan(s.len, v0, v1, s.vmax, s.acc);
-        self.head_v = if s.stop { 0.0 } else { trap.v1 };
+        let trap = Trap::plan(len, v0, v1, vmax, acc);
+        self.head_v = if stop { 0.0 } else { trap.v1 };
         if self.gain.is_finite() {
             if self.q_tmin * self.gain >= 40.0 {
                 // No stop can come within 40/K s: this segment's (and all
                 // earlier) lag will have decayed by e^-40 before any stop.
                 self.lag = [0.0; NAXES];
             } else {
-                self.track_lag_seg(&s.geom, &s.t_in, &trap);
+                let (geom, t_in) = (self.q[0].geom, self.q[0].t_in);
+                self.track_lag_seg(&geom, &t_in, &trap);
             }
         }
         let t0 = self.now;
@@ -1202,14 +1229,17 @@ impl Planner {
         if let Some(p) = self.pieces.as_mut() {
             p.push_back(Piece {
                 t0,
-                kind: PieceKind::Move { geom: s.geom, trap },
+                kind: PieceKind::Move {
+                    geom: self.q[0].geom,
+                    trap,
+                },
             });
         }
         self.now += dt;
         let mut spent = dt;
-        let t_end = if s.stop {
+        let t_end = if stop {
             let pos = self.pos;
-            self.pos = s.geom.end();
+            self.pos = self.q[0].geom.end();
             let drain = self.drain_time() + self.settle();
             self.hold(drain);
             self.pos = pos;
@@ -1218,11 +1248,12 @@ impl Planner {
         } else {
             self.now + 0.5 * self.drain_time()
         };
+        self.q.pop_front();
         self.time.cutting += spent;
         self.ev_spent += spent;
-        if s.last {
+        if last {
             self.done.push_back(Done {
-                id: s.id,
+                id,
                 t_end,
                 time: std::mem::take(&mut self.ev_spent),
             });
