@@ -17,8 +17,8 @@ mod lag_memo;
 mod resume;
 mod turn;
 use lag_memo::LagMemo;
-use turn::turn_bound;
 pub use resume::Modes;
+use turn::turn_bound;
 
 /// Time totals by category, seconds.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -892,7 +892,12 @@ impl Planner {
         let th_max = turn_bound(s);
         if th_max > 1e-9 && t > 0.0 {
             let tol = self.d.path_tolerance;
-            if !(v <= (24.0 * (lmin / th_max) * tol / self.k_tt).sqrt()) {
+            // Not `v <= bound` (a NaN bound included, as before).
+            let bound = (24.0 * (lmin / th_max) * tol / self.k_tt).sqrt();
+            if !matches!(
+                v.partial_cmp(&bound),
+                Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+            ) {
                 let th = c.acos();
                 if th > 1e-9 {
                     let r = lmin / th;
