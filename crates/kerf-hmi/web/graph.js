@@ -169,7 +169,9 @@ export class Graph {
   /**
    * Makes `copy` again for the camera now when it was made for another
    * view or path (while moving, at most every MOVE_REBUILD_MS unless the
-   * zoom changed by a quarter): the vertices `px` pixels apart.
+   * zoom changed by a quarter): moving, the screen grid (grid.js) with
+   * cells `px` pixels wide; still, the view copy (lod.js) with vertices
+   * `px` pixels apart.
    */
   refresh(copy, line, px, moving) {
     this.camera.updateMatrixWorld();
