@@ -7,8 +7,7 @@ use std::collections::VecDeque;
 
 use kerf_canon::*;
 use kerf_lang::{
-    parse_block, Addr, Block, LexErrorKind, LexOptions, LineSource, Mark, ProgramRead, RawBlock,
-    Stmt, Val,
+    parse_block, Addr, Block, LexErrorKind, LineSource, Mark, ProgramRead, RawBlock, Stmt, Val,
 };
 
 use crate::alarms::AlarmKind;
@@ -26,6 +25,7 @@ mod block_cache;
 mod calls;
 mod codes;
 mod comp;
+mod config;
 mod corners;
 mod cycles;
 mod cylindrical;
@@ -177,9 +177,8 @@ type LoopKey = (u32, u64, [u32; MAX_LOOP_DEPTH]);
 
 /// The interpreter.
 pub struct Interp {
-    profile: Profile,
-    dialect: &'static Dialect,
-    lex: LexOptions,
+    /// The profile and dialect, read once (interp/config.rs).
+    cfg: config::Config,
     settings: Settings,
     files: Vec<String>,
     src: Option<LineSource>,
@@ -202,7 +201,6 @@ pub struct Interp {
     blocks: u64,
     jumps: u64,
     cur: SrcRef,
-    arc_tol: f64,
     /// Tool offset memory (H/D, lathe X/Z/R/T).
     pub(crate) offsets: OffsetTable,
     /// An alarm raised after the current block's commands have run (G27).
@@ -215,16 +213,6 @@ pub struct Interp {
     repeat_budget: u64,
     /// Most backward jumps before the loop guard stops the run.
     max_jumps: u64,
-    /// G codes by value × 10 (fast lookup).
-    g_index: Vec<Option<&'static crate::dialect::GCode>>,
-    /// M codes below 256 (fast lookup).
-    m_index: Vec<Option<crate::dialect::MCode>>,
-    /// Letters the dialect accepts, by letter - 'A'.
-    letter_ok: [bool; 26],
-    /// Which axis slots the machine has.
-    has_axis: [bool; NAXES],
-    /// Travel limits (machine coordinates) per axis slot.
-    travel: [Option<(f64, f64)>; NAXES],
     /// Program store and call stack (M98/M99, G65, G66).
     calls: calls::Calls,
     /// System-variable state (interface signals, D table, clocks …).
@@ -265,46 +253,17 @@ impl Interp {
     /// A new interpreter for a machine, positioned at the machine's start
     /// position with the power-on modal state.
     pub fn new(profile: Profile, settings: Settings) -> Interp {
-        let dialect = Dialect::get(profile.dialect);
-        let lex = LexOptions {
-            long_names: dialect.long_names,
-            loop_comments: dialect.hurco_syntax,
-            max_digits: profile.max_digits,
-            // Bracket nesting: Fanuc 5 levels including function
-            // brackets; the HX text of 000 §14.2.4 gives 10.
-            max_nesting: dialect.caps.bracket_nesting,
-        };
+        let cfg = config::Config::new(profile);
+        let (profile, dialect) = (&cfg.profile, cfg.dialect);
         let hx = dialect.caps.hx_variables;
         let offsets = OffsetTable::new(profile.tools.offsets as usize);
-        let st = Self::power_on_state(&profile, dialect);
+        let st = Self::power_on_state(profile, dialect);
         let hurco = Self::hurco_state();
-        let arc_tol = profile.param("arc_tolerance_mm", 0.02);
         let repeat_budget = profile.param("max_repeat_blocks", 100_000_000.0) as u64;
         let max_jumps = profile.param("max_jumps", 10_000_000.0) as u64;
-        let mut g_index = vec![None; 2000];
-        for g in dialect.gcodes {
-            if let Some(slot) = g_index.get_mut(g.code10 as usize) {
-                *slot = Some(g);
-            }
-        }
-        let m_index: Vec<_> = (0..256u16).map(|m| dialect.mcode(m).copied()).collect();
-        let mut letter_ok = [false; 26];
-        for &l in dialect.letters {
-            if l.is_ascii_uppercase() {
-                letter_ok[(l - b'A') as usize] = true;
-            }
-        }
-        let mut has_axis = [false; NAXES];
-        let mut travel = [None; NAXES];
-        for ax in Axis::ALL {
-            if let Some(a) = profile.axis(ax) {
-                has_axis[ax as usize] = true;
-                travel[ax as usize] = Some((a.min, a.max));
-            }
-        }
         let settings_inputs = settings.inputs;
         let code_calls = if hx {
-            calls::CodeCalls::from_profile(&profile)
+            calls::CodeCalls::from_profile(profile)
         } else {
             None
         };
@@ -312,11 +271,9 @@ impl Interp {
         let system_b_on =
             dialect.caps.gcode_system_b && profile.param("gcode_system_b", 0.0) != 0.0;
         let mut cyc = cycles::CycleData::default();
-        cyc.params = cycles::CycleParams::from_profile(&profile);
+        cyc.params = cycles::CycleParams::from_profile(profile);
         Interp {
-            profile,
-            dialect,
-            lex,
+            cfg,
             settings,
             files: Vec::new(),
             src: None,
@@ -336,18 +293,12 @@ impl Interp {
             blocks: 0,
             jumps: 0,
             cur: SrcRef::default(),
-            arc_tol,
             offsets,
             after_block: None,
             high_water: 0,
             repeated: 0,
             repeat_budget,
             max_jumps,
-            g_index,
-            m_index,
-            has_axis,
-            travel,
-            letter_ok,
             calls: calls::Calls::default(),
             sys: Box::new(sysvars::SysState::new(settings_inputs, settings_sb)),
             code_calls,
@@ -442,8 +393,8 @@ impl Interp {
     pub fn load_main(&mut self, name: &str, reader: Box<dyn ProgramRead>) {
         self.files.push(name.to_string());
         self.file_id = (self.files.len() - 1) as u32;
-        let max = self.profile.max_block_chars.max(1);
-        self.src = Some(LineSource::new(reader, max, self.dialect.hurco_syntax));
+        let max = self.cfg.profile.max_block_chars.max(1);
+        self.src = Some(LineSource::new(reader, max, self.cfg.dialect.hurco_syntax));
         self.program_start = Mark { offset: 0, line: 1 };
         self.calls_main_loaded();
     }
@@ -452,7 +403,7 @@ impl Interp {
     /// as loaded with `--offsets`.
     pub fn set_work_offset(&mut self, idx: usize, origin: Pos) {
         self.st.work.set(work_offsets::WorkId::G5x(idx), origin);
-        if idx == 0 && self.dialect.caps.part_zero_is_e1 {
+        if idx == 0 && self.cfg.dialect.caps.part_zero_is_e1 {
             // The Hurco's part zero is fixture offset E1.
             self.st.work.set(work_offsets::WorkId::Fixture(1), origin);
         }
@@ -479,7 +430,7 @@ impl Interp {
 
     /// Whether X is programmed as a diameter now (lathes).
     pub fn diameter_programming(&self) -> bool {
-        self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means
+        self.cfg.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means
     }
 
     /// The tool offset memory (H/D pages, lathe tool offsets).
@@ -504,7 +455,7 @@ impl Interp {
 
     /// The machine profile.
     pub fn profile(&self) -> &Profile {
-        &self.profile
+        &self.cfg.profile
     }
 
     /// Blocks executed so far.
@@ -611,7 +562,7 @@ impl Interp {
     fn alarm(&self, k: AlarmKind, at: u32, msg: impl Into<String>) -> Alarm {
         let (line, col) = self.raw.line_col(at as usize);
         k.at(
-            self.dialect.id,
+            self.cfg.dialect.id,
             SrcRef {
                 file: self.cur.file,
                 line,
@@ -723,7 +674,7 @@ impl Interp {
                 }
                 Err(e) => {
                     return Err(AlarmKind::Io.at(
-                        self.dialect.id,
+                        self.cfg.dialect.id,
                         SrcRef {
                             file: self.file_id,
                             line: src.tell().line,
@@ -835,14 +786,14 @@ impl Interp {
     /// is an alarm.
     fn parse_raw(&mut self) -> R<()> {
         if self.raw.overlong {
-            let max = self.profile.max_block_chars;
+            let max = self.cfg.profile.max_block_chars;
             return Err(self.alarm(
                 AlarmKind::BlockTooLong,
                 max as u32,
                 format!("block longer than {max} characters"),
             ));
         }
-        if let Err(e) = parse_block(&self.raw.text, &self.lex, &mut self.block) {
+        if let Err(e) = parse_block(&self.raw.text, &self.cfg.lex, &mut self.block) {
             let kind = match e.kind {
                 LexErrorKind::UnexpectedChar(_) => AlarmKind::IllegalAddress,
                 LexErrorKind::MissingValue => AlarmKind::MissingValue,
@@ -925,7 +876,7 @@ impl Interp {
                     self.words.ng += 1;
                 }
                 Addr::L(b'M') => {
-                    let max_m = self.dialect.caps.max_m_per_block;
+                    let max_m = self.cfg.dialect.caps.max_m_per_block;
                     if self.words.nm >= max_m {
                         return Err(self.alarm(
                             AlarmKind::MCodeConflict,
@@ -967,7 +918,7 @@ impl Interp {
     /// A letter address word of the block (not G or M).
     #[inline]
     fn collect_letter(&mut self, l: u8, wv: WVal) -> R<()> {
-        if !self.letter_ok[(l - b'A') as usize] && !self.macro_args() {
+        if !self.cfg.letter_ok(l) && !self.macro_args() {
             return Err(self.alarm(
                 AlarmKind::IllegalAddress,
                 wv.at,
@@ -975,7 +926,8 @@ impl Interp {
             ));
         }
         if let Some(ax) = Axis::from_letter(l) {
-            if !self.has_axis[ax as usize] && !self.letter_is_argument(l) && !self.macro_args() {
+            if !self.cfg.has_axis[ax as usize] && !self.letter_is_argument(l) && !self.macro_args()
+            {
                 return Err(self.alarm(
                     AlarmKind::NoSuchAxis,
                     wv.at,
@@ -997,7 +949,7 @@ impl Interp {
 
     /// A `,C` / `,R` word (HX chamfer and corner R).
     fn collect_comma(&mut self, c: u8, wv: WVal) -> R<()> {
-        if !self.dialect.caps.comma_corners || !matches!(c, b'C' | b'R') {
+        if !self.cfg.dialect.caps.comma_corners || !matches!(c, b'C' | b'R') {
             return Err(self.alarm(
                 AlarmKind::IllegalAddress,
                 wv.at,
@@ -1048,14 +1000,14 @@ impl Interp {
 
     /// The block is a G65/G66 call: its letters are macro arguments.
     fn macro_args(&self) -> bool {
-        let [call, modal_call] = self.dialect.macro_calls;
+        let [call, modal_call] = self.cfg.dialect.macro_calls;
         self.words.has_g(call) || self.words.has_g(modal_call) || self.code_call_block()
     }
 
     /// Letters that name an axis but are arguments of a code on machines
     /// without that axis (a lathe's C as a chamfer, B in some cycles …).
     fn letter_is_argument(&self, l: u8) -> bool {
-        self.profile.kind == MachineKind::Lathe && matches!(l, b'C' | b'A' | b'B')
+        self.cfg.profile.kind == MachineKind::Lathe && matches!(l, b'C' | b'A' | b'B')
     }
 
     // ---- execution ---------------------------------------------------------
@@ -1067,7 +1019,7 @@ impl Interp {
                 return Ok(r);
             }
         }
-        if self.dialect.caps.restricted_words && !self.macro_args() {
+        if self.cfg.dialect.caps.restricted_words && !self.macro_args() {
             self.puma_words()?;
         }
         self.execute_block()
@@ -1076,7 +1028,8 @@ impl Interp {
     /// The block names an axis of the machine (or its incremental address).
     fn has_axis_word(&self) -> bool {
         Axis::ALL.iter().any(|&ax| {
-            self.has_axis[ax as usize] && self.words.has(ax_letter(ax)) || self.uvw(ax).is_some()
+            self.cfg.has_axis[ax as usize] && self.words.has(ax_letter(ax))
+                || self.uvw(ax).is_some()
         })
     }
 
@@ -1089,10 +1042,7 @@ impl Interp {
     }
 
     fn gcode(&self, code10: u16) -> Option<&'static crate::dialect::GCode> {
-        match self.g_index.get(code10 as usize) {
-            Some(g) => *g,
-            None => self.dialect.gcode(code10),
-        }
+        self.cfg.gcode(code10)
     }
 
     fn finished_by_end(&self) -> bool {
@@ -1102,13 +1052,7 @@ impl Interp {
     }
 
     fn mcode(&self, m: u32) -> Option<crate::dialect::MCode> {
-        if let Some(mc) = self.m_index.get(m as usize) {
-            return *mc;
-        }
-        if let Some(mc) = self.dialect.mcode(m.min(65535) as u16) {
-            return Some(*mc);
-        }
-        None
+        self.cfg.mcode(m)
     }
 
     /// Executes the block's M codes selected by `pick(code, when, action)`

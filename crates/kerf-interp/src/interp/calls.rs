@@ -223,7 +223,7 @@ impl Interp {
             return Ok(());
         }
         self.calls.indexed[id as usize] = true;
-        let lex = self.lex;
+        let lex = self.cfg.lex;
         let mut found: Vec<(u32, Mark, Mark)> = Vec::new();
         let mut overflow = false;
         let Some(src) = self.source_of(id) else {
@@ -281,7 +281,7 @@ impl Interp {
         if !self.calls.overflow[id as usize] {
             return Ok(None);
         }
-        let lex = self.lex;
+        let lex = self.cfg.lex;
         let Some(src) = self.source_of(id) else {
             return Ok(None);
         };
@@ -319,9 +319,12 @@ impl Interp {
                     let f = File::open(&path).map_err(|e| {
                         self.alarm(AlarmKind::Io, at, format!("{}: {e}", path.display()))
                     })?;
-                    let max = self.profile.max_block_chars.max(1);
-                    self.calls.parked[id as usize] =
-                        Some(LineSource::new(Box::new(f), max, self.dialect.hurco_syntax));
+                    let max = self.cfg.profile.max_block_chars.max(1);
+                    self.calls.parked[id as usize] = Some(LineSource::new(
+                        Box::new(f),
+                        max,
+                        self.cfg.dialect.hurco_syntax,
+                    ));
                     self.calls.high_water[id as usize] = 0;
                 }
                 id
@@ -337,8 +340,8 @@ impl Interp {
                 let f = File::open(&path).map_err(|e| {
                     self.alarm(AlarmKind::Io, at, format!("{}: {e}", path.display()))
                 })?;
-                let max = self.profile.max_block_chars.max(1);
-                let src = LineSource::new(Box::new(f), max, self.dialect.hurco_syntax);
+                let max = self.cfg.profile.max_block_chars.max(1);
+                let src = LineSource::new(Box::new(f), max, self.cfg.dialect.hurco_syntax);
                 self.files.push(path.display().to_string());
                 self.calls.add_file(Some(src), Some(path.clone()));
                 let id = (self.files.len() - 1) as u32;
@@ -444,7 +447,7 @@ impl Interp {
                 Ok(true) => {}
                 _ => break,
             }
-            if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
+            if parse_block(&raw.text, &self.cfg.lex, &mut blk).is_err() {
                 continue;
             }
             if self.other_program(&blk, mark) {
@@ -513,7 +516,7 @@ impl Interp {
                     _ => break,
                 }
                 self.repeated += 1;
-                if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
+                if parse_block(&raw.text, &self.cfg.lex, &mut blk).is_err() {
                     continue;
                 }
                 if self.other_program(&blk, mark) {
@@ -554,9 +557,9 @@ impl Interp {
     fn nesting_check(&self, macro_call: bool, at: u32) -> R<()> {
         let macros = self.calls.stack.iter().filter(|f| f.macro_call).count() as u32;
         let subs = self.calls.stack.len() as u32 - macros;
-        let p = |n: &str, def: f64| self.profile.param(n, def) as u32;
+        let p = |n: &str, def: f64| self.cfg.profile.param(n, def) as u32;
         let max_macro = p("max_macro_nesting", 4.0);
-        let max_sub = p("max_sub_nesting", self.dialect.caps.sub_nesting as f64);
+        let max_sub = p("max_sub_nesting", self.cfg.dialect.caps.sub_nesting as f64);
         let max_all = p("max_call_nesting", 8.0);
         let msg = if macro_call && macros + 1 > max_macro {
             format!("macro calls nested more than {max_macro} levels")
@@ -573,7 +576,7 @@ impl Interp {
     /// M98 P_ [Q_ R_] L_ (HX, 000 §2.4.3) / M98 P_ L_ and the 8-digit
     /// count+program P (Fanuc).
     pub(super) fn m98(&mut self, at: u32) -> R<()> {
-        let hx = self.dialect.caps.m98_q_m99_l;
+        let hx = self.cfg.dialect.caps.m98_q_m99_l;
         let p = self.int_word(b'P', 99_999_999.0)?;
         let q = if hx {
             self.int_word(b'Q', 99_999.0)?
@@ -655,7 +658,7 @@ impl Interp {
                 let err_src = self.calls_caller_src(qat);
                 self.unwind_failed_call();
                 return Err(AlarmKind::SequenceNotFound.at(
-                    self.dialect.id,
+                    self.cfg.dialect.id,
                     err_src,
                     format!("M98 Q{n}: sequence number N{n} not found in the called program"),
                 ));
@@ -702,7 +705,7 @@ impl Interp {
     /// back to its start (or N P), L times when L is given.
     pub(super) fn m99(&mut self, at: u32) -> R<()> {
         let p = self.int_word(b'P', 99_999.0)?;
-        let l = if self.dialect.caps.m98_q_m99_l {
+        let l = if self.cfg.dialect.caps.m98_q_m99_l {
             self.int_word(b'L', 9999.0)?
         } else {
             None
@@ -741,7 +744,7 @@ impl Interp {
             if !self.seek_sequence(n, true) {
                 let (line, col) = self.raw.line_col(pat as usize);
                 return Err(AlarmKind::SequenceNotFound.at(
-                    self.dialect.id,
+                    self.cfg.dialect.id,
                     SrcRef {
                         file: self.cur.file,
                         line,
@@ -847,7 +850,7 @@ impl Interp {
         let count = self.int_word(b'L', 9999.0)?.map(|l| l.0).unwrap_or(1);
         let args = self.g65_args(false)?;
         if modal {
-            let max = self.profile.param("max_macro_nesting", 4.0) as usize;
+            let max = self.cfg.profile.param("max_macro_nesting", 4.0) as usize;
             if self.calls.modal.len() >= max {
                 return Err(self.alarm(
                     AlarmKind::CallNesting,
@@ -862,7 +865,7 @@ impl Interp {
             });
             self.st
                 .modal
-                .set_meaning(self.dialect, Means::ModalCall(true));
+                .set_meaning(self.cfg.dialect, Means::ModalCall(true));
             return Ok(());
         }
         if count == 0 {
@@ -979,7 +982,7 @@ impl Interp {
         let on = !self.calls.modal.is_empty();
         self.st
             .modal
-            .set_meaning(self.dialect, Means::ModalCall(on));
+            .set_meaning(self.cfg.dialect, Means::ModalCall(on));
     }
 
     /// After a block with an axis move while G66 is in force: call the
@@ -1042,7 +1045,7 @@ impl Interp {
                             | b'Y'
                             | b'Z'
                     );
-                    if dimension && !n.point && !self.profile.calculator_decimal {
+                    if dimension && !n.point && !self.cfg.profile.calculator_decimal {
                         let s = if matches!(l, b'A' | b'B' | b'C') {
                             0.001
                         } else {

@@ -17,7 +17,7 @@ impl Interp {
     /// A linear dimension in mm (least-input-increment rule applied).
     pub(super) fn linear(&self, w: WVal) -> f64 {
         let mut v = w.v;
-        if !w.point && !self.profile.calculator_decimal {
+        if !w.point && !self.cfg.profile.calculator_decimal {
             v *= if self.st.modal.metric() {
                 0.001
             } else {
@@ -29,7 +29,7 @@ impl Interp {
 
     /// A rotary dimension in degrees.
     pub(super) fn angular(&self, w: WVal) -> f64 {
-        if !w.point && !self.profile.calculator_decimal {
+        if !w.point && !self.cfg.profile.calculator_decimal {
             w.v * 0.001
         } else {
             w.v
@@ -38,7 +38,7 @@ impl Interp {
 
     /// Seconds from a dwell-time word (X/U: least increment 0.001 s).
     pub(super) fn seconds(&self, w: WVal) -> f64 {
-        if !w.point && !self.profile.calculator_decimal {
+        if !w.point && !self.cfg.profile.calculator_decimal {
             w.v * 0.001
         } else {
             w.v
@@ -48,7 +48,7 @@ impl Interp {
     /// Range check of 002 Tables 2-3 for Hurco geometric words.
     #[inline]
     pub(super) fn check_range(&self, l: u8, w: WVal) -> R<()> {
-        if !self.dialect.caps.word_ranges {
+        if !self.cfg.dialect.caps.word_ranges {
             return Ok(());
         }
         self.check_range_hurco(l, w)
@@ -89,7 +89,7 @@ impl Interp {
     /// 1, or 0.1 with 002 Table 2's optional formats (profile
     /// `optional_format = 1`).
     pub(super) fn hurco_format_scale(&self) -> f64 {
-        if self.profile.param("optional_format", 0.0) != 0.0 {
+        if self.cfg.profile.param("optional_format", 0.0) != 0.0 {
             0.1
         } else {
             1.0
@@ -110,7 +110,7 @@ impl Interp {
     // ---- F S T ---------------------------------------------------------------
 
     pub(super) fn f_word(&mut self, dwell: bool) -> R<()> {
-        if dwell && self.dialect.caps.dwell_is_f {
+        if dwell && self.cfg.dialect.caps.dwell_is_f {
             return Ok(());
         }
         if let Some(f) = self.words.get(b'F') {
@@ -141,15 +141,15 @@ impl Interp {
             ));
         }
         let v = t.v as u32;
-        match self.profile.kind {
+        match self.cfg.profile.kind {
             MachineKind::Mill => {
-                if v > self.profile.tools.count {
+                if v > self.cfg.profile.tools.count {
                     return Err(self.alarm(
                         AlarmKind::OutOfRange,
                         t.at,
                         format!(
                             "T{v}: the tool changer has {} pockets",
-                            self.profile.tools.count
+                            self.cfg.profile.tools.count
                         ),
                     ));
                 }
@@ -163,11 +163,14 @@ impl Interp {
             MachineKind::Lathe => {
                 // Turret: T(tool)(offset), the last two digits the offset.
                 let (tool, off) = (v / 100, v % 100);
-                if tool > self.profile.tools.count {
+                if tool > self.cfg.profile.tools.count {
                     return Err(self.alarm(
                         AlarmKind::OutOfRange,
                         t.at,
-                        format!("T{v}: the turret has {} stations", self.profile.tools.count),
+                        format!(
+                            "T{v}: the turret has {} stations",
+                            self.cfg.profile.tools.count
+                        ),
                     ));
                 }
                 let change = tool != 0 && tool != self.st.tool;
@@ -261,7 +264,7 @@ impl Interp {
                     304.8
                 };
             let r = match self.hurco.css_r {
-                Some(r) if self.dialect.caps.css_radius_word => r,
+                Some(r) if self.cfg.dialect.caps.css_radius_word => r,
                 _ => self.work_position()[0].abs(),
             }
             .max(1e-3);
@@ -272,14 +275,14 @@ impl Interp {
         if let Some(c) = self.st.s_clamp {
             rpm = rpm.min(c);
         }
-        rpm.min(self.profile.spindle.max_rpm)
+        rpm.min(self.cfg.profile.spindle.max_rpm)
     }
 
     // ---- one-shots -------------------------------------------------------------
 
     pub(super) fn dwell(&mut self) -> R<()> {
         let w = &self.words;
-        let (secs, revs) = if self.dialect.caps.dwell_is_f {
+        let (secs, revs) = if self.cfg.dialect.caps.dwell_is_f {
             // 002: "F is the only entry allowed in a G04 block".
             if let Some(x) = [b'X', b'Z', b'I', b'K', b'R', b'P', b'Q', b'A', b'H']
                 .iter()
@@ -329,9 +332,9 @@ impl Interp {
         }
         // HX PI 120 = 1: in G95 the dwell counts spindle revolutions, in
         // the same units (000 §5.4, "(G95) PI 120 (#3120) 1").
-        let (secs, revs) = if self.dialect.caps.dwell_revs_param
+        let (secs, revs) = if self.cfg.dialect.caps.dwell_revs_param
             && self.st.modal.feed_mode.means == FeedMode::PerRev
-            && self.profile.param("PI 120", 0.0) == 1.0
+            && self.cfg.profile.param("PI 120", 0.0) == 1.0
         {
             (0.0, secs)
         } else {
@@ -348,7 +351,7 @@ impl Interp {
     /// given values; an S alone sets the spindle speed clamp.
     pub(super) fn coordinate_setting(&mut self, at: u32) -> R<()> {
         // 002 checks the S word's range (and refuses a negative clamp).
-        if self.dialect.caps.word_ranges {
+        if self.cfg.dialect.caps.word_ranges {
             self.g92_s()?;
         } else if let Some(s) = self.words.get(b'S') {
             self.st.s_clamp = Some(s.v);
@@ -407,7 +410,7 @@ impl Interp {
     }
 
     pub(super) fn linear_rapid(&self) -> bool {
-        self.dialect.caps.linear_rapid
+        self.cfg.dialect.caps.linear_rapid
     }
 
     pub(super) fn work_of(&self, mpos: &Pos) -> Pos {
@@ -426,7 +429,9 @@ impl Interp {
         } else {
             self.linear(w)
         };
-        if ax == Axis::X && self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means
+        if ax == Axis::X
+            && self.cfg.profile.kind == MachineKind::Lathe
+            && self.st.modal.diameter.means
         {
             v /= 2.0;
         }
@@ -435,7 +440,7 @@ impl Interp {
 
     /// The incremental letter for an axis, if present (PUMA U/W).
     pub(super) fn uvw(&self, ax: Axis) -> Option<u8> {
-        if !self.dialect.uvw_incremental {
+        if !self.cfg.dialect.uvw_incremental {
             return None;
         }
         let l = match ax {

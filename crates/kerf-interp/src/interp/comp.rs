@@ -139,12 +139,12 @@ fn psub(a: P, b: P) -> P {
 
 impl Interp {
     fn comp_new(&self) -> CompState {
-        let cp = &self.dialect.caps.comp;
+        let cp = &self.cfg.dialect.caps.comp;
         let (key, default, b) = cp.type_b;
-        let type_b = self.profile.param(key, default) == b;
-        let limit = self.profile.param("comp_idle_blocks", cp.idle_blocks);
+        let type_b = self.cfg.profile.param(key, default) == b;
+        let limit = self.cfg.profile.param("comp_idle_blocks", cp.idle_blocks);
         let circular =
-            cp.circular_joining && self.profile.param("comp_circular_joining", 0.0) == 1.0;
+            cp.circular_joining && self.cfg.profile.param("comp_circular_joining", 0.0) == 1.0;
         CompState {
             on: false,
             r: 0.0,
@@ -180,7 +180,7 @@ impl Interp {
     /// The offset value and tip shift in force: D on mills, the T code's
     /// nose radius and tip on lathes.
     fn comp_value(&self) -> (f64, P) {
-        match self.profile.kind {
+        match self.cfg.profile.kind {
             MachineKind::Mill => (self.offsets.d(self.sys.d.max(0.0) as usize), (0.0, 0.0)),
             MachineKind::Lathe => {
                 let o = self.offsets.lathe(self.st.offset as usize);
@@ -195,7 +195,7 @@ impl Interp {
     /// reference return or G53, which cannot start the offset (000
     /// §13.2.1: "[G00/G01] X_ Y_ G41"; G40 with them is a cancel: allowed).
     fn comp_check_words(&self, one_shot: &[(u16, u32)]) -> R<()> {
-        if self.profile.kind == MachineKind::Mill {
+        if self.cfg.profile.kind == MachineKind::Mill {
             if let Some(dw) = self.words.get(b'D') {
                 if dw.v < 0.0 || dw.v.fract() != 0.0 || !self.offsets.valid(dw.v as usize) {
                     return Err(self.alarm(
@@ -652,7 +652,7 @@ impl Interp {
         if !on {
             if arc {
                 return Err(AlarmKind::CompArc.at(
-                    self.dialect.id,
+                    self.cfg.dialect.id,
                     motion,
                     "cutter compensation cancelled (G40) in a G02/G03 block: cancel in G00/G01",
                 ));
@@ -687,7 +687,7 @@ impl Interp {
         } else {
             if startup && arc {
                 return Err(AlarmKind::CompArc.at(
-                    self.dialect.id,
+                    self.cfg.dialect.id,
                     motion,
                     "cutter compensation start-up (G41/G42) in a G02/G03 block: start in G00/G01",
                 ));
@@ -767,7 +767,7 @@ impl Interp {
     ) -> R<(Held, P)> {
         let (mode, on, off_plane, end2) = cut;
         let k = if hc.chamfer { 'C' } else { 'R' };
-        let id = self.dialect.id;
+        let id = self.cfg.dialect.id;
         let broken = |what: &str| {
             AlarmKind::CornerNoMove.at(
                 id,
@@ -864,7 +864,7 @@ impl Interp {
         if let Some(hc) = c.held.as_ref().and_then(|h| h.corner.as_ref()) {
             let k = if hc.chamfer { 'C' } else { 'R' };
             return Err(AlarmKind::CornerNoMove.at(
-                self.dialect.id,
+                self.cfg.dialect.id,
                 hc.word,
                 format!("a move off the plane after a ,{k} block: the next move must be G01/G02/G03 in the same plane"),
             ));
@@ -910,7 +910,7 @@ impl Interp {
         if let Some(hc) = &h.corner {
             let k = if hc.chamfer { 'C' } else { 'R' };
             return Err(AlarmKind::CornerNoMove.at(
-                self.dialect.id,
+                self.cfg.dialect.id,
                 hc.word,
                 format!("no G01/G02/G03 move in the plane follows the ,{k} block (a move of another kind, too many blocks without a move, or the end)"),
             ));
@@ -967,7 +967,7 @@ impl Interp {
                     "no intersection of the compensated paths at the corner",
                 ),
             };
-            kind.at(self.dialect.id, src, msg)
+            kind.at(self.cfg.dialect.id, src, msg)
         })
     }
 
@@ -1009,7 +1009,7 @@ impl Interp {
         };
         if bad {
             return Err(AlarmKind::CompInterference.at(
-                self.dialect.id,
+                self.cfg.dialect.id,
                 h.motion,
                 "interference: the compensated move would run against the programmed direction (gouge)",
             ));

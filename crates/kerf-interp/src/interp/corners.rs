@@ -156,7 +156,7 @@ impl Interp {
                         format!(",{k}{msg}: the paths meet without a corner (tangent or reversing)")
                     }
                 };
-                return Err(AlarmKind::CornerTooLarge.at(self.dialect.id, p.word, why));
+                return Err(AlarmKind::CornerTooLarge.at(self.cfg.dialect.id, p.word, why));
             }
         };
         // The held block's part, attributed to it; its alarms (travel)
@@ -338,7 +338,7 @@ impl Interp {
             return self.alarm(AlarmKind::CornerNoMove, 0, what);
         };
         AlarmKind::CornerNoMove.at(
-            self.dialect.id,
+            self.cfg.dialect.id,
             p.word,
             format!(
                 "{what} after a ,{} block: the next move must be G01/G02/G03 in the same plane",
@@ -349,7 +349,7 @@ impl Interp {
 
     fn corner_conflict(&self, p: &Pending, why: &str) -> Alarm {
         AlarmKind::CornerConflict.at(
-            self.dialect.id,
+            self.cfg.dialect.id,
             p.word,
             format!("{why} between a ,{} block and its next move", p.letter()),
         )

@@ -130,7 +130,9 @@ impl Interp {
             // A motion code cancels the cycle mode (a table search, so
             // only when one is in force: this runs for every G01 block).
             if self.st.modal.cycle.means.is_some() {
-                self.st.modal.set_meaning(self.dialect, Means::Cycle(None));
+                self.st
+                    .modal
+                    .set_meaning(self.cfg.dialect, Means::Cycle(None));
             }
         }
         if self.st.modal.cycle.means.is_none() {
@@ -206,7 +208,7 @@ impl Interp {
             .unwrap_or(0);
         let (a1, a2, n) = self.st.modal.plane.means.axes();
         let drill_ax = Axis::ALL[n];
-        if !self.has_axis[n] {
+        if !self.cfg.has_axis[n] {
             return Err(self.alarm(
                 AlarmKind::CannedCycle,
                 at,
@@ -494,7 +496,12 @@ impl Interp {
         self.st.spindle = SpindleDir::Stop;
         self.st.last_rpm = 0.0;
         // The table's orientation code (M19 on the HX).
-        let orient = self.dialect.mcodes.iter().find(|m| m.also == MAlso::Orient);
+        let orient = self
+            .cfg
+            .dialect
+            .mcodes
+            .iter()
+            .find(|m| m.also == MAlso::Orient);
         if let Some(mc) = orient {
             self.emit(Canon::Aux {
                 m: u32::from(mc.code),

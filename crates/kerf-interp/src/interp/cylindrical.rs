@@ -32,7 +32,7 @@ impl Interp {
                 "G107 takes only the cylinder radius C in its block",
             );
         }
-        let Some(w) = self.words.get(b'C').filter(|_| self.has_axis[C]) else {
+        let Some(w) = self.words.get(b'C').filter(|_| self.cfg.has_axis[C]) else {
             return alarm(
                 self,
                 at,

@@ -156,7 +156,7 @@ impl Interp {
             return Ok(());
         }
         Err(AlarmKind::SequenceNotFound.at(
-            self.dialect.id,
+            self.cfg.dialect.id,
             SrcRef {
                 col: at + 1,
                 ..err_src
@@ -168,7 +168,7 @@ impl Interp {
     /// The loop labels the control accepts: DO1-DO3 on the Fanuc
     /// profiles, any label 1-9999 on the HX (its sample uses DO 210).
     pub(super) fn check_loop_label(&self, label: u32, at: u32) -> R<()> {
-        let max = self.dialect.caps.max_loop_label;
+        let max = self.cfg.dialect.caps.max_loop_label;
         if label == 0 || label > max {
             return Err(self.alarm(
                 AlarmKind::BadLoop,
@@ -259,7 +259,7 @@ impl Interp {
         let mut raw = RawBlock::default();
         let mut blk = Block::default();
         let mut inner: Vec<u32> = Vec::new();
-        let dialect = self.dialect.id;
+        let dialect = self.cfg.dialect.id;
         let file = self.file_id;
         let bad = |raw: &RawBlock, msg: String| {
             AlarmKind::BadLoop.at(
@@ -273,7 +273,7 @@ impl Interp {
             )
         };
         while let Ok(true) = src.next_block(&mut raw) {
-            if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
+            if parse_block(&raw.text, &self.cfg.lex, &mut blk).is_err() {
                 continue;
             }
             if blk.percent || (blk.program.is_some() && self.calls.header != Some(raw.mark.offset))
@@ -311,7 +311,7 @@ impl Interp {
             }
         }
         Err(AlarmKind::BadLoop.at(
-            self.dialect.id,
+            self.cfg.dialect.id,
             SrcRef {
                 col: at + 1,
                 ..err_src

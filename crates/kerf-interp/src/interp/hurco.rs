@@ -96,11 +96,14 @@ impl Interp {
         }
         let v = t.v as u32;
         let (tool, off) = (v / 100, v % 100);
-        if tool > self.profile.tools.count {
+        if tool > self.cfg.profile.tools.count {
             return Err(self.alarm(
                 AlarmKind::OutOfRange,
                 t.at,
-                format!("T{v}: the turret has {} stations", self.profile.tools.count),
+                format!(
+                    "T{v}: the turret has {} stations",
+                    self.cfg.profile.tools.count
+                ),
             ));
         }
         if off as usize > self.offsets.count() {
@@ -134,7 +137,7 @@ impl Interp {
     pub(super) fn hurco_base(&self, base: &mut Pos) {
         if let Some(p) = self.hurco.pending {
             for i in 0..NAXES {
-                if self.has_axis[i] {
+                if self.cfg.has_axis[i] {
                     base[i] = p[i];
                 }
             }
@@ -148,11 +151,11 @@ impl Interp {
         let Some(p) = self.hurco.pending else {
             return;
         };
-        if !self.profile.tools.immediate_offsets {
+        if !self.cfg.profile.tools.immediate_offsets {
             return;
         }
         for i in 0..NAXES {
-            if self.has_axis[i] && !programmed[i] {
+            if self.cfg.has_axis[i] && !programmed[i] {
                 t[i] = p[i];
             }
         }
@@ -165,7 +168,7 @@ impl Interp {
 
     /// 002: M00, M01 (when it stops), M02 and M30 turn the spindle off.
     pub(super) fn hurco_stop_spindle(&mut self) {
-        if !self.dialect.caps.stops_stop_spindle || self.st.spindle == SpindleDir::Stop {
+        if !self.cfg.dialect.caps.stops_stop_spindle || self.st.spindle == SpindleDir::Stop {
             return;
         }
         self.st.spindle = SpindleDir::Stop;

@@ -49,7 +49,7 @@ impl Interp {
             if motion.is_none() {
                 self.st
                     .modal
-                    .set_meaning(self.dialect, Means::Motion(MotionMode::Rapid));
+                    .set_meaning(self.cfg.dialect, Means::Motion(MotionMode::Rapid));
             }
             let r = self.hurco.drill.r;
             self.hurco.drill = Drill {
@@ -114,7 +114,7 @@ impl Interp {
         self.drill_go(Speed::Rapid, Some(x), None, at)?;
         self.drill_go(Speed::Rapid, None, Some(r), at)?;
         let dir = if z < r { -1.0 } else { 1.0 };
-        let clear = self.profile.param("peck_clearance_mm", 0.254);
+        let clear = self.cfg.profile.param("peck_clearance_mm", 0.254);
         match kind {
             HoleCycle::Drill | HoleCycle::DrillDwell => {
                 self.drill_go(Speed::Modal, None, Some(z), at)?;

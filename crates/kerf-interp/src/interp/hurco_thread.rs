@@ -120,7 +120,7 @@ impl Interp {
         }
         let units = Units {
             metric: self.st.modal.metric(),
-            calculator_decimal: self.profile.calculator_decimal,
+            calculator_decimal: self.cfg.profile.calculator_decimal,
             lead_range: self.hurco_lead_range(),
         };
         ThreadPlan::from_params(p, face, units, at).map_err(|e| self.param_alarm(e))

@@ -73,7 +73,7 @@ impl Interp {
     /// reaches at their end (fanuc-semantics §8.9). Clamped by G50 S and
     /// the machine maximum.
     pub(super) fn css_follow(&mut self) {
-        if self.st.spindle == SpindleDir::Stop || self.profile.kind != MachineKind::Lathe {
+        if self.st.spindle == SpindleDir::Stop || self.cfg.profile.kind != MachineKind::Lathe {
             return;
         }
         let rpm = self.rpm();
@@ -221,7 +221,8 @@ impl Interp {
             MotionMode::FaceCycle => turning::g94(a, e, r).to_vec(),
             _ => {
                 let c = if self.lathe.chamfer_on {
-                    self.profile.param("thread_chamfer_leads", 1.0) * self.st.feed.unwrap_or(0.0)
+                    self.cfg.profile.param("thread_chamfer_leads", 1.0)
+                        * self.st.feed.unwrap_or(0.0)
                 } else {
                     0.0
                 };

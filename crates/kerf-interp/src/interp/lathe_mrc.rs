@@ -45,7 +45,7 @@ impl Interp {
 
     /// A parameter from the profile (`No.xxxx`) with a default.
     fn mrc_param(&self, n: u32, default: f64) -> f64 {
-        self.profile.param(&format!("No.{n}"), default)
+        self.cfg.profile.param(&format!("No.{n}"), default)
     }
 
     fn positive(&self, l: u8, what: &str) -> R<Option<f64>> {
@@ -353,7 +353,7 @@ impl Interp {
     /// The feed of a shape block's F (mm, per the feed mode).
     fn shape_feed(&self, f: Option<f64>) -> Option<Feed> {
         f.map(|f| match self.st.modal.feed_mode.means {
-            FeedMode::PerMin => Feed::PerMin(f.min(self.profile.feed.max_cutting)),
+            FeedMode::PerMin => Feed::PerMin(f.min(self.cfg.profile.feed.max_cutting)),
             FeedMode::PerRev => Feed::PerRev(f),
             FeedMode::Inverse => Feed::InverseTime(f),
         })
@@ -389,7 +389,7 @@ impl Interp {
                     self.comp_set_mode(c, None);
                     self.st
                         .modal
-                        .set_meaning(self.dialect, Means::CutterComp(c));
+                        .set_meaning(self.cfg.dialect, Means::CutterComp(c));
                 }
                 // Roughing: the whole shape is offset, a G40 in it does not
                 // cancel (docs/dialects.md).

@@ -421,7 +421,7 @@ impl Interp {
     /// rules as interp/lathe_chamfer.rs): the segment is shortened and the
     /// corner inserted before the next segment, which starts at C′.
     fn shape_corner(&self, shape: &mut Shape, c: &ShapeCorner, blocks: &[(usize, u32)]) -> R<()> {
-        let d = self.dialect.id;
+        let d = self.cfg.dialect.id;
         let at_word = |k: AlarmKind, msg: String| k.at(d, c.word, msg);
         let i = c.seg;
         let next_line = blocks.get(i + 1).map(|b| b.1).unwrap_or(c.word.line);
@@ -532,7 +532,7 @@ impl Interp {
         let i = self.words.get(b'I').map(|w| self.linear(w)).unwrap_or(0.0);
         let k = self.words.get(b'K').map(|w| self.linear(w)).unwrap_or(0.0);
         let c = turning::p(s.x + i, s.z + k);
-        if let Err(e) = crate::arc::check_end(s.zx(), e.zx(), c.zx(), self.arc_tol) {
+        if let Err(e) = crate::arc::check_end(s.zx(), e.zx(), c.zx(), self.cfg.arc_tol) {
             let msg = match e {
                 ArcError::EndNotOnCircle { r_start, r_end } => format!(
                     "arc end point is not on the circle: start radius {r_start:.4}, end radius {r_end:.4}"

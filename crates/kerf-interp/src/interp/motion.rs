@@ -15,7 +15,7 @@ impl Interp {
         let mut t = cur;
         let mut any = false;
         let mut programmed = [false; NAXES];
-        let table16 = self.dialect.caps.offsets_wait_for_move;
+        let table16 = self.cfg.dialect.caps.offsets_wait_for_move;
         if table16 {
             // Table 16: after a T/E code, before the next move.
             self.hurco_base(&mut cur);
@@ -23,7 +23,7 @@ impl Interp {
         for ax in Axis::ALL {
             let l = ax_letter(ax);
             let i = ax as usize;
-            let abs_w = self.words.get(l).filter(|_| self.has_axis[ax as usize]);
+            let abs_w = self.words.get(l).filter(|_| self.cfg.has_axis[ax as usize]);
             let inc_l = self.uvw(ax);
             if let (Some(w), Some(_)) = (abs_w, inc_l) {
                 return Err(self.alarm(
@@ -150,7 +150,7 @@ impl Interp {
         let area = crate::stroke::Area {
             lo,
             hi,
-            outside: self.profile.param("PM 3474", 0.0) == 1.0,
+            outside: self.cfg.profile.param("PM 3474", 0.0) == 1.0,
         };
         // The tool may not already be where the check forbids.
         if area.forbids(&self.st.mover.pos()) {
@@ -190,7 +190,7 @@ impl Interp {
             )),
             Some(f) if f <= 0.0 => Err(self.alarm(AlarmKind::NoFeed, at, "feedrate is zero")),
             Some(f) => Ok(match self.st.modal.feed_mode.means {
-                FeedMode::PerMin => Feed::PerMin(f.min(self.profile.feed.max_cutting)),
+                FeedMode::PerMin => Feed::PerMin(f.min(self.cfg.profile.feed.max_cutting)),
                 FeedMode::PerRev => Feed::PerRev(f),
                 FeedMode::Inverse => Feed::InverseTime(f),
             }),
@@ -202,7 +202,7 @@ impl Interp {
             return self.rotary_interp_motion();
         }
         let mode = self.st.modal.motion.means;
-        let ddi = self.dialect.caps.direct_drawing;
+        let ddi = self.cfg.dialect.caps.direct_drawing;
         let (tw, any) = if ddi {
             self.ddi_target()?
         } else {
@@ -314,10 +314,10 @@ impl Interp {
             }
             // 001 p.15 note (4): on the PUMA an R shorter than half the
             // move is overridden and a half circle made; the others alarm.
-            let tol = if self.dialect.caps.short_r_half_circle {
+            let tol = if self.cfg.dialect.caps.short_r_half_circle {
                 f64::INFINITY
             } else {
-                self.arc_tol
+                self.cfg.arc_tol
             };
             match arc::center_from_radius(s, e, rv, ccw, tol) {
                 Ok(c) => c,
@@ -362,7 +362,7 @@ impl Interp {
             .find_map(|&l| self.words.get(l))
             .map(|w| w.at)
             .unwrap_or(at);
-        match arc::check_end(s, e, center, self.arc_tol) {
+        match arc::check_end(s, e, center, self.cfg.arc_tol) {
             Ok(_) => {}
             Err(ArcError::ZeroRadius) => return Err(self.alarm(AlarmKind::ArcNoCenter, bad_at, "arc centre coincides with the start point")),
             Err(ArcError::EndNotOnCircle { r_start, r_end }) => {
@@ -407,14 +407,20 @@ impl Interp {
             let r = (s.0 - center.0).hypot(s.1 - center.1);
             let major = arc::sweep(s, e, center, ccw) > std::f64::consts::PI + 1e-12;
             let rs = r * f1.abs().max(f2.abs()) * if major { -1.0 } else { 1.0 };
-            arc::center_from_radius((st[a1], st[a2]), (et[a1], et[a2]), rs, ccw_t, self.arc_tol)
-                .map_err(|_| {
-                    self.alarm(
-                        AlarmKind::ArcRadius,
-                        at,
-                        "scaled arc radius is smaller than half the chord",
-                    )
-                })?
+            arc::center_from_radius(
+                (st[a1], st[a2]),
+                (et[a1], et[a2]),
+                rs,
+                ccw_t,
+                self.cfg.arc_tol,
+            )
+            .map_err(|_| {
+                self.alarm(
+                    AlarmKind::ArcRadius,
+                    at,
+                    "scaled arc radius is smaller than half the chord",
+                )
+            })?
         } else {
             (ct[a1], ct[a2])
         };
@@ -442,7 +448,7 @@ impl Interp {
     /// G43/G44/G49 with H: the tool length offset on the axis normal to
     /// the plane (mills).
     pub(super) fn tool_length(&mut self) -> R<()> {
-        if self.profile.kind != MachineKind::Mill {
+        if self.cfg.profile.kind != MachineKind::Mill {
             return Ok(());
         }
         if let Some(h) = self.words.get(b'H') {
@@ -494,14 +500,28 @@ impl Interp {
             2 => "second",
             3 => "third",
             4 => "fourth",
-            _ => return self.profile.axis(ax).map(|a| a.reference).unwrap_or(0.0),
+            _ => {
+                return self
+                    .cfg
+                    .profile
+                    .axis(ax)
+                    .map(|a| a.reference)
+                    .unwrap_or(0.0)
+            }
         };
-        self.profile
+        self.cfg
+            .profile
             .reference
             .get(key)
             .and_then(|m| m.get(ax.name()))
             .copied()
-            .unwrap_or_else(|| self.profile.axis(ax).map(|a| a.reference).unwrap_or(0.0))
+            .unwrap_or_else(|| {
+                self.cfg
+                    .profile
+                    .axis(ax)
+                    .map(|a| a.reference)
+                    .unwrap_or(0.0)
+            })
     }
 
     /// G27 check, G28 / G30 return via an intermediate point, G29 return
@@ -510,7 +530,7 @@ impl Interp {
         let (tw, _) = self.target()?;
         let mut named = [false; NAXES];
         for ax in Axis::ALL {
-            named[ax as usize] = self.has_axis[ax as usize]
+            named[ax as usize] = self.cfg.has_axis[ax as usize]
                 && (self.words.has(ax_letter(ax)) || self.uvw(ax).is_some());
         }
         let rapid_to = |me: &mut Self, mto: Pos| me.rapid_machine(mto, at);

@@ -94,7 +94,7 @@ impl Interp {
         };
         let bad = if line == Line::Rapid && !self.linear_rapid() {
             let rates = [Axis::X, Axis::Y, Axis::Z]
-                .map(|a| self.profile.axis(a).map(|d| d.rapid).unwrap_or(0.0));
+                .map(|a| self.cfg.profile.axis(a).map(|d| d.rapid).unwrap_or(0.0));
             crate::stroke::dogleg(from, to, rates)
                 .windows(2)
                 .any(|w| area.segment_enters(&w[0], &w[1]))
@@ -135,7 +135,7 @@ impl Interp {
     /// The travel limits of the machine axes at machine point `m`.
     fn check_travel(&self, m: &Pos, at: u32) -> R<()> {
         for ax in Axis::ALL {
-            if let Some((min, max)) = self.travel[ax as usize] {
+            if let Some((min, max)) = self.cfg.travel[ax as usize] {
                 let v = m[ax as usize];
                 if v < min - 1e-9 || v > max + 1e-9 {
                     let side = if v > max { '+' } else { '-' };

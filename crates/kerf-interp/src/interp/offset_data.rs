@@ -19,7 +19,7 @@ use super::*;
 impl Interp {
     /// G10 on the HX (called from `transform_codes`) and the lathes.
     pub(super) fn g10(&mut self, at: u32) -> R<()> {
-        if self.profile.kind == MachineKind::Lathe {
+        if self.cfg.profile.kind == MachineKind::Lathe {
             return self.g10_lathe(at);
         }
         let Some(l) = self.words.get(b'L') else {
@@ -64,7 +64,7 @@ impl Interp {
         )?;
         for ax in Axis::ALL {
             let i = ax as usize;
-            if !self.has_axis[i] {
+            if !self.cfg.has_axis[i] {
                 continue;
             }
             // Absolute words replace (G91 on the HX adds); the lathe's

@@ -92,7 +92,7 @@ impl Interp {
         let Some(mut b) = self.classify_block()? else {
             return Ok(true);
         };
-        for &p in self.dialect.order {
+        for &p in self.cfg.dialect.order {
             if let Flow::Done(r) = self.run_phase(p, &mut b)? {
                 return Ok(r);
             }
@@ -357,7 +357,7 @@ impl Interp {
                 // Fanuc programs ask for rigid tapping with M29 before G84;
                 // the HX has G84.2/G84.3 instead (000 §12.3.5-12.3.6).
                 let rigid = Means::Cycle(Some(HoleCycle::RigidTap));
-                let hint = if m == 29 && self.dialect.gcodes.iter().any(|g| g.means == rigid) {
+                let hint = if m == 29 && self.cfg.dialect.gcodes.iter().any(|g| g.means == rigid) {
                     ": rigid tapping on this control is G84.2 (G84.3 left-hand), without M29"
                 } else {
                     ""
@@ -399,7 +399,7 @@ impl Interp {
                 ExactStop => os.g09 = true,
                 SingleDirection => os.g60 = Some(at),
                 MachineCoords => {
-                    if self.dialect.caps.g53_checks {
+                    if self.cfg.dialect.caps.g53_checks {
                         self.g53_checks(at)?;
                     }
                     os.g53 = true

@@ -54,7 +54,7 @@ impl Interp {
     /// it). Returns true when the block's axis words were G107's radius
     /// (the block then makes no move).
     pub(super) fn rotary_interp_codes(&mut self) -> R<bool> {
-        if !self.dialect.caps.rotary_interp {
+        if !self.cfg.dialect.caps.rotary_interp {
             return Ok(false);
         }
         let was = self.st.rot;
@@ -142,7 +142,7 @@ impl Interp {
             }
             RotInterp::Off => {}
         }
-        if !self.has_axis[X] || !self.has_axis[C] {
+        if !self.cfg.has_axis[X] || !self.cfg.has_axis[C] {
             return alarm(
                 self,
                 "polar coordinate interpolation needs the linear axis X and the rotary axis C",
@@ -160,7 +160,8 @@ impl Interp {
     /// The chord tolerance of polar and cylindrical interpolation (mm in
     /// the virtual plane): the profile's `interp_tolerance_mm`.
     pub(super) fn chord_tol(&self) -> f64 {
-        self.profile
+        self.cfg
+            .profile
             .param("interp_tolerance_mm", CHORD_TOL)
             .max(1e-6)
     }
@@ -257,7 +258,7 @@ impl Interp {
                 // R with the end at the start: only the other axes move.
                 return Ok(Some(Path::Line { s, e: s }));
             }
-            arc::center_from_radius(s, e, rv, ccw, self.arc_tol).map_err(|_| {
+            arc::center_from_radius(s, e, rv, ccw, self.cfg.arc_tol).map_err(|_| {
                 self.alarm(
                     AlarmKind::ArcRadius,
                     r.at,
@@ -288,7 +289,7 @@ impl Interp {
             .or_else(|| self.words.get(b'R'))
             .map(|w| w.at)
             .unwrap_or(at);
-        let r = match arc::check_end(s, e, center, self.arc_tol) {
+        let r = match arc::check_end(s, e, center, self.cfg.arc_tol) {
             Ok(r) => r,
             Err(ArcError::EndNotOnCircle { r_start, r_end }) => {
                 return Err(self.alarm(

@@ -61,7 +61,7 @@ impl Interp {
         let probe_no = p
             .get(b'P')
             .map(|w| w.v)
-            .unwrap_or_else(|| self.profile.param("probe_number", -1.0));
+            .unwrap_or_else(|| self.cfg.profile.param("probe_number", -1.0));
         let nums = self.probe_numbers(&p, cycle, ax, at)?;
         // Direction from the start towards the expected contact.
         let start = self.prog_pos();
@@ -81,7 +81,7 @@ impl Interp {
         );
         if cycle != 0
             && self.hurco.datum[slot].is_none()
-            && self.profile.param("probe_require_datum", 1.0) != 0.0
+            && self.cfg.profile.param("probe_require_datum", 1.0) != 0.0
         {
             return Err(self.alarm(
                 AlarmKind::ProbeCycle,
@@ -171,7 +171,7 @@ impl Interp {
                 }
                 return Ok(self.linear(w));
             }
-            match self.profile.params.get(key) {
+            match self.cfg.profile.params.get(key) {
                 Some(&v) if v > 0.0 => Ok(v),
                 _ => Err(self.alarm(
                     AlarmKind::MissingArgument,

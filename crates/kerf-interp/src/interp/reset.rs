@@ -43,15 +43,15 @@ impl Interp {
         self.reset_calls();
         self.loops.clear();
         self.hurco_loops.clear();
-        if self.profile.param("clear_locals_on_reset", 1.0) != 0.0 {
+        if self.cfg.profile.param("clear_locals_on_reset", 1.0) != 0.0 {
             self.vars.clear_locals();
         }
-        if self.profile.param("clear_commons_on_reset", 1.0) != 0.0 {
+        if self.cfg.profile.param("clear_commons_on_reset", 1.0) != 0.0 {
             self.vars.clear_commons();
         }
         self.sys.c3003 = 0.0;
         self.sys.c3004 = 0.0;
-        let fresh = Self::power_on_state(&self.profile, self.dialect);
+        let fresh = Self::power_on_state(&self.cfg.profile, self.cfg.dialect);
         let old = std::mem::replace(&mut self.st, fresh);
         let st = &mut self.st;
         st.mover = old.mover;
@@ -69,7 +69,7 @@ impl Interp {
         // Canned-cycle data goes with the cycle mode (G80 is the power-on
         // state); a move held for its ,C/,R is dropped.
         self.cyc.clear();
-        if self.dialect.caps.reset_keeps_tool_offset {
+        if self.cfg.dialect.caps.reset_keeps_tool_offset {
             // The T offset stays active with its number; drill data and an
             // offset change waiting for its move go.
             st.tlo = old.tlo;

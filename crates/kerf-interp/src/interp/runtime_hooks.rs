@@ -173,7 +173,7 @@ impl Interp {
     /// parameters read at reset (the PI 144-150 reset states) act from
     /// the next RESET.
     pub fn set_param(&mut self, name: &str, v: f64) {
-        self.profile.params.insert(name.to_string(), v);
+        self.cfg.profile.params.insert(name.to_string(), v);
     }
 
     /// Checks that every line of `text` parses as a block of this
@@ -182,7 +182,7 @@ impl Interp {
     pub fn check_syntax(&self, text: &str) -> Result<(), Alarm> {
         let mut block = Block::default();
         for (i, line) in text.lines().enumerate() {
-            if let Err(e) = parse_block(line.as_bytes(), &self.lex, &mut block) {
+            if let Err(e) = parse_block(line.as_bytes(), &self.cfg.lex, &mut block) {
                 return Err(Alarm::new(
                     "SYNTAX",
                     e.kind.message(),
@@ -201,6 +201,7 @@ impl Interp {
     /// control's modal page prints them (`G01`, `G17`, `G54`, `G84.2`).
     pub fn modal_codes(&self) -> Vec<String> {
         let mut groups: Vec<u8> = self
+            .cfg
             .dialect
             .gcodes
             .iter()
@@ -212,8 +213,9 @@ impl Interp {
         groups
             .into_iter()
             .filter_map(|g| {
-                let c = self.st.modal.code_of_group(self.dialect, g);
-                self.dialect
+                let c = self.st.modal.code_of_group(self.cfg.dialect, g);
+                self.cfg
+                    .dialect
                     .gcodes
                     .iter()
                     .any(|d| d.group == g && d.code10 == c)

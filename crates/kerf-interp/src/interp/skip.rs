@@ -119,9 +119,9 @@ impl Interp {
         let zi = Axis::Z as usize;
         let meas = tw[zi];
         let from = self.prog_pos();
-        let r = self.profile.param("PI 141", 10.0);
-        let e = self.profile.param("PI 142", 1.0);
-        let feed = self.profile.param("PI 143", 100.0);
+        let r = self.cfg.profile.param("PI 141", 10.0);
+        let e = self.cfg.profile.param("PI 142", 1.0);
+        let feed = self.cfg.profile.param("PI 143", 100.0);
         let dir = if meas >= from[zi] { 1.0 } else { -1.0 };
         // Rapid to r before the measurement position (when further away).
         let mut p = from;

@@ -26,7 +26,7 @@ impl Interp {
     /// A G word's code as executed: system B translated, the internal
     /// G90/G91 codes refused in system A.
     pub(super) fn g_of_system(&self, c10: u16, at: u32) -> R<u16> {
-        if !self.dialect.caps.gcode_system_b {
+        if !self.cfg.dialect.caps.gcode_system_b {
             return Ok(c10);
         }
         let bad = |me: &Self, why: &str| {

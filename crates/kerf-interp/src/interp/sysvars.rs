@@ -186,7 +186,7 @@ impl Interp {
 
     fn sys_decode(&self, i: usize) -> Option<Sys> {
         use Sys::*;
-        Some(if self.dialect.caps.hx_variables {
+        Some(if self.cfg.dialect.caps.hx_variables {
             match i {
                 2112..=2239 => D(i - 2111),
                 2240..=2367 => H(i - 2239),
@@ -266,7 +266,7 @@ impl Interp {
     /// The position slot of the control's axis number `k` (0-based:
     /// X Y Z A on the mill, X Z on a two-axis lathe).
     fn axis_slot(&self, k: usize) -> Option<usize> {
-        (0..NAXES).filter(|&s| self.has_axis[s]).nth(k)
+        (0..NAXES).filter(|&s| self.cfg.has_axis[s]).nth(k)
     }
 
     /// mm (or degrees) → program units for axis slot `s`; lathe X in
@@ -276,7 +276,7 @@ impl Interp {
         if s < 3 {
             v /= self.unit();
         }
-        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means {
+        if s == 0 && self.cfg.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means {
             v *= 2.0;
         }
         v
@@ -287,7 +287,7 @@ impl Interp {
         if s < 3 {
             v *= self.unit();
         }
-        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means {
+        if s == 0 && self.cfg.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means {
             v /= 2.0;
         }
         v
@@ -316,8 +316,8 @@ impl Interp {
                 return Ok(self.axis_value_of(k, &o).or(Some(0.0)));
             }
             SingleBlock => self.sys.single_block,
-            Param(n) => self.profile.param(&format!("PI {n}"), 0.0),
-            Tpg => (self.profile.param("tpg", 0.0) != 0.0) as u8 as f64,
+            Param(n) => self.cfg.profile.param(&format!("PI {n}"), 0.0),
+            Tpg => (self.cfg.profile.param("tpg", 0.0) != 0.0) as u8 as f64,
             S => self.st.s,
             DNum => self.sys.d,
             HNum => self.st.h as f64,
@@ -332,7 +332,8 @@ impl Interp {
                 return Ok(self.axis_value_of(k, &p));
             }
             Modal(g) => {
-                let c = u8::try_from(g).map_or(0, |g| self.st.modal.code_of_group(self.dialect, g));
+                let c =
+                    u8::try_from(g).map_or(0, |g| self.st.modal.code_of_group(self.cfg.dialect, g));
                 let c = if self.system_b() {
                     crate::dialect::system_b::to_b(c)
                 } else {
@@ -374,7 +375,7 @@ impl Interp {
                 None => return Ok(None),
             },
             T => {
-                if self.profile.kind == MachineKind::Lathe {
+                if self.cfg.profile.kind == MachineKind::Lathe {
                     (self.st.tool * 100 + self.st.offset) as f64
                 } else {
                     self.st.tool as f64
@@ -448,7 +449,7 @@ impl Interp {
             }
             SingleBlock => self.sys.single_block = flag(x)? as u8 as f64,
             Param(n) => {
-                self.profile.params.insert(format!("PI {n}"), x);
+                self.cfg.profile.params.insert(format!("PI {n}"), x);
             }
             OutBit(w, b) => {
                 if flag(x)? {

@@ -55,7 +55,7 @@ impl Interp {
         let mut t = cur;
         for ax in Axis::ALL {
             let i = ax as usize;
-            if self.has_axis[i] && (self.words.has(ax_letter(ax)) || self.uvw(ax).is_some()) {
+            if self.cfg.has_axis[i] && (self.words.has(ax_letter(ax)) || self.uvw(ax).is_some()) {
                 t[i] = if i < 3 {
                     cur[i] + adj(tw[i] - cur[i])
                 } else {
@@ -77,7 +77,7 @@ impl Interp {
                         let rv = self.linear(r);
                         let rv = rv.signum() * adj(rv.abs());
                         let (s, e) = ((cur[a1], cur[a2]), (t[a1], t[a2]));
-                        match arc::center_from_radius(s, e, rv, ccw, self.arc_tol) {
+                        match arc::center_from_radius(s, e, rv, ccw, self.cfg.arc_tol) {
                             Ok(c) => c,
                             Err(_) => return Err(self.alarm(
                                 AlarmKind::ArcRadius,
@@ -112,7 +112,7 @@ impl Interp {
                 let s = (cur[a1], cur[a2]);
                 let e = (t[a1], t[a2]);
                 if let Err(ArcError::EndNotOnCircle { r_start, r_end }) =
-                    arc::check_end(s, e, center, self.arc_tol)
+                    arc::check_end(s, e, center, self.cfg.arc_tol)
                 {
                     return Err(self.alarm(
                         AlarmKind::ArcEndPoint,

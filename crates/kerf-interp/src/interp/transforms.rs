@@ -15,7 +15,7 @@ impl Interp {
     /// true when the block's axis words were the data of one of them: the
     /// block then makes no move.
     pub(super) fn transform_codes(&mut self, one_shot: &[(u16, u32)], kinds: KindSet) -> R<bool> {
-        if !self.dialect.caps.frame_codes {
+        if !self.cfg.dialect.caps.frame_codes {
             return Ok(false);
         }
         let frame = [
@@ -175,7 +175,8 @@ impl Interp {
                 factor[i] = match self.words.get(l) {
                     Some(w) => self.scale_factor(w)?,
                     None => {
-                        self.profile
+                        self.cfg
+                            .profile
                             .param(["PI 108", "PI 109", "PI 110"][i], 1000.0)
                             / 1000.0
                     }
@@ -223,7 +224,7 @@ impl Interp {
         }
         let r = match self.words.get(b'R') {
             Some(w) => self.angular(w),
-            None => self.profile.param("PI 117", 0.0) / 1000.0,
+            None => self.cfg.profile.param("PI 117", 0.0) / 1000.0,
         };
         if r.abs() > 360.0 {
             let rat = self.words.get(b'R').map(|w| w.at).unwrap_or(at);
@@ -251,7 +252,7 @@ impl Interp {
     fn g52(&mut self) {
         for ax in Axis::ALL {
             let i = ax as usize;
-            if !self.has_axis[i] {
+            if !self.cfg.has_axis[i] {
                 continue;
             }
             if let Some(w) = self.words.get(ax_letter(ax)) {
