@@ -6,9 +6,7 @@
 use std::collections::VecDeque;
 
 use kerf_canon::*;
-use kerf_lang::{
-    parse_block, Addr, Block, LexErrorKind, LineSource, Mark, ProgramRead, RawBlock, Stmt, Val,
-};
+use kerf_lang::{parse_block, Addr, Block, LexErrorKind, Mark, ProgramRead, RawBlock, Stmt, Val};
 
 use crate::alarms::AlarmKind;
 use crate::arc::{self, ArcError};
@@ -37,6 +35,7 @@ mod lathe;
 mod lathe_chamfer;
 mod lathe_mrc;
 mod lathe_shape;
+mod loop_guard;
 mod modal;
 mod motion;
 mod mover;
@@ -44,6 +43,7 @@ mod offset_data;
 mod phases;
 mod polar_interp;
 mod probe;
+mod program;
 mod puma_words;
 mod reset;
 mod rotary_mode;
@@ -56,6 +56,7 @@ mod tool_offset;
 mod transforms;
 mod work_offsets;
 
+use program::{LoopFrame, MAX_LOOP_DEPTH};
 pub use runtime_hooks::{BlockStep, InterpSnapshot};
 pub use sysvars::MacroSwitches;
 
@@ -160,59 +161,25 @@ struct State {
     flood: bool,
 }
 
-/// An active WHILE/DO loop: its label, the loop head and the position
-/// after its END (found by scanning when the loop is first entered).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct LoopFrame {
-    label: u32,
-    start: Mark,
-    end: Mark,
-}
-
-/// Loops nested in one call level (000 §14.2.5, Fanuc: 3).
-const MAX_LOOP_DEPTH: usize = 3;
-
-/// A remembered loop scan: file, loop head offset, labels open around it.
-type LoopKey = (u32, u64, [u32; MAX_LOOP_DEPTH]);
-
 /// The interpreter.
 pub struct Interp {
     /// The profile and dialect, read once (interp/config.rs).
     cfg: config::Config,
     settings: Settings,
-    files: Vec<String>,
-    src: Option<LineSource>,
-    file_id: u32,
-    program_start: Mark,
-    /// The block being executed: its text and parsed form (boxed so that
-    /// the parsed-block cache can swap them in and out).
-    raw: Box<RawBlock>,
-    block: Box<Block>,
+    /// Program text, the cursor in it and the loops open
+    /// (interp/program.rs).
+    prog: program::Program,
+    /// The loop guard's counters and budgets (interp/loop_guard.rs).
+    guard: loop_guard::LoopGuard,
     words: Words,
     queue: VecDeque<Event>,
     finished: bool,
-    tape_started: bool,
     st: State,
     vars: Vars,
-    loops: Vec<LoopFrame>,
-    /// Recent loop scans: (file, loop head offset, open labels) → after END.
-    loop_ends: Vec<(LoopKey, Mark)>,
-    hurco_loops: Vec<(u32, Mark)>,
-    blocks: u64,
-    jumps: u64,
-    cur: SrcRef,
     /// Tool offset memory (H/D, lathe X/Z/R/T).
     pub(crate) offsets: OffsetTable,
     /// An alarm raised after the current block's commands have run (G27).
     after_block: Option<Alarm>,
-    /// Furthest byte offset read so far.
-    high_water: u64,
-    /// Blocks executed again after jumping back.
-    repeated: u64,
-    /// Most such blocks before the loop guard stops the run.
-    repeat_budget: u64,
-    /// Most backward jumps before the loop guard stops the run.
-    max_jumps: u64,
     /// Program store and call stack (M98/M99, G65, G66).
     calls: calls::Calls,
     /// System-variable state (interface signals, D table, clocks …).
@@ -235,8 +202,6 @@ pub struct Interp {
     /// rather than a corner piece)
     /// are kept here instead of emitted (interp/lathe_mrc.rs).
     comp_capture: Option<Vec<(crate::comp::Seg, SrcRef, bool)>>,
-    /// Parsed blocks of text executed again (loops, jumps back).
-    cache: block_cache::BlockCache,
     /// PUMA lathe cycle data (interp/lathe.rs, interp/lathe_mrc.rs).
     lathe: lathe::LatheData,
     /// A tool length offset change in G91: (the block, the change of the
@@ -259,8 +224,7 @@ impl Interp {
         let offsets = OffsetTable::new(profile.tools.offsets as usize);
         let st = Self::power_on_state(profile, dialect);
         let hurco = Self::hurco_state();
-        let repeat_budget = profile.param("max_repeat_blocks", 100_000_000.0) as u64;
-        let max_jumps = profile.param("max_jumps", 10_000_000.0) as u64;
+        let guard = loop_guard::LoopGuard::new(profile, settings.max_blocks);
         let settings_inputs = settings.inputs;
         let code_calls = if hx {
             calls::CodeCalls::from_profile(profile)
@@ -275,30 +239,15 @@ impl Interp {
         Interp {
             cfg,
             settings,
-            files: Vec::new(),
-            src: None,
-            file_id: 0,
-            program_start: Mark::default(),
-            raw: Box::default(),
-            block: Box::default(),
+            prog: program::Program::default(),
+            guard,
             words: Words::default(),
             queue: VecDeque::with_capacity(16),
             finished: false,
-            tape_started: false,
             st,
             vars: Vars::with_numbering(hx),
-            loops: Vec::new(),
-            loop_ends: Vec::new(),
-            hurco_loops: Vec::new(),
-            blocks: 0,
-            jumps: 0,
-            cur: SrcRef::default(),
             offsets,
             after_block: None,
-            high_water: 0,
-            repeated: 0,
-            repeat_budget,
-            max_jumps,
             calls: calls::Calls::default(),
             sys: Box::new(sysvars::SysState::new(settings_inputs, settings_sb)),
             code_calls,
@@ -307,7 +256,6 @@ impl Interp {
             comp: None,
             comp_prog: None,
             comp_capture: None,
-            cache: block_cache::BlockCache::default(),
             lathe: lathe::LatheData {
                 system_b: system_b_on,
                 ..Default::default()
@@ -391,11 +339,9 @@ impl Interp {
     /// Loads the main program from a reader; `name` is used in source
     /// references and messages.
     pub fn load_main(&mut self, name: &str, reader: Box<dyn ProgramRead>) {
-        self.files.push(name.to_string());
-        self.file_id = (self.files.len() - 1) as u32;
-        let max = self.cfg.profile.max_block_chars.max(1);
-        self.src = Some(LineSource::new(reader, max, self.cfg.dialect.hurco_syntax));
-        self.program_start = Mark { offset: 0, line: 1 };
+        let max = self.cfg.profile.max_block_chars;
+        let hurco = self.cfg.dialect.hurco_syntax;
+        self.prog.load(name, reader, max, hurco);
         self.calls_main_loaded();
     }
 
@@ -447,10 +393,7 @@ impl Interp {
 
     /// The name of a file in source references.
     pub fn file_name(&self, id: u32) -> &str {
-        self.files
-            .get(id as usize)
-            .map(String::as_str)
-            .unwrap_or("?")
+        self.prog.file_name(id)
     }
 
     /// The machine profile.
@@ -460,7 +403,7 @@ impl Interp {
 
     /// Blocks executed so far.
     pub fn blocks(&self) -> u64 {
-        self.blocks
+        self.guard.blocks
     }
 
     /// The value of macro variable `#n` from the variable store (locals,
@@ -477,7 +420,7 @@ impl Interp {
     /// replayed from there instead of being read and parsed again; see
     /// docs/ARCHITECTURE.md). For diagnostics and tests.
     pub fn cached_blocks(&self) -> usize {
-        self.cache.len()
+        self.prog.cache.len()
     }
 
     /// Current position in machine coordinates.
@@ -560,11 +503,11 @@ impl Interp {
     }
 
     fn alarm(&self, k: AlarmKind, at: u32, msg: impl Into<String>) -> Alarm {
-        let (line, col) = self.raw.line_col(at as usize);
+        let (line, col) = self.prog.raw.line_col(at as usize);
         k.at(
             self.cfg.dialect.id,
             SrcRef {
-                file: self.cur.file,
+                file: self.prog.cur.file,
                 line,
                 col,
             },
@@ -583,7 +526,7 @@ impl Interp {
             self.css_follow();
         }
         let e = Event {
-            src: self.cur,
+            src: self.prog.cur,
             tool: self.st.tool,
             cmd,
             prog: self.comp_prog.map(Box::new),
@@ -601,26 +544,9 @@ impl Interp {
         }
     }
 
-    /// The loop guard's count for a block ending at byte `here`: true when
-    /// the block was read before (executed again after a jump back).
-    fn count_repeat(&mut self, here: u64) -> R<bool> {
-        let repeated = here <= self.high_water;
-        if repeated {
-            self.repeated += 1;
-            if self.repeated > self.repeat_budget {
-                return Err(self.alarm(
-                    AlarmKind::LoopLimit,
-                    0,
-                    format!(
-                        "more than {} blocks executed again by loops (loop guard)",
-                        self.repeat_budget
-                    ),
-                ));
-            }
-        } else {
-            self.high_water = here;
-        }
-        Ok(repeated)
+    /// A loop guard count gone over its budget as an alarm.
+    fn loop_limit(&self, over: loop_guard::Over, at: u32) -> Alarm {
+        self.alarm(AlarmKind::LoopLimit, at, over.message())
     }
 
     /// A `%` block: opens the tape (the program starts after it), opens a
@@ -628,34 +554,40 @@ impl Interp {
     fn percent_block(&mut self) -> R<bool> {
         if !self.calls.stack.is_empty() {
             // A library file's leading % opens it; any other ends it.
-            if self.raw.mark.offset == 0 {
+            if self.prog.raw.mark.offset == 0 {
                 return Ok(true);
             }
             return Err(self.sub_end_alarm());
         }
-        if self.tape_started {
+        if self.prog.tape_started {
             self.emit_end(0)?;
             return Ok(false);
         }
-        self.tape_started = true;
+        self.prog.tape_started = true;
         // The program proper starts after the leading %.
-        self.program_start = self.src.as_ref().expect("loaded").tell();
+        self.prog.program_start = self.prog.src.as_ref().expect("loaded").tell();
         Ok(true)
     }
 
     /// Reads and executes one block. Ok(false) at the end of the program.
     fn next_block(&mut self) -> R<bool> {
-        let src = match self.src.as_mut() {
+        let src = match self.prog.src.as_mut() {
             Some(s) => s,
             None => return Ok(false),
         };
         // Text read before: take the parsed block from the cache if it is
         // there (the read and the parse below would give the same).
-        self.cache.give_back(&mut self.raw, &mut self.block);
+        self.prog
+            .cache
+            .give_back(&mut self.prog.raw, &mut self.prog.block);
         let at = src.tell();
-        let cached = if at.offset < self.high_water {
-            self.cache
-                .lend(self.file_id, at, &mut self.raw, &mut self.block)
+        let cached = if self.guard.was_read(at.offset) {
+            self.prog.cache.lend(
+                self.prog.file_id,
+                at,
+                &mut self.prog.raw,
+                &mut self.prog.block,
+            )
         } else {
             None
         };
@@ -663,7 +595,7 @@ impl Interp {
             // Lazy: moves nothing until the next read.
             let _ = src.seek(next);
         } else {
-            match src.next_block(&mut self.raw) {
+            match src.next_block(&mut self.prog.raw) {
                 Ok(true) => {}
                 Ok(false) => {
                     if !self.calls.stack.is_empty() {
@@ -676,7 +608,7 @@ impl Interp {
                     return Err(AlarmKind::Io.at(
                         self.cfg.dialect.id,
                         SrcRef {
-                            file: self.file_id,
+                            file: self.prog.file_id,
                             line: src.tell().line,
                             col: 1,
                         },
@@ -685,44 +617,48 @@ impl Interp {
                 }
             }
         }
-        self.cur = SrcRef {
-            file: self.file_id,
-            line: self.raw.mark.line,
+        self.prog.cur = SrcRef {
+            file: self.prog.file_id,
+            line: self.prog.raw.mark.line,
             col: 1,
         };
         // Loop guard: blocks executed again (after a jump back) are counted
         // against a budget, however long the repeated section is.
-        let next = self.src.as_ref().map(|s| s.tell()).unwrap_or_default();
-        let repeated = self.count_repeat(next.offset)?;
+        let next = self.prog.tell();
+        let repeated = self
+            .guard
+            .count_read(next.offset)
+            .map_err(|over| self.loop_limit(over, 0))?;
         if cached.is_none() {
             self.parse_raw()?;
             if repeated {
-                self.cache
-                    .insert(self.file_id, &self.raw, &self.block, next);
+                self.prog
+                    .cache
+                    .insert(self.prog.file_id, &self.prog.raw, &self.prog.block, next);
             }
         }
-        if self.block.percent {
+        if self.prog.block.percent {
             return self.percent_block();
         }
         // Text before the first % is tape leader: comment and blank lines
         // there do not start the program, so the % after them opens it
         // instead of ending it.
-        let b = &self.block;
+        let b = &self.prog.block;
         if !b.words.is_empty()
             || b.stmt.is_some()
             || b.program.is_some()
             || b.n.is_some()
             || b.loop_cmd.is_some()
         {
-            self.tape_started = true;
+            self.prog.tape_started = true;
         }
-        if self.block.program.is_some() && self.program_header()? {
+        if self.prog.block.program.is_some() && self.program_header()? {
             self.emit_end(0)?;
             return Ok(false);
         }
         // Block delete: a marker whose level is switched on skips the rest.
-        let mut nwords = self.block.words.len();
-        for &(idx, mask) in &self.block.deletes {
+        let mut nwords = self.prog.block.words.len();
+        for &(idx, mask) in &self.prog.block.deletes {
             if mask & self.settings.block_skip != 0 {
                 if idx == 0 {
                     return Ok(true);
@@ -731,27 +667,19 @@ impl Interp {
                 break;
             }
         }
-        self.blocks += 1;
-        if self.settings.max_blocks != 0 && self.blocks > self.settings.max_blocks {
-            return Err(self.alarm(
-                AlarmKind::LoopLimit,
-                0,
-                format!(
-                    "more than {} blocks executed (loop guard)",
-                    self.settings.max_blocks
-                ),
-            ));
+        if let Err(over) = self.guard.count_block() {
+            return Err(self.loop_limit(over, 0));
         }
-        if let Some(l) = self.block.loop_cmd {
+        if let Some(l) = self.prog.block.loop_cmd {
             self.hurco_loop(l)?;
         }
-        if self.calls.end_seq.is_some() && self.block.n.is_some() {
+        if self.calls.end_seq.is_some() && self.prog.block.n.is_some() {
             return self.block_with_end_seq(nwords);
         }
-        if let Some(n) = self.block.n {
+        if let Some(n) = self.prog.block.n {
             self.sys.last_n = n as f64;
         }
-        if let Some(stmt) = self.block.stmt {
+        if let Some(stmt) = self.prog.block.stmt {
             self.calls.body_seen = true;
             return self.statement(stmt);
         }
@@ -767,8 +695,8 @@ impl Interp {
     /// sequence number R the call returns as at M99 (000 §2.4.3).
     fn block_with_end_seq(&mut self, nwords: usize) -> R<bool> {
         let depth = self.calls.stack.len();
-        let end_here = self.block.n == self.calls.end_seq;
-        let r = if let Some(stmt) = self.block.stmt {
+        let end_here = self.prog.block.n == self.calls.end_seq;
+        let r = if let Some(stmt) = self.prog.block.stmt {
             self.statement(stmt)?
         } else if nwords == 0 {
             true
@@ -782,10 +710,10 @@ impl Interp {
         Ok(r)
     }
 
-    /// Parses `self.raw` into `self.block`; a block too long or malformed
+    /// Parses `self.prog.raw` into `self.prog.block`; a block too long or malformed
     /// is an alarm.
     fn parse_raw(&mut self) -> R<()> {
-        if self.raw.overlong {
+        if self.prog.raw.overlong {
             let max = self.cfg.profile.max_block_chars;
             return Err(self.alarm(
                 AlarmKind::BlockTooLong,
@@ -793,7 +721,7 @@ impl Interp {
                 format!("block longer than {max} characters"),
             ));
         }
-        if let Err(e) = parse_block(&self.raw.text, &self.cfg.lex, &mut self.block) {
+        if let Err(e) = parse_block(&self.prog.raw.text, &self.cfg.lex, &mut self.prog.block) {
             let kind = match e.kind {
                 LexErrorKind::UnexpectedChar(_) => AlarmKind::IllegalAddress,
                 LexErrorKind::MissingValue => AlarmKind::MissingValue,
@@ -833,7 +761,7 @@ impl Interp {
     fn collect(&mut self, nwords: usize) -> R<()> {
         self.words.clear();
         for i in 0..nwords {
-            let w = self.block.words[i];
+            let w = self.prog.block.words[i];
             let (v, point) = match w.val {
                 Val::Num(n) => (Some(n.value), n.point),
                 Val::Expr(e) => {

@@ -35,7 +35,7 @@ pub(super) struct Frame {
     ret: Mark,
     start: Mark,
     header: Option<u64>,
-    loops: Vec<super::LoopFrame>,
+    loops: Vec<super::program::LoopFrame>,
     end_seq: Option<u32>,
     /// The caller's #1-#99 (macro calls).
     locals: Option<Box<[Option<f64>; 99]>>,
@@ -181,37 +181,37 @@ impl Interp {
 
     /// Registers the main file in the call tables (from `load_main`).
     pub(super) fn calls_main_loaded(&mut self) {
-        while self.calls.parked.len() < self.files.len() {
+        while self.calls.parked.len() < self.prog.files.len() {
             self.calls.add_file(None, None);
         }
     }
 
     /// Makes file `id` the one being executed.
     fn switch_to(&mut self, id: u32) {
-        if id == self.file_id {
+        if id == self.prog.file_id {
             return;
         }
-        let cur = self.file_id as usize;
+        let cur = self.prog.file_id as usize;
         // Library files stay open while in use and up to a few more; the
         // others are closed and reopened when called again.
         let open = self.calls.parked.iter().filter(|s| s.is_some()).count();
         let in_use = self.calls.stack.iter().any(|f| f.file as usize == cur);
         if self.calls.paths[cur].is_some() && !in_use && open >= MAX_OPEN_LIBS {
             self.calls.parked[cur] = None;
-            self.src = None;
+            self.prog.src = None;
         } else {
-            self.calls.parked[cur] = self.src.take();
+            self.calls.parked[cur] = self.prog.src.take();
         }
-        self.calls.high_water[cur] = self.high_water;
-        self.src = self.calls.parked[id as usize].take();
-        self.high_water = self.calls.high_water[id as usize];
-        self.file_id = id;
+        self.calls.high_water[cur] = self.guard.high_water;
+        self.prog.src = self.calls.parked[id as usize].take();
+        self.guard.high_water = self.calls.high_water[id as usize];
+        self.prog.file_id = id;
     }
 
     /// The source of file `id`, current or parked.
     fn source_of(&mut self, id: u32) -> Option<&mut LineSource> {
-        if id == self.file_id {
-            self.src.as_mut()
+        if id == self.prog.file_id {
+            self.prog.src.as_mut()
         } else {
             self.calls.parked.get_mut(id as usize)?.as_mut()
         }
@@ -307,14 +307,14 @@ impl Interp {
     /// Finds program `p`: in the current file, the main file, then the
     /// library folders. Returns (file, header offset, first block).
     fn find_program(&mut self, p: u32, at: u32) -> R<(u32, Option<u64>, Mark)> {
-        for id in [self.file_id, 0] {
+        for id in [self.prog.file_id, 0] {
             if let Some((h, b)) = self.lookup(id, p)? {
                 return Ok((id, Some(h.offset), b));
             }
         }
         let id = match self.calls.lib_files.get(&p) {
             Some(&id) => {
-                if id != self.file_id && self.calls.parked[id as usize].is_none() {
+                if id != self.prog.file_id && self.calls.parked[id as usize].is_none() {
                     let path = self.calls.paths[id as usize].clone().expect("library file");
                     let f = File::open(&path).map_err(|e| {
                         self.alarm(AlarmKind::Io, at, format!("{}: {e}", path.display()))
@@ -342,9 +342,9 @@ impl Interp {
                 })?;
                 let max = self.cfg.profile.max_block_chars.max(1);
                 let src = LineSource::new(Box::new(f), max, self.cfg.dialect.hurco_syntax);
-                self.files.push(path.display().to_string());
+                self.prog.files.push(path.display().to_string());
                 self.calls.add_file(Some(src), Some(path.clone()));
-                let id = (self.files.len() - 1) as u32;
+                let id = (self.prog.files.len() - 1) as u32;
                 self.calls.lib_files.insert(p, id);
                 id
             }
@@ -389,7 +389,7 @@ impl Interp {
     /// An O header read while executing. Ok(true): it ends the current
     /// program (another program starts there).
     pub(super) fn program_header(&mut self) -> R<bool> {
-        let here = self.raw.mark.offset;
+        let here = self.prog.raw.mark.offset;
         if self.calls.header == Some(here) {
             return Ok(false);
         }
@@ -423,7 +423,7 @@ impl Interp {
     /// there is none.
     /// The sequence index of the current program, built on first use.
     fn sequence_index(&mut self) -> Option<&SeqIndex> {
-        let key = (self.file_id, self.program_start.offset);
+        let key = (self.prog.file_id, self.prog.program_start.offset);
         if !self.calls.seq_index.contains_key(&key) {
             let built = self.build_sequence_index();
             self.calls.seq_index.insert(key, built);
@@ -433,8 +433,8 @@ impl Interp {
 
     /// Scans the current program once, recording where each N stands.
     fn build_sequence_index(&mut self) -> Option<SeqIndex> {
-        let start = self.program_start;
-        let mut src = self.src.take()?;
+        let start = self.prog.program_start;
+        let mut src = self.prog.src.take()?;
         let here = src.tell();
         let mut raw = RawBlock::default();
         let mut blk = Block::default();
@@ -463,7 +463,7 @@ impl Interp {
             }
         }
         let _ = src.seek(here);
-        self.src = Some(src);
+        self.prog.src = Some(src);
         ok.then_some(map)
     }
 
@@ -473,7 +473,7 @@ impl Interp {
     /// sequence index; programs too large for it are scanned, and the
     /// scanned blocks count against the loop guard.
     pub(super) fn seek_sequence(&mut self, target: u32, wrap: bool) -> bool {
-        let here = match self.src.as_ref() {
+        let here = match self.prog.src.as_ref() {
             Some(s) => s.tell(),
             None => return false,
         };
@@ -486,7 +486,7 @@ impl Interp {
                     .copied()
             });
             return match hit {
-                Some(m) => self.src.as_mut().is_some_and(|s| s.seek(m).is_ok()),
+                Some(m) => self.prog.src.as_mut().is_some_and(|s| s.seek(m).is_ok()),
                 None => false,
             };
         }
@@ -494,8 +494,8 @@ impl Interp {
     }
 
     fn scan_for_sequence(&mut self, target: u32, wrap: bool) -> bool {
-        let start = self.program_start;
-        let Some(mut src) = self.src.take() else {
+        let start = self.prog.program_start;
+        let Some(mut src) = self.prog.src.take() else {
             return false;
         };
         let here = src.tell();
@@ -515,7 +515,7 @@ impl Interp {
                     Ok(true) => {}
                     _ => break,
                 }
-                self.repeated += 1;
+                self.guard.count_scanned();
                 if parse_block(&raw.text, &self.cfg.lex, &mut blk).is_err() {
                     continue;
                 }
@@ -535,7 +535,7 @@ impl Interp {
                 false
             }
         };
-        self.src = Some(src);
+        self.prog.src = Some(src);
         ok
     }
 
@@ -629,17 +629,21 @@ impl Interp {
         self.corner_open("a subprogram or macro call")?;
         let (file, header, body) = match prog {
             Some(p) => self.find_program(p, at)?,
-            None => (self.file_id, self.calls.header, self.program_start),
+            None => (
+                self.prog.file_id,
+                self.calls.header,
+                self.prog.program_start,
+            ),
         };
         self.nesting_check(macro_call, at)?;
-        let ret = self.src.as_ref().expect("loaded").tell();
+        let ret = self.prog.src.as_ref().expect("loaded").tell();
         let frame = Frame {
             macro_call,
-            file: self.file_id,
+            file: self.prog.file_id,
             ret,
-            start: self.program_start,
+            start: self.prog.program_start,
             header: self.calls.header,
-            loops: std::mem::take(&mut self.loops),
+            loops: std::mem::take(&mut self.prog.loops),
             end_seq: self.calls.end_seq,
             locals: None,
             callee_start: body,
@@ -649,7 +653,7 @@ impl Interp {
         };
         self.calls.stack.push(frame);
         self.switch_to(file);
-        self.program_start = body;
+        self.prog.program_start = body;
         self.calls.header = header;
         self.calls.end_seq = end_seq;
         self.seek(body)?;
@@ -663,7 +667,7 @@ impl Interp {
                     format!("M98 Q{n}: sequence number N{n} not found in the called program"),
                 ));
             }
-            let m = self.src.as_ref().expect("loaded").tell();
+            let m = self.prog.src.as_ref().expect("loaded").tell();
             if let Some(f) = self.calls.stack.last_mut() {
                 f.callee_start = m;
             }
@@ -680,7 +684,7 @@ impl Interp {
 
     fn calls_caller_src(&self, at: u32) -> SrcRef {
         let f = self.calls.stack.last().expect("frame");
-        let (line, col) = self.raw.line_col(at as usize);
+        let (line, col) = self.prog.raw.line_col(at as usize);
         SrcRef {
             file: f.file,
             line,
@@ -692,9 +696,9 @@ impl Interp {
     fn unwind_failed_call(&mut self) {
         if let Some(f) = self.calls.stack.pop() {
             self.switch_to(f.file);
-            self.program_start = f.start;
+            self.prog.program_start = f.start;
             self.calls.header = f.header;
-            self.loops = f.loops;
+            self.prog.loops = f.loops;
             self.calls.end_seq = f.end_seq;
             let _ = self.seek(f.ret);
         }
@@ -725,7 +729,7 @@ impl Interp {
             f.left -= 1;
             let m = f.callee_start;
             self.count_jump(at)?;
-            self.loops.clear();
+            self.prog.loops.clear();
             return self.seek(m);
         }
         let f = self.calls.stack.pop().expect("in a call");
@@ -733,27 +737,27 @@ impl Interp {
             self.vars.put_locals(&l);
         }
         self.switch_to(f.file);
-        self.program_start = f.start;
+        self.prog.program_start = f.start;
         self.calls.header = f.header;
-        self.loops = f.loops;
+        self.prog.loops = f.loops;
         self.calls.end_seq = f.end_seq;
         self.seek(f.ret)?;
         if let Some((n, pat)) = p {
             // A return to an earlier block can loop: it counts as a jump.
             self.count_jump(pat)?;
             if !self.seek_sequence(n, true) {
-                let (line, col) = self.raw.line_col(pat as usize);
+                let (line, col) = self.prog.raw.line_col(pat as usize);
                 return Err(AlarmKind::SequenceNotFound.at(
                     self.cfg.dialect.id,
                     SrcRef {
-                        file: self.cur.file,
+                        file: self.prog.cur.file,
                         line,
                         col,
                     },
                     format!("M99 P{n}: sequence number N{n} not found in the calling program"),
                 ));
             }
-            let to = self.src.as_ref().expect("loaded").tell().offset;
+            let to = self.prog.src.as_ref().expect("loaded").tell().offset;
             self.leave_loops(to);
         }
         Ok(())
@@ -762,7 +766,7 @@ impl Interp {
     /// M99 in the main program (000 §2.4.4).
     fn main_m99(&mut self, p: Option<(u32, u32)>, l: Option<(u32, u32)>, at: u32) -> R<()> {
         self.corner_open("M99")?;
-        let here = self.raw.mark.offset;
+        let here = self.prog.raw.mark.offset;
         if let Some((n, _)) = l {
             let left = match self.calls.main_repeat {
                 Some((off, left)) if off == here => left,
@@ -777,7 +781,7 @@ impl Interp {
             return Ok(());
         }
         self.count_jump(at)?;
-        self.loops.clear();
+        self.prog.loops.clear();
         match p {
             Some((n, pat)) => {
                 if !self.seek_sequence(n, true) {
@@ -790,7 +794,7 @@ impl Interp {
                 Ok(())
             }
             None => {
-                let s = self.program_start;
+                let s = self.prog.program_start;
                 self.seek(s)
             }
         }
@@ -963,7 +967,7 @@ impl Interp {
             // The main level's locals are in the first macro call's frame.
             let main_locals = self.calls.stack.iter().find_map(|f| f.locals.clone());
             self.switch_to(file);
-            self.program_start = start;
+            self.prog.program_start = start;
             self.calls.header = header;
             if let Some(l) = main_locals {
                 self.vars.put_locals(&l);
@@ -1021,8 +1025,8 @@ impl Interp {
         } else {
             0.0001
         };
-        for i in 0..self.block.words.len() {
-            let w = self.block.words[i];
+        for i in 0..self.prog.block.words.len() {
+            let w = self.prog.block.words[i];
             let Addr::L(l) = w.addr else { continue };
             if matches!(l, b'G' | b'P' | b'L' | b'N' | b'O') || (skip_m && l == b'M') {
                 continue;
@@ -1099,11 +1103,12 @@ impl Interp {
         }
         let n = v.unwrap_or(0.0);
         let text = self
+            .prog
             .block
             .comments
             .first()
             .map(|&(s, e)| {
-                String::from_utf8_lossy(&self.raw.text[s as usize..e as usize])
+                String::from_utf8_lossy(&self.prog.raw.text[s as usize..e as usize])
                     .trim()
                     .to_string()
             })
@@ -1116,7 +1121,7 @@ impl Interp {
                     format!("#3000 = {}: alarm number must be 0-999", fmt_num(n)),
                 ));
             }
-            let (line, col) = self.raw.line_col(at as usize);
+            let (line, col) = self.prog.raw.line_col(at as usize);
             let msg = if text.is_empty() {
                 format!("user alarm {}", 3000 + n as u32)
             } else {
@@ -1126,7 +1131,7 @@ impl Interp {
                 format!("{}", 3000 + n as u32),
                 msg,
                 SrcRef {
-                    file: self.file_id,
+                    file: self.prog.file_id,
                     line,
                     col,
                 },

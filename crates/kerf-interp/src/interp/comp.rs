@@ -696,7 +696,7 @@ impl Interp {
             // vector left by a broken look-ahead.
             psub(padd(s, vec), tip)
         };
-        let src = self.cur;
+        let src = self.prog.cur;
         let c = self.comp.as_deref_mut().expect("comp");
         c.startup = false;
         c.vec = (0.0, 0.0);
@@ -981,12 +981,12 @@ impl Interp {
         // only.
         let xf = std::mem::take(&mut self.st.xf);
         let base = self.prog_pos();
-        let here = std::mem::replace(&mut self.cur, h.src);
+        let here = std::mem::replace(&mut self.prog.cur, h.src);
         let mut events = std::mem::take(&mut h.events);
         let r = self.comp_emit(h, j, base, &mut events);
         self.st.xf = xf;
         self.comp_prog = None;
-        self.cur = here;
+        self.prog.cur = here;
         self.place_machine(prog);
         events.clear();
         if let Some(c) = self.comp.as_deref_mut() {
@@ -1134,9 +1134,9 @@ impl Interp {
 
     /// The source position of a byte of the current block.
     pub(super) fn src_here(&self, at: u32) -> SrcRef {
-        let (line, col) = self.raw.line_col(at as usize);
+        let (line, col) = self.prog.raw.line_col(at as usize);
         SrcRef {
-            file: self.cur.file,
+            file: self.prog.cur.file,
             line,
             col,
         }

@@ -161,9 +161,9 @@ impl Interp {
         };
         // The held block's part, attributed to it; its alarms (travel)
         // point at its motion.
-        let here = std::mem::replace(&mut self.cur, p.src);
+        let here = std::mem::replace(&mut self.prog.cur, p.src);
         let r = self.corner_emit(&p, &c);
-        self.cur = here;
+        self.prog.cur = here;
         r.map_err(|mut a| {
             a.src = p.motion;
             a
@@ -211,7 +211,7 @@ impl Interp {
             end: tw,
             plane: self.st.modal.plane.means,
             feed,
-            src: self.cur,
+            src: self.prog.cur,
             word,
             motion,
             origin: self.prog_origin(),
@@ -365,9 +365,9 @@ impl Interp {
 
     /// The source position of a byte of the current block.
     fn src_at(&self, at: u32) -> SrcRef {
-        let (line, col) = self.raw.line_col(at as usize);
+        let (line, col) = self.prog.raw.line_col(at as usize);
         SrcRef {
-            file: self.cur.file,
+            file: self.prog.cur.file,
             line,
             col,
         }

@@ -141,7 +141,7 @@ impl Interp {
         let p_at = self.words.get(b'P').map(|w| w.at).unwrap_or(at);
         let q_at = self.words.get(b'Q').map(|w| w.at).unwrap_or(at);
         let a = self.zx_pos();
-        let resume = self.src.as_ref().expect("loaded").tell();
+        let resume = self.prog.src.as_ref().expect("loaded").tell();
         let mut shape = match self.read_shape(ns, nf) {
             Ok(s) => s,
             Err(ShapeErr::Here(a)) => return Err(a),
@@ -151,7 +151,7 @@ impl Interp {
         };
         // G70 goes on after its own block; G71-G73 after N(nf) when the
         // shape follows the cycle, else after the cycle block too.
-        let after_nf = self.src.as_ref().expect("loaded").tell();
+        let after_nf = self.prog.src.as_ref().expect("loaded").tell();
         if kind == Finish || after_nf.offset <= resume.offset {
             self.seek(resume)?;
         }

@@ -102,12 +102,12 @@ impl Interp {
                 format!("sequence number N{ns} (P) not found"),
             ));
         }
-        let saved_raw = std::mem::take(&mut self.raw);
-        let saved_block = std::mem::take(&mut self.block);
+        let saved_raw = std::mem::take(&mut self.prog.raw);
+        let saved_block = std::mem::take(&mut self.prog.block);
         let saved_words = self.words.clone();
         let r = self.read_shape_blocks(ns, nf);
-        self.raw = saved_raw;
-        self.block = saved_block;
+        self.prog.raw = saved_raw;
+        self.prog.block = saved_block;
         self.words = saved_words;
         r
     }
@@ -118,24 +118,24 @@ impl Interp {
         let mut mode: Option<u16> = None;
         let mut feed: Option<f64> = None;
         let mut speed: Option<f64> = None;
-        let mut shape = Shape::empty(a, self.cur);
+        let mut shape = Shape::empty(a, self.prog.cur);
         let mut comp_pending: Option<CompSide> = None;
         let mut count = 0usize;
         let mut corners: Vec<ShapeCorner> = Vec::new();
         let mut seg_blocks: Vec<(usize, u32)> = Vec::new();
         loop {
             let (nwords, skip) = self.shape_read_block(ns, nf)?;
-            let is_last = self.block.n == Some(nf);
+            let is_last = self.prog.block.n == Some(nf);
             if skip {
                 if is_last {
                     break;
                 }
                 continue;
             }
-            if self.block.stmt.is_some() {
+            if self.prog.block.stmt.is_some() {
                 return Err(ShapeErr::Here(self.alarm(
                     AlarmKind::MrcIllegal,
-                    self.block.stmt_at,
+                    self.prog.block.stmt_at,
                     "macro statement inside the finishing shape ns-nf",
                 )));
             }
@@ -218,7 +218,7 @@ impl Interp {
                     shape.speeds.push(speed);
                     shape.comps.push(comp_pending.take());
                     shape.srcs.push(blk_src);
-                    seg_blocks.push((count, self.raw.mark.line));
+                    seg_blocks.push((count, self.prog.raw.mark.line));
                 }
             }
             cur = t;
@@ -237,8 +237,8 @@ impl Interp {
     /// cycle when the text ends before N(nf)); returns its word count
     /// after block delete and whether block delete skips it whole.
     fn shape_read_block(&mut self, ns: u32, nf: u32) -> Result<(usize, bool), ShapeErr> {
-        let src = self.src.as_mut().expect("loaded");
-        match src.next_block(&mut self.raw) {
+        let src = self.prog.src.as_mut().expect("loaded");
+        match src.next_block(&mut self.prog.raw) {
             Ok(true) => {}
             _ => {
                 return Err(ShapeErr::AtCycle(
@@ -249,16 +249,16 @@ impl Interp {
             }
         }
         self.parse_raw().map_err(ShapeErr::Here)?;
-        if self.block.percent || self.block.program.is_some() {
+        if self.prog.block.percent || self.prog.block.program.is_some() {
             return Err(ShapeErr::AtCycle(
                 AlarmKind::MrcSeqNotFound,
                 b'Q',
                 format!("sequence number N{nf} (Q) not found after N{ns} in this program"),
             ));
         }
-        let mut nwords = self.block.words.len();
+        let mut nwords = self.prog.block.words.len();
         let mut skip = false;
-        for &(idx, mask) in &self.block.deletes {
+        for &(idx, mask) in &self.prog.block.deletes {
             if mask & self.settings.block_skip != 0 {
                 if idx == 0 {
                     skip = true;

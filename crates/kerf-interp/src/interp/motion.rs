@@ -62,7 +62,7 @@ impl Interp {
     /// G43/G44/G49/H in G91 on axis slot `i` (0 otherwise).
     fn tlo_change(&self, i: usize) -> f64 {
         match self.tlo_inc {
-            Some((b, d)) if b == self.blocks => d[i],
+            Some((b, d)) if b == self.guard.blocks => d[i],
             _ => 0.0,
         }
     }
@@ -475,7 +475,7 @@ impl Interp {
             for i in 0..NAXES {
                 d[i] = self.st.tlo[i] - old[i];
             }
-            self.tlo_inc = Some((self.blocks, d));
+            self.tlo_inc = Some((self.guard.blocks, d));
         }
         Ok(())
     }

@@ -39,10 +39,12 @@ impl Interp {
     /// Reset emits no event: the runtime that presses RESET knows the
     /// spindle and coolant are off.
     pub fn reset(&mut self) {
-        self.cache.give_back(&mut self.raw, &mut self.block);
+        self.prog
+            .cache
+            .give_back(&mut self.prog.raw, &mut self.prog.block);
         self.reset_calls();
-        self.loops.clear();
-        self.hurco_loops.clear();
+        self.prog.loops.clear();
+        self.prog.hurco_loops.clear();
         if self.cfg.profile.param("clear_locals_on_reset", 1.0) != 0.0 {
             self.vars.clear_locals();
         }
@@ -86,11 +88,10 @@ impl Interp {
         self.queue.clear();
         self.after_block = None;
         self.finished = false;
-        self.jumps = 0;
-        self.repeated = 0;
-        let start = self.program_start;
+        self.guard.restart();
+        let start = self.prog.program_start;
         // Lazy: an error would show at the next read.
-        if let Some(src) = self.src.as_mut() {
+        if let Some(src) = self.prog.src.as_mut() {
             let _ = src.seek(start);
         }
     }

@@ -76,14 +76,15 @@ impl Interp {
     /// GOTO, WHILE, DO, END): single block stops after it only as the
     /// control's parameter says.
     pub fn last_block_is_statement(&self) -> bool {
-        self.block.stmt.is_some()
+        self.prog.block.stmt.is_some()
     }
 
     /// Whether the last block read carried M code `m` (e.g. the Hurco M01
     /// with the optional stop off, which still empties the look-ahead,
     /// 002 Table 15).
     pub fn last_block_has_m(&self, m: u32) -> bool {
-        self.block
+        self.prog
+            .block
             .words
             .iter()
             .any(|w| w.addr == Addr::L(b'M') && matches!(w.val, Val::Num(n) if n.value == m as f64))
@@ -98,12 +99,12 @@ impl Interp {
     /// Where the last block read is: its file id and line, and its depth
     /// in the call stack (0 = the main program).
     pub fn block_at(&self) -> (SrcRef, usize) {
-        (self.cur, self.calls.stack.len())
+        (self.prog.cur, self.calls.stack.len())
     }
 
     /// The sequence number (N) of the last block read, if it had one.
     pub fn block_n(&self) -> Option<u32> {
-        self.block.n
+        self.prog.block.n
     }
 
     /// Sets the operator-panel switches; they act from the next block read
@@ -128,10 +129,9 @@ impl Interp {
         self.queue.clear();
         self.after_block = None;
         self.finished = false;
-        self.tape_started = false;
-        self.jumps = 0;
-        self.repeated = 0;
-        self.high_water = 0;
+        self.prog.tape_started = false;
+        self.guard.restart();
+        self.guard.high_water = 0;
         self.load_main(
             name,
             Box::new(std::io::Cursor::new(text.as_bytes().to_vec())),
@@ -141,8 +141,8 @@ impl Interp {
     /// Where the next block will be read: file id, line, and the call
     /// depth (0 = the main program). None before a program is loaded.
     pub fn next_block_at(&self) -> Option<(u32, u32, usize)> {
-        let src = self.src.as_ref()?;
-        Some((self.file_id, src.tell().line, self.calls.stack.len()))
+        let src = self.prog.src.as_ref()?;
+        Some((self.prog.file_id, src.tell().line, self.calls.stack.len()))
     }
 
     /// Sets the machine position after the axes were moved by hand (jog,
