@@ -13,7 +13,7 @@ use crate::arc::{self, ArcError};
 use crate::dialect::meaning::{
     CompSide, CuttingMode, CycleReturn, FeedMode, LengthComp, MotionMode,
 };
-use crate::dialect::{Dialect, GCode, MAction, MWhen, Means, Support};
+use crate::dialect::{GCode, MAction, MWhen, Means, Support};
 use crate::machine::{MachineKind, Profile};
 use crate::macros::{round_to, Vars};
 use crate::offsets::OffsetTable;
@@ -28,6 +28,7 @@ mod corners;
 mod cycles;
 mod cylindrical;
 mod flow;
+mod frames;
 mod hurco;
 mod hurco_cycles;
 mod hurco_thread;
@@ -53,6 +54,7 @@ mod system_b;
 mod sysvars;
 mod thread_plan;
 mod tool_offset;
+mod tool_spindle;
 mod transforms;
 mod work_offsets;
 
@@ -111,56 +113,6 @@ pub enum Step {
     Alarm(Alarm),
 }
 
-/// Modal state that the words of a block act on.
-#[derive(Clone, Debug)]
-struct State {
-    /// The modal G codes in force, by meaning (interp/modal.rs).
-    modal: modal::Modal,
-    /// Current position, machine coordinates: set only by the move seam
-    /// (interp/mover.rs).
-    mover: mover::Mover,
-    /// The work offset table (G54-G59, Hurco E1-E9999) and the active
-    /// system (interp/work_offsets.rs).
-    work: work_offsets::WorkOffsets,
-    /// G92 / G50 shift (the HX "work shift" of 000 §7.2.4, also set by
-    /// `G10 L2 P0`).
-    shift: Pos,
-    /// G52 local coordinate system offset (work coordinates; the same for
-    /// every work system).
-    local: Pos,
-    /// Scaling (G51) and rotation (G68) in force.
-    xf: crate::xform::Xform,
-    /// Position where the last skip signal came (program coordinates).
-    skip_pos: Option<Pos>,
-    /// Stored stroke check 2 area (G22 X Y Z I J K), machine coordinates.
-    stroke_area: Option<crate::stroke::Area>,
-    /// G16 polar coordinate command in force.
-    polar: bool,
-    /// Origin of the polar coordinates (program coordinates in the plane).
-    polar_origin: std::cell::Cell<(f64, f64)>,
-    /// G112 polar / G107 cylindrical interpolation in force.
-    rot: polar_interp::RotInterp,
-    /// Tool length offset vector (G43/G44), added to the control point.
-    tlo: Pos,
-    /// Active H number (0 = none).
-    h: u32,
-    /// G28 intermediate point (programmed coordinates), per axis.
-    g28_mid: [Option<f64>; NAXES],
-    /// Programmed feed in mm/min or mm/rev (None until an F is given).
-    feed: Option<f64>,
-    spindle: SpindleDir,
-    /// S as programmed (rpm, or surface speed in G96), in program units.
-    s: f64,
-    s_clamp: Option<f64>,
-    /// Emitted spindle state, to avoid repeating events.
-    last_rpm: f64,
-    tool: u32,
-    next_tool: u32,
-    offset: u32,
-    mist: bool,
-    flood: bool,
-}
-
 /// The interpreter.
 pub struct Interp {
     /// The profile and dialect, read once (interp/config.rs).
@@ -174,7 +126,12 @@ pub struct Interp {
     words: Words,
     queue: VecDeque<Event>,
     finished: bool,
-    st: State,
+    /// The modal G codes in force, by meaning (interp/modal.rs).
+    modal: modal::Modal,
+    /// The machine position and the coordinate frames (interp/frames.rs).
+    frames: frames::Frames,
+    /// Tool, spindle, feed and coolant (interp/tool_spindle.rs).
+    tool: tool_spindle::ToolSpindle,
     vars: Vars,
     /// Tool offset memory (H/D, lathe X/Z/R/T).
     pub(crate) offsets: OffsetTable,
@@ -222,8 +179,9 @@ impl Interp {
         let (profile, dialect) = (&cfg.profile, cfg.dialect);
         let hx = dialect.caps.hx_variables;
         let offsets = OffsetTable::new(profile.tools.offsets as usize);
-        let st = Self::power_on_state(profile, dialect);
         let hurco = Self::hurco_state();
+        let modal = modal::Modal::at_power_on(profile, dialect);
+        let frames = frames::Frames::power_on(profile);
         let guard = loop_guard::LoopGuard::new(profile, settings.max_blocks);
         let settings_inputs = settings.inputs;
         let code_calls = if hx {
@@ -244,7 +202,9 @@ impl Interp {
             words: Words::default(),
             queue: VecDeque::with_capacity(16),
             finished: false,
-            st,
+            modal,
+            frames,
+            tool: tool_spindle::ToolSpindle::default(),
             vars: Vars::with_numbering(hx),
             offsets,
             after_block: None,
@@ -265,77 +225,6 @@ impl Interp {
         }
     }
 
-    /// The machine state at power-on: the group defaults (and on the HX
-    /// PI 144-147), G54 with the profile's work offsets, the start
-    /// position, no tool, spindle and coolant off.
-    fn power_on_state(profile: &Profile, dialect: &'static Dialect) -> State {
-        let plane = if profile.kind == MachineKind::Lathe {
-            Plane::ZX
-        } else {
-            Plane::XY
-        };
-        let modal = modal::Modal::power_on(dialect, plane);
-        let mut wcs = [[0.0; NAXES]; 6];
-        for (i, w) in wcs.iter_mut().enumerate() {
-            let key = format!("g5{}", 4 + i);
-            if let Some(m) = profile
-                .work_offsets
-                .get(&key)
-                .or_else(|| profile.work_offsets.get("g54"))
-            {
-                *w = Profile::pos_of(m);
-            }
-        }
-        let mut st = State {
-            modal,
-            mover: mover::Mover::new(profile.start_position()),
-            work: work_offsets::WorkOffsets::new(wcs),
-            shift: [0.0; NAXES],
-            local: [0.0; NAXES],
-            xf: Default::default(),
-            stroke_area: None,
-            skip_pos: None,
-            polar: false,
-            polar_origin: std::cell::Cell::new((0.0, 0.0)),
-            rot: polar_interp::RotInterp::Off,
-            tlo: [0.0; NAXES],
-            h: 0,
-            g28_mid: [None; NAXES],
-            feed: None,
-            spindle: SpindleDir::Stop,
-            s: 0.0,
-            s_clamp: None,
-            last_rpm: 0.0,
-            tool: 0,
-            next_tool: 0,
-            offset: 0,
-            mist: false,
-            flood: false,
-        };
-        // The HX power-on parameters PI 144-147 (000 §3.2).
-        if dialect.caps.power_on_params {
-            use crate::dialect::meaning::{Distance, Units};
-            let p = |n: &str, d: f64| profile.param(n, d) as i64;
-            if p("PI 144", 0.0) == 1 {
-                st.modal
-                    .set_meaning(dialect, Means::Motion(MotionMode::Linear));
-            }
-            match p("PI 145", 0.0) {
-                1 => st.modal.set_meaning(dialect, Means::Plane(Plane::ZX)),
-                2 => st.modal.set_meaning(dialect, Means::Plane(Plane::YZ)),
-                _ => {}
-            }
-            if p("PI 146", 0.0) == 1 {
-                st.modal
-                    .set_meaning(dialect, Means::Distance(Distance::Incremental));
-            }
-            if p("PI 147", 1.0) == 0 {
-                st.modal.set_meaning(dialect, Means::Units(Units::Inch));
-            }
-        }
-        st
-    }
-
     /// Loads the main program from a reader; `name` is used in source
     /// references and messages.
     pub fn load_main(&mut self, name: &str, reader: Box<dyn ProgramRead>) {
@@ -348,10 +237,12 @@ impl Interp {
     /// Sets the work offset of G54+`idx` (machine coordinates of its zero),
     /// as loaded with `--offsets`.
     pub fn set_work_offset(&mut self, idx: usize, origin: Pos) {
-        self.st.work.set(work_offsets::WorkId::G5x(idx), origin);
+        self.frames.work.set(work_offsets::WorkId::G5x(idx), origin);
         if idx == 0 && self.cfg.dialect.caps.part_zero_is_e1 {
             // The Hurco's part zero is fixture offset E1.
-            self.st.work.set(work_offsets::WorkId::Fixture(1), origin);
+            self.frames
+                .work
+                .set(work_offsets::WorkId::Fixture(1), origin);
         }
     }
 
@@ -376,7 +267,7 @@ impl Interp {
 
     /// Whether X is programmed as a diameter now (lathes).
     pub fn diameter_programming(&self) -> bool {
-        self.cfg.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means
+        self.cfg.profile.kind == MachineKind::Lathe && self.modal.diameter.means
     }
 
     /// The tool offset memory (H/D pages, lathe tool offsets).
@@ -425,52 +316,18 @@ impl Interp {
 
     /// Current position in machine coordinates.
     pub fn machine_position(&self) -> Pos {
-        self.st.mover.pos()
+        self.frames.mover.pos()
     }
 
     /// Current position of the tool tip in the active work coordinate
     /// system (tool length / tool offsets not included, as `Motion::to`).
     pub fn work_position(&self) -> Pos {
-        let o = self.origin();
-        let mut p = self.st.mover.pos();
-        for i in 0..NAXES {
-            p[i] -= o[i] + self.st.tlo[i];
-        }
-        p
+        self.frames.work_position()
     }
 
     /// The settings in force.
     pub fn settings(&self) -> &Settings {
         &self.settings
-    }
-
-    fn origin(&self) -> Pos {
-        let w = self.st.work.origin();
-        let mut o = [0.0; NAXES];
-        for i in 0..NAXES {
-            o[i] = w[i] + self.st.shift[i];
-        }
-        o
-    }
-
-    /// Origin of programmed coordinates: the work origin plus the G52 local
-    /// offset and the tool length offset.
-    fn prog_origin(&self) -> Pos {
-        let mut o = self.origin();
-        for i in 0..NAXES {
-            o[i] += self.st.tlo[i] + self.st.local[i];
-        }
-        o
-    }
-
-    /// Current position in programmed coordinates (tool tip).
-    fn programmed_position(&self) -> Pos {
-        let o = self.prog_origin();
-        let mut p = self.st.mover.pos();
-        for i in 0..NAXES {
-            p[i] -= o[i];
-        }
-        p
     }
 
     /// Runs until the next canonical command, an alarm or the end.
@@ -517,7 +374,7 @@ impl Interp {
 
     fn emit(&mut self, cmd: Canon) {
         // G96 on a lathe: the spindle follows X (interp/lathe.rs).
-        if self.st.modal.css.means
+        if self.modal.css.means
             && matches!(
                 cmd,
                 Canon::Rapid { .. } | Canon::Feed { .. } | Canon::Arc { .. } | Canon::Thread { .. }
@@ -527,7 +384,7 @@ impl Interp {
         }
         let e = Event {
             src: self.prog.cur,
-            tool: self.st.tool,
+            tool: self.tool.number,
             cmd,
             prog: self.comp_prog.map(Box::new),
         };
@@ -915,7 +772,7 @@ impl Interp {
         }
         match l {
             b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'I' | b'J' | b'K' | b'R' | b'Q' => {
-                if self.st.modal.metric() {
+                if self.modal.metric() {
                     0.001
                 } else {
                     0.0001
@@ -997,35 +854,30 @@ impl Interp {
             }
             match mc.action {
                 MAction::SpindleStop => {
-                    if self.st.spindle != SpindleDir::Stop {
-                        self.st.spindle = SpindleDir::Stop;
+                    if self.tool.spindle != SpindleDir::Stop {
+                        self.tool.spindle = SpindleDir::Stop;
                         self.emit(Canon::Spindle {
                             dir: SpindleDir::Stop,
                             rpm: 0.0,
                             css: None,
                         });
                     }
-                    self.st.last_rpm = 0.0;
+                    self.tool.last_rpm = 0.0;
                 }
                 MAction::CoolantMist | MAction::CoolantFlood | MAction::CoolantOff => {
-                    match mc.action {
-                        MAction::CoolantMist => self.st.mist = true,
-                        MAction::CoolantFlood => self.st.flood = true,
-                        _ => {
-                            self.st.mist = false;
-                            self.st.flood = false;
-                        }
-                    }
-                    self.emit(Canon::Coolant {
-                        mist: self.st.mist,
-                        flood: self.st.flood,
+                    use tool_spindle::Coolant;
+                    let (mist, flood) = self.tool.coolant(match mc.action {
+                        MAction::CoolantMist => Some(Coolant::Mist),
+                        MAction::CoolantFlood => Some(Coolant::Flood),
+                        _ => None,
                     });
+                    self.emit(Canon::Coolant { mist, flood });
                 }
                 MAction::ToolChange => {
-                    self.st.tool = self.st.next_tool;
+                    self.tool.number = self.tool.next;
                     self.emit(Canon::Tool {
-                        tool: self.st.tool,
-                        offset: self.st.offset,
+                        tool: self.tool.number,
+                        offset: self.tool.offset,
                         change: true,
                     });
                 }
@@ -1066,9 +918,12 @@ impl Interp {
     /// selects, the mode event it makes (HX G61-G64, G10.3/G11.3,
     /// G63.1/G63.2).
     fn apply_modal(&mut self, g: &GCode) {
-        self.st.modal.set(g);
+        self.modal.set(g);
         match g.means {
-            Means::Work(n) => self.st.work.select(work_offsets::WorkId::G5x(n as usize)),
+            Means::Work(n) => self
+                .frames
+                .work
+                .select(work_offsets::WorkId::G5x(n as usize)),
             m => self.mode_event(m),
         }
     }

@@ -867,8 +867,7 @@ impl Interp {
                 count,
                 args: Box::new(args),
             });
-            self.st
-                .modal
+            self.modal
                 .set_meaning(self.cfg.dialect, Means::ModalCall(true));
             return Ok(());
         }
@@ -984,8 +983,7 @@ impl Interp {
     pub(super) fn g67(&mut self) {
         self.calls.modal.pop();
         let on = !self.calls.modal.is_empty();
-        self.st
-            .modal
+        self.modal
             .set_meaning(self.cfg.dialect, Means::ModalCall(on));
     }
 
@@ -1020,11 +1018,7 @@ impl Interp {
         let mut a = [None; 33];
         let mut set: i32 = -1;
         let mut last_k = 3usize;
-        let scale = if self.st.modal.metric() {
-            0.001
-        } else {
-            0.0001
-        };
+        let scale = if self.modal.metric() { 0.001 } else { 0.0001 };
         for i in 0..self.prog.block.words.len() {
             let w = self.prog.block.words[i];
             let Addr::L(l) = w.addr else { continue };

@@ -150,7 +150,7 @@ impl Interp {
             r: 0.0,
             side: 1.0,
             tip: (0.0, 0.0),
-            plane: self.st.modal.plane.means,
+            plane: self.modal.plane.means,
             startup: false,
             vec: (0.0, 0.0),
             held: None,
@@ -183,7 +183,7 @@ impl Interp {
         match self.cfg.profile.kind {
             MachineKind::Mill => (self.offsets.d(self.sys.d.max(0.0) as usize), (0.0, 0.0)),
             MachineKind::Lathe => {
-                let o = self.offsets.lathe(self.st.offset as usize);
+                let o = self.offsets.lathe(self.tool.offset as usize);
                 let r = o.total_r();
                 let t = comp::tip_vector(o.tip);
                 (r, (t.0 * r, t.1 * r))
@@ -246,7 +246,7 @@ impl Interp {
         setting: bool,
     ) -> R<bool> {
         self.comp_check_words(one_shot)?;
-        let mode = self.st.modal.cutter_comp.means;
+        let mode = self.modal.cutter_comp.means;
         let g39 = one_shot
             .iter()
             .find(|g| self.gcode(g.0).map(|c| c.means) == Some(Means::OneShot(OneShot::CompCorner)))
@@ -264,7 +264,7 @@ impl Interp {
             }
             self.comp = Some(Box::new(self.comp_new()));
         }
-        let plane = self.st.modal.plane.means;
+        let plane = self.modal.plane.means;
         let (on, cplane) = {
             let c = self.comp.as_deref().expect("set");
             (c.on, c.plane)
@@ -338,7 +338,7 @@ impl Interp {
             }
             self.comp = Some(Box::new(self.comp_new()));
         }
-        let plane = self.st.modal.plane.means;
+        let plane = self.modal.plane.means;
         let (value, tip) = self.comp_value();
         let c = self.comp.as_deref_mut().expect("set");
         match mode {
@@ -401,7 +401,7 @@ impl Interp {
     ) -> R<()> {
         let cur = self.zx_full(seg.from);
         let tw = self.zx_full(seg.to);
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let (cur_t, tw_t) = (self.xf_point(&cur), self.xf_point(&tw));
         let (sp, ep) = ((cur[a1], cur[a2]), (tw[a1], tw[a2]));
         let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
@@ -465,7 +465,7 @@ impl Interp {
             // A ,C/,R move held before the compensation started.
             return Err(self.corner_broken("a cutter compensation start-up (G41/G42)"));
         }
-        let plane = self.st.modal.plane.means;
+        let plane = self.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         let cur = self.prog_pos();
         let arc = matches!(mode, MotionMode::ArcCw | MotionMode::ArcCcw);
@@ -537,7 +537,7 @@ impl Interp {
                 chamfer,
                 size: self.linear(w),
                 seg: seg_p,
-                xf: self.st.xf,
+                xf: self.frames.xf,
                 word: self.src_here(w.at),
             })),
         };
@@ -620,7 +620,7 @@ impl Interp {
             at,
             motion,
         } = p;
-        let plane = self.st.modal.plane.means;
+        let plane = self.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         let arc = matches!(mode, MotionMode::ArcCw | MotionMode::ArcCcw);
         let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
@@ -630,7 +630,7 @@ impl Interp {
         // A mirror image on one axis of the plane reverses the path's
         // turning sense: the offset goes to the other side of travel
         // (000 §15.3); its value is not scaled.
-        let r = if self.st.xf.mirrors(plane) { -r } else { r };
+        let r = if self.frames.xf.mirrors(plane) { -r } else { r };
         let mut held = c.held.take();
         let g39 = c.g39.take().or(c.circular.then_some(None));
         let ij = c.ij.take();
@@ -784,7 +784,7 @@ impl Interp {
         if off_plane {
             return Err(broken("a move off the plane"));
         }
-        if hc.xf != self.st.xf {
+        if hc.xf != self.frames.xf {
             return Err(AlarmKind::CornerConflict.at(
                 id,
                 hc.word,
@@ -808,7 +808,7 @@ impl Interp {
             };
             AlarmKind::CornerTooLarge.at(id, hc.word, why)
         })?;
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let fwd = |me: &Self, q: P| {
             let p = me.xf_point(&me.plane_pt(cur, q));
             (p[a1], p[a2])
@@ -875,7 +875,7 @@ impl Interp {
         let vec = c.vec;
         let cur_t = self.xf_point(&self.prog_pos());
         let tw_t = self.xf_point(&tw);
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let p = padd((cur_t[a1], cur_t[a2]), vec);
         let start = self.offset_to_machine(&self.plane_pt(cur_t, p));
         let prog = self.place_machine(start);
@@ -883,8 +883,8 @@ impl Interp {
         // The vector is in the transformed plane: the target back in
         // program coordinates for the move.
         let target = self.plane_pt(tw_t, p);
-        let target = if self.st.xf.active() {
-            self.st.xf.inverse(&target)
+        let target = if self.frames.xf.active() {
+            self.frames.xf.inverse(&target)
         } else {
             target
         };
@@ -916,7 +916,7 @@ impl Interp {
             ));
         }
         let end1 = self.comp_geom(comp::perp_end(&h.seg, h.r), h.motion)?;
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let vec = psub(padd(end1, h.tip), (h.end[a1], h.end[a2]));
         self.comp_flush(&mut h, &Join::at(end1))?;
         self.comp.as_deref_mut().expect("comp").vec = vec;
@@ -975,16 +975,16 @@ impl Interp {
     /// the corner's plane point), then the corner's pieces. Alarms point
     /// at the held block's motion word.
     fn comp_flush(&mut self, h: &mut Held, j: &Join) -> R<()> {
-        let prog = self.st.mover.pos();
+        let prog = self.frames.mover.pos();
         // The held points are already transformed (scaling, mirror,
         // rotation of their own block): emitted through the offset stack
         // only.
-        let xf = std::mem::take(&mut self.st.xf);
+        let xf = std::mem::take(&mut self.frames.xf);
         let base = self.prog_pos();
         let here = std::mem::replace(&mut self.prog.cur, h.src);
         let mut events = std::mem::take(&mut h.events);
         let r = self.comp_emit(h, j, base, &mut events);
-        self.st.xf = xf;
+        self.frames.xf = xf;
         self.comp_prog = None;
         self.prog.cur = here;
         self.place_machine(prog);
@@ -1103,8 +1103,8 @@ impl Interp {
     /// A program point mapped by the transforms in force (scaling,
     /// mirror, rotation): the coordinates the compensation works in.
     fn xf_point(&self, p: &Pos) -> Pos {
-        if self.st.xf.active() {
-            self.st.xf.forward(p)
+        if self.frames.xf.active() {
+            self.frames.xf.forward(p)
         } else {
             *p
         }
@@ -1113,19 +1113,19 @@ impl Interp {
     /// A direction in the plane (program coordinates) mapped by the
     /// transforms in force.
     fn xf_dir(&self, d: P) -> P {
-        if !self.st.xf.active() {
+        if !self.frames.xf.active() {
             return d;
         }
         let o = [0.0; NAXES];
         let q = self.plane_pt(o, d);
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
-        let (fo, fq) = (self.st.xf.forward(&o), self.st.xf.forward(&q));
+        let (a1, a2, _) = self.modal.plane.means.axes();
+        let (fo, fq) = (self.frames.xf.forward(&o), self.frames.xf.forward(&q));
         (fq[a1] - fo[a1], fq[a2] - fo[a2])
     }
 
     /// `p` with its plane coordinates replaced by `uv`.
     fn plane_pt(&self, p: Pos, uv: P) -> Pos {
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let mut q = p;
         q[a1] = uv.0;
         q[a2] = uv.1;

@@ -77,7 +77,7 @@ impl Interp {
         );
         if self.corner.is_some() {
             if !cutting {
-                let what = format!("G{}", fmt_code(self.st.modal.motion.code10));
+                let what = format!("G{}", fmt_code(self.modal.motion.code10));
                 return Err(self.corner_broken(&what));
             }
             if !moves {
@@ -94,7 +94,7 @@ impl Interp {
                 return self.plain_motion(mode, tw, any, at);
             };
             if !cutting {
-                let what = format!("a G{} block", fmt_code(self.st.modal.motion.code10));
+                let what = format!("a G{} block", fmt_code(self.modal.motion.code10));
                 return Err(self.corner_no_move(w, &what));
             }
             if !moves {
@@ -122,15 +122,15 @@ impl Interp {
         let Some(p) = self.corner.as_deref() else {
             return self.plain_motion(mode, tw, any, at);
         };
-        if p.plane != self.st.modal.plane.means {
+        if p.plane != self.modal.plane.means {
             return Err(self.corner_broken("a move in another plane"));
         }
-        if p.origin != self.prog_origin() {
+        if p.origin != self.frames.prog_origin() {
             return Err(
                 self.corner_conflict(p, "the coordinate system or tool length offset changed")
             );
         }
-        if p.tool != self.st.tool {
+        if p.tool != self.tool.number {
             return Err(self.corner_conflict(p, "the tool changed"));
         }
         let Some(seg2) = self.plane_path(mode, tw, any, at)? else {
@@ -209,13 +209,13 @@ impl Interp {
             seg,
             start,
             end: tw,
-            plane: self.st.modal.plane.means,
+            plane: self.modal.plane.means,
             feed,
             src: self.prog.cur,
             word,
             motion,
-            origin: self.prog_origin(),
-            tool: self.st.tool,
+            origin: self.frames.prog_origin(),
+            tool: self.tool.number,
             held: Vec::new(),
         };
         // The next block reads from the virtual corner.
@@ -248,7 +248,7 @@ impl Interp {
     /// The block's move from the current position to `tw` as a path in the
     /// plane; None when it does not move in the plane or moves another axis.
     fn plane_path(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<Option<Seg>> {
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let cur = self.prog_pos();
         if (0..NAXES).any(|i| i != a1 && i != a2 && (tw[i] - cur[i]).abs() > 1e-9) {
             return Ok(None);
@@ -270,7 +270,7 @@ impl Interp {
 
     /// `p` with its plane coordinates replaced by `uv`.
     fn plane_point(&self, p: Pos, uv: (f64, f64)) -> Pos {
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let mut q = p;
         q[a1] = uv.0;
         q[a2] = uv.1;

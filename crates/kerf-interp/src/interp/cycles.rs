@@ -129,13 +129,11 @@ impl Interp {
             }
             // A motion code cancels the cycle mode (a table search, so
             // only when one is in force: this runs for every G01 block).
-            if self.st.modal.cycle.means.is_some() {
-                self.st
-                    .modal
-                    .set_meaning(self.cfg.dialect, Means::Cycle(None));
+            if self.modal.cycle.means.is_some() {
+                self.modal.set_meaning(self.cfg.dialect, Means::Cycle(None));
             }
         }
-        if self.st.modal.cycle.means.is_none() {
+        if self.modal.cycle.means.is_none() {
             if was_cycle {
                 self.cyc.clear();
             }
@@ -195,8 +193,8 @@ impl Interp {
     /// Executes a block in canned cycle mode: stores the cycle data and,
     /// if the block names a position, R or the depth, drills K holes.
     pub(super) fn canned_cycle(&mut self, entered: bool, g60: bool) -> R<()> {
-        let code = self.st.modal.cycle.code10;
-        let Some(kind) = self.st.modal.cycle.means else {
+        let code = self.modal.cycle.code10;
+        let Some(kind) = self.modal.cycle.means else {
             return Ok(());
         };
         let at = self
@@ -206,7 +204,7 @@ impl Interp {
             .find(|g| g.0 == code)
             .map(|g| g.1)
             .unwrap_or(0);
-        let (a1, a2, n) = self.st.modal.plane.means.axes();
+        let (a1, a2, n) = self.modal.plane.means.axes();
         let drill_ax = Axis::ALL[n];
         if !self.cfg.has_axis[n] {
             return Err(self.alarm(
@@ -234,7 +232,7 @@ impl Interp {
             return Ok(());
         }
         let initial = self.cyc.initial.unwrap_or(cur[n]);
-        let abs = self.st.modal.absolute();
+        let abs = self.modal.absolute();
         // Data words: R, the depth (the drilling axis's address), Q, P, I/J.
         if let Some(w) = self.words.get(b'R') {
             let v = self.linear(w);
@@ -284,7 +282,7 @@ impl Interp {
         // G91 in polar mode (G16): each repeat turns by the angle again
         // (and keeps the radius), as a repeated block would; elsewhere the
         // Cartesian step is repeated.
-        let polar_step = !abs && self.st.polar;
+        let polar_step = !abs && self.frames.polar;
         for k in 0..count {
             let tk = if polar_step && k > 0 {
                 self.target()?.0
@@ -342,7 +340,7 @@ impl Interp {
             }
             None => 0.0,
         };
-        let g99 = self.st.modal.cycle_return.means == CycleReturn::RPoint;
+        let g99 = self.modal.cycle_return.means == CycleReturn::RPoint;
         if kind == HoleCycle::BackBore && g99 {
             return Err(self.alarm(
                 AlarmKind::CannedCycle,
@@ -372,7 +370,7 @@ impl Interp {
         }
         let mut shift = [0.0; NAXES];
         if kind.shifts() {
-            let (a1, a2, _) = self.st.modal.plane.means.axes();
+            let (a1, a2, _) = self.modal.plane.means.axes();
             match self.cyc.ij {
                 Some((i, j)) => {
                     shift[a1] = i;
@@ -480,21 +478,21 @@ impl Interp {
 
     /// Switches the spindle as a cycle does (reversal, stop, restart).
     fn cycle_spindle(&mut self, dir: SpindleDir) {
-        self.st.spindle = dir;
+        self.tool.spindle = dir;
         let rpm = if dir == SpindleDir::Stop {
             0.0
         } else {
             self.rpm()
         };
-        self.st.last_rpm = rpm;
+        self.tool.last_rpm = rpm;
         let css = self.css_speed().filter(|_| dir != SpindleDir::Stop);
         self.emit(Canon::Spindle { dir, rpm, css });
     }
 
     /// Oriented spindle stop: emitted as M19 "spindle orientation".
     fn orient(&mut self) {
-        self.st.spindle = SpindleDir::Stop;
-        self.st.last_rpm = 0.0;
+        self.tool.spindle = SpindleDir::Stop;
+        self.tool.last_rpm = 0.0;
         // The table's orientation code (M19 on the HX).
         let orient = self
             .cfg
@@ -512,7 +510,7 @@ impl Interp {
 
     /// The cutting mode of group 15 in force, re-emitted after tapping.
     fn restore_cut_mode(&mut self) {
-        match self.st.modal.cutting_mode.means {
+        match self.modal.cutting_mode.means {
             Some(CuttingMode::Tapping) | None => {}
             Some(m) => self.mode_event(Means::CuttingMode(m)),
         }
@@ -521,7 +519,7 @@ impl Interp {
     /// Actions 2-6 of one hole, after the positioning in the plane.
     fn hole(&mut self, h: &Hole) -> R<()> {
         let (n, at) = (h.n, h.at);
-        let dir0 = self.st.spindle;
+        let dir0 = self.tool.spindle;
         let restart = if dir0 == SpindleDir::Stop {
             SpindleDir::Cw
         } else {
@@ -605,7 +603,7 @@ impl Interp {
         let total = (h.z - h.r).abs();
         // Scaling does not apply to Q and d (000 §15.2): in program
         // coordinates they shrink by the drilling axis's factor.
-        let f = match self.st.xf.scale {
+        let f = match self.frames.xf.scale {
             Some(s) if n < 3 => s.factor[n].abs(),
             _ => 1.0,
         };

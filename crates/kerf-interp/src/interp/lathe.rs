@@ -54,14 +54,14 @@ impl Interp {
     }
 
     fn lathe_coolant(&mut self, on: bool) {
-        if self.st.flood != on || (!on && self.st.mist) {
-            self.st.flood = on;
+        if self.tool.flood != on || (!on && self.tool.mist) {
+            self.tool.flood = on;
             if !on {
-                self.st.mist = false;
+                self.tool.mist = false;
             }
             self.emit(Canon::Coolant {
-                mist: self.st.mist,
-                flood: self.st.flood,
+                mist: self.tool.mist,
+                flood: self.tool.flood,
             });
         }
     }
@@ -73,15 +73,15 @@ impl Interp {
     /// reaches at their end (fanuc-semantics §8.9). Clamped by G50 S and
     /// the machine maximum.
     pub(super) fn css_follow(&mut self) {
-        if self.st.spindle == SpindleDir::Stop || self.cfg.profile.kind != MachineKind::Lathe {
+        if self.tool.spindle == SpindleDir::Stop || self.cfg.profile.kind != MachineKind::Lathe {
             return;
         }
         let rpm = self.rpm();
-        if (rpm - self.st.last_rpm).abs() > 1e-6 {
-            self.st.last_rpm = rpm;
+        if (rpm - self.tool.last_rpm).abs() > 1e-6 {
+            self.tool.last_rpm = rpm;
             let css = self.css_speed();
             self.emit(Canon::Spindle {
-                dir: self.st.spindle,
+                dir: self.tool.spindle,
                 rpm,
                 css,
             });
@@ -142,10 +142,10 @@ impl Interp {
     /// must be set, the spindle turning, and (kerf's rule, docs/dialects.md)
     /// a thread that changes X is not cut in G96.
     pub(super) fn thread_to(&mut self, tw: Pos, at: u32) -> R<()> {
-        let Some(lead) = self.st.feed.filter(|f| *f > 0.0) else {
+        let Some(lead) = self.tool.feed.filter(|f| *f > 0.0) else {
             return Err(self.alarm(AlarmKind::NoFeed, at, "threading without a thread lead (F)"));
         };
-        if self.st.spindle == SpindleDir::Stop {
+        if self.tool.spindle == SpindleDir::Stop {
             return Err(self.alarm(
                 AlarmKind::NoFeed,
                 at,
@@ -154,7 +154,7 @@ impl Interp {
         }
         let cur = self.prog_pos();
         let xi = Axis::X as usize;
-        if self.st.modal.css.means && (tw[xi] - cur[xi]).abs() > 1e-9 {
+        if self.modal.css.means && (tw[xi] - cur[xi]).abs() > 1e-9 {
             return Err(self.alarm(
                 AlarmKind::LatheCycle,
                 at,
@@ -173,7 +173,7 @@ impl Interp {
             return self.thread_to(tw, at);
         }
         let a = self.zx_pos();
-        let code = self.st.modal.motion.code10;
+        let code = self.modal.motion.code10;
         let fresh = self.words.gs().iter().any(|g| g.0 == code);
         let xi = Axis::X as usize;
         let zi = Axis::Z as usize;
@@ -222,7 +222,7 @@ impl Interp {
             _ => {
                 let c = if self.lathe.chamfer_on {
                     self.cfg.profile.param("thread_chamfer_leads", 1.0)
-                        * self.st.feed.unwrap_or(0.0)
+                        * self.tool.feed.unwrap_or(0.0)
                 } else {
                     0.0
                 };

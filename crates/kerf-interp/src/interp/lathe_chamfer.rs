@@ -330,11 +330,7 @@ impl Interp {
                     }
                 }
             }
-            let half = if self.st.modal.diameter.means {
-                0.5
-            } else {
-                1.0
-            };
+            let half = if self.modal.diameter.means { 0.5 } else { 1.0 };
             let ax = |me: &Self, abs: u8, inc: u8, k: f64| {
                 if let Some(w) = me.words.get(abs) {
                     Some(Coord::Abs(me.linear(w) * k))

@@ -126,11 +126,7 @@ impl Interp {
             }
         };
         // Second-block values, before the shape blocks overwrite the words.
-        let half = if self.st.modal.diameter.means {
-            0.5
-        } else {
-            1.0
-        };
+        let half = if self.modal.diameter.means { 0.5 } else { 1.0 };
         let du = self
             .words
             .get(b'U')
@@ -316,7 +312,7 @@ impl Interp {
             return Ok(None);
         }
         let saved = self.comp.take();
-        let pos = self.st.mover.pos();
+        let pos = self.frames.mover.pos();
         if before != CompSide::Off {
             self.comp_set_mode(before, None);
         }
@@ -352,7 +348,7 @@ impl Interp {
 
     /// The feed of a shape block's F (mm, per the feed mode).
     fn shape_feed(&self, f: Option<f64>) -> Option<Feed> {
-        f.map(|f| match self.st.modal.feed_mode.means {
+        f.map(|f| match self.modal.feed_mode.means {
             FeedMode::PerMin => Feed::PerMin(f.min(self.cfg.profile.feed.max_cutting)),
             FeedMode::PerRev => Feed::PerRev(f),
             FeedMode::Inverse => Feed::InverseTime(f),
@@ -368,7 +364,7 @@ impl Interp {
     /// whole contour is offset). The last compensated move ends on its
     /// perpendicular vector.
     fn shape_run(&mut self, a: P, s: &Shape, at: u32, g70: bool) -> R<()> {
-        let s0 = self.st.s;
+        let s0 = self.tool.s;
         let ns = turning::Seg {
             from: a,
             to: s.start,
@@ -387,8 +383,7 @@ impl Interp {
             match c {
                 Some(c) if g70 => {
                     self.comp_set_mode(c, None);
-                    self.st
-                        .modal
+                    self.modal
                         .set_meaning(self.cfg.dialect, Means::CutterComp(c));
                 }
                 // Roughing: the whole shape is offset, a G40 in it does not
@@ -438,7 +433,7 @@ impl Interp {
     /// shape (or the modal F), then a rapid back to the start point.
     fn g70(&mut self, a: P, s: &Shape, at: u32) -> R<()> {
         if s.comp_on || self.comp_side() != CompSide::Off {
-            let s0 = self.st.s;
+            let s0 = self.tool.s;
             self.shape_run(a, s, at, true)?;
             self.emit_moves(&[Mv::Rapid(a)], None, at)?;
             self.g70_speed(s0);
@@ -450,7 +445,7 @@ impl Interp {
         } else {
             Mv::Feed(s.start)
         };
-        let s0 = self.st.s;
+        let s0 = self.tool.s;
         let f0 = feed_of(self, s.ns_feed);
         self.g70_speed(s.ns_speed.unwrap_or(s0));
         self.emit_moves(&[first], f0, at)?;
@@ -469,19 +464,19 @@ impl Interp {
     /// G70: the S in force for the next shape block; a spindle event when
     /// the rpm changes (the spindle running).
     fn g70_speed(&mut self, sv: f64) {
-        if (sv - self.st.s).abs() < 1e-12 {
+        if (sv - self.tool.s).abs() < 1e-12 {
             return;
         }
-        self.st.s = sv;
-        if self.st.spindle == SpindleDir::Stop {
+        self.tool.s = sv;
+        if self.tool.spindle == SpindleDir::Stop {
             return;
         }
         let rpm = self.rpm();
-        if (rpm - self.st.last_rpm).abs() > 1e-6 {
-            self.st.last_rpm = rpm;
+        if (rpm - self.tool.last_rpm).abs() > 1e-6 {
+            self.tool.last_rpm = rpm;
             let css = self.css_speed();
             self.emit(Canon::Spindle {
-                dir: self.st.spindle,
+                dir: self.tool.spindle,
                 rpm,
                 css,
             });
@@ -512,11 +507,7 @@ impl Interp {
             return Ok(());
         }
         let a = self.zx_pos();
-        let half = if self.st.modal.diameter.means {
-            0.5
-        } else {
-            1.0
-        };
+        let half = if self.modal.diameter.means { 0.5 } else { 1.0 };
         let val = |me: &Self, abs: u8, inc: u8, cur: f64, is_x: bool| -> Option<f64> {
             let k = if is_x { half } else { 1.0 };
             if let Some(w) = me.words.get(abs) {
@@ -756,11 +747,7 @@ impl Interp {
             return Ok(());
         }
         let a = self.zx_pos();
-        let half = if self.st.modal.diameter.means {
-            0.5
-        } else {
-            1.0
-        };
+        let half = if self.modal.diameter.means { 0.5 } else { 1.0 };
         let mut end = a;
         if let Some(w) = self.words.get(b'X') {
             end.x = self.linear(w) * half;
@@ -799,7 +786,7 @@ impl Interp {
                 format!("G76 without the first depth {}(Δd)", ld as char),
             ));
         };
-        let lead = self.st.feed.unwrap_or(0.0);
+        let lead = self.tool.feed.unwrap_or(0.0);
         if !self.words.has(b'F') && lead <= 0.0 {
             return Err(self.alarm(AlarmKind::NoFeed, at, "G76 without a thread lead (F)"));
         }

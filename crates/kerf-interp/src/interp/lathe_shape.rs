@@ -326,11 +326,7 @@ impl Interp {
         // End point.
         let mut t = cur;
         let (mut hx, mut hz) = (false, false);
-        let half = if self.st.modal.diameter.means {
-            0.5
-        } else {
-            1.0
-        };
+        let half = if self.modal.diameter.means { 0.5 } else { 1.0 };
         if let Some(w) = self.words.get(b'X') {
             t.x = self.linear(w) * half;
             hx = true;

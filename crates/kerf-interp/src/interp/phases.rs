@@ -157,7 +157,7 @@ impl Interp {
             kinds,
             hurco_macro: None,
             was_cycle: false,
-            plane_before: self.st.modal.plane.means,
+            plane_before: self.modal.plane.means,
             cycle: false,
             hurco_cycle: false,
             xdata: false,
@@ -176,7 +176,7 @@ impl Interp {
             Phase::JobSyncM => self.run_m(|m| m.1 == MWhen::JobSync)?,
             Phase::ModalG => self.apply_modal_codes(b),
             Phase::HxCycleMode => {
-                let plane_changed = self.st.modal.plane.means != b.plane_before;
+                let plane_changed = self.modal.plane.means != b.plane_before;
                 b.cycle = self.cycle_mode(b.was_cycle, plane_changed, b.motion, b.kinds)?;
             }
             Phase::HurcoCycleMode => b.hurco_cycle = self.hurco_cycle_mode(b.motion)?,
@@ -189,7 +189,7 @@ impl Interp {
                 // G112/G113/G107 in the block, or a mode in force to check
                 // the block against.
                 let rotary = b.kinds.any(&[Kind::PolarInterp, Kind::Cylindrical])
-                    || self.st.rot != polar_interp::RotInterp::Off;
+                    || self.frames.rot != polar_interp::RotInterp::Off;
                 let rdata = rotary && self.rotary_codes_and_event()?;
                 b.xdata = self.transform_codes(b.one_shot(), b.kinds)? || rdata;
             }
@@ -269,8 +269,8 @@ impl Interp {
 
     /// The modal G codes (every group but 0 and 1) and the motion mode.
     fn apply_modal_codes(&mut self, b: &mut BlockRun) {
-        b.was_cycle = self.st.modal.cycle.means.is_some();
-        b.plane_before = self.st.modal.plane.means;
+        b.was_cycle = self.modal.cycle.means.is_some();
+        b.plane_before = self.modal.plane.means;
         for i in 0..self.words.ng {
             let (c, _) = self.words.g[i];
             let Some(g) = self.gcode(c) else { continue };
@@ -283,9 +283,9 @@ impl Interp {
         }
         if let Some((c, _)) = b.motion {
             // The same code again (a G01 on every line) changes nothing.
-            if c != self.st.modal.motion.code10 {
+            if c != self.modal.motion.code10 {
                 if let Some(g) = self.gcode(c) {
-                    self.st.modal.set(g);
+                    self.modal.set(g);
                 }
             }
         }
@@ -415,7 +415,7 @@ impl Interp {
                     os.setting = true;
                     self.coordinate_setting(at)?
                 }
-                CancelWorkShift => self.st.shift = [0.0; NAXES],
+                CancelWorkShift => self.frames.shift = [0.0; NAXES],
                 MacroCall | FrameData | LocalCoords | CompCorner | Probe | ThreadCycle => {}
             }
         }

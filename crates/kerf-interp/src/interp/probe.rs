@@ -38,7 +38,7 @@ impl Interp {
     /// A value in program units from mm (X in the block's G07/G08 mode).
     fn probe_units(&self, ax: Axis, mm: f64) -> f64 {
         let mut v = mm / self.unit();
-        if ax == Axis::X && self.st.modal.diameter.means {
+        if ax == Axis::X && self.modal.diameter.means {
             v *= 2.0;
         }
         v

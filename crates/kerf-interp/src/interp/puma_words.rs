@@ -71,7 +71,7 @@ impl Interp {
                     )
                 ),
                 None => matches!(
-                    self.st.modal.motion.means,
+                    self.modal.motion.means,
                     MotionMode::ThreadLathe | MotionMode::ThreadCycle
                 ),
             };

@@ -53,28 +53,19 @@ impl Interp {
         }
         self.sys.c3003 = 0.0;
         self.sys.c3004 = 0.0;
-        let fresh = Self::power_on_state(&self.cfg.profile, self.cfg.dialect);
-        let old = std::mem::replace(&mut self.st, fresh);
-        let st = &mut self.st;
-        st.mover = old.mover;
-        st.work.keep_entries_of(&old.work);
-        st.shift = old.shift;
-        st.stroke_area = old.stroke_area;
-        st.g28_mid = old.g28_mid;
-        st.modal.units = old.modal.units;
-        st.feed = old.feed;
-        st.s = old.s;
-        st.s_clamp = old.s_clamp;
-        st.tool = old.tool;
-        st.next_tool = old.next_tool;
-        st.offset = old.offset;
+        let units = self.modal.units;
+        self.modal = modal::Modal::at_power_on(&self.cfg.profile, self.cfg.dialect);
+        self.modal.units = units;
+        let keep_tlo = self.cfg.dialect.caps.reset_keeps_tool_offset;
+        let fresh = frames::Frames::power_on(&self.cfg.profile);
+        self.frames = self.frames.after_reset(fresh, keep_tlo);
+        self.tool.reset();
         // Canned-cycle data goes with the cycle mode (G80 is the power-on
         // state); a move held for its ,C/,R is dropped.
         self.cyc.clear();
-        if self.cfg.dialect.caps.reset_keeps_tool_offset {
+        if keep_tlo {
             // The T offset stays active with its number; drill data and an
             // offset change waiting for its move go.
-            st.tlo = old.tlo;
             self.hurco.drill = Default::default();
             self.hurco.pending = None;
         }

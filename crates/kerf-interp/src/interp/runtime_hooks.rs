@@ -153,7 +153,7 @@ impl Interp {
 
     /// The work offset of G54+`idx` (machine coordinates of its zero).
     pub fn work_offset(&self, idx: usize) -> Option<Pos> {
-        (idx < 6).then(|| self.st.work.get(work_offsets::WorkId::G5x(idx)))
+        (idx < 6).then(|| self.frames.work.get(work_offsets::WorkId::G5x(idx)))
     }
 
     /// Writes common (#100-#199) or retained macro variable `#n` from the
@@ -213,7 +213,7 @@ impl Interp {
         groups
             .into_iter()
             .filter_map(|g| {
-                let c = self.st.modal.code_of_group(self.cfg.dialect, g);
+                let c = self.modal.code_of_group(self.cfg.dialect, g);
                 self.cfg
                     .dialect
                     .gcodes
@@ -226,18 +226,18 @@ impl Interp {
 
     /// The programmed feed (mm/min, or mm/rev in G95/G99), if an F was given.
     pub fn programmed_feed(&self) -> Option<f64> {
-        self.st.feed
+        self.tool.feed
     }
 
     /// The spindle as commanded: direction and S (rpm, or the surface
     /// speed in G96).
     pub fn spindle_state(&self) -> (SpindleDir, f64) {
-        (self.st.spindle, self.st.s)
+        (self.tool.spindle, self.tool.s)
     }
 
     /// The tool in the spindle / active turret station.
     pub fn tool(&self) -> u32 {
-        self.st.tool
+        self.tool.number
     }
 
     /// The whole modal state in comparable form.
@@ -249,7 +249,7 @@ impl Interp {
             }
         }
         InterpSnapshot {
-            state: format!("{:?}", self.st),
+            state: format!("{:?}", (&self.modal, &self.frames, &self.tool)),
             cycle: format!("{:?}", self.cyc),
             lathe: format!("{:?}", (self.lathe.single, self.lathe.chamfer_on)),
             vars,

@@ -70,7 +70,7 @@ impl Interp {
         match self.contact(n, &from, &tw) {
             Some(p) => {
                 self.move_line(false, p, at)?;
-                self.st.skip_pos = Some(p);
+                self.frames.skip_pos = Some(p);
                 Ok(())
             }
             None => Err(self.alarm(
@@ -108,7 +108,7 @@ impl Interp {
                 format!("G{} without the measurement position Z", fmt_code(c)),
             ));
         };
-        if self.st.h == 0 {
+        if self.frames.h == 0 {
             return Err(self.alarm(
                 AlarmKind::MissingArgument,
                 at,
@@ -157,8 +157,8 @@ impl Interp {
             ));
         }
         self.line_to(hit, Speed::Feed(Feed::PerMin(feed)), at)?;
-        self.st.skip_pos = Some(hit);
-        let h = self.st.h as usize;
+        self.frames.skip_pos = Some(hit);
+        let h = self.frames.h as usize;
         let delta = hit[zi] - meas;
         if let Some(e) = self.offsets.h_mut(h) {
             e.geom += delta;

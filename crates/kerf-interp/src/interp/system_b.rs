@@ -62,7 +62,7 @@ impl Interp {
             .find(|g| g.0 == ABS || g.0 == INC)
         {
             Some(g) => g.0 == INC,
-            None => !self.st.modal.absolute(),
+            None => !self.modal.absolute(),
         };
         if !inc || self.macro_args() {
             return Ok(());

@@ -276,7 +276,7 @@ impl Interp {
         if s < 3 {
             v /= self.unit();
         }
-        if s == 0 && self.cfg.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means {
+        if s == 0 && self.cfg.profile.kind == MachineKind::Lathe && self.modal.diameter.means {
             v *= 2.0;
         }
         v
@@ -287,7 +287,7 @@ impl Interp {
         if s < 3 {
             v *= self.unit();
         }
-        if s == 0 && self.cfg.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means {
+        if s == 0 && self.cfg.profile.kind == MachineKind::Lathe && self.modal.diameter.means {
             v /= 2.0;
         }
         v
@@ -310,30 +310,30 @@ impl Interp {
         Ok(Some(match s {
             D(n) => self.offsets.d_entry(n).map_or(0.0, |e| e.geom) / u,
             H(n) => self.offsets.h_entry(n).map_or(0.0, |e| e.geom) / u,
-            Shift(k) => return Ok(self.axis_value_of(k, &self.st.shift).or(Some(0.0))),
+            Shift(k) => return Ok(self.axis_value_of(k, &self.frames.shift).or(Some(0.0))),
             Wcs(w, k) => {
-                let o = self.st.work.get(WorkId::G5x(w));
+                let o = self.frames.work.get(WorkId::G5x(w));
                 return Ok(self.axis_value_of(k, &o).or(Some(0.0)));
             }
             SingleBlock => self.sys.single_block,
             Param(n) => self.cfg.profile.param(&format!("PI {n}"), 0.0),
             Tpg => (self.cfg.profile.param("tpg", 0.0) != 0.0) as u8 as f64,
-            S => self.st.s,
+            S => self.tool.s,
             DNum => self.sys.d,
-            HNum => self.st.h as f64,
-            Machine(k) => return Ok(self.axis_value_of(k, &self.st.mover.pos())),
+            HNum => self.frames.h as f64,
+            Machine(k) => return Ok(self.axis_value_of(k, &self.frames.mover.pos())),
             Work(k) => return Ok(self.axis_value_of(k, &self.work_position())),
-            Programmed(k) => return Ok(self.axis_value_of(k, &self.programmed_position())),
+            Programmed(k) => return Ok(self.axis_value_of(k, &self.frames.programmed_position())),
             Skip(k) => {
                 let p = self
-                    .st
+                    .frames
                     .skip_pos
-                    .unwrap_or_else(|| self.programmed_position());
+                    .unwrap_or_else(|| self.frames.programmed_position());
                 return Ok(self.axis_value_of(k, &p));
             }
             Modal(g) => {
                 let c =
-                    u8::try_from(g).map_or(0, |g| self.st.modal.code_of_group(self.cfg.dialect, g));
+                    u8::try_from(g).map_or(0, |g| self.modal.code_of_group(self.cfg.dialect, g));
                 let c = if self.system_b() {
                     crate::dialect::system_b::to_b(c)
                 } else {
@@ -370,15 +370,15 @@ impl Interp {
             C3004 => self.sys.c3004,
             PartsDone => self.sys.parts_done,
             PartsNeeded => self.sys.parts_needed,
-            F => match self.st.feed {
+            F => match self.tool.feed {
                 Some(f) => f / u,
                 None => return Ok(None),
             },
             T => {
                 if self.cfg.profile.kind == MachineKind::Lathe {
-                    (self.st.tool * 100 + self.st.offset) as f64
+                    (self.tool.number * 100 + self.tool.offset) as f64
                 } else {
-                    self.st.tool as f64
+                    self.tool.number as f64
                 }
             }
             N => self.sys.last_n,
@@ -438,9 +438,9 @@ impl Interp {
                 };
                 let mm = self.prog_units_to_mm(slot, x);
                 match s {
-                    Shift(_) => self.st.shift[slot] = mm,
+                    Shift(_) => self.frames.shift[slot] = mm,
                     Wcs(w, _) => {
-                        if let Some(o) = self.st.work.g5x_mut(w) {
+                        if let Some(o) = self.frames.work.g5x_mut(w) {
                             o[slot] = mm;
                         }
                     }

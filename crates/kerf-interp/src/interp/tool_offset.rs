@@ -22,7 +22,7 @@ impl Interp {
     /// The block's move under G45-G48: `times` D (the code's meaning) and
     /// its `code` ×10 for the alarms, `at` the code's column.
     pub(super) fn tool_offset_motion(&mut self, (times, code): (i8, u16), at: u32) -> R<()> {
-        let mode = self.st.modal.motion.means;
+        let mode = self.modal.motion.means;
         if !matches!(
             mode,
             MotionMode::Rapid | MotionMode::Linear | MotionMode::ArcCw | MotionMode::ArcCcw
@@ -33,7 +33,7 @@ impl Interp {
                 format!("G{} needs G00, G01, G02 or G03 (000 §13.3)", fmt_code(code)),
             ));
         }
-        if self.st.modal.cutter_comp.means != CompSide::Off {
+        if self.modal.cutter_comp.means != CompSide::Off {
             return Err(self.alarm(
                 AlarmKind::ToolOffset,
                 at,
@@ -70,7 +70,7 @@ impl Interp {
             }
             _ => {
                 let ccw = mode == MotionMode::ArcCcw;
-                let (a1, a2, _) = self.st.modal.plane.means.axes();
+                let (a1, a2, _) = self.modal.plane.means.axes();
                 let center =
                     if let Some(r) = self.words.get(b'R') {
                         self.check_range(b'R', r)?;
