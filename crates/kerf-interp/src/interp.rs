@@ -27,6 +27,7 @@ mod config;
 mod corners;
 mod cycles;
 mod cylindrical;
+mod features;
 mod flow;
 mod frames;
 mod hurco;
@@ -113,18 +114,24 @@ pub enum Step {
     Alarm(Alarm),
 }
 
-/// The interpreter.
+/// The interpreter: the coordinator of the owning types below. Each
+/// kind of state has its own type and file (docs/ARCHITECTURE.md,
+/// "kerf-interp").
 pub struct Interp {
     /// The profile and dialect, read once (interp/config.rs).
     cfg: config::Config,
+    /// Operator-panel switches and run options.
     settings: Settings,
     /// Program text, the cursor in it and the loops open
     /// (interp/program.rs).
     prog: program::Program,
     /// The loop guard's counters and budgets (interp/loop_guard.rs).
     guard: loop_guard::LoopGuard,
+    /// The words of the block being executed (words.rs).
     words: Words,
+    /// The block's commands not yet handed out by [`Interp::step`].
     queue: VecDeque<Event>,
+    /// The program has ended or stopped on an alarm.
     finished: bool,
     /// The modal G codes in force, by meaning (interp/modal.rs).
     modal: modal::Modal,
@@ -132,39 +139,23 @@ pub struct Interp {
     frames: frames::Frames,
     /// Tool, spindle, feed and coolant (interp/tool_spindle.rs).
     tool: tool_spindle::ToolSpindle,
+    /// Macro variables (macros.rs).
     vars: Vars,
-    /// Tool offset memory (H/D, lathe X/Z/R/T).
-    pub(crate) offsets: OffsetTable,
-    /// An alarm raised after the current block's commands have run (G27).
-    after_block: Option<Alarm>,
-    /// Program store and call stack (M98/M99, G65, G66).
-    calls: calls::Calls,
-    /// System-variable state (interface signals, D table, clocks …).
+    /// System-variable state (interface signals, D table, clocks …;
+    /// interp/sysvars.rs).
     sys: Box<sysvars::SysState>,
-    /// Calls by G/M/T code (HX PI 85-105); None when not set up.
-    code_calls: Option<Box<calls::CodeCalls>>,
-    /// Canned cycle data and parameters (HX).
-    cyc: cycles::CycleData,
-    /// A move carrying `,C`/`,R`, held until the next move is known; while
-    /// it is held, events are kept back in it (interp/corners.rs).
-    corner: Option<Box<corners::Pending>>,
-    /// Cutter / tool nose radius compensation (interp/comp.rs); None when
-    /// cancelled with nothing held.
-    comp: Option<Box<comp::CompState>>,
-    /// The programmed end point (work) of the compensated moves being
-    /// emitted (`Event::prog`).
-    comp_prog: Option<Pos>,
-    /// G71-G73 with nose radius compensation: the compensated pieces of
-    /// the finishing shape (plane points, the block, and whether it is the block's own path
-    /// rather than a corner piece)
-    /// are kept here instead of emitted (interp/lathe_mrc.rs).
-    comp_capture: Option<Vec<(crate::comp::Seg, SrcRef, bool)>>,
-    /// PUMA lathe cycle data (interp/lathe.rs, interp/lathe_mrc.rs).
-    lathe: lathe::LatheData,
-    /// A tool length offset change in G91: (the block, the change of the
-    /// offset vector), which that block's incremental move adds.
-    tlo_inc: Option<(u64, Pos)>,
-    /// Hurco state: fixture offsets, offset activation, drill cycles,
+    /// Tool offset memory (H/D, lathe X/Z/R/T; offsets.rs).
+    pub(crate) offsets: OffsetTable,
+    /// Program store and call stack (M98/M99, G65, G66; interp/calls.rs).
+    calls: calls::Calls,
+    /// Features every control has: compensation, held corners
+    /// (interp/features.rs).
+    common: features::CommonFeatures,
+    /// The HX's canned cycles and code calls (interp/features.rs).
+    hx: features::HxFeatures,
+    /// The PUMA's lathe cycles and G-code system B (interp/lathe.rs).
+    puma: lathe::PumaFeatures,
+    /// The Hurco's fixture offsets, offset activation, drill cycles,
     /// probe datums (interp/hurco.rs).
     hurco: Box<hurco::HurcoState>,
 }
@@ -183,17 +174,12 @@ impl Interp {
         let modal = modal::Modal::at_power_on(profile, dialect);
         let frames = frames::Frames::power_on(profile);
         let guard = loop_guard::LoopGuard::new(profile, settings.max_blocks);
-        let settings_inputs = settings.inputs;
-        let code_calls = if hx {
-            calls::CodeCalls::from_profile(profile)
-        } else {
-            None
-        };
-        let settings_sb = settings.single_block;
-        let system_b_on =
-            dialect.caps.gcode_system_b && profile.param("gcode_system_b", 0.0) != 0.0;
-        let mut cyc = cycles::CycleData::default();
-        cyc.params = cycles::CycleParams::from_profile(profile);
+        let sys = Box::new(sysvars::SysState::new(
+            settings.inputs,
+            settings.single_block,
+        ));
+        let hx_features = features::HxFeatures::new(profile, dialect);
+        let puma = lathe::PumaFeatures::new(profile, dialect);
         Interp {
             cfg,
             settings,
@@ -207,20 +193,11 @@ impl Interp {
             tool: tool_spindle::ToolSpindle::default(),
             vars: Vars::with_numbering(hx),
             offsets,
-            after_block: None,
+            sys,
             calls: calls::Calls::default(),
-            sys: Box::new(sysvars::SysState::new(settings_inputs, settings_sb)),
-            code_calls,
-            cyc,
-            corner: None,
-            comp: None,
-            comp_prog: None,
-            comp_capture: None,
-            lathe: lathe::LatheData {
-                system_b: system_b_on,
-                ..Default::default()
-            },
-            tlo_inc: None,
+            common: features::CommonFeatures::default(),
+            hx: hx_features,
+            puma,
             hurco,
         }
     }
@@ -336,7 +313,7 @@ impl Interp {
             if let Some(e) = self.queue.pop_front() {
                 return Step::Event(e);
             }
-            if let Some(a) = self.after_block.take() {
+            if let Some(a) = self.common.after_block.take() {
                 self.finished = true;
                 return Step::Alarm(a);
             }
@@ -351,8 +328,7 @@ impl Interp {
                 Err(a) => {
                     self.finished = true;
                     self.queue.clear();
-                    self.corner = None;
-                    self.comp = None;
+                    self.common.drop_held();
                     return Step::Alarm(a);
                 }
             }
@@ -386,10 +362,10 @@ impl Interp {
             src: self.prog.cur,
             tool: self.tool.number,
             cmd,
-            prog: self.comp_prog.map(Box::new),
+            prog: self.common.comp_prog.map(Box::new),
         };
-        match self.corner.as_mut() {
-            None if self.comp.is_none() => self.queue.push_back(e),
+        match self.common.corner.as_mut() {
+            None if self.common.comp.is_none() => self.queue.push_back(e),
             // After a held compensated move: handed out at its corner.
             None => {
                 if let Some(e) = self.comp_hold_event(e) {
@@ -597,7 +573,7 @@ impl Interp {
     /// The end of the program (M02/M30: `code`; 0 the end of the text). A
     /// move still held for its ,C/,R is an alarm.
     fn emit_end(&mut self, code: u32) -> R<()> {
-        if self.corner.is_some() {
+        if self.common.corner.is_some() {
             let what = if code == 0 {
                 "the end of the program".to_string()
             } else {
@@ -605,7 +581,7 @@ impl Interp {
             };
             return Err(self.corner_broken(&what));
         }
-        if self.comp.is_some() {
+        if self.common.comp.is_some() {
             self.comp_finish()?;
         }
         self.emit(Canon::End { code });
@@ -694,7 +670,7 @@ impl Interp {
                 }
             }
         }
-        if self.lathe.system_b {
+        if self.puma.system_b {
             self.system_b_words()?;
         }
         Ok(())
@@ -799,7 +775,7 @@ impl Interp {
 
     #[inline]
     fn execute(&mut self) -> R<bool> {
-        if self.code_calls.is_some() {
+        if self.hx.code_calls.is_some() {
             if let Some(r) = self.code_call()? {
                 return Ok(r);
             }

@@ -64,7 +64,16 @@ pub(super) struct CodeCalls {
 impl CodeCalls {
     /// The table from PI 85-94 (G codes 1-255), PI 95-104 (M codes 1-97
     /// other than M02, M30) and PI 105 (T); None when all are 0.
-    pub(super) fn from_profile(p: &crate::machine::Profile) -> Option<Box<CodeCalls>> {
+    pub(super) fn from_profile(
+        p: &crate::machine::Profile,
+        dialect: &crate::dialect::Dialect,
+    ) -> Option<Box<CodeCalls>> {
+        // The program end codes cannot be made calls.
+        let ends = |m: f64| {
+            dialect
+                .mcode(m as u16)
+                .is_some_and(|c| c.action == crate::dialect::MAction::End)
+        };
         let mut cc = CodeCalls {
             g: Vec::new(),
             m: Vec::new(),
@@ -76,11 +85,17 @@ impl CodeCalls {
                 cc.g.push(((g * 10.0) as u16, 9010 + k));
             }
             let m = p.param(&format!("PI {}", 95 + k), 0.0);
-            if (1.0..=97.0).contains(&m) && m.fract() == 0.0 && m != 2.0 && m != 30.0 {
+            if (1.0..=97.0).contains(&m) && m.fract() == 0.0 && !ends(m) {
                 cc.m.push((m as u32, 9020 + k));
             }
         }
         (cc.t || !cc.g.is_empty() || !cc.m.is_empty()).then(|| Box::new(cc))
+    }
+
+    /// The M codes that call programs: (M code, program number).
+    #[cfg(test)]
+    pub(super) fn m_calls(&self) -> &[(u32, u32)] {
+        &self.m
     }
 }
 
@@ -880,7 +895,7 @@ impl Interp {
     /// True when the block names a G or M code that calls a macro (its
     /// letters are then arguments).
     pub(super) fn code_call_block(&self) -> bool {
-        match &self.code_calls {
+        match &self.hx.code_calls {
             Some(cc) if !self.calls.stack.iter().any(|f| f.by_code) => {
                 self.words
                     .gs()
@@ -901,7 +916,7 @@ impl Interp {
     /// Not made inside a program that a code called.
     #[inline(never)]
     pub(super) fn code_call(&mut self) -> R<Option<bool>> {
-        let Some(cc) = self.code_calls.as_ref() else {
+        let Some(cc) = self.hx.code_calls.as_ref() else {
             return Ok(None);
         };
         if self.calls.stack.iter().any(|f| f.by_code) {

@@ -168,7 +168,7 @@ impl Interp {
     /// Keeps back an event made while a compensated move is held; gives
     /// the event back when nothing is held.
     pub(super) fn comp_hold_event(&mut self, e: Event) -> Option<Event> {
-        match self.comp.as_mut().and_then(|c| c.held.as_mut()) {
+        match self.common.comp.as_mut().and_then(|c| c.held.as_mut()) {
             Some(h) => {
                 h.events.push(e);
                 None
@@ -251,7 +251,7 @@ impl Interp {
             .iter()
             .find(|g| self.gcode(g.0).map(|c| c.means) == Some(Means::OneShot(OneShot::CompCorner)))
             .map(|g| g.1);
-        if self.comp.is_none() {
+        if self.common.comp.is_none() {
             if mode == CompSide::Off {
                 if let Some(at) = g39 {
                     return Err(self.alarm(
@@ -262,11 +262,11 @@ impl Interp {
                 }
                 return Ok(false);
             }
-            self.comp = Some(Box::new(self.comp_new()));
+            self.common.comp = Some(Box::new(self.comp_new()));
         }
         let plane = self.modal.plane.means;
         let (on, cplane) = {
-            let c = self.comp.as_deref().expect("set");
+            let c = self.common.comp.as_deref().expect("set");
             (c.on, c.plane)
         };
         if on && plane != cplane {
@@ -285,7 +285,7 @@ impl Interp {
         // figures).
         if special || setting {
             self.comp_break()?;
-            let c = self.comp.as_deref_mut().expect("set");
+            let c = self.common.comp.as_deref_mut().expect("set");
             if !setting {
                 c.vec = (0.0, 0.0);
                 c.startup = c.on;
@@ -305,7 +305,7 @@ impl Interp {
         };
         self.comp_set_mode(mode, dir);
         if let Some(at) = g39 {
-            let c = self.comp.as_deref().expect("set");
+            let c = self.common.comp.as_deref().expect("set");
             if !c.on || c.held.is_none() || c.held.as_ref().is_some_and(|h| h.startup) {
                 return Err(self.alarm(
                     AlarmKind::CompG39,
@@ -323,7 +323,7 @@ impl Interp {
                 }
             }
             .map(|d| self.xf_dir(d));
-            self.comp.as_deref_mut().expect("set").g39 = Some(dir);
+            self.common.comp.as_deref_mut().expect("set").g39 = Some(dir);
             return Ok(true);
         }
         Ok(false)
@@ -332,15 +332,15 @@ impl Interp {
     /// G40 (`dir`: its I/J/K direction), G41 or G42 in force from now on
     /// (the state exists, or is made for G41/G42).
     pub(super) fn comp_set_mode(&mut self, mode: CompSide, dir: Option<P>) {
-        if self.comp.is_none() {
+        if self.common.comp.is_none() {
             if mode == CompSide::Off {
                 return;
             }
-            self.comp = Some(Box::new(self.comp_new()));
+            self.common.comp = Some(Box::new(self.comp_new()));
         }
         let plane = self.modal.plane.means;
         let (value, tip) = self.comp_value();
-        let c = self.comp.as_deref_mut().expect("set");
+        let c = self.common.comp.as_deref_mut().expect("set");
         match mode {
             CompSide::Left | CompSide::Right => {
                 let side = if mode == CompSide::Left { 1.0 } else { -1.0 };
@@ -364,7 +364,7 @@ impl Interp {
 
     /// The compensation side in force (Off when none is).
     pub(super) fn comp_side(&self) -> CompSide {
-        match self.comp.as_deref() {
+        match self.common.comp.as_deref() {
             Some(c) if c.on => {
                 if c.side > 0.0 {
                     CompSide::Left
@@ -381,7 +381,7 @@ impl Interp {
     /// (the cycle's return to its start point is not compensated).
     pub(super) fn comp_shape_end(&mut self) -> R<()> {
         self.comp_break()?;
-        if let Some(c) = self.comp.as_deref_mut() {
+        if let Some(c) = self.common.comp.as_deref_mut() {
             c.vec = (0.0, 0.0);
             c.startup = c.on;
         }
@@ -461,7 +461,7 @@ impl Interp {
     /// The block's move in compensation (offset mode, or a held move or
     /// vector left over).
     pub(super) fn comp_motion(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<()> {
-        if self.corner.is_some() {
+        if self.common.corner.is_some() {
             // A ,C/,R move held before the compensation started.
             return Err(self.corner_broken("a cutter compensation start-up (G41/G42)"));
         }
@@ -475,7 +475,7 @@ impl Interp {
         ) {
             // G33 and the like: uncompensated, the look-ahead broken.
             self.comp_break()?;
-            let c = self.comp.as_deref_mut().expect("comp");
+            let c = self.common.comp.as_deref_mut().expect("comp");
             c.vec = (0.0, 0.0);
             c.startup = c.on;
             return self.plain_motion(mode, tw, any, at);
@@ -523,7 +523,7 @@ impl Interp {
         };
         // ,C/,R on this block: a cutting move in the plane alone.
         let off_plane = (0..NAXES).any(|i| i != a1 && i != a2 && (tw[i] - cur[i]).abs() > 1e-9);
-        let on_now = self.comp.as_deref().is_some_and(|c| c.on);
+        let on_now = self.common.comp.as_deref().is_some_and(|c| c.on);
         let corner = match word {
             None => None,
             Some((_, w)) if mode == MotionMode::Rapid => {
@@ -569,7 +569,7 @@ impl Interp {
     /// from the old vector to the new one). Marks the block as moved.
     fn comp_refresh(&mut self) {
         let (value, vtip) = self.comp_value();
-        let c = self.comp.as_deref_mut().expect("comp");
+        let c = self.common.comp.as_deref_mut().expect("comp");
         if c.on {
             c.r = c.side * value;
             c.tip = if value < 0.0 { (0.0, 0.0) } else { vtip };
@@ -625,7 +625,7 @@ impl Interp {
         let arc = matches!(mode, MotionMode::ArcCw | MotionMode::ArcCcw);
         let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
         self.comp_refresh();
-        let c = self.comp.as_deref_mut().expect("comp");
+        let c = self.common.comp.as_deref_mut().expect("comp");
         let (on, r, tip, vec, startup, type_b) = (c.on, c.r, c.tip, c.vec, c.startup, c.type_b);
         // A mirror image on one axis of the plane reverses the path's
         // turning sense: the offset goes to the other side of travel
@@ -661,12 +661,12 @@ impl Interp {
                 Some(h) => self.comp_cancel_held(h, ij, &seg, type_b)?,
                 None => padd(s, vec),
             };
-            if let Some(cap) = self.comp_capture.as_mut() {
+            if let Some(cap) = self.common.comp_capture.as_mut() {
                 if comp::dist(base, e) >= comp::EPS {
                     cap.push((Seg::Line { a: base, b: e }, motion, true));
                 }
                 self.place_at(&tw);
-                self.comp = None;
+                self.common.comp = None;
                 return Ok(());
             }
             let start = self.offset_to_machine(&self.plane_pt(cur_t, base));
@@ -676,7 +676,7 @@ impl Interp {
                 self.place_machine(prog);
             }
             r?;
-            self.comp = None;
+            self.common.comp = None;
             return Ok(());
         }
         // The offset at this block's start must exist (an inside arc
@@ -697,7 +697,7 @@ impl Interp {
             psub(padd(s, vec), tip)
         };
         let src = self.prog.cur;
-        let c = self.comp.as_deref_mut().expect("comp");
+        let c = self.common.comp.as_deref_mut().expect("comp");
         c.startup = false;
         c.vec = (0.0, 0.0);
         let events = std::mem::take(&mut c.spare);
@@ -860,7 +860,7 @@ impl Interp {
     /// held it is kept back and takes the corner's plane point; otherwise
     /// it moves at the vector in force.
     fn comp_offplane(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<()> {
-        let c = self.comp.as_deref().expect("comp");
+        let c = self.common.comp.as_deref().expect("comp");
         if let Some(hc) = c.held.as_ref().and_then(|h| h.corner.as_ref()) {
             let k = if hc.chamfer { 'C' } else { 'R' };
             return Err(AlarmKind::CornerNoMove.at(
@@ -879,7 +879,7 @@ impl Interp {
         let p = padd((cur_t[a1], cur_t[a2]), vec);
         let start = self.offset_to_machine(&self.plane_pt(cur_t, p));
         let prog = self.place_machine(start);
-        self.comp_prog = Some(self.work_of(&self.to_machine(&tw)));
+        self.common.comp_prog = Some(self.work_of(&self.to_machine(&tw)));
         // The vector is in the transformed plane: the target back in
         // program coordinates for the move.
         let target = self.plane_pt(tw_t, p);
@@ -889,7 +889,7 @@ impl Interp {
             target
         };
         let r = self.plain_motion(mode, target, any, at);
-        self.comp_prog = None;
+        self.common.comp_prog = None;
         if r.is_ok() {
             self.place_at(&tw);
         } else {
@@ -901,7 +901,7 @@ impl Interp {
     /// Ends a held move on the vector perpendicular to its end (the
     /// look-ahead broken); the vector stays in force.
     pub(super) fn comp_break(&mut self) -> R<()> {
-        let Some(c) = self.comp.as_deref_mut() else {
+        let Some(c) = self.common.comp.as_deref_mut() else {
             return Ok(());
         };
         let Some(mut h) = c.held.take() else {
@@ -919,14 +919,14 @@ impl Interp {
         let (a1, a2, _) = self.modal.plane.means.axes();
         let vec = psub(padd(end1, h.tip), (h.end[a1], h.end[a2]));
         self.comp_flush(&mut h, &Join::at(end1))?;
-        self.comp.as_deref_mut().expect("comp").vec = vec;
+        self.common.comp.as_deref_mut().expect("comp").vec = vec;
         Ok(())
     }
 
     /// End of a block: blocks without a move in the plane count towards
     /// the look-ahead limit; a state with nothing left is dropped.
     pub(super) fn comp_block_end(&mut self) -> R<()> {
-        let Some(c) = self.comp.as_deref_mut() else {
+        let Some(c) = self.common.comp.as_deref_mut() else {
             return Ok(());
         };
         if c.moved {
@@ -938,9 +938,9 @@ impl Interp {
                 self.comp_break()?;
             }
         }
-        let c = self.comp.as_deref().expect("comp");
+        let c = self.common.comp.as_deref().expect("comp");
         if !c.on && c.held.is_none() && c.vec == (0.0, 0.0) {
-            self.comp = None;
+            self.common.comp = None;
         }
         Ok(())
     }
@@ -950,7 +950,7 @@ impl Interp {
     /// perpendicular vector.
     pub(super) fn comp_finish(&mut self) -> R<()> {
         self.comp_break()?;
-        self.comp = None;
+        self.common.comp = None;
         Ok(())
     }
 
@@ -985,11 +985,11 @@ impl Interp {
         let mut events = std::mem::take(&mut h.events);
         let r = self.comp_emit(h, j, base, &mut events);
         self.frames.xf = xf;
-        self.comp_prog = None;
+        self.common.comp_prog = None;
         self.prog.cur = here;
         self.place_machine(prog);
         events.clear();
-        if let Some(c) = self.comp.as_deref_mut() {
+        if let Some(c) = self.common.comp.as_deref_mut() {
             if c.spare.capacity() < events.capacity() {
                 c.spare = events;
             }
@@ -1014,7 +1014,7 @@ impl Interp {
                 "interference: the compensated move would run against the programmed direction (gouge)",
             ));
         }
-        if let Some(cap) = self.comp_capture.as_mut() {
+        if let Some(cap) = self.common.comp_capture.as_mut() {
             // The G71-G73 tip path: the pieces are kept, nothing emitted.
             let (a, b) = (padd(h.cstart, h.tip), padd(j.end1, h.tip));
             match h.seg {
@@ -1058,7 +1058,7 @@ impl Interp {
         let s = self.plane_pt(h.start, padd(h.cstart, h.tip));
         let e = self.plane_pt(h.end, padd(j.end1, h.tip));
         self.place_at(&s);
-        self.comp_prog = Some(self.work_of(&self.to_machine(&h.end)));
+        self.common.comp_prog = Some(self.work_of(&self.to_machine(&h.end)));
         let feed = |me: &Self| match h.speed {
             Speed::Feed(f) => Ok(f),
             _ => me.feed(0),
@@ -1081,7 +1081,7 @@ impl Interp {
         }
         let mut prev = j.end1;
         let corner = self.plane_pt(base, h.seg.end());
-        self.comp_prog = Some(self.work_of(&self.to_machine(&corner)));
+        self.common.comp_prog = Some(self.work_of(&self.to_machine(&corner)));
         for p in j.pieces() {
             match *p {
                 Piece::Line(q) => {

@@ -75,7 +75,7 @@ impl Interp {
             mode,
             MotionMode::Linear | MotionMode::ArcCw | MotionMode::ArcCcw
         );
-        if self.corner.is_some() {
+        if self.common.corner.is_some() {
             if !cutting {
                 let what = format!("G{}", fmt_code(self.modal.motion.code10));
                 return Err(self.corner_broken(&what));
@@ -119,7 +119,7 @@ impl Interp {
         at: u32,
         word: Option<(bool, WVal)>,
     ) -> R<()> {
-        let Some(p) = self.corner.as_deref() else {
+        let Some(p) = self.common.corner.as_deref() else {
             return self.plain_motion(mode, tw, any, at);
         };
         if p.plane != self.modal.plane.means {
@@ -136,7 +136,7 @@ impl Interp {
         let Some(seg2) = self.plane_path(mode, tw, any, at)? else {
             return Err(self.corner_broken("a block that does not move in the plane alone"));
         };
-        let Some(p) = self.corner.take() else {
+        let Some(p) = self.common.corner.take() else {
             return self.plain_motion(mode, tw, any, at);
         };
         let found = if p.chamfer {
@@ -220,7 +220,7 @@ impl Interp {
         };
         // The next block reads from the virtual corner.
         self.place_at(&tw);
-        self.corner = Some(Box::new(pending));
+        self.common.corner = Some(Box::new(pending));
         Ok(())
     }
 
@@ -313,7 +313,7 @@ impl Interp {
                 None => return Ok(()),
             }
         };
-        if self.corner.is_some() {
+        if self.common.corner.is_some() {
             return Err(self.corner_broken(&what));
         }
         match self.words.corner() {
@@ -325,7 +325,7 @@ impl Interp {
     /// An alarm when a move is held: `what` (a call, a return) cannot come
     /// before the next move.
     pub(super) fn corner_open(&self, what: &str) -> R<()> {
-        if self.corner.is_some() {
+        if self.common.corner.is_some() {
             return Err(self.corner_broken(what));
         }
         Ok(())
@@ -334,7 +334,7 @@ impl Interp {
     /// The alarm for a held move not followed by a move in its plane: at
     /// its `,C`/`,R` word.
     pub(super) fn corner_broken(&self, what: &str) -> Alarm {
-        let Some(p) = self.corner.as_deref() else {
+        let Some(p) = self.common.corner.as_deref() else {
             return self.alarm(AlarmKind::CornerNoMove, 0, what);
         };
         AlarmKind::CornerNoMove.at(

@@ -135,7 +135,7 @@ impl Interp {
         }
         if self.modal.cycle.means.is_none() {
             if was_cycle {
-                self.cyc.clear();
+                self.hx.cyc.clear();
             }
             return Ok(false);
         }
@@ -167,7 +167,7 @@ impl Interp {
                     format!("canned cycle Q must be positive (Q{})", fmt_num(w.v)),
                 ));
             }
-            self.cyc.q = Some(v);
+            self.hx.cyc.q = Some(v);
         }
         if let Some(w) = self.words.get(b'P') {
             if w.point || w.v < 0.0 {
@@ -177,14 +177,14 @@ impl Interp {
                     "canned cycle dwell P is in milliseconds, positive, without a decimal point",
                 ));
             }
-            self.cyc.p = Some(w.v / 1000.0);
+            self.hx.cyc.p = Some(w.v / 1000.0);
         }
         if kind.shifts() {
             let (l1, l2) = (b"IJK"[a1], b"IJK"[a2]);
             let (w1, w2) = (self.words.get(l1), self.words.get(l2));
             if w1.is_some() || w2.is_some() {
                 let v = |me: &Self, w: Option<WVal>| w.map(|w| me.linear(w)).unwrap_or(0.0);
-                self.cyc.ij = Some((v(self, w1), v(self, w2)));
+                self.hx.cyc.ij = Some((v(self, w1), v(self, w2)));
             }
         }
         Ok(())
@@ -217,8 +217,8 @@ impl Interp {
             ));
         }
         let cur = self.prog_pos();
-        if entered || self.cyc.initial.is_none() {
-            self.cyc.initial = Some(cur[n]);
+        if entered || self.hx.cyc.initial.is_none() {
+            self.hx.cyc.initial = Some(cur[n]);
         }
         // An M98/M99 block is a call or return: its P (and HX Q/R sequence
         // numbers) are not cycle data, and it drills nothing.
@@ -231,21 +231,21 @@ impl Interp {
         if transfer {
             return Ok(());
         }
-        let initial = self.cyc.initial.unwrap_or(cur[n]);
+        let initial = self.hx.cyc.initial.unwrap_or(cur[n]);
         let abs = self.modal.absolute();
         // Data words: R, the depth (the drilling axis's address), Q, P, I/J.
         if let Some(w) = self.words.get(b'R') {
             let v = self.linear(w);
-            self.cyc.r = Some(if abs { v } else { initial + v });
+            self.hx.cyc.r = Some(if abs { v } else { initial + v });
         }
         let dl = ax_letter(drill_ax);
         if let Some(w) = self.words.get(dl) {
             let v = self.axis_value(drill_ax, w);
-            self.cyc.z =
+            self.hx.cyc.z =
                 Some(if abs {
                     v
                 } else {
-                    match self.cyc.r {
+                    match self.hx.cyc.r {
                         Some(r) => r + v,
                         None => return Err(self.alarm(
                             AlarmKind::MissingArgument,
@@ -310,7 +310,7 @@ impl Interp {
         let (kind, code) = cycle;
         // Only alarms need the name: built on demand, not for every hole.
         let name = || format!("G{}", fmt_code(code));
-        let Some(z) = self.cyc.z else {
+        let Some(z) = self.hx.cyc.z else {
             return Err(self.alarm(
                 AlarmKind::MissingArgument,
                 at,
@@ -321,7 +321,7 @@ impl Interp {
                 ),
             ));
         };
-        let Some(r) = self.cyc.r else {
+        let Some(r) = self.hx.cyc.r else {
             return Err(self.alarm(
                 AlarmKind::MissingArgument,
                 at,
@@ -329,7 +329,7 @@ impl Interp {
             ));
         };
         let peck = kind.pecks();
-        let q = match self.cyc.q {
+        let q = match self.hx.cyc.q {
             Some(q) => q,
             None if peck => {
                 return Err(self.alarm(
@@ -371,7 +371,7 @@ impl Interp {
         let mut shift = [0.0; NAXES];
         if kind.shifts() {
             let (a1, a2, _) = self.modal.plane.means.axes();
-            match self.cyc.ij {
+            match self.hx.cyc.ij {
                 Some((i, j)) => {
                     shift[a1] = i;
                     shift[a2] = j;
@@ -379,7 +379,7 @@ impl Interp {
                 None => {
                     // PI 70 / PI 71 as Fanuc's RD1 / RD2: 00 +first axis,
                     // 01 (PI 70 = 1) -first, 10 (PI 71 = 1) +second, 11 -second.
-                    let (rd1, rd2) = self.cyc.params.shift_bits;
+                    let (rd1, rd2) = self.hx.cyc.params.shift_bits;
                     let sign = if rd1 { -1.0 } else { 1.0 };
                     shift[if rd2 { a2 } else { a1 }] = sign * q;
                 }
@@ -393,7 +393,7 @@ impl Interp {
             z,
             ret: if g99 { r } else { initial },
             q,
-            dwell: self.cyc.p.unwrap_or(0.0),
+            dwell: self.hx.cyc.p.unwrap_or(0.0),
             shift,
             at,
         })
@@ -432,7 +432,7 @@ impl Interp {
             let mut mid = p;
             let mut any = false;
             for i in 0..NAXES {
-                let o = self.cyc.params.overrun[i];
+                let o = self.hx.cyc.params.overrun[i];
                 if Some(i) != skip && (p[i] - cur[i]).abs() > 1e-9 && o != 0.0 {
                     // Sign = approach direction: stop short (or beyond) by
                     // the overrun, then approach in that direction.
@@ -607,7 +607,7 @@ impl Interp {
             Some(s) if n < 3 => s.factor[n].abs(),
             _ => 1.0,
         };
-        let (q, d) = (h.q / f, self.cyc.params.d / f);
+        let (q, d) = (h.q / f, self.hx.cyc.params.d / f);
         let mut done = 0.0f64;
         while total - done > 1e-9 {
             let prev = done;

@@ -35,7 +35,7 @@ impl Interp {
     /// The base for the incremental words of the block after a chamfer
     /// block: the corner B rather than the tool's C′ (001 note 2).
     pub(super) fn ddi_target(&mut self) -> R<(Pos, bool)> {
-        match self.lathe.ddi_base.take() {
+        match self.puma.ddi_base.take() {
             None => self.target(),
             Some(b) => {
                 let b = self.to_machine(&b);
@@ -102,7 +102,7 @@ impl Interp {
         }
         let (s, c) = self.ddi_next_move(tw, along_z, (l, w), len)?;
         self.ddi_corner((cur, tw), along_z, (len, s, c), l == b'R', at)?;
-        self.lathe.ddi_base = Some(tw);
+        self.puma.ddi_base = Some(tw);
         Ok(())
     }
 
@@ -252,14 +252,14 @@ impl Interp {
             to: zx(to),
             arc: arc.map(|(c, ccw)| (zx(&c), ccw)),
         };
-        if self.comp.is_some() {
+        if self.common.comp.is_some() {
             let src = self.src_here(at);
             let sp = motion::Speed::Feed(feed);
             self.comp_shape_seg(&piece(&cur, &pre, None), false, sp, at, src)?;
         } else {
             self.line_to(pre, motion::Speed::Feed(feed), at)?;
         }
-        if self.comp.is_some() {
+        if self.common.comp.is_some() {
             let src = self.src_here(at);
             let sp = motion::Speed::Feed(feed);
             self.comp_shape_seg(&piece(&pre, &post, arc), false, sp, at, src)?;

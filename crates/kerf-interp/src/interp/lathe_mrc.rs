@@ -82,23 +82,23 @@ impl Interp {
             RoughTurn | RoughFace => {
                 let l = if kind == RoughTurn { b'U' } else { b'W' };
                 if let Some(d) = self.positive(l, "depth of cut Δd")? {
-                    self.lathe.mrc.depth = Some(d);
+                    self.puma.mrc.depth = Some(d);
                 }
                 if let Some(w) = self.words.get(b'R') {
-                    self.lathe.mrc.escape = Some(self.linear(w).abs());
+                    self.puma.mrc.escape = Some(self.linear(w).abs());
                 }
             }
             _ => {
-                let (mut i, mut k) = self.lathe.mrc.relief.unwrap_or((None, None));
+                let (mut i, mut k) = self.puma.mrc.relief.unwrap_or((None, None));
                 if let Some(w) = self.words.get(b'U') {
                     i = Some(self.linear(w));
                 }
                 if let Some(w) = self.words.get(b'W') {
                     k = Some(self.linear(w));
                 }
-                self.lathe.mrc.relief = Some((i, k));
+                self.puma.mrc.relief = Some((i, k));
                 if let Some(w) = self.words.get(b'R') {
-                    self.lathe.mrc.divisions = Some(self.mrc_divisions(w, "G73 R")?);
+                    self.puma.mrc.divisions = Some(self.mrc_divisions(w, "G73 R")?);
                 }
             }
         }
@@ -170,12 +170,12 @@ impl Interp {
             RoughTurn | RoughFace => {
                 let r = turning::Rough {
                     depth: self
-                        .lathe
+                        .puma
                         .mrc
                         .depth
                         .unwrap_or_else(|| self.mrc_param(5132, 1.0)),
                     escape: self
-                        .lathe
+                        .puma
                         .mrc
                         .escape
                         .unwrap_or_else(|| self.mrc_param(5133, 0.5)),
@@ -219,13 +219,13 @@ impl Interp {
     ) -> Result<(), turning::CycleError> {
         let (start, segs) = shape;
         let (du, dw) = allow;
-        let (i, k) = self.lathe.mrc.relief.unwrap_or((None, None));
+        let (i, k) = self.puma.mrc.relief.unwrap_or((None, None));
         let relief = turning::p(
             i.unwrap_or_else(|| self.mrc_param(5135, 0.0)),
             k.unwrap_or_else(|| self.mrc_param(5136, 0.0)),
         );
         let d = self
-            .lathe
+            .puma
             .mrc
             .divisions
             .unwrap_or_else(|| self.mrc_param(5137, 1.0) as u32);
@@ -255,7 +255,7 @@ impl Interp {
             }
         }
         if kind == Pattern {
-            let (mut i, mut k) = self.lathe.mrc.relief.unwrap_or((None, None));
+            let (mut i, mut k) = self.puma.mrc.relief.unwrap_or((None, None));
             if let Some(w) = self.words.get(b'I') {
                 i = Some(self.linear(w));
             }
@@ -263,14 +263,14 @@ impl Interp {
                 k = Some(self.linear(w));
             }
             if i.is_some() || k.is_some() {
-                self.lathe.mrc.relief = Some((i, k));
+                self.puma.mrc.relief = Some((i, k));
             }
             if let Some(w) = self.words.get(b'D') {
-                self.lathe.mrc.divisions = Some(self.mrc_divisions(w, "G73 D")?);
+                self.puma.mrc.divisions = Some(self.mrc_divisions(w, "G73 D")?);
             }
         } else if kind != Finish {
             if let Some(d) = self.positive(b'D', "depth of cut Δd")? {
-                self.lathe.mrc.depth = Some(d);
+                self.puma.mrc.depth = Some(d);
             }
         }
         Ok(())
@@ -311,15 +311,15 @@ impl Interp {
         if before == CompSide::Off && !s.comp_on {
             return Ok(None);
         }
-        let saved = self.comp.take();
+        let saved = self.common.comp.take();
         let pos = self.frames.mover.pos();
         if before != CompSide::Off {
             self.comp_set_mode(before, None);
         }
-        self.comp_capture = Some(Vec::with_capacity(2 * s.segs.len() + 4));
+        self.common.comp_capture = Some(Vec::with_capacity(2 * s.segs.len() + 4));
         let r = self.shape_run(a, s, at, false);
-        let cap = self.comp_capture.take().unwrap_or_default();
-        self.comp = saved;
+        let cap = self.common.comp_capture.take().unwrap_or_default();
+        self.common.comp = saved;
         self.place_machine(pos);
         r?;
         let zx = |q: (f64, f64)| turning::p(q.1, q.0);
@@ -395,7 +395,7 @@ impl Interp {
                 self.g70_speed(sp.unwrap_or(s0));
             }
             let feed = self.shape_feed(f);
-            if self.comp.is_some() {
+            if self.common.comp.is_some() {
                 let speed = match (rapid, feed) {
                     (true, _) => motion::Speed::Rapid,
                     (false, Some(f)) => motion::Speed::Feed(f),
@@ -420,7 +420,7 @@ impl Interp {
                         ccw,
                     },
                 };
-                if let Some(cap) = self.comp_capture.as_mut() {
+                if let Some(cap) = self.common.comp_capture.as_mut() {
                     cap.push((cs, src, true));
                 }
                 self.place_at(&self.zx_full(seg.to));
@@ -502,7 +502,7 @@ impl Interp {
                 return Err(self.unused_word(l, w.at, "the block with the end point X/Z"));
             }
             if let Some(w) = self.words.get(b'R') {
-                self.lathe.mrc.peck_escape = Some(self.linear(w).abs());
+                self.puma.mrc.peck_escape = Some(self.linear(w).abs());
             }
             return Ok(());
         }
@@ -531,7 +531,7 @@ impl Interp {
         let (shift, peck) = (shift.unwrap_or(0.0), peck.unwrap_or(0.0));
         let relief = self.words.get(ld).map(|w| self.linear(w)).unwrap_or(0.0);
         let escape = self
-            .lathe
+            .puma
             .mrc
             .peck_escape
             .unwrap_or_else(|| self.mrc_param(5139, 0.1));
@@ -586,10 +586,10 @@ impl Interp {
         if let Some(a) = self.words.get(b'A') {
             let v = a.v;
             *ang = v;
-            if let Some((m, r, _)) = self.lathe.mrc.thread_p {
-                self.lathe.mrc.thread_p = Some((m, r, v));
+            if let Some((m, r, _)) = self.puma.mrc.thread_p {
+                self.puma.mrc.thread_p = Some((m, r, v));
             } else {
-                self.lathe.mrc.thread_p = Some((
+                self.puma.mrc.thread_p = Some((
                     self.mrc_param(5142, 1.0) as u32,
                     self.mrc_param(5130, 10.0) as u32,
                     v,
@@ -736,13 +736,13 @@ impl Interp {
                     ));
                 }
                 let v = w.v as u32;
-                self.lathe.mrc.thread_p = Some((v / 10000, (v / 100) % 100, (v % 100) as f64));
+                self.puma.mrc.thread_p = Some((v / 10000, (v / 100) % 100, (v % 100) as f64));
             }
             if let Some(w) = self.words.get(b'Q') {
-                self.lathe.mrc.min_depth = Some(self.linear(w).abs());
+                self.puma.mrc.min_depth = Some(self.linear(w).abs());
             }
             if let Some(w) = self.words.get(b'R') {
-                self.lathe.mrc.allowance = Some(self.linear(w).abs());
+                self.puma.mrc.allowance = Some(self.linear(w).abs());
             }
             return Ok(());
         }
@@ -759,7 +759,7 @@ impl Interp {
         } else if let Some(w) = self.words.get(b'W') {
             end.z = a.z + self.linear(w);
         }
-        let (m, r, mut ang) = self.lathe.mrc.thread_p.unwrap_or((
+        let (m, r, mut ang) = self.puma.mrc.thread_p.unwrap_or((
             self.mrc_param(5142, 1.0) as u32,
             self.mrc_param(5130, 10.0) as u32,
             self.mrc_param(5143, 60.0),
@@ -795,12 +795,12 @@ impl Interp {
             chamfer: r,
             angle: ang,
             min_depth: self
-                .lathe
+                .puma
                 .mrc
                 .min_depth
                 .unwrap_or_else(|| self.mrc_param(5140, 0.1)),
             allowance: self
-                .lathe
+                .puma
                 .mrc
                 .allowance
                 .unwrap_or_else(|| self.mrc_param(5141, 0.0)),

@@ -61,10 +61,7 @@ impl Interp {
     /// The change of the tool length offset made by this block's
     /// G43/G44/G49/H in G91 on axis slot `i` (0 otherwise).
     fn tlo_change(&self, i: usize) -> f64 {
-        match self.tlo_inc {
-            Some((b, d)) if b == self.guard.blocks => d[i],
-            _ => 0.0,
-        }
+        self.common.tlo_change(self.guard.blocks, i)
     }
 
     /// G16: the plane's first-axis word is a radius, the second an angle
@@ -213,12 +210,15 @@ impl Interp {
         if ddi && mode == MotionMode::Linear && any && self.ddi_words() {
             return self.ddi_motion(tw, at);
         }
-        if self.comp.is_some() {
+        if self.common.comp.is_some() {
             return self.comp_motion(mode, tw, any, at);
         }
         // One test for the look-ahead of ,C/,R (a move held, or this block
         // carries one): interp/corners.rs.
-        if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
+        if self.common.corner.is_some()
+            | self.words.comma_c.is_some()
+            | self.words.comma_r.is_some()
+        {
             return self.corner_motion(mode, tw, any, at);
         }
         self.plain_motion(mode, tw, any, at)
@@ -475,7 +475,7 @@ impl Interp {
             for i in 0..NAXES {
                 d[i] = self.frames.tlo[i] - old[i];
             }
-            self.tlo_inc = Some((self.guard.blocks, d));
+            self.common.set_tlo_change(self.guard.blocks, d);
         }
         Ok(())
     }
@@ -545,7 +545,7 @@ impl Interp {
                     {
                         // The check follows the move: the positioning is
                         // made, then the control alarms.
-                        self.after_block = Some(self.alarm(
+                        self.common.after_block = Some(self.alarm(
                             AlarmKind::ReferenceCheck,
                             at,
                             format!(

@@ -146,7 +146,10 @@ impl Interp {
         let transfer = self.classify_m()?;
         // A held ,C/,R move, or one in this block, cannot be followed by a
         // block that moves otherwise or leaves the program.
-        if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
+        if self.common.corner.is_some()
+            | self.words.comma_c.is_some()
+            | self.words.comma_r.is_some()
+        {
             self.corner_gate(&one_shot[..n_one], transfer.map(|t| t.0))?;
         }
         Ok(Some(BlockRun {
@@ -253,7 +256,7 @@ impl Interp {
                 self.run_m(|m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End))?
             }
             Phase::CompEnd => {
-                if self.comp.is_some() {
+                if self.common.comp.is_some() {
                     self.comp_block_end()?;
                 }
             }
@@ -326,7 +329,7 @@ impl Interp {
         let comp_words = self.words.has(b'D')
             || kinds.any(&[Kind::Plane, Kind::CutterComp])
             || one_shot.iter().any(|g| self.means_of(g.0) == g39);
-        if comp_words || (self.comp.is_some() && (!one_shot.is_empty() || cycle)) {
+        if comp_words || (self.common.comp.is_some() && (!one_shot.is_empty() || cycle)) {
             // The one-shots that move otherwise than by G00-G03.
             let special = cycle
                 || one_shot.iter().any(|g| {

@@ -105,7 +105,7 @@ impl Interp {
             self.probe_path(i, dir, levels, surface, (v, f, tol), at)?;
         let Some(c) = contact else {
             let msg = fault.unwrap_or_default();
-            self.after_block =
+            self.common.after_block =
                 Some(self.alarm(AlarmKind::NoContact, at, format!("G38 S{cycle}: {msg}")));
             return Ok(());
         };

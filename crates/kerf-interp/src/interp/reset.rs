@@ -62,22 +62,21 @@ impl Interp {
         self.tool.reset();
         // Canned-cycle data goes with the cycle mode (G80 is the power-on
         // state); a move held for its ,C/,R is dropped.
-        self.cyc.clear();
+        self.hx.cyc.clear();
         if keep_tlo {
             // The T offset stays active with its number; drill data and an
             // offset change waiting for its move go.
             self.hurco.drill = Default::default();
             self.hurco.pending = None;
         }
-        self.corner = None;
-        self.comp = None;
+        self.common.drop_held();
         // Lathe single-cycle data and M76 go with the modes (the G70-G76
         // first-block values are parameters and stay).
-        self.lathe.single = None;
-        self.lathe.chamfer_on = false;
-        self.lathe.ddi_base = None;
+        self.puma.single = None;
+        self.puma.chamfer_on = false;
+        self.puma.ddi_base = None;
         self.queue.clear();
-        self.after_block = None;
+        self.common.after_block = None;
         self.finished = false;
         self.guard.restart();
         let start = self.prog.program_start;

@@ -44,7 +44,7 @@ impl Interp {
     /// Unlike [`Interp::step`], it returns after each block, also one that
     /// made no command (a modal code alone, a macro statement).
     pub fn step_block(&mut self) -> BlockStep {
-        if let Some(a) = self.after_block.take() {
+        if let Some(a) = self.common.after_block.take() {
             self.finished = true;
             return BlockStep::Alarm(a);
         }
@@ -60,8 +60,8 @@ impl Interp {
             Err(a) => {
                 self.finished = true;
                 self.queue.clear();
-                self.corner = None;
-                self.comp = None;
+                self.common.corner = None;
+                self.common.comp = None;
                 BlockStep::Alarm(a)
             }
         }
@@ -93,7 +93,7 @@ impl Interp {
     /// Whether a move is held for the next block (cutter / nose radius
     /// compensation, `,C`/`,R`): the block's motion is not out yet.
     pub fn holds_motion(&self) -> bool {
-        self.corner.is_some() || self.comp.is_some()
+        self.common.corner.is_some() || self.common.comp.is_some()
     }
 
     /// Where the last block read is: its file id and line, and its depth
@@ -127,7 +127,7 @@ impl Interp {
     /// source references.
     pub fn load_text(&mut self, name: &str, text: &str) {
         self.queue.clear();
-        self.after_block = None;
+        self.common.after_block = None;
         self.finished = false;
         self.prog.tape_started = false;
         self.guard.restart();
@@ -250,8 +250,8 @@ impl Interp {
         }
         InterpSnapshot {
             state: format!("{:?}", (&self.modal, &self.frames, &self.tool)),
-            cycle: format!("{:?}", self.cyc),
-            lathe: format!("{:?}", (self.lathe.single, self.lathe.chamfer_on)),
+            cycle: format!("{:?}", self.hx.cyc),
+            lathe: format!("{:?}", (self.puma.single, self.puma.chamfer_on)),
             vars,
             call_depth: self.calls.stack.len(),
         }

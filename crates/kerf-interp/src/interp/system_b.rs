@@ -20,7 +20,7 @@ use crate::dialect::system_b::{to_a, ABS, INC};
 impl Interp {
     /// Whether the PUMA reads G-code system B (`gcode_system_b = 1`).
     pub(super) fn system_b(&self) -> bool {
-        self.lathe.system_b
+        self.puma.system_b
     }
 
     /// A G word's code as executed: system B translated, the internal

@@ -78,7 +78,7 @@ impl Interp {
         // may change the rotation in offset mode (000 §15.4.2's N1-N8).
         // Scaling is set before G41/G42 and cancelled after G40 (000
         // §15.4.2: G51, G68, G41 … G40, G69, G50).
-        if self.comp.as_deref().is_some_and(|c| c.on())
+        if self.common.comp.as_deref().is_some_and(|c| c.on())
             && self.modal.cutter_comp.means != CompSide::Off
         {
             if let Some((c, at)) = self.block_g(|m| matches!(m, Means::Scaling(_))) {
