@@ -170,7 +170,7 @@ impl Interp {
         let (profile, dialect) = (&cfg.profile, cfg.dialect);
         let hx = dialect.caps.hx_variables;
         let offsets = OffsetTable::new(profile.tools.offsets as usize);
-        let hurco = Self::hurco_state();
+        let hurco = hurco::HurcoState::new();
         let modal = modal::Modal::at_power_on(profile, dialect);
         let frames = frames::Frames::power_on(profile);
         let guard = loop_guard::LoopGuard::new(profile, settings.max_blocks);
@@ -633,8 +633,8 @@ impl Interp {
                             format!("G{} is not a G code of this control", fmt_num(v)),
                         ));
                     }
-                    self.words.g[self.words.ng] = (self.g_of_system(c10 as u16, w.at)?, w.at);
-                    self.words.ng += 1;
+                    let g = self.g_of_system(c10 as u16, w.at)?;
+                    self.words.push_g(g, w.at);
                 }
                 Addr::L(b'M') => {
                     let max_m = self.cfg.dialect.caps.max_m_per_block;
@@ -652,8 +652,7 @@ impl Interp {
                             format!("M{} is not an M code of this control", fmt_num(v)),
                         ));
                     }
-                    self.words.m[self.words.nm] = (v as u32, w.at);
-                    self.words.nm += 1;
+                    self.words.push_m(v as u32, w.at, max_m);
                 }
                 Addr::L(l) => self.collect_letter(l, wv)?,
                 Addr::Comma(c) => self.collect_comma(c, wv)?,
@@ -687,7 +686,9 @@ impl Interp {
             ));
         }
         if let Some(ax) = Axis::from_letter(l) {
-            if !self.cfg.has_axis[ax as usize] && !self.letter_is_argument(l) && !self.macro_args()
+            if !self.cfg.has_axis[ax as usize]
+                && !self.cfg.letter_is_argument(l)
+                && !self.macro_args()
             {
                 return Err(self.alarm(
                     AlarmKind::NoSuchAxis,
@@ -763,12 +764,6 @@ impl Interp {
     fn macro_args(&self) -> bool {
         let [call, modal_call] = self.cfg.dialect.macro_calls;
         self.words.has_g(call) || self.words.has_g(modal_call) || self.code_call_block()
-    }
-
-    /// Letters that name an axis but are arguments of a code on machines
-    /// without that axis (a lathe's C as a chamfer, B in some cycles …).
-    fn letter_is_argument(&self, l: u8) -> bool {
-        self.cfg.profile.kind == MachineKind::Lathe && matches!(l, b'C' | b'A' | b'B')
     }
 
     // ---- execution ---------------------------------------------------------

@@ -196,7 +196,7 @@ impl Interp {
         Ok(())
     }
 
-    /// The lathe tool offset selected by the T code (`st.offset`, 0 =
+    /// The lathe tool offset selected by the T code (`tool.offset`, 0 =
     /// cancel) as the tool offset vector: X (radius) and Z, geometry +
     /// wear. The path shifts by it from the next move on (the T code
     /// itself moves nothing; in a block with a move, that move carries

@@ -86,7 +86,7 @@ pub(super) struct CompPath {
     pub(super) motion: SrcRef,
 }
 
-/// Compensation state; `Interp::comp` is None when compensation is
+/// Compensation state; `CommonFeatures::comp` is None when compensation is
 /// cancelled and nothing is left over (so plain programs pay one test).
 pub(crate) struct CompState {
     /// G41/G42 in force.

@@ -96,6 +96,12 @@ impl Config {
         }
     }
 
+    /// Letters that name an axis but are arguments of a code on machines
+    /// without that axis (a lathe's C as a chamfer, B in some cycles …).
+    pub(super) fn letter_is_argument(&self, l: u8) -> bool {
+        self.profile.kind == crate::machine::MachineKind::Lathe && matches!(l, b'C' | b'A' | b'B')
+    }
+
     /// Whether the dialect accepts address letter `l` (an upper-case
     /// ASCII letter).
     #[inline]
@@ -178,6 +184,17 @@ mod tests {
             // Every control has X, F, G and M.
             assert!([b'X', b'F', b'G', b'M'].iter().all(|&l| c.letter_ok(l)));
         }
+    }
+
+    #[test]
+    fn a_lathes_a_b_c_are_arguments_a_mills_are_axes() {
+        let lathe = cfg("puma-lathe");
+        assert!([b'A', b'B', b'C']
+            .iter()
+            .all(|&l| lathe.letter_is_argument(l)));
+        assert!(!lathe.letter_is_argument(b'X') && !lathe.letter_is_argument(b'Y'));
+        let mc = cfg("hx-mc");
+        assert!(![b'A', b'B', b'C'].iter().any(|&l| mc.letter_is_argument(l)));
     }
 
     #[test]

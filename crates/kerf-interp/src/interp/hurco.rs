@@ -31,16 +31,19 @@ pub(crate) struct HurcoState {
     pub datum: [Option<f64>; 4],
 }
 
-impl Interp {
-    /// The Hurco state (E1 active: the profile's part zero, which the
-    /// work offset table holds).
-    pub(super) fn hurco_state() -> Box<HurcoState> {
+impl HurcoState {
+    /// The Hurco state at power-on: E1 active (the profile's part zero,
+    /// which the work offset table holds), no offset change waiting, no
+    /// drill data, no datums.
+    pub(super) fn new() -> Box<HurcoState> {
         Box::new(HurcoState {
             fixture: 1,
             ..Default::default()
         })
     }
+}
 
+impl Interp {
     /// Fixture offset `n` (machine coordinates of its part zero, mm).
     pub fn fixture_offset(&self, n: u32) -> Pos {
         self.frames.work.get(WorkId::Fixture(n))
@@ -397,5 +400,20 @@ impl Interp {
         })?;
         self.run_m(|m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End))?;
         Ok(!self.finished_by_end())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 002: the part zero E1 is active at power-on; nothing waits for a
+    /// move and no probe datum is set.
+    #[test]
+    fn power_on_has_e1_active_and_nothing_pending() {
+        let h = HurcoState::new();
+        assert_eq!(h.fixture, 1);
+        assert!(h.pending.is_none() && h.css_r.is_none() && h.g33_lead.is_none());
+        assert_eq!(h.datum, [None; 4]);
     }
 }
