@@ -450,7 +450,12 @@ impl Interp {
     /// G60 as a positioning block (000 §4.2): a one-shot rapid through the
     /// overrun point of every moving axis.
     pub(super) fn g60(&mut self, at: u32) -> R<()> {
-        if let Some(&(c, c_at)) = self.words.gs().iter().find(|g| matches!(g.0, 10 | 20 | 30)) {
+        use crate::dialect::meaning::MotionMode::{ArcCcw, ArcCw, Linear};
+        let feed_move = |g: &&(u16, u32)| {
+            self.gcode(g.0)
+                .is_some_and(|c| matches!(c.means, Means::Motion(Linear | ArcCw | ArcCcw)))
+        };
+        if let Some(&(c, c_at)) = self.words.gs().iter().find(feed_move) {
             return Err(self.alarm(
                 AlarmKind::CannedCycle,
                 c_at,

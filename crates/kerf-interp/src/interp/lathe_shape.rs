@@ -113,9 +113,10 @@ impl Interp {
     }
 
     fn read_shape_blocks(&mut self, ns: u32, nf: u32) -> Result<Shape, ShapeErr> {
+        use MotionMode::{ArcCcw, ArcCw, Linear, Rapid};
         let a = self.zx_pos();
         let mut cur = a;
-        let mut mode: Option<u16> = None;
+        let mut mode: Option<MotionMode> = None;
         let mut feed: Option<f64> = None;
         let mut speed: Option<f64> = None;
         let mut shape = Shape::empty(a, self.prog.cur);
@@ -151,18 +152,7 @@ impl Interp {
             let first = mode.is_none();
             let blk_mode = self.shape_block_codes(&mut comp_pending, &mut shape.comp_on)?;
             if first {
-                match blk_mode {
-                    Some(0 | 10) => {}
-                    _ => {
-                        return Err(ShapeErr::Here(self.alarm(
-                            AlarmKind::MrcFirstBlock,
-                            blk_mode.map(|_| self.words.gs()[0].1).unwrap_or(0),
-                            format!(
-                                "the first block N{ns} of the finishing shape has no G00 or G01"
-                            ),
-                        )))
-                    }
-                }
+                self.shape_first_mode(ns, blk_mode)?;
             }
             if let Some(m) = blk_mode {
                 mode = Some(m);
@@ -175,7 +165,7 @@ impl Interp {
                 speed = Some(w.v);
             }
             let (t, hx, hz) = self.shape_end_point(cur)?;
-            if m == 10 {
+            if m == Linear {
                 let here = (is_last, first, shape.segs.len(), count);
                 if let Some(c) = self.shape_corner_word(nf, here)? {
                     corners.push(c);
@@ -194,15 +184,15 @@ impl Interp {
                 shape.start = t;
                 shape.ns_x = hx;
                 shape.ns_z = hz;
-                shape.ns_rapid = m == 0;
+                shape.ns_rapid = m == Rapid;
                 shape.ns_feed = feed;
                 shape.ns_speed = speed;
             } else if hx
                 || hz
-                || matches!(m, 20 | 30) && self.words.has(b'I') | self.words.has(b'K')
+                || matches!(m, ArcCw | ArcCcw) && self.words.has(b'I') | self.words.has(b'K')
             {
-                let arc = if matches!(m, 20 | 30) {
-                    let ccw = m == 30;
+                let arc = if matches!(m, ArcCw | ArcCcw) {
+                    let ccw = m == ArcCcw;
                     let c = self.shape_arc_center(cur, t, ccw).map_err(ShapeErr::Here)?;
                     Some((c, ccw))
                 } else {
@@ -214,7 +204,7 @@ impl Interp {
                         to: t,
                         arc,
                     });
-                    shape.modes.push((m == 0, feed));
+                    shape.modes.push((m == Rapid, feed));
                     shape.speeds.push(speed);
                     shape.comps.push(comp_pending.take());
                     shape.srcs.push(blk_src);
@@ -270,6 +260,18 @@ impl Interp {
         Ok((nwords, skip))
     }
 
+    /// The first block of the finishing shape N(ns) must be G00 or G01.
+    fn shape_first_mode(&self, ns: u32, mode: Option<MotionMode>) -> Result<(), ShapeErr> {
+        match mode {
+            Some(MotionMode::Rapid | MotionMode::Linear) => Ok(()),
+            _ => Err(ShapeErr::Here(self.alarm(
+                AlarmKind::MrcFirstBlock,
+                mode.map(|_| self.words.gs()[0].1).unwrap_or(0),
+                format!("the first block N{ns} of the finishing shape has no G00 or G01"),
+            ))),
+        }
+    }
+
     /// The G and M codes a shape block may carry; its motion code. A
     /// G40-G42 is kept for the segment (`comp_pending`; `comp_on` when one
     /// switches compensation on).
@@ -277,12 +279,14 @@ impl Interp {
         &self,
         comp_pending: &mut Option<CompSide>,
         comp_on: &mut bool,
-    ) -> Result<Option<u16>, ShapeErr> {
+    ) -> Result<Option<MotionMode>, ShapeErr> {
         let mut blk_mode = None;
         use MotionMode::{ArcCcw, ArcCw, Linear, Rapid};
         for &(g, gat) in self.words.gs() {
             match self.gcode(g).map(|c| c.means) {
-                Some(Means::Motion(Rapid | Linear | ArcCw | ArcCcw)) => blk_mode = Some(g),
+                Some(Means::Motion(mode @ (Rapid | Linear | ArcCw | ArcCcw))) => {
+                    blk_mode = Some(mode)
+                }
                 Some(
                     Means::OneShot(OneShot::Dwell)
                     | Means::Units(_)
