@@ -182,8 +182,10 @@ mod tests {
 
     #[test]
     fn a_chamfer_word_comes_before_a_corner_r() {
-        let mut ws = Words::default();
-        ws.comma_r = Some(w(3.0, 8));
+        let mut ws = Words {
+            comma_r: Some(w(3.0, 8)),
+            ..Words::default()
+        };
         assert_eq!(ws.corner(), Some((false, w(3.0, 8))));
         ws.comma_c = Some(w(1.0, 2));
         assert_eq!(ws.corner(), Some((true, w(1.0, 2))));
