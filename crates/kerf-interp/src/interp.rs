@@ -122,7 +122,7 @@ pub struct Interp {
     cfg: config::Config,
     /// Operator-panel switches and run options.
     settings: Settings,
-    /// Program text, the cursor in it and the loops open
+    /// Program text, the cursor in it, the loops open and the call stack
     /// (interp/program.rs).
     prog: program::Program,
     /// The loop guard's counters and budgets (interp/loop_guard.rs).
@@ -146,8 +146,6 @@ pub struct Interp {
     sys: Box<sysvars::SysState>,
     /// Tool offset memory (H/D, lathe X/Z/R/T; offsets.rs).
     pub(crate) offsets: OffsetTable,
-    /// Program store and call stack (M98/M99, G65, G66; interp/calls.rs).
-    calls: calls::Calls,
     /// Features every control has: compensation, held corners
     /// (interp/features.rs).
     common: features::CommonFeatures,
@@ -194,7 +192,6 @@ impl Interp {
             vars: Vars::with_numbering(hx),
             offsets,
             sys,
-            calls: calls::Calls::default(),
             common: features::CommonFeatures::default(),
             hx: hx_features,
             puma,
@@ -385,7 +382,7 @@ impl Interp {
     /// A `%` block: opens the tape (the program starts after it), opens a
     /// library file, or ends the program or the file.
     fn percent_block(&mut self) -> R<bool> {
-        if !self.calls.stack.is_empty() {
+        if !self.prog.calls.stack.is_empty() {
             // A library file's leading % opens it; any other ends it.
             if self.prog.raw.mark.offset == 0 {
                 return Ok(true);
@@ -431,7 +428,7 @@ impl Interp {
             match src.next_block(&mut self.prog.raw) {
                 Ok(true) => {}
                 Ok(false) => {
-                    if !self.calls.stack.is_empty() {
+                    if !self.prog.calls.stack.is_empty() {
                         return Err(self.sub_end_alarm());
                     }
                     self.emit_end(0)?;
@@ -506,20 +503,20 @@ impl Interp {
         if let Some(l) = self.prog.block.loop_cmd {
             self.hurco_loop(l)?;
         }
-        if self.calls.end_seq.is_some() && self.prog.block.n.is_some() {
+        if self.prog.calls.end_seq.is_some() && self.prog.block.n.is_some() {
             return self.block_with_end_seq(nwords);
         }
         if let Some(n) = self.prog.block.n {
             self.sys.last_n = n as f64;
         }
         if let Some(stmt) = self.prog.block.stmt {
-            self.calls.body_seen = true;
+            self.prog.calls.body_seen = true;
             return self.statement(stmt);
         }
         if nwords == 0 {
             return Ok(true);
         }
-        self.calls.body_seen = true;
+        self.prog.calls.body_seen = true;
         self.collect(nwords)?;
         self.execute()
     }
@@ -527,8 +524,8 @@ impl Interp {
     /// A numbered block inside an `M98 ... R_` call: after the block with
     /// sequence number R the call returns as at M99 (000 §2.4.3).
     fn block_with_end_seq(&mut self, nwords: usize) -> R<bool> {
-        let depth = self.calls.stack.len();
-        let end_here = self.prog.block.n == self.calls.end_seq;
+        let depth = self.prog.calls.stack.len();
+        let end_here = self.prog.block.n == self.prog.calls.end_seq;
         let r = if let Some(stmt) = self.prog.block.stmt {
             self.statement(stmt)?
         } else if nwords == 0 {
@@ -537,7 +534,7 @@ impl Interp {
             self.collect(nwords)?;
             self.execute()?
         };
-        if r && end_here && self.calls.stack.len() == depth && depth > 0 {
+        if r && end_here && self.prog.calls.stack.len() == depth && depth > 0 {
             self.sub_return(None, 0)?;
         }
         Ok(r)

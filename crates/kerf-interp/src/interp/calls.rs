@@ -191,13 +191,13 @@ impl Interp {
     /// Adds a folder searched for programs called by number
     /// (`O1234.nc`, `1234.nc`, `O1234`, …), after the main file.
     pub fn add_lib_dir(&mut self, dir: PathBuf) {
-        self.calls.lib_dirs.push(dir);
+        self.prog.calls.lib_dirs.push(dir);
     }
 
     /// Registers the main file in the call tables (from `load_main`).
     pub(super) fn calls_main_loaded(&mut self) {
-        while self.calls.parked.len() < self.prog.files.len() {
-            self.calls.add_file(None, None);
+        while self.prog.calls.parked.len() < self.prog.files.len() {
+            self.prog.calls.add_file(None, None);
         }
     }
 
@@ -209,17 +209,23 @@ impl Interp {
         let cur = self.prog.file_id as usize;
         // Library files stay open while in use and up to a few more; the
         // others are closed and reopened when called again.
-        let open = self.calls.parked.iter().filter(|s| s.is_some()).count();
-        let in_use = self.calls.stack.iter().any(|f| f.file as usize == cur);
-        if self.calls.paths[cur].is_some() && !in_use && open >= MAX_OPEN_LIBS {
-            self.calls.parked[cur] = None;
+        let open = self
+            .prog
+            .calls
+            .parked
+            .iter()
+            .filter(|s| s.is_some())
+            .count();
+        let in_use = self.prog.calls.stack.iter().any(|f| f.file as usize == cur);
+        if self.prog.calls.paths[cur].is_some() && !in_use && open >= MAX_OPEN_LIBS {
+            self.prog.calls.parked[cur] = None;
             self.prog.src = None;
         } else {
-            self.calls.parked[cur] = self.prog.src.take();
+            self.prog.calls.parked[cur] = self.prog.src.take();
         }
-        self.calls.high_water[cur] = self.guard.high_water;
-        self.prog.src = self.calls.parked[id as usize].take();
-        self.guard.high_water = self.calls.high_water[id as usize];
+        self.prog.calls.high_water[cur] = self.guard.high_water;
+        self.prog.src = self.prog.calls.parked[id as usize].take();
+        self.guard.high_water = self.prog.calls.high_water[id as usize];
         self.prog.file_id = id;
     }
 
@@ -228,16 +234,23 @@ impl Interp {
         if id == self.prog.file_id {
             self.prog.src.as_mut()
         } else {
-            self.calls.parked.get_mut(id as usize)?.as_mut()
+            self.prog.calls.parked.get_mut(id as usize)?.as_mut()
         }
     }
 
     /// Records the O headers of a file (one pass, at its first use).
     fn index_file(&mut self, id: u32) -> R<()> {
-        if self.calls.indexed.get(id as usize).copied().unwrap_or(true) {
+        if self
+            .prog
+            .calls
+            .indexed
+            .get(id as usize)
+            .copied()
+            .unwrap_or(true)
+        {
             return Ok(());
         }
-        self.calls.indexed[id as usize] = true;
+        self.prog.calls.indexed[id as usize] = true;
         let lex = self.cfg.lex;
         let mut found: Vec<(u32, Mark, Mark)> = Vec::new();
         let mut overflow = false;
@@ -276,12 +289,12 @@ impl Interp {
         if let Err(e) = res.and(res2) {
             return Err(self.alarm(AlarmKind::Io, 0, format!("reading programs: {e}")));
         }
-        self.calls.overflow[id as usize] = overflow;
+        self.prog.calls.overflow[id as usize] = overflow;
         if let Some(&(_, h, b)) = found.first() {
-            self.calls.first_header.insert(id, (h, b));
+            self.prog.calls.first_header.insert(id, (h, b));
         }
         for (p, h, b) in found {
-            self.calls.index.entry((id, p)).or_insert((h, b));
+            self.prog.calls.index.entry((id, p)).or_insert((h, b));
         }
         Ok(())
     }
@@ -290,10 +303,10 @@ impl Interp {
     /// file has more programs than the index holds.
     fn lookup(&mut self, id: u32, p: u32) -> R<Option<(Mark, Mark)>> {
         self.index_file(id)?;
-        if let Some(&hb) = self.calls.index.get(&(id, p)) {
+        if let Some(&hb) = self.prog.calls.index.get(&(id, p)) {
             return Ok(Some(hb));
         }
-        if !self.calls.overflow[id as usize] {
+        if !self.prog.calls.overflow[id as usize] {
             return Ok(None);
         }
         let lex = self.cfg.lex;
@@ -327,20 +340,22 @@ impl Interp {
                 return Ok((id, Some(h.offset), b));
             }
         }
-        let id = match self.calls.lib_files.get(&p) {
+        let id = match self.prog.calls.lib_files.get(&p) {
             Some(&id) => {
-                if id != self.prog.file_id && self.calls.parked[id as usize].is_none() {
-                    let path = self.calls.paths[id as usize].clone().expect("library file");
+                if id != self.prog.file_id && self.prog.calls.parked[id as usize].is_none() {
+                    let path = self.prog.calls.paths[id as usize]
+                        .clone()
+                        .expect("library file");
                     let f = File::open(&path).map_err(|e| {
                         self.alarm(AlarmKind::Io, at, format!("{}: {e}", path.display()))
                     })?;
                     let max = self.cfg.profile.max_block_chars.max(1);
-                    self.calls.parked[id as usize] = Some(LineSource::new(
+                    self.prog.calls.parked[id as usize] = Some(LineSource::new(
                         Box::new(f),
                         max,
                         self.cfg.dialect.hurco_syntax,
                     ));
-                    self.calls.high_water[id as usize] = 0;
+                    self.prog.calls.high_water[id as usize] = 0;
                 }
                 id
             }
@@ -358,9 +373,9 @@ impl Interp {
                 let max = self.cfg.profile.max_block_chars.max(1);
                 let src = LineSource::new(Box::new(f), max, self.cfg.dialect.hurco_syntax);
                 self.prog.files.push(path.display().to_string());
-                self.calls.add_file(Some(src), Some(path.clone()));
+                self.prog.calls.add_file(Some(src), Some(path.clone()));
                 let id = (self.prog.files.len() - 1) as u32;
-                self.calls.lib_files.insert(p, id);
+                self.prog.calls.lib_files.insert(p, id);
                 id
             }
         };
@@ -368,7 +383,7 @@ impl Interp {
             return Ok((id, Some(h.offset), b));
         }
         // A library file without that O number: the file is the program.
-        match self.calls.first_header.get(&id) {
+        match self.prog.calls.first_header.get(&id) {
             Some(&(h, b)) => Ok((id, Some(h.offset), b)),
             None => Ok((id, None, Mark { offset: 0, line: 1 })),
         }
@@ -390,7 +405,7 @@ impl Interp {
                 }
             }
         }
-        for d in &self.calls.lib_dirs {
+        for d in &self.prog.calls.lib_dirs {
             for n in &names {
                 let path = d.join(n);
                 if path.is_file() {
@@ -405,14 +420,17 @@ impl Interp {
     /// program (another program starts there).
     pub(super) fn program_header(&mut self) -> R<bool> {
         let here = self.prog.raw.mark.offset;
-        if self.calls.header == Some(here) {
+        if self.prog.calls.header == Some(here) {
             return Ok(false);
         }
-        if self.calls.stack.is_empty() && self.calls.header.is_none() && !self.calls.body_seen {
-            self.calls.header = Some(here);
+        if self.prog.calls.stack.is_empty()
+            && self.prog.calls.header.is_none()
+            && !self.prog.calls.body_seen
+        {
+            self.prog.calls.header = Some(here);
             return Ok(false);
         }
-        if self.calls.stack.is_empty() {
+        if self.prog.calls.stack.is_empty() {
             return Ok(true);
         }
         Err(self.sub_end_alarm())
@@ -429,7 +447,7 @@ impl Interp {
 
     /// True when a block read by a search starts another program.
     fn other_program(&self, blk: &Block, mark: Mark) -> bool {
-        blk.program.is_some() && self.calls.header != Some(mark.offset)
+        blk.program.is_some() && self.prog.calls.header != Some(mark.offset)
     }
 
     /// Searches the current program for sequence number `target`: forward
@@ -439,11 +457,11 @@ impl Interp {
     /// The sequence index of the current program, built on first use.
     fn sequence_index(&mut self) -> Option<&SeqIndex> {
         let key = (self.prog.file_id, self.prog.program_start.offset);
-        if !self.calls.seq_index.contains_key(&key) {
+        if !self.prog.calls.seq_index.contains_key(&key) {
             let built = self.build_sequence_index();
-            self.calls.seq_index.insert(key, built);
+            self.prog.calls.seq_index.insert(key, built);
         }
-        self.calls.seq_index.get(&key).and_then(|o| o.as_ref())
+        self.prog.calls.seq_index.get(&key).and_then(|o| o.as_ref())
     }
 
     /// Scans the current program once, recording where each N stands.
@@ -570,8 +588,14 @@ impl Interp {
     }
 
     fn nesting_check(&self, macro_call: bool, at: u32) -> R<()> {
-        let macros = self.calls.stack.iter().filter(|f| f.macro_call).count() as u32;
-        let subs = self.calls.stack.len() as u32 - macros;
+        let macros = self
+            .prog
+            .calls
+            .stack
+            .iter()
+            .filter(|f| f.macro_call)
+            .count() as u32;
+        let subs = self.prog.calls.stack.len() as u32 - macros;
         let p = |n: &str, def: f64| self.cfg.profile.param(n, def) as u32;
         let max_macro = p("max_macro_nesting", 4.0);
         let max_sub = p("max_sub_nesting", self.cfg.dialect.caps.sub_nesting as f64);
@@ -646,7 +670,7 @@ impl Interp {
             Some(p) => self.find_program(p, at)?,
             None => (
                 self.prog.file_id,
-                self.calls.header,
+                self.prog.calls.header,
                 self.prog.program_start,
             ),
         };
@@ -657,20 +681,20 @@ impl Interp {
             file: self.prog.file_id,
             ret,
             start: self.prog.program_start,
-            header: self.calls.header,
+            header: self.prog.calls.header,
             loops: std::mem::take(&mut self.prog.loops),
-            end_seq: self.calls.end_seq,
+            end_seq: self.prog.calls.end_seq,
             locals: None,
             callee_start: body,
             left: count - 1,
             modal_idx: None,
             by_code: false,
         };
-        self.calls.stack.push(frame);
+        self.prog.calls.stack.push(frame);
         self.switch_to(file);
         self.prog.program_start = body;
-        self.calls.header = header;
-        self.calls.end_seq = end_seq;
+        self.prog.calls.header = header;
+        self.prog.calls.end_seq = end_seq;
         self.seek(body)?;
         if let Some((n, qat)) = q {
             if !self.seek_sequence(n, false) {
@@ -683,14 +707,14 @@ impl Interp {
                 ));
             }
             let m = self.prog.src.as_ref().expect("loaded").tell();
-            if let Some(f) = self.calls.stack.last_mut() {
+            if let Some(f) = self.prog.calls.stack.last_mut() {
                 f.callee_start = m;
             }
         }
         if let Some(a) = args {
             let saved = self.vars.take_locals();
             self.vars.put_args(&a);
-            if let Some(f) = self.calls.stack.last_mut() {
+            if let Some(f) = self.prog.calls.stack.last_mut() {
                 f.locals = Some(Box::new(saved));
             }
         }
@@ -698,7 +722,7 @@ impl Interp {
     }
 
     fn calls_caller_src(&self, at: u32) -> SrcRef {
-        let f = self.calls.stack.last().expect("frame");
+        let f = self.prog.calls.stack.last().expect("frame");
         let (line, col) = self.prog.raw.line_col(at as usize);
         SrcRef {
             file: f.file,
@@ -709,12 +733,12 @@ impl Interp {
 
     /// Undoes a call whose start could not be found.
     fn unwind_failed_call(&mut self) {
-        if let Some(f) = self.calls.stack.pop() {
+        if let Some(f) = self.prog.calls.stack.pop() {
             self.switch_to(f.file);
             self.prog.program_start = f.start;
-            self.calls.header = f.header;
+            self.prog.calls.header = f.header;
             self.prog.loops = f.loops;
-            self.calls.end_seq = f.end_seq;
+            self.prog.calls.end_seq = f.end_seq;
             let _ = self.seek(f.ret);
         }
     }
@@ -729,7 +753,7 @@ impl Interp {
         } else {
             None
         };
-        if self.calls.stack.is_empty() {
+        if self.prog.calls.stack.is_empty() {
             return self.main_m99(p, l, at);
         }
         self.sub_return(p, at)
@@ -739,7 +763,7 @@ impl Interp {
     /// sequence number R).
     pub(super) fn sub_return(&mut self, p: Option<(u32, u32)>, at: u32) -> R<()> {
         self.corner_open("the return from a subprogram")?;
-        let f = self.calls.stack.last_mut().expect("in a call");
+        let f = self.prog.calls.stack.last_mut().expect("in a call");
         if f.left > 0 {
             f.left -= 1;
             let m = f.callee_start;
@@ -747,15 +771,15 @@ impl Interp {
             self.prog.loops.clear();
             return self.seek(m);
         }
-        let f = self.calls.stack.pop().expect("in a call");
+        let f = self.prog.calls.stack.pop().expect("in a call");
         if let Some(l) = f.locals {
             self.vars.put_locals(&l);
         }
         self.switch_to(f.file);
         self.prog.program_start = f.start;
-        self.calls.header = f.header;
+        self.prog.calls.header = f.header;
         self.prog.loops = f.loops;
-        self.calls.end_seq = f.end_seq;
+        self.prog.calls.end_seq = f.end_seq;
         self.seek(f.ret)?;
         if let Some((n, pat)) = p {
             // A return to an earlier block can loop: it counts as a jump.
@@ -783,15 +807,15 @@ impl Interp {
         self.corner_open("M99")?;
         let here = self.prog.raw.mark.offset;
         if let Some((n, _)) = l {
-            let left = match self.calls.main_repeat {
+            let left = match self.prog.calls.main_repeat {
                 Some((off, left)) if off == here => left,
                 _ => n.saturating_sub(1),
             };
             if left == 0 {
-                self.calls.main_repeat = None;
+                self.prog.calls.main_repeat = None;
                 return Ok(());
             }
-            self.calls.main_repeat = Some((here, left - 1));
+            self.prog.calls.main_repeat = Some((here, left - 1));
         } else if self.main_m99_last_pass()? {
             return Ok(());
         }
@@ -821,9 +845,9 @@ impl Interp {
     /// (status 0) with an operator message saying so. True when this M99
     /// ended it.
     fn main_m99_last_pass(&mut self) -> R<bool> {
-        self.calls.main_passes += 1;
+        self.prog.calls.main_passes += 1;
         let n = self.settings.main_passes.max(1);
-        if self.calls.main_passes < n {
+        if self.prog.calls.main_passes < n {
             return Ok(false);
         }
         let s = if n == 1 { "" } else { "es" };
@@ -870,14 +894,14 @@ impl Interp {
         let args = self.g65_args(false)?;
         if modal {
             let max = self.cfg.profile.param("max_macro_nesting", 4.0) as usize;
-            if self.calls.modal.len() >= max {
+            if self.prog.calls.modal.len() >= max {
                 return Err(self.alarm(
                     AlarmKind::CallNesting,
                     at,
                     format!("G66 modal calls nested more than {max} deep"),
                 ));
             }
-            self.calls.modal.push(ModalCall {
+            self.prog.calls.modal.push(ModalCall {
                 prog: p,
                 count,
                 args: Box::new(args),
@@ -896,7 +920,7 @@ impl Interp {
     /// letters are then arguments).
     pub(super) fn code_call_block(&self) -> bool {
         match &self.hx.code_calls {
-            Some(cc) if !self.calls.stack.iter().any(|f| f.by_code) => {
+            Some(cc) if !self.prog.calls.stack.iter().any(|f| f.by_code) => {
                 self.words
                     .gs()
                     .iter()
@@ -919,7 +943,7 @@ impl Interp {
         let Some(cc) = self.hx.code_calls.as_ref() else {
             return Ok(None);
         };
-        if self.calls.stack.iter().any(|f| f.by_code) {
+        if self.prog.calls.stack.iter().any(|f| f.by_code) {
             return Ok(None);
         }
         let mut hit: Option<(u32, u32, bool)> = None;
@@ -949,7 +973,7 @@ impl Interp {
                 return Ok(Some(true));
             }
             self.call(Some(prog), None, None, count, true, at, Some(args))?;
-            if let Some(f) = self.calls.stack.last_mut() {
+            if let Some(f) = self.prog.calls.stack.last_mut() {
                 f.by_code = true;
             }
             return Ok(Some(true));
@@ -963,7 +987,7 @@ impl Interp {
                     .map_err(|m| self.alarm(m.kind, t.at, m.message))?;
                 let r = self.execute_block()?;
                 self.call(Some(9000), None, None, 1, false, t.at, None)?;
-                if let Some(f) = self.calls.stack.last_mut() {
+                if let Some(f) = self.prog.calls.stack.last_mut() {
                     f.by_code = true;
                 }
                 return Ok(Some(r));
@@ -976,28 +1000,28 @@ impl Interp {
     /// header, its own locals put back), drops the G66 calls, the M98 end
     /// sequence and the main-program M99 L count.
     pub(super) fn reset_calls(&mut self) {
-        if let Some(bottom) = self.calls.stack.first() {
+        if let Some(bottom) = self.prog.calls.stack.first() {
             let (file, start, header) = (bottom.file, bottom.start, bottom.header);
             // The main level's locals are in the first macro call's frame.
-            let main_locals = self.calls.stack.iter().find_map(|f| f.locals.clone());
+            let main_locals = self.prog.calls.stack.iter().find_map(|f| f.locals.clone());
             self.switch_to(file);
             self.prog.program_start = start;
-            self.calls.header = header;
+            self.prog.calls.header = header;
             if let Some(l) = main_locals {
                 self.vars.put_locals(&l);
             }
         }
-        self.calls.stack.clear();
-        self.calls.end_seq = None;
-        self.calls.main_repeat = None;
-        self.calls.main_passes = 0;
-        self.calls.modal.clear();
+        self.prog.calls.stack.clear();
+        self.prog.calls.end_seq = None;
+        self.prog.calls.main_repeat = None;
+        self.prog.calls.main_passes = 0;
+        self.prog.calls.modal.clear();
     }
 
     /// G67: cancels the most recent G66.
     pub(super) fn g67(&mut self) {
-        self.calls.modal.pop();
-        let on = !self.calls.modal.is_empty();
+        self.prog.calls.modal.pop();
+        let on = !self.prog.calls.modal.is_empty();
         self.modal
             .set_meaning(self.cfg.dialect, Means::ModalCall(on));
     }
@@ -1008,20 +1032,23 @@ impl Interp {
     /// macro calls the newest entry; moves in the oldest entry's macro call
     /// nothing.
     pub(super) fn modal_call(&mut self, at: u32) -> R<()> {
-        let n = self.calls.modal.len();
-        let inside = self.calls.stack.iter().rev().find_map(|f| f.modal_idx);
+        let n = self.prog.calls.modal.len();
+        let inside = self.prog.calls.stack.iter().rev().find_map(|f| f.modal_idx);
         let idx = match inside {
             None => n - 1,
             Some(0) => return Ok(()),
             Some(i) => (i - 1).min(n - 1),
         };
-        let (prog, count) = (self.calls.modal[idx].prog, self.calls.modal[idx].count);
+        let (prog, count) = (
+            self.prog.calls.modal[idx].prog,
+            self.prog.calls.modal[idx].count,
+        );
         if count == 0 {
             return Ok(());
         }
-        let args = *self.calls.modal[idx].args;
+        let args = *self.prog.calls.modal[idx].args;
         self.call(Some(prog), None, None, count, true, at, Some(args))?;
-        if let Some(f) = self.calls.stack.last_mut() {
+        if let Some(f) = self.prog.calls.stack.last_mut() {
             f.modal_idx = Some(idx);
         }
         Ok(())

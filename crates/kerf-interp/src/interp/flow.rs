@@ -259,7 +259,8 @@ impl Interp {
             if parse_block(&raw.text, &self.cfg.lex, &mut blk).is_err() {
                 continue;
             }
-            if blk.percent || (blk.program.is_some() && self.calls.header != Some(raw.mark.offset))
+            if blk.percent
+                || (blk.program.is_some() && self.prog.calls.header != Some(raw.mark.offset))
             {
                 break;
             }

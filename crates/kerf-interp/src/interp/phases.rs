@@ -314,7 +314,7 @@ impl Interp {
             Some((_, at)) => self.m99(at)?,
             None => {
                 let moved = b.os.refret.is_some() || !b.no_motion();
-                if !self.calls.modal.is_empty() && moved && self.has_axis_word() {
+                if !self.prog.calls.modal.is_empty() && moved && self.has_axis_word() {
                     self.modal_call(self.motion_at())?;
                 }
             }

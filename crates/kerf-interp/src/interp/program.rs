@@ -1,12 +1,14 @@
 //! The program being executed: the files read so far, the source being
 //! read and where in it, the block in hand (its text and parsed form), the
-//! parsed-block cache and the loops open in the current call level. The
-//! call stack is interp/calls.rs's; the loop guard interp/loop_guard.rs.
+//! parsed-block cache, the loops open in the current call level, and the
+//! program store and call stack (`Calls`, interp/calls.rs). The loop
+//! guard is interp/loop_guard.rs's.
 
 use kerf_canon::SrcRef;
 use kerf_lang::{Block, LineSource, Mark, ProgramRead, RawBlock};
 
 use super::block_cache::BlockCache;
+use super::calls::Calls;
 
 /// Loops nested in one call level (000 §14.2.5, Fanuc: 3).
 pub(super) const MAX_LOOP_DEPTH: usize = 3;
@@ -55,6 +57,8 @@ pub(super) struct Program {
     pub(super) hurco_loops: Vec<(u32, Mark)>,
     /// The source reference of the block being executed.
     pub(super) cur: SrcRef,
+    /// Program store and call stack (M98/M99, G65, G66; interp/calls.rs).
+    pub(super) calls: Calls,
 }
 
 impl Program {

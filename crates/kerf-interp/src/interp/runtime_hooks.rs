@@ -99,7 +99,7 @@ impl Interp {
     /// Where the last block read is: its file id and line, and its depth
     /// in the call stack (0 = the main program).
     pub fn block_at(&self) -> (SrcRef, usize) {
-        (self.prog.cur, self.calls.stack.len())
+        (self.prog.cur, self.prog.calls.stack.len())
     }
 
     /// The sequence number (N) of the last block read, if it had one.
@@ -142,7 +142,11 @@ impl Interp {
     /// depth (0 = the main program). None before a program is loaded.
     pub fn next_block_at(&self) -> Option<(u32, u32, usize)> {
         let src = self.prog.src.as_ref()?;
-        Some((self.prog.file_id, src.tell().line, self.calls.stack.len()))
+        Some((
+            self.prog.file_id,
+            src.tell().line,
+            self.prog.calls.stack.len(),
+        ))
     }
 
     /// Sets the machine position after the axes were moved by hand (jog,
@@ -253,7 +257,7 @@ impl Interp {
             cycle: format!("{:?}", self.hx.cyc),
             lathe: format!("{:?}", (self.puma.single, self.puma.chamfer_on)),
             vars,
-            call_depth: self.calls.stack.len(),
+            call_depth: self.prog.calls.stack.len(),
         }
     }
 }
