@@ -503,3 +503,31 @@ impl Interp {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The interface inputs come from the settings, the outputs start
+    /// off, and #3003-style counters at 0; the single block switch reads
+    /// as 1.
+    #[test]
+    fn the_system_state_at_the_start_of_a_run() {
+        let s = SysState::new([0b101, 0, 0, 1 << 31], true);
+        assert_eq!(s.inputs, [0b101, 0, 0, 1 << 31]);
+        assert_eq!(s.outputs, [0; 4]);
+        assert_eq!((s.c3003, s.c3004, s.last_n, s.d), (0.0, 0.0, 0.0, 0.0));
+        assert_eq!(s.single_block, 1.0);
+        assert_eq!(SysState::new([0; 4], false).single_block, 0.0);
+        // UI000 and UI002 on, UI001 off; UI331 is word 3's top bit.
+        assert_eq!(
+            (
+                bit(&s.inputs, 0, 0),
+                bit(&s.inputs, 0, 1),
+                bit(&s.inputs, 0, 2)
+            ),
+            (1.0, 0.0, 1.0)
+        );
+        assert_eq!(bit(&s.inputs, 3, 31), 1.0);
+    }
+}
