@@ -3,7 +3,7 @@
 //! changed by a program (run state lives elsewhere: interp/frames.rs,
 //! interp/tool_spindle.rs, interp/program.rs …).
 
-use kerf_canon::{Axis, NAXES};
+use kerf_canon::{Axis, Pos, NAXES};
 use kerf_lang::LexOptions;
 
 use crate::dialect::{Dialect, GCode, MCode};
@@ -78,6 +78,28 @@ impl Config {
         }
     }
 
+    /// The first axis of machine point `m` outside its travel limits:
+    /// the axis, its coordinate and its limits (a hair of 1e-9 mm over a
+    /// limit is on it).
+    #[inline]
+    pub(super) fn outside_travel(&self, m: &Pos) -> Option<(Axis, f64, (f64, f64))> {
+        for ax in Axis::ALL {
+            if let Some((min, max)) = self.travel[ax as usize] {
+                let v = m[ax as usize];
+                if v < min - 1e-9 || v > max + 1e-9 {
+                    return Some((ax, v, (min, max)));
+                }
+            }
+        }
+        None
+    }
+
+    /// The position slot of the control's axis number `k` (0-based:
+    /// X Y Z A on the mill, X Z on a two-axis lathe).
+    pub(super) fn axis_slot(&self, k: usize) -> Option<usize> {
+        (0..NAXES).filter(|&s| self.has_axis[s]).nth(k)
+    }
+
     /// The dialect's G code of value × 10 `code10`, if it has one.
     #[inline]
     pub(super) fn gcode(&self, code10: u16) -> Option<&'static GCode> {
@@ -141,6 +163,38 @@ mod tests {
             .all(|&a| mc.has_axis[a as usize]));
         let (lo, hi) = mc.travel[Axis::X as usize].unwrap();
         assert!(lo < hi);
+    }
+
+    #[test]
+    fn a_point_outside_the_travel_names_its_first_axis() {
+        let c = cfg("hx-mc");
+        let (xlo, xhi) = c.travel[Axis::X as usize].unwrap();
+        let (ylo, _) = c.travel[Axis::Y as usize].unwrap();
+        let (zlo, zhi) = c.travel[Axis::Z as usize].unwrap();
+        let inside = |x: f64| [x, ylo, (zlo + zhi) / 2.0, 0.0, 0.0, 0.0];
+        assert_eq!(c.outside_travel(&inside(xlo)), None);
+        assert_eq!(c.outside_travel(&inside(xhi + 1e-10)), None);
+        assert_eq!(
+            c.outside_travel(&inside(xhi + 0.001)),
+            Some((Axis::X, xhi + 0.001, (xlo, xhi)))
+        );
+        // Both X and Y out: X is named.
+        let mut both = inside(xlo - 1.0);
+        both[Axis::Y as usize] = ylo - 1.0;
+        assert_eq!(c.outside_travel(&both).map(|o| o.0), Some(Axis::X));
+        both[Axis::X as usize] = xlo;
+        assert_eq!(c.outside_travel(&both).map(|o| o.0), Some(Axis::Y));
+    }
+
+    #[test]
+    fn axis_numbers_count_the_machines_axes_only() {
+        // A lathe's second axis is Z (slot 2), past the Y slot it lacks.
+        let lathe = cfg("puma-lathe");
+        assert_eq!(lathe.axis_slot(0), Some(Axis::X as usize));
+        assert_eq!(lathe.axis_slot(1), Some(Axis::Z as usize));
+        let mc = cfg("hx-mc");
+        assert_eq!(mc.axis_slot(1), Some(Axis::Y as usize));
+        assert_eq!(mc.axis_slot(NAXES), None);
     }
 
     #[test]

@@ -134,27 +134,22 @@ impl Interp {
 
     /// The travel limits of the machine axes at machine point `m`.
     fn check_travel(&self, m: &Pos, at: u32) -> R<()> {
-        for ax in Axis::ALL {
-            if let Some((min, max)) = self.cfg.travel[ax as usize] {
-                let v = m[ax as usize];
-                if v < min - 1e-9 || v > max + 1e-9 {
-                    let side = if v > max { '+' } else { '-' };
-                    return Err(self.alarm(
-                        AlarmKind::Overtravel,
-                        at,
-                        format!(
-                            "overtravel {side}{}: machine {} = {:.3} outside [{}, {}]",
-                            ax.name().to_uppercase(),
-                            ax.name().to_uppercase(),
-                            v,
-                            min,
-                            max
-                        ),
-                    ));
-                }
-            }
-        }
-        Ok(())
+        let Some((ax, v, (min, max))) = self.cfg.outside_travel(m) else {
+            return Ok(());
+        };
+        let side = if v > max { '+' } else { '-' };
+        Err(self.alarm(
+            AlarmKind::Overtravel,
+            at,
+            format!(
+                "overtravel {side}{}: machine {} = {:.3} outside [{}, {}]",
+                ax.name().to_uppercase(),
+                ax.name().to_uppercase(),
+                v,
+                min,
+                max
+            ),
+        ))
     }
 
     /// Travel and stroke for the straight move from the position to `mto`.

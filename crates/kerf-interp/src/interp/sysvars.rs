@@ -7,8 +7,6 @@
 
 use std::time::Instant;
 
-use kerf_canon::NAXES;
-
 use super::work_offsets::WorkId;
 use super::Interp;
 use crate::alarms::AlarmKind;
@@ -263,12 +261,6 @@ impl Interp {
         })
     }
 
-    /// The position slot of the control's axis number `k` (0-based:
-    /// X Y Z A on the mill, X Z on a two-axis lathe).
-    fn axis_slot(&self, k: usize) -> Option<usize> {
-        (0..NAXES).filter(|&s| self.cfg.has_axis[s]).nth(k)
-    }
-
     /// mm (or degrees) → program units for axis slot `s`; lathe X in
     /// diameter when diameter programming is on.
     fn to_prog_units(&self, s: usize, v: f64) -> f64 {
@@ -294,7 +286,7 @@ impl Interp {
     }
 
     fn axis_value_of(&self, k: usize, p: &kerf_canon::Pos) -> Option<f64> {
-        self.axis_slot(k).map(|s| self.to_prog_units(s, p[s]))
+        self.cfg.axis_slot(k).map(|s| self.to_prog_units(s, p[s]))
     }
 
     /// Reads system variable `#i`.
@@ -346,7 +338,7 @@ impl Interp {
             OutBit(w, b) => bit(&self.sys.outputs, w, b),
             OutWord(w, mask) => (self.sys.outputs[w] & mask) as f64,
             RefPoint(n, k) => {
-                let Some(s) = self.axis_slot(k) else {
+                let Some(s) = self.cfg.axis_slot(k) else {
                     return Ok(None);
                 };
                 let ax = kerf_canon::Axis::ALL[s];
@@ -430,7 +422,7 @@ impl Interp {
                 }
             }
             Shift(k) | Wcs(_, k) => {
-                let Some(slot) = self.axis_slot(k) else {
+                let Some(slot) = self.cfg.axis_slot(k) else {
                     return fail(
                         AlarmKind::BadVariable,
                         format!("#{i}: this machine has no axis {}", k + 1),
