@@ -305,6 +305,10 @@ impl Interp {
     }
 
     /// Runs until the next canonical command, an alarm or the end.
+    ///
+    /// Not inlined: inlined into a caller's loop, the event it returns is
+    /// copied once more (callgrind on drill_grid: +9.6 M instructions).
+    #[inline(never)]
     pub fn step(&mut self) -> Step {
         loop {
             if let Some(e) = self.queue.pop_front() {
