@@ -12,12 +12,16 @@ use kerf_canon::{Alarm, Event, Pos};
 use kerf_control::{Context, Job, Live, Outcome, Progress, RunError, Runner, Sink, Timed};
 use kerf_motion::Piece;
 
+/// A timed record as received: event, from, to, end time, time, feed,
+/// file name.
+type Record = (Event, Pos, Pos, f64, f64, Option<f64>, String);
+
 /// Every call a sink receives, with the file names it was given.
 #[derive(Default, Debug, PartialEq)]
 struct Recorder {
     pieces_wanted: bool,
     events: Vec<(Event, Pos, String)>,
-    timed: Vec<(Event, Pos, Pos, f64, f64, Option<f64>, String)>,
+    timed: Vec<Record>,
     pieces: Vec<Piece>,
     warnings_seen: usize,
     finished: Option<Option<String>>,
@@ -180,7 +184,10 @@ fn file_names_and_warnings_of_a_subprogram_arrive_with_its_events() {
     assert!(a.contains("KERF-W005"), "{a}");
     assert_eq!(Ok(a), b);
     let files: Vec<&str> = ra.timed.iter().map(|t| t.6.as_str()).collect();
-    assert_eq!(files.iter().filter(|f| f.ends_with("O1000.nc")).count(), 600);
+    assert_eq!(
+        files.iter().filter(|f| f.ends_with("O1000.nc")).count(),
+        600
+    );
     assert_eq!(files.first(), Some(&"main.nc"));
     assert_eq!(ra, rb);
     std::fs::remove_dir_all(&dir).ok();
@@ -195,7 +202,10 @@ fn interpret_only_runs_the_same() {
         r
     };
     let [(a, ra), (b, rb)] = both(load, Recorder::default);
-    assert!(a.as_ref().unwrap().contains(" None "), "no cycle time: {a:?}");
+    assert!(
+        a.as_ref().unwrap().contains(" None "),
+        "no cycle time: {a:?}"
+    );
     assert_eq!(a, b);
     assert!(ra.timed.is_empty());
     assert_eq!(ra, rb);

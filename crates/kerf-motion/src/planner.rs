@@ -3,6 +3,7 @@
 //! speeds, exact stop, and the timeline of everything else (dwell,
 //! spindle, tool change, M-code handshakes). Motion law: docs/motion.md.
 
+use std::cmp::Ordering;
 use std::collections::VecDeque;
 
 use kerf_canon::{
@@ -17,8 +18,8 @@ mod lag_memo;
 mod resume;
 mod turn;
 use lag_memo::LagMemo;
-use turn::turn_bound;
 pub use resume::Modes;
+use turn::turn_bound;
 
 /// Time totals by category, seconds.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -892,7 +893,12 @@ impl Planner {
         let th_max = turn_bound(s);
         if th_max > 1e-9 && t > 0.0 {
             let tol = self.d.path_tolerance;
-            if !(v <= (24.0 * (lmin / th_max) * tol / self.k_tt).sqrt()) {
+            let floor = (24.0 * (lmin / th_max) * tol / self.k_tt).sqrt();
+            // Unless v ≤ floor (a NaN takes the full path, as before).
+            if !matches!(
+                v.partial_cmp(&floor),
+                Some(Ordering::Less | Ordering::Equal)
+            ) {
                 let th = c.acos();
                 if th > 1e-9 {
                     let r = lmin / th;
