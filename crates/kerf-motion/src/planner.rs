@@ -1360,7 +1360,7 @@ mod tests {
         for case in 0..200_000 {
             let mut d = dynm();
             d.path_tolerance = [0.001, 0.01, 0.1][case % 3];
-            let mut pl = Planner::new(d, [0.0; NAXES], 0.0);
+            let pl = Planner::new(d, [0.0; NAXES], 0.0);
             let tilt = if case % 2 == 0 { 1e-3 } else { 1.0 };
             // A unit vector: `base` plus a random step of up to `amp`.
             let dir = |r: &mut dyn FnMut() -> f64, base: Pos, amp: f64| -> Pos {
