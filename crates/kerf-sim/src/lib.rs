@@ -17,6 +17,7 @@
 //! ```
 
 pub mod ball;
+pub mod deferred;
 pub mod envelope;
 pub mod events;
 pub mod grid;
