@@ -20,7 +20,7 @@
 //! check that finds nothing there finds nothing after (lathe.rs).
 
 use crate::hull::Pt;
-use crate::lathe::{swept_ccw, Contour};
+use crate::lathe::{bbox, swept_ccw, Bbox, Contour};
 
 /// Runs held before the batch is applied.
 pub const BATCH: usize = 8;
@@ -36,6 +36,8 @@ const ON_LINE: f64 = 1e-9;
 #[derive(Clone, Debug, Default)]
 struct Run {
     outline: Contour,
+    /// The outline's box.
+    obox: Bbox,
     a: Pt,
     b: Pt,
 }
@@ -49,6 +51,8 @@ pub struct Pending {
     /// Spare contours (allocations kept between batches).
     spare: Vec<Contour>,
     vertices: usize,
+    /// The closed runs' regions' box, folded about the axis ([`fold`]).
+    batch_box: Bbox,
     /// Whether moves are merged and batched (false: each move is applied
     /// on its own, the move-by-move reference).
     pub merge: bool,
@@ -63,6 +67,7 @@ impl Default for Pending {
             batch: Vec::new(),
             spare: Vec::new(),
             vertices: 0,
+            batch_box: EMPTY,
             merge: true,
             removed: 0.0,
         }
@@ -85,6 +90,7 @@ impl Pending {
         self.close_run();
         let r = &mut self.run;
         r.outline.extend_from_slice(outline);
+        r.obox = bbox(outline);
         (r.a, r.b) = (a, b);
         !self.merge || self.batch.len() + 1 >= BATCH || self.vertices >= BATCH_VERTICES
     }
@@ -98,6 +104,28 @@ impl Pending {
         !r.outline.is_empty() && r.outline == outline && on_segment(r, a) && on_segment(r, b)
     }
 
+    /// Whether the pending cut may change the material inside the box
+    /// `b` (z from, z to, r from, r to; both folded about the axis, as
+    /// the cut removes the mirror of what reaches below it).
+    pub fn meets(&self, b: &Bbox) -> bool {
+        let b = fold(b);
+        let r = &self.run;
+        let run_box = if r.outline.is_empty() {
+            EMPTY
+        } else {
+            let o = &r.obox;
+            fold(&[
+                o[0] + r.a.0.min(r.b.0),
+                o[1] + r.a.0.max(r.b.0),
+                o[2] + r.a.1.min(r.b.1),
+                o[3] + r.a.1.max(r.b.1),
+            ])
+        };
+        [self.batch_box, run_box]
+            .iter()
+            .any(|p| p[0] <= b[1] && b[0] <= p[1] && p[2] <= b[3] && b[2] <= p[3])
+    }
+
     /// The swept regions to remove (the open run closed), or None when
     /// nothing is pending. [`Self::clear`] after applying them.
     pub fn regions(&mut self) -> Option<&[Contour]> {
@@ -109,6 +137,7 @@ impl Pending {
     pub fn clear(&mut self) {
         self.spare.append(&mut self.batch);
         self.vertices = 0;
+        self.batch_box = EMPTY;
     }
 
     /// Moves the open run's swept region into the batch.
@@ -120,6 +149,14 @@ impl Pending {
         let mut c = self.spare.pop().unwrap_or_default();
         swept_ccw(&r.outline, r.a, r.b, &mut c);
         self.vertices += c.len();
+        let b = fold(&bbox(&c));
+        let u = &mut self.batch_box;
+        *u = [
+            u[0].min(b[0]),
+            u[1].max(b[1]),
+            u[2].min(b[2]),
+            u[3].max(b[3]),
+        ];
         self.batch.push(c);
         // The run's allocation is kept for the next one.
         r.outline.clear();
@@ -145,6 +182,26 @@ fn continues(r: &Run, outline: &[[f64; 2]], a: Pt, b: Pt) -> bool {
     // The new end on the run's line (its distance from it) and ahead.
     let off = (u.0 * (b.1 - r.a.1) - u.1 * (b.0 - r.a.0)).abs() / len;
     off <= ON_LINE && u.0 * v.0 + u.1 * v.1 >= 0.0
+}
+
+/// The box of nothing.
+const EMPTY: Bbox = [
+    f64::INFINITY,
+    f64::NEG_INFINITY,
+    f64::INFINITY,
+    f64::NEG_INFINITY,
+];
+
+/// A box with r replaced by |r| (what a region that reaches below the
+/// axis cuts is its mirror above it).
+fn fold(b: &Bbox) -> Bbox {
+    if b[2] >= 0.0 || b[2] > b[3] {
+        *b
+    } else if b[3] <= 0.0 {
+        [b[0], b[1], -b[3], -b[2]]
+    } else {
+        [b[0], b[1], 0.0, (-b[2]).max(b[3])]
+    }
 }
 
 /// Whether `p` is on the run's segment (within [`ON_LINE`]).
@@ -218,6 +275,20 @@ mod tests {
         ));
         p.regions();
         assert!(!p.covers(&SQ, (0.0, -4.0), (0.0, -3.9)), "closed");
+    }
+
+    #[test]
+    fn the_pending_box_is_the_runs_and_the_batchs_folded_about_the_axis() {
+        let mut p = Pending::default();
+        assert!(!p.meets(&[-1e9, 1e9, -1e9, 1e9]));
+        // The square swept z 0..5 at r 2..3, then z 10..11 at r -3..-2.
+        p.push(&SQ, (0.0, 2.0), (4.0, 2.0));
+        assert!(p.meets(&[4.9, 6.0, 2.5, 2.6]));
+        assert!(!p.meets(&[5.1, 6.0, 0.0, 9.0]));
+        p.push(&SQ, (10.0, -3.0), (10.0, -3.0));
+        // Its mirror r 2..3 (the first now in the batch).
+        assert!(p.meets(&[10.5, 10.6, 2.1, 2.2]) && p.meets(&[0.5, 0.6, -2.6, -2.5]));
+        assert!(!p.meets(&[6.0, 9.0, 0.0, 9.0]) && !p.meets(&[0.0, 12.0, 3.5, 9.0]));
     }
 
     #[test]

@@ -178,9 +178,13 @@ impl Section {
 
     /// [`Self::sweep`] for any region: closed contours, counter-clockwise
     /// ones filled and clockwise ones holes (as i_overlay returns them).
-    /// The pending cut is applied first.
+    /// The pending cut is applied first where it may change the material
+    /// inside the region's box.
     pub fn sweep_regions(&mut self, region: &[Contour], write: bool) -> f64 {
-        self.settle();
+        let p = self.pending.get_mut();
+        if !p.is_empty() && region.iter().any(|c| p.meets(&bbox(c))) {
+            self.settle();
+        }
         self.frame.sweep(self.tiles.get_mut(), region, write)
     }
 
@@ -271,9 +275,10 @@ impl Section {
 }
 
 /// A contour's bounding box: z from, z to, r from, r to.
-type Bbox = [f64; 4];
+pub type Bbox = [f64; 4];
 
-fn bbox(c: &[[f64; 2]]) -> Bbox {
+/// The bounding box of a contour (inverted when it is empty).
+pub fn bbox(c: &[[f64; 2]]) -> Bbox {
     let mut b = [
         f64::INFINITY,
         f64::NEG_INFINITY,

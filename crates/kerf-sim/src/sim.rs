@@ -358,30 +358,28 @@ impl Sim {
             swept_ccw(shape, a, at(f), region);
             sec.sweep_regions(std::slice::from_ref(region), write)
         };
-        let mut unsettled = Vec::new();
-        // Every check is against the stock before the move: first against
-        // the stock without the pending cut, which holds at least that
-        // material (nothing there, nothing after it), and only where that
-        // finds material, the pending cut applied, exactly.
+        // Every check is against the stock before the move: the pending
+        // cut is applied first where it may change what the check reads
+        // (Section::sweep_regions), and a move retracing the pending cut's
+        // open run meets nothing.
         let mut event_cut = false;
         if (rapid || !self.spindle_on) && !sec.covered_later(outline, a, b) {
-            swept_ccw(outline, a, b, &mut unsettled);
-            if sec.sweep_unsettled(std::slice::from_ref(&unsettled)) > 0.0 {
-                let v = sweep_of(sec, outline, 1.0, false);
-                if v > 0.0 {
-                    let kind = if rapid {
-                        EventKind::RapidIntoStock
-                    } else {
-                        EventKind::SpindleOffCut
-                    };
-                    let f = first_contact(|f| sweep_of(sec, outline, f, false) > 0.0);
-                    found.push((kind, v, f));
-                    event_cut = true;
-                }
+            let v = sweep_of(sec, outline, 1.0, false);
+            if v > 0.0 {
+                let kind = if rapid {
+                    EventKind::RapidIntoStock
+                } else {
+                    EventKind::SpindleOffCut
+                };
+                let f = first_contact(|f| sweep_of(sec, outline, f, false) > 0.0);
+                found.push((kind, v, f));
+                event_cut = true;
             }
         }
         // The holder along the whole move: what it reaches before the
-        // insert has cut it (holder.rs).
+        // insert has cut it (holder.rs). It is first measured against the
+        // stock without the pending cut, which holds at least the
+        // material (nothing there, nothing after it).
         let mut holder_hit = false;
         if !holder.is_empty() {
             let met_region = |f: f64| holder_first(&pts(outline), &pts(holder), a, at(f));
