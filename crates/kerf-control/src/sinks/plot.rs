@@ -11,14 +11,19 @@
 //! `ModeChange::Rotary` events.
 //!
 //! - [`drawing`]: the shapes, collected and bounded by the picture;
+//! - [`depth`]: the lowest Z cut per cell of the mill's view, drawn
+//!   instead of the cuts' lines when they cover the area (a 3-D surface
+//!   raster), by [`shade`] as a relief coloured by Z;
 //! - [`layout`]: the pixel geometry (areas, scale, ticks);
 //! - [`scene`]: the picture as drawing items;
 //! - [`svg`] and [`raster`]: the two writers.
 
+pub mod depth;
 pub mod drawing;
 pub mod layout;
 pub mod raster;
 pub mod scene;
+pub mod shade;
 pub mod svg;
 
 use std::io::{self, Write};
@@ -100,7 +105,12 @@ fn legend_rows(d: &Drawing) -> usize {
         .iter()
         .flat_map(|p| p.shapes())
         .any(|s| s.form == drawing::Form::Hole);
-    1 + d.tools.len()
+    let cuts = if d.depth_view().is_some() {
+        2
+    } else {
+        d.tools.len()
+    };
+    1 + cuts
         + usize::from(holes)
         + usize::from(d.kind() == MachineKind::Lathe)
         + usize::from(d.panels.iter().any(|p| p.start().is_some()))

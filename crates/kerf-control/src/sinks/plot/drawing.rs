@@ -16,6 +16,8 @@ use std::f64::consts::PI;
 use kerf_canon::{ArcDir, Canon, Event, Plane, Pos, RotaryMode};
 use kerf_interp::MachineKind;
 
+use super::depth::DepthMap;
+
 /// Most shapes kept in the main panel (each at most a few dozen bytes of
 /// SVG: the file stays under about 3 MB).
 pub const MAX_SHAPES: usize = 60_000;
@@ -316,7 +318,17 @@ pub struct Drawing {
     last: Option<(usize, (f64, f64))>,
     /// Where an alarm stopped the run: panel index, point, label.
     pub stop: Option<(usize, (f64, f64), String)>,
+    /// The lowest Z cut over the mill's XY view (cuts outside G112 and
+    /// G107 only).
+    depth: DepthMap,
 }
+
+/// Least share of the cut's bounding box the cut covers (at the depth
+/// map's cell, about a pixel) for the depth picture to replace the lines.
+pub const DEPTH_COVERAGE: f64 = 0.5;
+
+/// Fewest cells cut for the depth picture (a few short cuts never are).
+pub const DEPTH_CELLS: usize = 1000;
 
 impl Drawing {
     /// An empty drawing in the view of this kind of machine.
@@ -335,6 +347,59 @@ impl Drawing {
             started: false,
             last: None,
             stop: None,
+            depth: DepthMap::default(),
+        }
+    }
+
+    /// The depth map, when the picture shows it instead of the cuts'
+    /// lines: a mill whose cuts cover at least [`DEPTH_COVERAGE`] of
+    /// their bounding box in [`DEPTH_CELLS`] cells or more (a dense
+    /// raster, which as lines would be a solid area).
+    pub fn depth_view(&self) -> Option<&DepthMap> {
+        let m = &self.depth;
+        let dense = m.coverage() >= DEPTH_COVERAGE && m.cells() >= DEPTH_CELLS;
+        (self.kind == MachineKind::Mill && dense).then_some(m)
+    }
+
+    /// Marks a cut made outside G112/G107 on the depth map: lines and
+    /// plunges straight, arcs (helices included) as chords of at most a
+    /// cell.
+    fn mark_depth(&mut self, e: &Event, from: &Pos) {
+        let Some(m) = e.motion() else { return };
+        let xyz = |p: &Pos| [p[0], p[1], p[2]];
+        let Canon::Arc {
+            center, dir, plane, ..
+        } = &e.cmd
+        else {
+            self.depth.line(xyz(from), xyz(&m.to));
+            return;
+        };
+        let (p1, p2, p3) = plane.axes();
+        let ccw = matches!(dir, ArcDir::Ccw);
+        let (a, b, c) = (
+            (from[p1], from[p2]),
+            (m.to[p1], m.to[p2]),
+            (center[p1], center[p2]),
+        );
+        let sw = kerf_canon::geom::sweep(a, b, c, ccw);
+        let sweep = if ccw { sw } else { -sw };
+        let r = (a.0 - c.0).hypot(a.1 - c.1);
+        let a0 = (a.1 - c.1).atan2(a.0 - c.0);
+        let n = ((r * sw / self.depth.cell()).ceil() as usize).clamp(1, 1024);
+        let mut prev = xyz(from);
+        for k in 1..=n {
+            let t = k as f64 / n as f64;
+            let mut p = *from;
+            if k == n {
+                p = m.to;
+            } else {
+                let ang = a0 + sweep * t;
+                p[p1] = c.0 + r * ang.cos();
+                p[p2] = c.1 + r * ang.sin();
+                p[p3] = from[p3] + (m.to[p3] - from[p3]) * t;
+            }
+            self.depth.line(prev, xyz(&p));
+            prev = xyz(&p);
         }
     }
 
@@ -394,6 +459,9 @@ impl Drawing {
         }
         let (_, a) = self.view(from, rot);
         let class = self.class(e);
+        if class != 0 && rot == Rot::Off && self.kind == MachineKind::Mill {
+            self.mark_depth(e, from);
+        }
         let mut form = Form::Line;
         if let Canon::Arc {
             center, dir, plane, ..

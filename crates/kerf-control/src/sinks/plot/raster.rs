@@ -6,7 +6,10 @@
 use std::io;
 
 use font8x8::legacy::BASIC_LEGACY;
-use tiny_skia::{FillRule, Mask, Paint, PathBuilder, Pixmap, Rect, Stroke, StrokeDash, Transform};
+use tiny_skia::{
+    FillRule, IntSize, Mask, Paint, PathBuilder, Pixmap, PixmapPaint, Rect, Stroke, StrokeDash,
+    Transform,
+};
 
 use super::scene::{arc_points, Anchor, Item, Pen, Rgb, Seg};
 
@@ -118,8 +121,22 @@ fn draw(pm: &mut Pixmap, it: &Item, mask: Option<&Mask>) {
             colour,
             text,
         } => text_at(pm, *at, *size, *anchor, *colour, text),
+        Item::Image { at, w, h, rgba } => {
+            if let Some(img) = image(*w, *h, rgba) {
+                let (x, y) = (at.0.round() as i32, at.1.round() as i32);
+                let paint = PixmapPaint::default();
+                pm.draw_pixmap(x, y, img.as_ref(), &paint, Transform::identity(), mask);
+            }
+        }
         Item::Clip(_) => {}
     }
+}
+
+/// An image's pixels as a pixmap (alpha is 0 or 255, so straight and
+/// premultiplied RGBA are the same); None when the size does not match.
+pub fn image(w: u32, h: u32, rgba: &[u8]) -> Option<Pixmap> {
+    let size = IntSize::from_wh(w, h)?;
+    Pixmap::from_vec(rgba.to_vec(), size)
 }
 
 /// Width of a text in the bitmap font, px.

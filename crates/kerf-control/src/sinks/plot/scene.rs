@@ -13,6 +13,7 @@ use std::f64::consts::PI;
 
 use super::drawing::{Drawing, Form, Shape};
 use super::layout::{Layout, PanelLayout, LEGEND_X};
+use super::shade;
 
 /// A point, px.
 pub type P = (f64, f64);
@@ -134,6 +135,14 @@ pub enum Item {
     /// Items up to the next `Clip` are clipped to this rectangle (top
     /// left, width, height); None ends the clipping.
     Clip(Option<(P, f64, f64)>),
+    /// An image drawn one pixel a picture pixel, its top left at `at`:
+    /// `w` × `h` RGBA pixels, row by row (alpha 0 or 255).
+    Image {
+        at: P,
+        w: u32,
+        h: u32,
+        rgba: Vec<u8>,
+    },
     /// Text, its baseline at `at.1`.
     Text {
         at: P,
@@ -175,7 +184,12 @@ pub fn build(d: &Drawing, l: &Layout) -> Vec<Item> {
     for pl in &l.panels {
         frame(&mut items, pl, d);
         items.push(Item::Clip(Some(((pl.left, pl.top), pl.w, pl.h))));
-        toolpath(&mut items, pl, d.panels[pl.index].shapes(), d.tools.len());
+        let depth = d.depth_view().filter(|_| pl.index == 0);
+        if let Some(map) = depth {
+            items.extend(shade::image(map, pl));
+        }
+        let shapes = d.panels[pl.index].shapes();
+        toolpath(&mut items, pl, shapes, d.tools.len(), depth.is_none());
         items.push(Item::Clip(None));
         if let Some(p) = start_in_view(d, pl) {
             start_mark(&mut items, p);
@@ -308,8 +322,9 @@ fn lathe_marks(items: &mut Vec<Item>, pl: &PanelLayout, edge: f64, top: Option<f
 }
 
 /// One path per class (segments that continue each other chained), the
-/// holes as rings in their tool's colour.
-fn toolpath(items: &mut Vec<Item>, pl: &PanelLayout, shapes: &[Shape], tools: usize) {
+/// holes as rings in their tool's colour; the cuts' lines only when
+/// `cuts` (not over the depth picture, which shows them).
+fn toolpath(items: &mut Vec<Item>, pl: &PanelLayout, shapes: &[Shape], tools: usize, cuts: bool) {
     for class in 0..=tools as u16 {
         let mut segs = Vec::new();
         let mut holes = Vec::new();
@@ -317,6 +332,9 @@ fn toolpath(items: &mut Vec<Item>, pl: &PanelLayout, shapes: &[Shape], tools: us
         for sh in shapes.iter().filter(|s| s.class == class) {
             if sh.form == Form::Hole {
                 holes.push(pl.px(sh.a));
+                continue;
+            }
+            if class != 0 && !cuts {
                 continue;
             }
             if at != Some(sh.a) {
@@ -358,11 +376,20 @@ fn legend(items: &mut Vec<Item>, d: &Drawing, l: &Layout) {
         Ring,
         Square,
         Cross,
+        Ramp,
         Nothing,
     }
     let mut rows = vec![(Mark::Line(path_pen(0)), "rapid".to_string())];
-    for (i, t) in d.tools.iter().enumerate() {
-        rows.push((Mark::Line(path_pen(i as u16 + 1)), format!("T{t} cutting")));
+    match d.depth_view().and_then(|m| m.z_range()) {
+        Some((lo, hi)) => {
+            rows.push((Mark::Ramp, "cut, lowest Z:".into()));
+            rows.push((Mark::Nothing, format!("{} to {} mm", mm(lo), mm(hi))));
+        }
+        None => {
+            for (i, t) in d.tools.iter().enumerate() {
+                rows.push((Mark::Line(path_pen(i as u16 + 1)), format!("T{t} cutting")));
+            }
+        }
     }
     let holes = l
         .panels
@@ -402,9 +429,34 @@ fn legend(items: &mut Vec<Item>, d: &Drawing, l: &Layout) {
             }),
             Mark::Square => start_mark(items, (x + 13.0, y)),
             Mark::Cross => cross(items, (x + 13.0, y)),
+            Mark::Ramp => ramp_mark(items, (x, y)),
             Mark::Nothing => {}
         }
         items.push(text((x + 34.0, y + 5.0), LARGE, Anchor::Start, label));
+    }
+}
+
+/// A Z to two decimals, without trailing zeros.
+fn mm(v: f64) -> String {
+    let s = format!("{:.2}", v);
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".into()
+    } else {
+        s.into()
+    }
+}
+
+/// The depth ramp as a legend sample: 26 px from lowest to highest.
+fn ramp_mark(items: &mut Vec<Item>, (x, y): P) {
+    for k in 0..13 {
+        items.push(Item::Rect {
+            at: (x + 2.0 * k as f64, y - 6.0),
+            w: 2.0,
+            h: 12.0,
+            fill: Some(shade::ramp(k as f64 / 12.0, 1.0)),
+            pen: None,
+        });
     }
 }
 

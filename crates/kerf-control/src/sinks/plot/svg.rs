@@ -99,6 +99,19 @@ fn item(s: &mut String, it: &Item) {
             );
         }
         Item::Clip(_) => {}
+        Item::Image { at, w, h, rgba } => {
+            let Some(png) = super::raster::image(*w, *h, rgba).and_then(|p| p.encode_png().ok())
+            else {
+                return;
+            };
+            let _ = writeln!(
+                s,
+                "<image x=\"{}\" y=\"{}\" width=\"{w}\" height=\"{h}\" image-rendering=\"pixelated\" href=\"data:image/png;base64,{}\"/>",
+                num(at.0),
+                num(at.1),
+                base64(&png)
+            );
+        }
         Item::Text {
             at,
             size,
@@ -122,6 +135,25 @@ fn item(s: &mut String, it: &Item) {
             );
         }
     }
+}
+
+/// Standard base64 (RFC 4648, padded) of `bytes`.
+fn base64(bytes: &[u8]) -> String {
+    const A: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for c in bytes.chunks(3) {
+        let n = (c[0] as u32) << 16
+            | (*c.get(1).unwrap_or(&0) as u32) << 8
+            | *c.get(2).unwrap_or(&0) as u32;
+        for k in 0..4 {
+            if k <= c.len() {
+                out.push(A[(n >> (18 - 6 * k) & 63) as usize] as char);
+            } else {
+                out.push('=');
+            }
+        }
+    }
+    out
 }
 
 /// Path data; arcs as SVG arcs (a full circle as two halves).
@@ -176,6 +208,17 @@ fn escape(t: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn base64_is_the_rfc_4648_alphabet_with_padding() {
+        // RFC 4648 §10's test vectors.
+        let v = [
+            "", "Zg==", "Zm8=", "Zm9v", "Zm9vYg==", "Zm9vYmE=", "Zm9vYmFy",
+        ];
+        for (n, want) in v.iter().enumerate() {
+            assert_eq!(base64(&b"foobar"[..n]), *want);
+        }
+    }
 
     #[test]
     fn numbers_are_short() {

@@ -223,3 +223,67 @@ fn a_program_start_out_of_view_is_not_drawn_nor_listed() {
     assert!(!svg.contains(">program start<"), "{svg}");
     assert!(!svg.contains("width=\"8\" height=\"8\""), "{svg}");
 }
+
+/// A 100 mm square rastered in rows 0.2 mm apart on a ramp from Z-10 at
+/// X0 to Z0 at X100: dense enough that lines would fill it.
+fn ramp_raster() -> Drawing {
+    let mut d = Drawing::new(MachineKind::Mill);
+    let mut evs = vec![motion(true, 1, xyz(0.0, 0.0, 5.0))];
+    for row in 0..=500 {
+        let y = row as f64 * 0.2;
+        let (a, b) = if row % 2 == 0 {
+            (0.0, 100.0)
+        } else {
+            (100.0, 0.0)
+        };
+        evs.push(motion(false, 1, xyz(a, y, a / 10.0 - 10.0)));
+        evs.push(motion(false, 1, xyz(b, y, b / 10.0 - 10.0)));
+    }
+    run(&mut d, &evs);
+    d
+}
+
+#[test]
+fn a_dense_surface_is_drawn_by_its_depth() {
+    // The map's cell is 0.25 mm (100 mm over 512 cells, a power of two),
+    // each holding the lowest Z in it. The area is the square's as
+    // above: s = 680/110 px/mm, X = (px - 90)/s - 5, Y = 105 - (py - 56)/s.
+    let mut d = ramp_raster();
+    assert!(d.depth_view().is_some());
+    let png = render(&mut d, PlotFormat::Png).unwrap();
+    let pm = Pixmap::decode_png(&png).unwrap();
+    let px = |x: u32, y: u32| {
+        let c = pm.pixel(x, y).unwrap().demultiply();
+        [c.red() as f64, c.green() as f64, c.blue() as f64]
+    };
+    let near =
+        |got: [f64; 3], want: [f64; 3]| got.iter().zip(want).all(|(g, w)| (g - w).abs() <= 2.0);
+    // The slope dZ/dX = 0.1 lit from the upper left: (0.1 + 1.5) /
+    // (√1.01 · √4.25) = 0.7704, light 0.55 + 0.45 · 0.7704 = 0.8967.
+    let light = 0.8967;
+    // Pixel (134, 396): X 2.198 in the cell 2.0-2.25, lowest Z -9.8, a
+    // share 0.02 of the range -10..0: 0.08 of the way from the ramp's
+    // first stop (68, 1, 84) to its second (59, 82, 139).
+    let lo = [67.28 * light, 7.48 * light, 88.4 * light];
+    assert!(near(px(134, 396), lo), "{:?} {lo:?}", px(134, 396));
+    // Pixel (726, 396): X 97.96 in the cell 97.75-98.0, Z -0.225, share
+    // 0.9775: 0.91 of the way from (94, 201, 98) to (253, 231, 37).
+    let hi = [238.7 * light, 228.3 * light, 42.5 * light];
+    assert!(near(px(726, 396), hi), "{:?} {hi:?}", px(726, 396));
+    // The legend gives the range instead of the tool's line; the SVG
+    // holds the same picture as an embedded PNG.
+    let svg = String::from_utf8(render(&mut d, PlotFormat::Svg).unwrap()).unwrap();
+    assert!(
+        svg.contains(">-10 to 0 mm<") && !svg.contains(">T1 cutting<"),
+        "{svg}"
+    );
+    assert!(svg.contains("<image x=\"90\" y=\"56\" width=\"680\" height=\"680\""));
+    assert!(svg.contains("href=\"data:image/png;base64,iVBORw0KGgo"));
+}
+
+#[test]
+fn a_few_cuts_stay_lines() {
+    // The square and the hole cover a few percent of their box.
+    let d = square_and_hole();
+    assert!(d.depth_view().is_none());
+}
