@@ -146,20 +146,34 @@ impl ZMap {
         let zlow = s.p0[2].min(s.p1[2]);
         let bmin = pass.guards.lowest();
         let (ya, yb) = (s.p0[1].min(s.p1[1]), s.p0[1].max(s.p1[1]));
-        let mut band: Band = [(0, 0.0, 0, 0, 0.0); BLOCK];
-        let mut n = 0;
-        grid.for_rows(s, tool.reach(), |j, y, a, b| {
-            if n > 0 && band[0].0 / BLOCK != j / BLOCK {
-                self.band(&mut pass, &band[..n]);
-                n = 0;
+        let (shape, zmin) = (pass.shape, self.zmin);
+        let floor_at = move |dy: f64| {
+            let dy = dy.max(0.0).min(tool.radius);
+            (zlow + shape.profile(dy).min(bmin)).max(zmin) as f32
+        };
+        let reach = tool.reach();
+        if let Some(((i0, i1), (j0, j1))) = grid.bounds(s, reach) {
+            let mut band: Band = [(0, 0.0, 0, 0, 0.0); BLOCK];
+            for bj in j0 / BLOCK..=j1 / BLOCK {
+                let rows = ((bj * BLOCK).max(j0), (bj * BLOCK + BLOCK - 1).min(j1));
+                // The band's lowest floor (its row nearest the move's Y
+                // range): where no square of the capsule's columns is
+                // above it, no row of the band can change.
+                let (y_lo, y_hi) = (grid.centre(0, rows.0).1, grid.centre(0, rows.1).1);
+                let low = floor_at((ya - y_hi).max(y_lo - yb));
+                let squares = &self.bmax[bj * self.nc..][i0 / CHUNK..=i1 / CHUNK];
+                if squares.iter().all(|&m| m <= low) {
+                    continue;
+                }
+                let mut n = 0;
+                grid.for_rows_in(s, reach, rows, |j, y, a, b| {
+                    band[n] = (j, y, a, b, floor_at((ya - y).max(y - yb)));
+                    n += 1;
+                });
+                if n > 0 {
+                    self.band(&mut pass, &band[..n]);
+                }
             }
-            let dy = (ya - y).max(y - yb).max(0.0).min(tool.radius);
-            let floor = (zlow + pass.shape.profile(dy).min(bmin)).max(self.zmin) as f32;
-            band[n] = (j, y, a, b, floor);
-            n += 1;
-        });
-        if n > 0 {
-            self.band(&mut pass, &band[..n]);
         }
         let a = grid.cell_area();
         Cut {
