@@ -7,8 +7,11 @@ use crate::grid::Grid;
 use crate::kernels::Pass;
 use crate::tool::MillTool;
 
-/// Most cells a height field may have (256 MB of f32).
-pub const MAX_CELLS: usize = 64 << 20;
+/// Most cells a height field may have: 54.5 million, 218 MB of f32 heights
+/// plus 14 MB of run and square maxima, so that a run at the largest grid
+/// stays under 256 MB of peak memory with the STL and the picture
+/// (measured: docs/benchmarks.md, "Simulation").
+pub const MAX_CELLS: usize = 52 << 20;
 /// Cells of the default resolution (64 MB of f32).
 pub const DEFAULT_CELLS: usize = 16 << 20;
 /// A grid of more than [`crate::mesh::MAX_TOP_VERTICES`] cells is a whole
