@@ -103,12 +103,13 @@ proptest! {
         for (e, f) in a.events.iter().zip(&b.events) {
             prop_assert_eq!((e.kind, e.line, e.tool), (f.kind, f.line, f.tool));
             // The first contact is found by bisection on the two stocks,
-            // which differ by the grid's snapping (about 6e-8 mm): where
-            // the move grazes the material, that moves the contact along
-            // it by the snapping over the grazing angle's sine.
+            // which differ by the grid's snapping (about 6e-8 mm) and by
+            // slivers thinner than that which one boolean leaves and the
+            // other does not: where the move grazes them, the contact
+            // moves along it (0.17 µm seen): within the model's 1 µm.
             prop_assert!((e.t - f.t).abs() < 1e-3, "{e:?} vs {f:?}");
             for k in 0..3 {
-                prop_assert!((e.at[k] - f.at[k]).abs() < 1e-4, "{e:?} vs {f:?}");
+                prop_assert!((e.at[k] - f.at[k]).abs() < 1e-3, "{e:?} vs {f:?}");
             }
             prop_assert!((e.volume_mm3 - f.volume_mm3).abs() < 1e-3, "{e:?} vs {f:?}");
         }
