@@ -417,6 +417,15 @@ impl Sim {
         }
     }
 
+    /// Threads a height field move's rows may be split between (1 or 2;
+    /// the default is 2 where the machine has two cores). The result is
+    /// the same either way.
+    pub fn set_threads(&mut self, n: usize) {
+        if let Model::Mill(z) = &mut self.model {
+            z.threads = n.clamp(1, 2);
+        }
+    }
+
     /// Applies the lathe's pending cut (every read of the model does so
     /// itself; this is for timing a run to its end).
     pub fn settle(&self) {

@@ -105,7 +105,7 @@ impl ZMap {
             cmax: vec![max[2] as f32; nc * ny],
             bmax: vec![max[2] as f32; nc * ny.div_ceil(BLOCK)],
             nc,
-            threads: std::thread::available_parallelism().map_or(1, |n| n.get().min(2)),
+            threads: default_threads(),
             split_cells: SPLIT_CELLS,
             todo: Vec::new(),
         })
@@ -202,6 +202,16 @@ impl ZMap {
     pub fn height_at(&self, x: f64, y: f64) -> Option<f64> {
         let (i, j) = self.grid.cell_at(x, y)?;
         Some(self.at(i, j))
+    }
+}
+
+/// Threads a move may be split between: `KERF_SIM_THREADS` (1 or 2) if
+/// set, else 2 where the machine has two cores or more.
+fn default_threads() -> usize {
+    let env = std::env::var("KERF_SIM_THREADS").ok();
+    match env.and_then(|v| v.trim().parse::<usize>().ok()) {
+        Some(n) => n.clamp(1, 2),
+        None => std::thread::available_parallelism().map_or(1, |n| n.get().min(2)),
     }
 }
 
