@@ -178,3 +178,78 @@ fn standard_output_unknown_target_and_unwritable_output() {
         .unwrap();
     assert_eq!(nowhere.status.code(), Some(2));
 }
+
+/// `kerf run --json`'s cycle time of a program on the HX.
+fn cycle_time(prog: &Path) -> f64 {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_kerf"))
+        .args(["run", "--machine", "hx-mc", "--json"])
+        .arg(prog)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    v["cycle_time_s"].as_f64().unwrap()
+}
+
+#[test]
+fn g107_moves_keep_their_surface_speed() {
+    // 000 §4.7's example: F250 is the speed along the developed surface
+    // of a cylinder of radius 57.299 mm. Its chords reach the output as
+    // machine Z and C; without G107 the same F would time them by Z
+    // alone (89 s instead of 113 s).
+    let prog = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/hx/cylindrical_g107.nc");
+    let kerf = || std::process::Command::new(env!("CARGO_BIN_EXE_kerf"));
+    let fanuc = scratch("g107-fanuc", "nc");
+    let out = kerf()
+        .args(["expand", "--machine", "hx-mc", "-o"])
+        .arg(&fanuc)
+        .arg(&prog)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    // The same control has G107: the output selects it again, in the
+    // plane the original named, and cancels it where the original did.
+    let text = std::fs::read_to_string(&fanuc).unwrap();
+    assert!(
+        text.contains("\nG18 G107 C57.299 (cylindrical_g107.nc:4)\n"),
+        "{text}"
+    );
+    assert!(
+        text.contains("\nG107 C0 (cylindrical_g107.nc:16)\n"),
+        "{text}"
+    );
+    let (want, got) = (cycle_time(&prog), cycle_time(&fanuc));
+    assert!(
+        (want - got).abs() < 0.01,
+        "original {want} s, expanded {got} s"
+    );
+    // LinuxCNC has no G107: each F is scaled to the length the control
+    // times. Line 6's C30 alone (Z fixed): LinuxCNC times it in degrees,
+    // 30 "mm"; on the surface it is 30·π·57.299/180 = 30.00169 mm: F250
+    // becomes 250 · 30 / 30.00169 = 249.98595 (written to 4 decimals).
+    let out = kerf()
+        .args(["expand", "--machine", "hx-mc", "--to", "linuxcnc"])
+        .arg(&prog)
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(!text.contains("G107"), "{text}");
+    let line6 = text
+        .lines()
+        .find(|l| l.contains("(cylindrical_g107.nc:6)"))
+        .unwrap();
+    assert!(line6.starts_with("C30. F249.98"), "{line6}");
+    let f: f64 = line6["C30. F".len()..]
+        .split(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    let k = 57.299 * std::f64::consts::PI / 180.0;
+    assert!((f - 250.0 / k).abs() < 1e-4, "{f}");
+}

@@ -8,7 +8,9 @@
 
 use std::io::{self, Write};
 
-use kerf_canon::{Alarm, ArcDir, Axis, Canon, Event, Feed, Motion, Plane, Pos, NAXES};
+use kerf_canon::{
+    Alarm, ArcDir, Axis, Canon, Event, Feed, ModeChange, Motion, Plane, Pos, RotaryMode, NAXES,
+};
 
 use crate::num;
 use crate::target::{Spelling, Target, ThreadWord};
@@ -48,6 +50,8 @@ pub struct Expander<W: Write> {
     feed_mode: Option<usize>,
     feed: Option<i64>,
     plane: Option<Plane>,
+    /// The original's G112/G107 in force (rotary.rs).
+    pub(crate) rotary: RotaryMode,
     pub(crate) spindle: crate::machine::SpindleState,
     pub(crate) coolant: (bool, bool),
     exact_stop_block: bool,
@@ -90,6 +94,7 @@ impl<W: Write> Expander<W> {
             feed_mode: None,
             feed: None,
             plane: None,
+            rotary: RotaryMode::Off,
             spindle: Default::default(),
             coolant: (false, false),
             exact_stop_block: false,
@@ -157,6 +162,7 @@ impl<W: Write> Expander<W> {
                 seconds,
                 revolutions,
             } => self.dwell(*seconds, *revolutions),
+            Canon::Mode(ModeChange::Rotary(r)) => self.rotary_words(*r),
             _ => self.machine_event(&e.cmd),
         };
         match done {
@@ -280,7 +286,7 @@ impl<W: Write> Expander<W> {
         }
     }
 
-    fn code(&mut self, code: &str) {
+    pub(crate) fn code(&mut self, code: &str) {
         self.sep();
         self.buf.extend_from_slice(code.as_bytes());
     }
@@ -412,11 +418,17 @@ impl<W: Write> Expander<W> {
         }
     }
 
+    /// The machine position after the original's previous motion.
+    pub(crate) fn prev_mto(&self) -> Pos {
+        self.prev_mto
+    }
+
     fn moved(&mut self, m: &Motion) {
         self.prev_mto = m.mto;
     }
 
     fn linear(&mut self, g: u8, m: &Motion, feed: Option<Feed>) -> Written {
+        let feed = feed.map(|f| self.surface_feed(f, m));
         self.frame(m);
         self.motion_prefix();
         if let Some(f) = feed {
@@ -431,7 +443,7 @@ impl<W: Write> Expander<W> {
         Written::Block
     }
 
-    fn plane_code(&mut self, plane: Plane) {
+    pub(crate) fn plane_code(&mut self, plane: Plane) {
         if self.sp.planes && self.plane != Some(plane) {
             self.plane = Some(plane);
             let c = match (self.sp.target, plane) {

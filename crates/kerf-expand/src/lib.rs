@@ -21,6 +21,7 @@
 mod expander;
 mod machine;
 pub mod num;
+mod rotary;
 mod target;
 
 pub use expander::{base_name, Expander};
