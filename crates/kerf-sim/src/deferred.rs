@@ -22,7 +22,9 @@
 use crate::hull::Pt;
 use crate::lathe::{bbox, swept_ccw, Bbox, Contour};
 
-/// Runs held before the batch is applied.
+/// Runs held before the batch is applied (1, 4, 8 and 16 measured: 8
+/// the fewest instructions on whole G71 passes and on pecked grooves;
+/// a batch's regions overlap, and their crossings cost the boolean too).
 pub const BATCH: usize = 8;
 /// Vertices held before the batch is applied.
 pub const BATCH_VERTICES: usize = 1024;
