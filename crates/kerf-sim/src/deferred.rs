@@ -15,9 +15,12 @@
 //!   removing A ∪ B does).
 //!
 //! Whatever reads the stock applies the pending cut first
-//! (`lathe::Section`); the crash checks compare against the stock without
-//! it first, which holds at least the material of the stock after it, so a
-//! check that finds nothing there finds nothing after (lathe.rs).
+//! (`lathe::Section`); a crash check applies it only where its box meets
+//! the region checked ([`Pending::meets`]; elsewhere the stock is the same
+//! with it or without), the holder's is first made against the stock
+//! without it (which holds at least the material: nothing there, nothing
+//! after), and a move retracing the open run ([`Pending::covers`]) meets
+//! nothing (sim.rs).
 
 use crate::hull::Pt;
 use crate::lathe::{bbox, swept_ccw, Bbox, Contour};
