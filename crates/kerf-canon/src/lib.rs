@@ -265,6 +265,33 @@ impl RotaryMode {
             _ => None,
         }
     }
+
+    /// The length of a straight move from `p0` to `p1` (machine
+    /// positions) on the programmed surface, which F is the speed along:
+    /// in G107 with C as its arc length on the cylinder; in G112 in the
+    /// Cartesian plane of the face, from the radii `r0` and `r1` (the work
+    /// X at the two ends, X0 on the C axis) and the turn of C, with Y and
+    /// Z. None when neither is in force (the machine's own length).
+    pub fn programmed_len(self, p0: &Pos, p1: &Pos, r0: f64, r1: f64) -> Option<f64> {
+        let d: [f64; NAXES] = std::array::from_fn(|i| p1[i] - p0[i]);
+        let c = Axis::C as usize;
+        match self {
+            RotaryMode::Off => None,
+            RotaryMode::Cylinder { .. } => {
+                let k = self.mm_per_degree()?;
+                let sq: f64 = (0..NAXES).filter(|&i| i != c).map(|i| d[i] * d[i]).sum();
+                Some((sq + (d[c] * k).powi(2)).sqrt())
+            }
+            RotaryMode::Polar => {
+                // The chord between (r0, θ0) and (r1, θ1): (r1 − r0)² +
+                // 4·r0·r1·sin²(Δθ/2), exact for small turns too.
+                let half = (d[c] / 2.0).to_radians().sin();
+                let face = (r1 - r0).powi(2) + 4.0 * r0 * r1 * half * half;
+                let (y, z) = (d[Axis::Y as usize], d[Axis::Z as usize]);
+                Some((face.max(0.0) + y * y + z * z).sqrt())
+            }
+        }
+    }
 }
 
 /// A canonical command with the source position of the block that made it.

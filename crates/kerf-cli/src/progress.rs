@@ -6,32 +6,27 @@ use std::io::IsTerminal;
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
-use kerf_control::{Outcome, RunError, Runner, Sink};
+use kerf_control::{Outcome, RunError, Runner, Sink, Tick};
 
-/// Runs `runner` to its end through `sinks`, with the bar on stderr, and
-/// finishes it.
+/// Runs `runner` to its end through `sinks` (the interpreter on a thread
+/// of its own: [`Runner::run`]), with the bar on stderr, and finishes it.
 pub fn run_to_end(
-    mut runner: Runner,
+    runner: Runner,
     sinks: &mut [&mut dyn Sink],
     quiet: bool,
 ) -> Result<Outcome, RunError> {
     let mut bar = Progress::new(quiet);
-    let stepped = loop {
-        match runner.step(sinks) {
-            Ok(kerf_control::Progress::Running) => bar.tick(&runner),
-            Ok(kerf_control::Progress::Ended) => break Ok(()),
-            Err(e) => break Err(e),
-        }
-    };
+    let out = runner.run_with_progress(sinks, &mut |t| bar.tick(t));
     bar.done();
-    stepped.and_then(|_| runner.finish(sinks))
+    out
 }
 
 /// After how long a run shows the bar.
 const DELAY: Duration = Duration::from_secs(1);
 
-/// Steps between looks at the clock.
-const EVERY: u32 = 4096;
+/// Ticks (each a batch of a few hundred events) between looks at the
+/// clock.
+const EVERY: u32 = 8;
 
 /// Drives the bar from the runner's progress.
 pub struct Progress {
@@ -52,8 +47,8 @@ impl Progress {
         }
     }
 
-    /// Called after every step of the runner.
-    pub fn tick(&mut self, r: &Runner) {
+    /// Called after every batch of events the runner hands out.
+    pub fn tick(&mut self, t: Tick) {
         if !self.on {
             return;
         }
@@ -65,11 +60,11 @@ impl Progress {
         if self.bar.is_none() && self.start.elapsed() < DELAY {
             return;
         }
-        let (read, len) = r.source_progress().unwrap_or((0, 0));
+        let (read, len) = t.source.unwrap_or((0, 0));
         let since = self.start.elapsed();
         let bar = self.bar.get_or_insert_with(|| new_bar(len, since));
         bar.set_position(read);
-        bar.set_message(format!("{} blocks", r.interp().blocks()));
+        bar.set_message(format!("{} blocks", t.blocks));
     }
 
     /// Removes the bar.

@@ -13,7 +13,7 @@
 use std::io;
 
 use kerf_canon::{Alarm, Canon, Event, Pos};
-use kerf_control::{Context, Job, Sink, Timed};
+use kerf_control::{Context, Live, Job, Sink, Timed};
 
 /// Counts what happens and remembers the slowest cutting move.
 #[derive(Default)]
@@ -30,7 +30,7 @@ impl Sink for Watch {
         "watch"
     }
 
-    fn event(&mut self, e: &Event, _from: &Pos, _cx: &Context) -> io::Result<()> {
+    fn event(&mut self, e: &Event, _from: &Pos, _cx: &Live) -> io::Result<()> {
         match &e.cmd {
             Canon::Rapid { .. } => self.rapids += 1,
             Canon::Feed { .. } | Canon::Arc { .. } | Canon::Thread { .. } => self.cuts += 1,
@@ -40,7 +40,7 @@ impl Sink for Watch {
         Ok(())
     }
 
-    fn timed(&mut self, t: &Timed, _cx: &Context) -> io::Result<()> {
+    fn timed(&mut self, t: &Timed, _cx: &Live) -> io::Result<()> {
         let cutting = matches!(t.event.cmd, Canon::Feed { .. } | Canon::Arc { .. });
         if cutting && self.longest.is_none_or(|(s, _)| t.time > s) {
             self.longest = Some((t.time, t.event.src.line));

@@ -50,6 +50,6 @@ pub mod suggest;
 pub mod warnings;
 
 pub use job::{load_profile, Job, LoadError, Source};
-pub use runner::{Outcome, Progress, RunError, Runner};
-pub use sink::{Context, Sink, Timed};
+pub use runner::{Outcome, Progress, RunError, Runner, Tick};
+pub use sink::{Context, Live, Sink, Timed};
 pub use warnings::Warning;

@@ -7,34 +7,32 @@
 //! dwells ([`Sink::timed`], through the pending queue below) and the
 //! timeline pieces ([`Sink::pieces`]). [`Runner::finish`] stops the
 //! planner, drains it, saves the retained state and finishes the sinks.
-//! [`Runner::run`] is the two together.
+//! [`Runner::run`] runs a whole program with the interpreter on a thread
+//! of its own and the planner and the sinks on the caller's
+//! ([`threaded`]); what the sinks are handed, in what order, is the same
+//! as stepping.
 //!
-//! The pending queue holds each motion and dwell until the planner reports
-//! its end time; the planner reports them in order and holds at most its
-//! look-ahead window, so the queue is bounded by that window too.
+//! What happens to each event after the interpreter (the sinks, the
+//! planner, the pending queue, the warnings) is [`downstream`].
 
-use std::collections::VecDeque;
+mod downstream;
+mod threaded;
+
 use std::fmt;
 use std::io;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
-use kerf_canon::{Alarm, Canon, Event, Pos};
+use kerf_canon::Alarm;
 use kerf_interp::{Interp, Step};
-use kerf_motion::{Dynamics, Piece, Planner};
+use kerf_motion::{Dynamics, Planner};
 
 use crate::job::Lint;
-use crate::sink::{Context, Sink, Timed};
-use crate::warnings::{Detector, Warning, Warnings};
-
-/// A motion or dwell waiting for its end time.
-struct Pending {
-    event: Event,
-    from: Pos,
-    to: Pos,
-    feed_mm_min: Option<f64>,
-}
+use crate::sink::{Context, Files, Sink};
+use crate::warnings::Warning;
+use downstream::Downstream;
+use threaded::End;
 
 /// Where a run stands after a [`Runner::step`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -87,6 +85,16 @@ impl fmt::Display for RunError {
 
 impl std::error::Error for RunError {}
 
+/// How far a run has got, for a progress display.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Tick {
+    /// Blocks executed so far.
+    pub blocks: u64,
+    /// Bytes read of the main program and its size, when known
+    /// ([`Runner::track_source`]).
+    pub source: Option<(u64, u64)>,
+}
+
 fn sink_err(s: &dyn Sink) -> impl FnOnce(io::Error) -> RunError + '_ {
     move |e| RunError::Sink(s.name().to_string(), e)
 }
@@ -95,19 +103,11 @@ fn sink_err(s: &dyn Sink) -> impl FnOnce(io::Error) -> RunError + '_ {
 /// queue of records waiting for their end time, and the retained state.
 pub struct Runner {
     it: Interp,
-    planner: Planner,
-    plan: bool,
-    pieces: bool,
+    down: Downstream,
     started: bool,
     alarm: Option<Alarm>,
     ended: bool,
-    pending: VecDeque<Pending>,
-    /// Work position after the last event.
-    work: Pos,
-    batch: Vec<Piece>,
     state: Option<PathBuf>,
-    detector: Detector,
-    warnings: Warnings,
     /// Size of the main program and the count of bytes read from it.
     source: Option<(u64, Arc<AtomicU64>)>,
     lint: Option<Lint>,
@@ -124,18 +124,11 @@ impl Runner {
         let work = it.work_position();
         Runner {
             it,
-            planner,
-            plan: true,
-            pieces: false,
+            down: Downstream::new(planner, work),
             started: false,
             alarm: None,
             ended: false,
-            pending: VecDeque::new(),
-            work,
-            batch: Vec::new(),
             state: None,
-            detector: Detector::default(),
-            warnings: Warnings::default(),
             source: None,
             lint: None,
         }
@@ -170,7 +163,7 @@ impl Runner {
     /// planned (no `timed`, no `pieces`, no cycle time). Call before the
     /// first step.
     pub fn interpret_only(&mut self) {
-        self.plan = false;
+        self.down.plan = false;
     }
 
     /// The interpreter (positions, variables, file names).
@@ -180,45 +173,75 @@ impl Runner {
 
     /// The planner (planned time so far, totals).
     pub fn planner(&self) -> &Planner {
-        &self.planner
+        &self.down.planner
     }
 
     /// The warnings found so far.
     pub fn warnings(&self) -> &[Warning] {
-        &self.warnings.list
+        &self.down.warnings.list
     }
 
     /// Adds a warning found outside the runner (e.g. by [`crate::lint`]);
     /// sinks see it in [`Context::warnings`] from then on.
     pub fn warn(&mut self, w: Warning) {
-        self.warnings.push(w);
+        self.down.warnings.push(w);
     }
 
     /// The planned time so far, s: every motion ending before it has been
     /// handed to [`Sink::timed`] or is in the look-ahead window.
     pub fn planned_time(&self) -> f64 {
-        self.planner.now()
+        self.down.planner.now()
     }
 
     fn context(&self) -> Context<'_> {
         Context {
             interp: &self.it,
-            planner: &self.planner,
-            warnings: &self.warnings.list,
+            planner: &self.down.planner,
+            warnings: &self.down.warnings.list,
         }
     }
 
-    /// Runs the program to its end and finishes.
-    pub fn run(mut self, sinks: &mut [&mut dyn Sink]) -> Result<Outcome, RunError> {
-        while self.step(sinks)? == Progress::Running {}
+    /// Runs the program to its end and finishes: the interpreter on a
+    /// thread of its own, the planner and the sinks on this one. The
+    /// sinks are handed the same calls in the same order as by
+    /// [`Runner::step`] until [`Progress::Ended`] and then
+    /// [`Runner::finish`]; the outcome and the errors are the same.
+    pub fn run(self, sinks: &mut [&mut dyn Sink]) -> Result<Outcome, RunError> {
+        self.run_with_progress(sinks, &mut |_| {})
+    }
+
+    /// [`Runner::run`], calling `tick` every few hundred events with how
+    /// far the run has got.
+    pub fn run_with_progress(
+        mut self,
+        sinks: &mut [&mut dyn Sink],
+        tick: &mut dyn FnMut(Tick),
+    ) -> Result<Outcome, RunError> {
+        if !self.started {
+            self.start(sinks)?;
+        }
+        if !self.ended {
+            let source = self.source.clone();
+            let mut on = |blocks| {
+                let source = source
+                    .as_ref()
+                    .map(|(len, r)| (r.load(Ordering::Relaxed).min(*len), *len));
+                tick(Tick { blocks, source })
+            };
+            let end = threaded::run(&mut self.it, &mut self.down, sinks, &mut on)?;
+            self.ended = true;
+            if let End::Alarm(a) = end {
+                self.alarm = Some(a);
+            }
+        }
         self.finish(sinks)
     }
 
     fn start(&mut self, sinks: &mut [&mut dyn Sink]) -> Result<(), RunError> {
         self.started = true;
-        self.pieces = self.plan && sinks.iter().any(|s| s.wants_pieces());
-        if self.pieces {
-            self.planner.keep_pieces();
+        self.down.pieces = self.down.plan && sinks.iter().any(|s| s.wants_pieces());
+        if self.down.pieces {
+            self.down.planner.keep_pieces();
         }
         let cx = self.context();
         for s in sinks.iter_mut() {
@@ -238,7 +261,8 @@ impl Runner {
         }
         match self.it.step() {
             Step::Event(e) => {
-                self.event(e, sinks)?;
+                let files = Files::Interp(&self.it);
+                self.down.event(e, files, self.it.profile(), sinks)?;
                 Ok(Progress::Running)
             }
             Step::End => {
@@ -253,103 +277,25 @@ impl Runner {
         }
     }
 
-    #[inline]
-    fn event(&mut self, e: Event, sinks: &mut [&mut dyn Sink]) -> Result<(), RunError> {
-        let from = self.work;
-        if let Some(m) = e.motion() {
-            self.work = m.to;
-        }
-        let cx = self.context();
-        for s in sinks.iter_mut() {
-            s.event(&e, &from, &cx).map_err(sink_err(*s))?;
-        }
-        if !self.plan {
-            self.detector.event(&e, false, &self.it, &mut self.warnings);
-            return Ok(());
-        }
-        let feed_mm_min = match &e.cmd {
-            Canon::Feed { feed, m } => Some(
-                self.planner
-                    .feed_mm_min(*feed, kerf_motion::geom::line_len(&from, &m.to)),
-            ),
-            Canon::Arc { feed, .. } => Some(self.planner.feed_mm_min(*feed, 0.0)),
-            _ => None,
-        };
-        let stalled = self.planner.stalled;
-        self.planner.push(&e);
-        let stalled = self.planner.stalled > stalled;
-        self.detector
-            .event(&e, stalled, &self.it, &mut self.warnings);
-        if e.motion().is_some() || matches!(e.cmd, Canon::Dwell { .. }) {
-            self.pending.push_back(Pending {
-                event: e,
-                from,
-                to: self.work,
-                feed_mm_min,
-            });
-        }
-        self.drain(sinks)
-    }
-
-    /// Hands out the records whose end time is planned and the finished
-    /// timeline pieces.
-    fn drain(&mut self, sinks: &mut [&mut dyn Sink]) -> Result<(), RunError> {
-        while let Some(d) = self.planner.next_done() {
-            // Handed out where it lies in the queue (a pop would first
-            // move the 350-byte record out).
-            let Some(p) = self.pending.front() else {
-                break;
-            };
-            let t = Timed {
-                event: &p.event,
-                from: p.from,
-                to: p.to,
-                t_end: d.t_end,
-                time: d.time,
-                feed_mm_min: p.feed_mm_min,
-            };
-            let cx = Context {
-                interp: &self.it,
-                planner: &self.planner,
-                warnings: &self.warnings.list,
-            };
-            for s in sinks.iter_mut() {
-                s.timed(&t, &cx).map_err(sink_err(*s))?;
-            }
-            self.pending.pop_front();
-        }
-        if !self.pieces {
-            return Ok(());
-        }
-        self.batch.clear();
-        while let Some(p) = self.planner.next_piece() {
-            self.batch.push(p);
-        }
-        let cx = self.context();
-        for s in sinks.iter_mut().filter(|s| s.wants_pieces()) {
-            s.pieces(&self.batch, &cx).map_err(sink_err(*s))?;
-        }
-        Ok(())
-    }
-
     /// Ends the run: plans what is still queued, hands it out, saves the
     /// retained state and finishes every sink.
     pub fn finish(mut self, sinks: &mut [&mut dyn Sink]) -> Result<Outcome, RunError> {
         if !self.started {
             self.start(sinks)?;
         }
-        if self.plan {
-            self.planner.finish();
-            self.drain(sinks)?;
+        let down = &mut self.down;
+        if down.plan {
+            down.planner.finish();
+            down.drain(Files::Interp(&self.it), self.it.profile(), sinks)?;
         }
-        self.detector
-            .end(&self.it, self.alarm.is_some(), &mut self.warnings);
+        down.detector
+            .end(&self.it, self.alarm.is_some(), &mut down.warnings);
         if let Some(lint) = self.lint.take() {
             for w in lint.join() {
-                self.warnings.push(w);
+                down.warnings.push(w);
             }
             // In source order within each file.
-            self.warnings
+            down.warnings
                 .list
                 .sort_by(|a, b| (&a.file, a.line, a.col).cmp(&(&b.file, b.line, b.col)));
         }
@@ -370,10 +316,10 @@ impl Runner {
             alarm_file,
             alarm: self.alarm,
             blocks: self.it.blocks(),
-            cycle_time: self.plan.then(|| self.planner.now()),
-            stalled: self.planner.stalled,
-            warnings: self.warnings.list,
-            warnings_dropped: self.warnings.dropped,
+            cycle_time: self.down.plan.then(|| self.down.planner.now()),
+            stalled: self.down.planner.stalled,
+            warnings: self.down.warnings.list,
+            warnings_dropped: self.down.warnings.dropped,
         })
     }
 }

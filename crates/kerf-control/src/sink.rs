@@ -1,8 +1,11 @@
 //! The [`Sink`] trait: what the [`Runner`](crate::Runner) hands to every
 //! output while a program runs.
 //!
-//! A sink sees the run through four calls, each with a [`Context`] to read
-//! the interpreter and the planner:
+//! A sink sees the run through four calls: `start` and `finish` with a
+//! [`Context`] to read the interpreter and the planner, the calls in
+//! between with a [`Live`] (file names, profile, planner, warnings: what
+//! the runner can give while the interpreter runs ahead on a thread of its
+//! own, see [`Runner::run`](crate::Runner::run)):
 //!
 //! 1. [`Sink::start`] once, before the first block (the machine position
 //!    at power-on, the planner's smoothing for a sampler);
@@ -27,7 +30,7 @@
 use std::io;
 
 use kerf_canon::{Alarm, Event, Pos};
-use kerf_interp::Interp;
+use kerf_interp::{Interp, Profile};
 use kerf_motion::{Piece, Planner};
 
 use crate::warnings::Warning;
@@ -45,10 +48,65 @@ pub struct Context<'a> {
     pub warnings: &'a [Warning],
 }
 
-impl Context<'_> {
+impl<'a> Context<'a> {
     /// The name of a source file by its id (`SrcRef::file`).
     pub fn file(&self, id: u32) -> &str {
         self.interp.file_name(id)
+    }
+
+    /// The same run as seen by [`Sink::event`], [`Sink::timed`] and
+    /// [`Sink::pieces`] (to hand a sink its calls outside a runner).
+    pub fn live(&self) -> Live<'a> {
+        Live {
+            files: Files::Interp(self.interp),
+            profile: self.interp.profile(),
+            planner: self.planner,
+            warnings: self.warnings,
+        }
+    }
+}
+
+/// Where the names of the source files come from: the interpreter itself,
+/// or the copies the interpreter's thread sent with the events.
+#[derive(Clone, Copy)]
+pub enum Files<'a> {
+    /// The interpreter's own table.
+    Interp(&'a Interp),
+    /// Names by file id, as sent ("?" for an id not sent, as the
+    /// interpreter names an unknown one).
+    Names(&'a [String]),
+}
+
+impl<'a> Files<'a> {
+    /// The name of file `id`.
+    pub fn name(&self, id: u32) -> &'a str {
+        match self {
+            Files::Interp(it) => it.file_name(id),
+            Files::Names(n) => n.get(id as usize).map(String::as_str).unwrap_or("?"),
+        }
+    }
+}
+
+/// Read access to the run for [`Sink::event`], [`Sink::timed`] and
+/// [`Sink::pieces`]: the names of the source files the events point
+/// into, the machine profile, the planner and the warnings so far. (The
+/// interpreter itself may be running ahead on another thread.)
+#[derive(Clone, Copy)]
+pub struct Live<'a> {
+    pub(crate) files: Files<'a>,
+    /// The machine profile.
+    pub profile: &'a Profile,
+    /// The planner (zero without planning).
+    pub planner: &'a Planner,
+    /// The warnings found so far.
+    pub warnings: &'a [Warning],
+}
+
+impl Live<'_> {
+    /// The name of a source file by its id (`SrcRef::file`) of an event
+    /// handed out so far.
+    pub fn file(&self, id: u32) -> &str {
+        self.files.name(id)
     }
 }
 
@@ -91,18 +149,18 @@ pub trait Sink {
 
     /// Every canonical command in execution order; `from` is the work
     /// position before it.
-    fn event(&mut self, _e: &Event, _from: &Pos, _cx: &Context) -> io::Result<()> {
+    fn event(&mut self, _e: &Event, _from: &Pos, _cx: &Live) -> io::Result<()> {
         Ok(())
     }
 
     /// Every motion and dwell, in order, once its end time is planned.
-    fn timed(&mut self, _t: &Timed, _cx: &Context) -> io::Result<()> {
+    fn timed(&mut self, _t: &Timed, _cx: &Live) -> io::Result<()> {
         Ok(())
     }
 
     /// The timeline pieces the planner finished since the last call, in
     /// time order (only when [`Sink::wants_pieces`]).
-    fn pieces(&mut self, _batch: &[Piece], _cx: &Context) -> io::Result<()> {
+    fn pieces(&mut self, _batch: &[Piece], _cx: &Live) -> io::Result<()> {
         Ok(())
     }
 

@@ -14,7 +14,9 @@
 //! | `KERF-W006` | a main program that ends in M99 (a bar-feed loop): kerf ran `main_passes` passes, the control repeats until reset |
 
 use kerf_canon::{Canon, Event, Feed, SrcRef};
-use kerf_interp::{Interp, MachineKind};
+use kerf_interp::{Interp, MachineKind, Profile};
+
+use crate::sink::Files;
 
 /// Most warnings kept in one run; the rest are counted.
 pub const MAX_WARNINGS: usize = 1000;
@@ -53,11 +55,11 @@ impl Warnings {
         }
     }
 
-    fn at(&mut self, it: &Interp, src: SrcRef, code: &'static str, message: String) {
+    fn at(&mut self, files: Files, src: SrcRef, code: &'static str, message: String) {
         self.push(Warning {
             code,
             message,
-            file: it.file_name(src.file).to_string(),
+            file: files.name(src.file).to_string(),
             line: src.line,
             col: src.col,
         });
@@ -78,12 +80,20 @@ pub struct Detector {
 
 impl Detector {
     /// Looks at one event; `stalled` says whether the planner could not
-    /// time it (a cut with no feed because the spindle is stopped).
-    pub fn event(&mut self, e: &Event, stalled: bool, it: &Interp, out: &mut Warnings) {
+    /// time it (a cut with no feed because the spindle is stopped);
+    /// `files` names the file the event points into.
+    pub fn event(
+        &mut self,
+        e: &Event,
+        stalled: bool,
+        profile: &Profile,
+        files: Files,
+        out: &mut Warnings,
+    ) {
         self.events += 1;
         if stalled && !self.stalled {
             out.at(
-                it,
+                files,
                 e.src,
                 "KERF-W004",
                 "cutting with the spindle stopped (a per-revolution feed or a thread \
@@ -97,7 +107,7 @@ impl Detector {
         if let Canon::End { code } = e.cmd {
             self.end = Some((code, e.src));
         }
-        if self.lathe.is_none() && it.profile().kind == MachineKind::Mill {
+        if self.lathe.is_none() && profile.kind == MachineKind::Mill {
             self.lathe = lathe_sign(e).map(|why| (e.src, why));
         }
     }
@@ -107,7 +117,7 @@ impl Detector {
         if let Some((src, why)) = self.lathe.take() {
             let p = it.profile();
             out.at(
-                it,
+                Files::Interp(it),
                 src,
                 "KERF-W002",
                 format!(
@@ -133,13 +143,13 @@ impl Detector {
         match self.end {
             Some((2 | 30, _)) => {}
             Some((99, src)) => out.at(
-                it,
+                Files::Interp(it),
                 src,
                 "KERF-W006",
                 "the main program ends in M99: the control repeats it until reset; kerf ran the passes of --set main_passes (default 1)".into(),
             ),
             Some((_, src)) => out.at(
-                it,
+                Files::Interp(it),
                 src,
                 "KERF-W005",
                 "the program ends without M02 or M30".into(),

@@ -5,7 +5,7 @@
 use std::io;
 
 use kerf_canon::{Alarm, Canon, Event, Pos};
-use kerf_control::{Context, Job, Progress, RunError, Sink, Timed};
+use kerf_control::{Context, Live, Job, Progress, RunError, Sink, Timed};
 use kerf_motion::Piece;
 
 /// Records every call a sink receives.
@@ -31,11 +31,11 @@ impl Sink for Recorder {
         self.starts += 1;
         Ok(())
     }
-    fn event(&mut self, e: &Event, from: &Pos, _cx: &Context) -> io::Result<()> {
+    fn event(&mut self, e: &Event, from: &Pos, _cx: &Live) -> io::Result<()> {
         self.events.push((e.clone(), *from));
         Ok(())
     }
-    fn timed(&mut self, t: &Timed, _cx: &Context) -> io::Result<()> {
+    fn timed(&mut self, t: &Timed, _cx: &Live) -> io::Result<()> {
         if self.fail_timed {
             return Err(io::Error::other("disk full"));
         }
@@ -43,7 +43,7 @@ impl Sink for Recorder {
             .push((t.event.clone(), t.from, t.to, t.t_end, t.feed_mm_min));
         Ok(())
     }
-    fn pieces(&mut self, batch: &[Piece], _cx: &Context) -> io::Result<()> {
+    fn pieces(&mut self, batch: &[Piece], _cx: &Live) -> io::Result<()> {
         self.pieces.extend_from_slice(batch);
         Ok(())
     }

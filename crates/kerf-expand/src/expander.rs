@@ -418,6 +418,18 @@ impl<W: Write> Expander<W> {
         }
     }
 
+    /// The move to `to` (work) in the output's own numbers: each axis's
+    /// written value less the value the output holds (zero on an axis the
+    /// machine does not have).
+    pub(crate) fn written_move(&self, to: &Pos) -> Pos {
+        let mut d = [0.0; NAXES];
+        for a in &self.axes {
+            let i = *a as usize;
+            d[i] = self.value_of(i, self.scaled_axis(i, to[i])) - self.held(i);
+        }
+        d
+    }
+
     /// The machine position after the original's previous motion.
     pub(crate) fn prev_mto(&self) -> Pos {
         self.prev_mto

@@ -5,9 +5,10 @@
 
 use std::io::{self, BufRead, BufReader, Read, Seek, SeekFrom};
 
-/// Anything a program can be read from.
-pub trait ProgramRead: Read + Seek {}
-impl<T: Read + Seek> ProgramRead for T {}
+/// Anything a program can be read from (`Send`, so that an interpreter
+/// can run on a thread of its own).
+pub trait ProgramRead: Read + Seek + Send {}
+impl<T: Read + Seek + Send> ProgramRead for T {}
 
 /// A position in a source that can be returned to with [`LineSource::seek`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

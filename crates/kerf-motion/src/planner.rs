@@ -6,7 +6,7 @@
 use std::collections::VecDeque;
 
 use kerf_canon::{
-    Axis, Canon, Event, Feed, ModeChange, Motion, Plane, Pos, SpindleDir, SrcRef, NAXES,
+    Canon, Event, Feed, ModeChange, Motion, Plane, Pos, RotaryMode, SpindleDir, SrcRef, NAXES,
 };
 
 use crate::dynamics::Dynamics;
@@ -15,7 +15,9 @@ use crate::trap::Trap;
 
 mod lag_memo;
 mod resume;
+mod turn;
 use lag_memo::LagMemo;
+use turn::turn_bound;
 pub use resume::Modes;
 
 /// Time totals by category, seconds.
@@ -172,6 +174,12 @@ pub struct Planner {
     d: Dynamics,
     t_smooth: f64,
     stages: usize,
+    /// `stages · t_smooth²` (the corner and arc tolerance limits' divisor).
+    k_tt: f64,
+    /// First and second moments of the smoothing kernel's positive half
+    /// (the corner rounding, see [`Planner::junction`]).
+    m1: f64,
+    m2: f64,
     q: VecDeque<Seg>,
     window: usize,
     head_v: f64,
@@ -200,9 +208,9 @@ pub struct Planner {
     pub time: Breakdown,
     /// Cutting path length so far, mm.
     pub feed_length: f64,
-    /// In G107 cylindrical interpolation, the millimetres on the developed
-    /// surface per degree of C (F is then a speed on that surface).
-    surface_mm_per_deg: Option<f64>,
+    /// G112 / G107 in force: F is then a speed on the programmed surface
+    /// (the face's Cartesian plane, the developed cylinder).
+    rotary: RotaryMode,
     /// Rapid path length so far, mm.
     pub rapid_length: f64,
     /// Spindle speed limit used with constant surface speed, rpm (the
@@ -277,9 +285,19 @@ impl Planner {
         } else {
             1.0
         };
+        let k = stages as f64;
+        let t = t_smooth;
+        let (m1, m2) = if stages == 1 {
+            (t / 8.0, t * t / 48.0)
+        } else {
+            (t / 6.0, t * t / 24.0)
+        };
         Planner {
             t_smooth,
             stages,
+            k_tt: k * t * t,
+            m1,
+            m2,
             q: VecDeque::with_capacity(window + 1),
             window,
             head_v: 0.0,
@@ -301,7 +319,7 @@ impl Planner {
             pieces: None,
             time: Breakdown::default(),
             feed_length: 0.0,
-            surface_mm_per_deg: None,
+            rotary: RotaryMode::Off,
             rapid_length: 0.0,
             max_rpm: f64::INFINITY,
             s_clamp: f64::INFINITY,
@@ -541,7 +559,9 @@ impl Planner {
                     p1: m.mto,
                 };
                 let off = comp_offset(m, e.prog.as_deref());
-                let (len, surface) = (g.len(), self.surface_len(&self.pos, &m.mto));
+                let r = (self.work_x, m.to[0]);
+                let surface = self.rotary.programmed_len(&self.pos, &m.mto, r.0, r.1);
+                let (len, surface) = (g.len(), surface.unwrap_or_else(|| g.len()));
                 let ratio = if surface > 0.0 { len / surface } else { 1.0 };
                 self.cut(g, *feed, m.to[0], false, off, ratio);
                 self.feed_length += surface - len;
@@ -673,28 +693,13 @@ impl Planner {
                     self.finalize_head();
                 }
             }
-            ModeChange::Rotary(r) => self.surface_mm_per_deg = r.mm_per_degree(),
+            ModeChange::Rotary(r) => self.rotary = r,
             ModeChange::Stitch(_) => {}
             ModeChange::FeedOverride(on) => self.ignore_override = !on,
             ModeChange::SpindleClamp(rpm) => {
                 self.s_clamp = if rpm.is_nan() { f64::INFINITY } else { rpm };
             }
         }
-    }
-
-    /// The length of a line on the programmed surface: in G107 (000 §4.7)
-    /// C counts as the arc length on the cylinder, so that F is the speed
-    /// along the developed surface; otherwise the machine path length.
-    fn surface_len(&self, p0: &Pos, p1: &Pos) -> f64 {
-        let Some(k) = self.surface_mm_per_deg else {
-            return line_len(p0, p1);
-        };
-        let mut d = *p1;
-        for i in 0..NAXES {
-            d[i] -= p0[i];
-        }
-        d[Axis::C as usize] *= k;
-        dot(&d, &d).sqrt()
     }
 
     fn rapid(&mut self, to: Pos, linear: bool) {
@@ -835,10 +840,8 @@ impl Planner {
                     // the path tolerance.
                     v = v.min((0.5 * amin * r).sqrt());
                     v = v.min((0.5 * jmin * r * r).cbrt());
-                    let k = self.stages as f64;
-                    let t = self.t_smooth;
-                    if t > 0.0 {
-                        v = v.min((24.0 * r * d.path_tolerance / (k * t * t)).sqrt());
+                    if self.t_smooth > 0.0 {
+                        v = v.min((24.0 * r * d.path_tolerance / self.k_tt).sqrt());
                     }
                 }
             }
@@ -874,11 +877,7 @@ impl Planner {
         // Corner rounding of the smoothing kernel: the first and second
         // moments of its positive half, times the speed and the
         // acceleration on either side.
-        let (m1, m2) = if self.stages == 1 {
-            (t / 8.0, t * t / 48.0)
-        } else {
-            (t / 6.0, t * t / 24.0)
-        };
+        let (m1, m2) = (self.m1, self.m2);
         if s > 1e-9 && m1 > 0.0 {
             let room = self.d.path_tolerance / s - m2 * p.acc.max(n.acc);
             if room <= 0.0 {
@@ -886,11 +885,20 @@ impl Planner {
             }
             v = v.min(room / m1);
         }
-        let th = c.acos();
-        if th > 1e-9 && t > 0.0 {
-            let r = lmin / th;
-            let k = self.stages as f64;
-            v = v.min((24.0 * r * self.d.path_tolerance / (k * t * t)).sqrt());
+        // The smoothing's radial error on the turn as an arc of radius
+        // lmin/θ; the `acos` is skipped when even the largest angle the
+        // chord allows would not lower v (the same v: each step below is
+        // monotonic in θ).
+        let th_max = turn_bound(s);
+        if th_max > 1e-9 && t > 0.0 {
+            let tol = self.d.path_tolerance;
+            if !(v <= (24.0 * (lmin / th_max) * tol / self.k_tt).sqrt()) {
+                let th = c.acos();
+                if th > 1e-9 {
+                    let r = lmin / th;
+                    v = v.min((24.0 * r * tol / self.k_tt).sqrt());
+                }
+            }
         }
         Some(v.max(0.0))
     }
@@ -1183,31 +1191,37 @@ impl Planner {
         }
     }
 
+    /// Plans the segment at the head of the queue and takes it out (read
+    /// where it lies: a pop would first copy the whole segment out).
     fn finalize_head(&mut self) {
-        let Some(s) = self.q.pop_front() else { return };
-        self.q_tmin = if self.q.is_empty() {
+        let Some(h) = self.q.front() else { return };
+        let (len, vmax, acc, stop) = (h.len, h.vmax, h.acc, h.stop);
+        let (last, id) = (h.last, h.id);
+        let next_vb = self.q.get(1).map(|n| n.vb);
+        self.q_tmin = if next_vb.is_none() {
             0.0
         } else {
-            self.q_tmin - s.len / s.vmax
+            self.q_tmin - len / vmax
         };
         let v0 = self.head_v;
-        let v1 = if s.stop {
+        let v1 = if stop {
             0.0
         } else {
-            match self.q.front() {
-                Some(n) => n.vb.min((v0 * v0 + 2.0 * s.acc * s.len).sqrt()),
+            match next_vb {
+                Some(vb) => vb.min((v0 * v0 + 2.0 * acc * len).sqrt()),
                 None => 0.0,
             }
         };
-        let trap = Trap::plan(s.len, v0, v1, s.vmax, s.acc);
-        self.head_v = if s.stop { 0.0 } else { trap.v1 };
+        let trap = Trap::plan(len, v0, v1, vmax, acc);
+        self.head_v = if stop { 0.0 } else { trap.v1 };
         if self.gain.is_finite() {
             if self.q_tmin * self.gain >= 40.0 {
                 // No stop can come within 40/K s: this segment's (and all
                 // earlier) lag will have decayed by e^-40 before any stop.
                 self.lag = [0.0; NAXES];
             } else {
-                self.track_lag_seg(&s.geom, &s.t_in, &trap);
+                let (geom, t_in) = (self.q[0].geom, self.q[0].t_in);
+                self.track_lag_seg(&geom, &t_in, &trap);
             }
         }
         let t0 = self.now;
@@ -1215,14 +1229,17 @@ impl Planner {
         if let Some(p) = self.pieces.as_mut() {
             p.push_back(Piece {
                 t0,
-                kind: PieceKind::Move { geom: s.geom, trap },
+                kind: PieceKind::Move {
+                    geom: self.q[0].geom,
+                    trap,
+                },
             });
         }
         self.now += dt;
         let mut spent = dt;
-        let t_end = if s.stop {
+        let t_end = if stop {
             let pos = self.pos;
-            self.pos = s.geom.end();
+            self.pos = self.q[0].geom.end();
             let drain = self.drain_time() + self.settle();
             self.hold(drain);
             self.pos = pos;
@@ -1231,11 +1248,12 @@ impl Planner {
         } else {
             self.now + 0.5 * self.drain_time()
         };
+        self.q.pop_front();
         self.time.cutting += spent;
         self.ev_spent += spent;
-        if s.last {
+        if last {
             self.done.push_back(Done {
-                id: s.id,
+                id,
                 t_end,
                 time: std::mem::take(&mut self.ev_spent),
             });
@@ -1284,6 +1302,50 @@ mod tests {
             let y = if k.is_multiple_of(2) { 0.0 } else { 0.05 };
             pl.push(&feed_to(k as f64 * 5.0, y));
         }
+    }
+
+    /// G112 (000 §4.6): F is the speed in the face's Cartesian plane. At
+    /// X20 C0, the virtual point (20, 10) is X √500, C 26.565°: 10 mm on
+    /// the face, 1 s at F600 (plus the ramps), though X moves 2.36 mm.
+    /// After G113 the same move back is timed by its linear axes.
+    #[test]
+    fn g112_feed_is_a_speed_on_the_face() {
+        let d = Dynamics::uniform([true; NAXES], 24000.0, 2000.0, 1e5, 10000.0);
+        let start = [20.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        let mut pl = Planner::new(d.clone(), start, 20.0);
+        let mv = |x: f64, c: f64| {
+            let p = [x, 0.0, 0.0, 0.0, 0.0, c];
+            ev(Canon::Feed {
+                m: Motion { to: p, mto: p },
+                feed: Feed::PerMin(600.0),
+            })
+        };
+        let r1 = 500f64.sqrt();
+        pl.push(&ev(Canon::Mode(ModeChange::Rotary(RotaryMode::Polar))));
+        pl.push(&mv(r1, 26.565_051_177));
+        pl.push(&ev(Canon::Mode(ModeChange::Rotary(RotaryMode::Off))));
+        pl.push(&mv(20.0, 0.0));
+        pl.finish();
+        let back = r1 - 20.0;
+        assert!(
+            (pl.feed_length - 10.0 - back).abs() < 1e-6,
+            "{}",
+            pl.feed_length
+        );
+        let t0 = pl.next_done().unwrap().time;
+        let t1 = pl.next_done().unwrap().time;
+        // The same stop after a plain 10 mm line in X: the ramps and the
+        // settling are the line's, so the two take the same time.
+        let mut line = Planner::new(d, start, 20.0);
+        line.push(&mv(30.0, 0.0));
+        line.push(&ev(Canon::Mode(ModeChange::Rotary(RotaryMode::Off))));
+        line.finish();
+        let t_line = line.next_done().unwrap().time;
+        assert!(
+            t_line > 1.0 && (t0 - t_line).abs() < 0.02 * t_line,
+            "{t0} vs {t_line}"
+        );
+        assert!(t1 > back / 10.0 && t1 < t_line, "{t1}");
     }
 
     /// G107 on a cylinder of radius 10: Z20 C180 is sqrt(20² + (10·π)²)

@@ -8,7 +8,7 @@ use kerf_canon::{Alarm, Event, Pos};
 use kerf_expand::{Control, Expander, Spelling, Target};
 use kerf_interp::DialectId;
 
-use crate::sink::{Context, Sink};
+use crate::sink::{Context, Live, Sink};
 
 /// The control kerf-expand writes for, from a profile's dialect.
 pub fn control_of(d: DialectId) -> Control {
@@ -75,7 +75,7 @@ impl<W: Write> Sink for Expand<W> {
         Ok(())
     }
 
-    fn event(&mut self, e: &Event, _from: &Pos, cx: &Context) -> io::Result<()> {
+    fn event(&mut self, e: &Event, _from: &Pos, cx: &Live) -> io::Result<()> {
         match self.x.as_mut() {
             Some(x) => x.event(e, cx.file(e.src.file)),
             None => Ok(()),

@@ -14,7 +14,7 @@ use kerf_expand::{Expander, Target};
 
 use super::behind::{Behind, Named};
 use super::expand::started;
-use crate::sink::{Context, Sink};
+use crate::sink::{Context, Live, Sink};
 
 /// What the thread is handed. Nearly every item is the large variant, so
 /// it is kept inline: a box would be an allocation per item.
@@ -96,12 +96,12 @@ impl<W: Write + Send + 'static> ExpandBehind<W> {
     }
 
     /// Sends the name of file `id` if it has not been sent.
-    fn name(&mut self, id: u32, cx: &Context) -> io::Result<()> {
+    fn name(&mut self, id: u32, name: &str) -> io::Result<()> {
         if !self.named.first(id) {
             return Ok(());
         }
         match self.behind.as_mut() {
-            Some(b) => b.push(Item::Name(id, cx.file(id).to_string())),
+            Some(b) => b.push(Item::Name(id, name.to_string())),
             None => Ok(()),
         }
     }
@@ -124,8 +124,8 @@ impl<W: Write + Send + 'static> Sink for ExpandBehind<W> {
         Ok(())
     }
 
-    fn event(&mut self, e: &Event, _from: &Pos, cx: &Context) -> io::Result<()> {
-        self.name(e.src.file, cx)?;
+    fn event(&mut self, e: &Event, _from: &Pos, cx: &Live) -> io::Result<()> {
+        self.name(e.src.file, cx.file(e.src.file))?;
         match self.behind.as_mut() {
             Some(b) => b.push(Item::Event(e.clone())),
             None => Ok(()),
@@ -134,7 +134,7 @@ impl<W: Write + Send + 'static> Sink for ExpandBehind<W> {
 
     fn finish(&mut self, cx: &Context, alarm: Option<&Alarm>) -> io::Result<()> {
         if let Some(a) = alarm {
-            self.name(a.src.file, cx)?;
+            self.name(a.src.file, cx.file(a.src.file))?;
             if let Some(b) = self.behind.as_mut() {
                 b.push(Item::Alarm(a.clone()))?;
             }

@@ -5,7 +5,7 @@ use std::io::{self, Write};
 
 use kerf_canon::{Alarm, Canon, Event, Pos};
 
-use crate::sink::{Context, Sink};
+use crate::sink::{Context, Live, Sink};
 
 /// Writes each operator message as one line.
 pub struct Log<W: Write> {
@@ -24,7 +24,7 @@ impl<W: Write> Sink for Log<W> {
         "log"
     }
 
-    fn event(&mut self, e: &Event, _from: &Pos, _cx: &Context) -> io::Result<()> {
+    fn event(&mut self, e: &Event, _from: &Pos, _cx: &Live) -> io::Result<()> {
         if let Canon::Message(text) = &e.cmd {
             writeln!(self.out, "{text}")?;
         }

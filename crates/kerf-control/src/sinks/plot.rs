@@ -32,7 +32,7 @@ use std::path::Path;
 use kerf_canon::{Alarm, Canon, Event, ModeChange, Pos};
 use kerf_interp::MachineKind;
 
-use crate::sink::{Context, Sink};
+use crate::sink::{Context, Live, Sink};
 
 pub use drawing::{Drawing, Rot, MAX_SHAPES};
 pub use layout::Layout;
@@ -129,7 +129,7 @@ impl<W: Write> Sink for Plot<W> {
         Ok(())
     }
 
-    fn event(&mut self, e: &Event, from: &Pos, _cx: &Context) -> io::Result<()> {
+    fn event(&mut self, e: &Event, from: &Pos, _cx: &Live) -> io::Result<()> {
         match e.cmd {
             Canon::Mode(ModeChange::Rotary(m)) => self.rot = m,
             _ if e.motion().is_some() => self.drawing.add(e, from, self.rot),

@@ -9,7 +9,7 @@ use kerf_interp::Interp;
 use kerf_motion::Planner;
 use serde::Serialize;
 
-use crate::sink::{Context, Sink, Timed};
+use crate::sink::{Context, Live, Sink, Timed};
 use crate::warnings::Warning;
 
 /// The report sink: gathers a [`Summary`] from the event stream and
@@ -57,12 +57,12 @@ impl<W: Write> Sink for Report<W> {
         Ok(())
     }
 
-    fn event(&mut self, e: &Event, from: &Pos, _cx: &Context) -> io::Result<()> {
+    fn event(&mut self, e: &Event, from: &Pos, _cx: &Live) -> io::Result<()> {
         self.summary.event(e, from);
         Ok(())
     }
 
-    fn timed(&mut self, t: &Timed, _cx: &Context) -> io::Result<()> {
+    fn timed(&mut self, t: &Timed, _cx: &Live) -> io::Result<()> {
         self.summary.timed(t);
         Ok(())
     }

@@ -8,7 +8,7 @@ use kerf_canon::{Alarm, Axis};
 use kerf_motion::{Piece, Sampler};
 
 use super::toolpath::num;
-use crate::sink::{Context, Sink};
+use crate::sink::{Context, Live, Sink};
 
 /// Writes one CSV line per sample period.
 pub struct Sample<W: Write> {
@@ -58,7 +58,7 @@ impl<W: Write> Sink for Sample<W> {
         Ok(())
     }
 
-    fn pieces(&mut self, batch: &[Piece], _cx: &Context) -> io::Result<()> {
+    fn pieces(&mut self, batch: &[Piece], _cx: &Live) -> io::Result<()> {
         let Some(s) = self.sampler.as_mut() else {
             return Ok(());
         };

@@ -18,7 +18,7 @@ use kerf_interp::{Interp, Profile};
 use kerf_sim::{render, stl, OffsetData, Sim, SimReport, Stock, ToolTable};
 use serde::Serialize;
 
-use crate::sink::{Context, Sink, Timed};
+use crate::sink::{Context, Live, Sink, Timed};
 
 /// One simulation event in the report.
 #[derive(Clone, Debug, Serialize)]
@@ -253,7 +253,7 @@ impl Sink for SimSink {
         Ok(())
     }
 
-    fn event(&mut self, e: &Event, from: &Pos, _cx: &Context) -> io::Result<()> {
+    fn event(&mut self, e: &Event, from: &Pos, _cx: &Live) -> io::Result<()> {
         if timed_kind(e) {
             self.seen += 1;
         } else if self.seen == self.done {
@@ -264,7 +264,7 @@ impl Sink for SimSink {
         Ok(())
     }
 
-    fn timed(&mut self, t: &Timed, _cx: &Context) -> io::Result<()> {
+    fn timed(&mut self, t: &Timed, _cx: &Live) -> io::Result<()> {
         self.t = t.t_end;
         self.sim.event(t.event, &t.from, t.t_end);
         self.done += 1;

@@ -6,7 +6,7 @@ use std::io::{self, Write};
 
 use kerf_canon::{Axis, Canon, Event, Feed, Pos, NAXES};
 
-use crate::sink::{Context, Sink, Timed};
+use crate::sink::{Context, Live, Sink, Timed};
 
 /// Writes JSON Lines.
 pub struct Toolpath<W: Write> {
@@ -240,7 +240,7 @@ impl<W: Write> Sink for Toolpath<W> {
         Ok(())
     }
 
-    fn timed(&mut self, t: &Timed, cx: &Context) -> io::Result<()> {
+    fn timed(&mut self, t: &Timed, cx: &Live) -> io::Result<()> {
         let id = t.event.src.file as usize;
         if self.heads.len() <= id {
             self.heads.resize(id + 1, None);

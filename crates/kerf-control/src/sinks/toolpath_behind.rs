@@ -16,7 +16,7 @@ use kerf_canon::{Event, Pos};
 
 use super::behind::{Behind, Named};
 use super::toolpath::Toolpath;
-use crate::sink::{Context, Sink, Timed};
+use crate::sink::{Context, Live, Sink, Timed};
 
 /// What the thread is handed. Nearly every item is the large variant, so
 /// it is kept inline: a box would be an allocation per item.
@@ -83,7 +83,7 @@ impl<W: Write + Send + 'static> Sink for ToolpathBehind<W> {
         Ok(())
     }
 
-    fn timed(&mut self, t: &Timed, cx: &Context) -> io::Result<()> {
+    fn timed(&mut self, t: &Timed, cx: &Live) -> io::Result<()> {
         let Some(b) = self.behind.as_mut() else {
             return Err(io::Error::other("the toolpath was not started"));
         };
@@ -177,7 +177,7 @@ mod tests {
                 time: 0.01,
                 feed_mm_min: None,
             };
-            sink.timed(&t, &cx)?;
+            sink.timed(&t, &cx.live())?;
         }
         sink.finish(&cx, None)
     }
