@@ -13,7 +13,7 @@
 use std::io;
 
 use kerf_canon::{Alarm, Canon, Event, Pos};
-use kerf_control::{Context, Live, Job, Sink, Timed};
+use kerf_control::{Context, Job, Live, Sink, Timed};
 
 /// Counts what happens and remembers the slowest cutting move.
 #[derive(Default)]

@@ -5,7 +5,7 @@
 use std::io;
 
 use kerf_canon::{Alarm, Canon, Event, Pos};
-use kerf_control::{Context, Live, Job, Progress, RunError, Sink, Timed};
+use kerf_control::{Context, Job, Live, Progress, RunError, Sink, Timed};
 use kerf_motion::Piece;
 
 /// Records every call a sink receives.

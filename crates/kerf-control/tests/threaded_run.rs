@@ -180,7 +180,10 @@ fn file_names_and_warnings_of_a_subprogram_arrive_with_its_events() {
     assert!(a.contains("KERF-W005"), "{a}");
     assert_eq!(Ok(a), b);
     let files: Vec<&str> = ra.timed.iter().map(|t| t.6.as_str()).collect();
-    assert_eq!(files.iter().filter(|f| f.ends_with("O1000.nc")).count(), 600);
+    assert_eq!(
+        files.iter().filter(|f| f.ends_with("O1000.nc")).count(),
+        600
+    );
     assert_eq!(files.first(), Some(&"main.nc"));
     assert_eq!(ra, rb);
     std::fs::remove_dir_all(&dir).ok();
@@ -195,7 +198,10 @@ fn interpret_only_runs_the_same() {
         r
     };
     let [(a, ra), (b, rb)] = both(load, Recorder::default);
-    assert!(a.as_ref().unwrap().contains(" None "), "no cycle time: {a:?}");
+    assert!(
+        a.as_ref().unwrap().contains(" None "),
+        "no cycle time: {a:?}"
+    );
     assert_eq!(a, b);
     assert!(ra.timed.is_empty());
     assert_eq!(ra, rb);

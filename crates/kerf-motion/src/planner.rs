@@ -17,8 +17,8 @@ mod lag_memo;
 mod resume;
 mod turn;
 use lag_memo::LagMemo;
-use turn::turn_bound;
 pub use resume::Modes;
+use turn::turn_bound;
 
 /// Time totals by category, seconds.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
