@@ -85,6 +85,7 @@ fn main() {
             warnings: &[],
         };
         w.start(&cx).expect("start");
+        let live = cx.live();
         let (t0, c0) = (Instant::now(), cpu_seconds());
         for i in 0..n {
             let e = &events[i % events.len()];
@@ -97,7 +98,7 @@ fn main() {
                 time: 0.0123457,
                 feed_mm_min: Some(1200.0),
             };
-            w.timed(&t, &cx).expect("write");
+            w.timed(&t, &live).expect("write");
         }
         let secs = match (c0, cpu_seconds()) {
             (Some(a), Some(b)) if b > a => b - a,
