@@ -5,7 +5,8 @@
 //! - [`Job`] says what to load (program, machine, libraries, settings,
 //!   offsets, retained state) and [`Job::load`] returns a [`Runner`];
 //! - [`Runner`] steps the program through the planner and hands every
-//!   event, timed record and timeline piece to the [`Sink`]s;
+//!   event, timed record and timeline piece to the [`Sink`]s
+//!   ([`Runner::run`] with the interpreter on a thread of its own);
 //! - [`sinks`] holds the outputs the CLI writes: toolpath, report, plot,
 //!   sample, log, one file each;
 //! - [`settings`], [`offsets`] and [`dynamics`] read the `--set` list, an

@@ -12,13 +12,16 @@ use kerf_canon::{Alarm, Event, Pos};
 use kerf_control::{Context, Job, Live, Outcome, Progress, RunError, Runner, Sink, Timed};
 use kerf_motion::Piece;
 
+/// A timed record as received: event, from, to, end time, time, feed,
+/// file name.
+type Record = (Event, Pos, Pos, f64, f64, Option<f64>, String);
+
 /// Every call a sink receives, with the file names it was given.
 #[derive(Default, Debug, PartialEq)]
 struct Recorder {
     pieces_wanted: bool,
     events: Vec<(Event, Pos, String)>,
-    #[allow(clippy::type_complexity)] // one tuple per call, compared whole
-    timed: Vec<(Event, Pos, Pos, f64, f64, Option<f64>, String)>,
+    timed: Vec<Record>,
     pieces: Vec<Piece>,
     warnings_seen: usize,
     finished: Option<Option<String>>,

@@ -466,3 +466,88 @@ fn call(f: Func, x: f64, y: Option<f64>, inc: f64) -> Result<f64, MacroError> {
     }
     Ok(r)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 000 §14.2.3: the HX has locals #1-#99, commons #100-#199 and
+    /// retained #200-#699; Fanuc locals #1-#33, commons #100-#199 and
+    /// retained #500-#999. Other numbers below 1000 are not variables.
+    #[test]
+    fn the_hx_and_fanuc_numberings() {
+        let hx = Vars::with_numbering(true);
+        let fanuc = Vars::new();
+        for (i, in_hx, in_fanuc) in [
+            (1, true, true),
+            (33, true, true),
+            (34, true, false),
+            (99, true, false),
+            (150, true, true),
+            (200, true, false),
+            (699, true, true),
+            (700, false, true),
+            (500, true, true),
+            (999, false, true),
+            (1000, false, false),
+        ] {
+            assert_eq!(hx.class(i) == VarClass::Plain, in_hx, "HX #{i}");
+            assert_eq!(fanuc.class(i) == VarClass::Plain, in_fanuc, "Fanuc #{i}");
+        }
+        assert_eq!(hx.retained_range(), 200..=699);
+        assert_eq!(fanuc.retained_range(), 500..=999);
+    }
+
+    #[test]
+    fn reads_writes_and_their_errors() {
+        let mut v = Vars::new();
+        assert_eq!(v.get(100.0).unwrap(), None);
+        v.set(100.0, Some(2.5)).unwrap();
+        assert_eq!(v.get(100.0).unwrap(), Some(2.5));
+        assert_eq!(v.plain_index(100.0), Some(100));
+        assert_eq!(v.plain_index(100.5), None);
+        assert_eq!(
+            v.set(0.0, Some(1.0)).unwrap_err().kind,
+            AlarmKind::BadVariable
+        );
+        assert_eq!(
+            v.set(1.0, Some(f64::NAN)).unwrap_err().kind,
+            AlarmKind::MathError
+        );
+        assert_eq!(v.get(40.0).unwrap_err().kind, AlarmKind::BadVariable);
+        assert_eq!(v.get(-1.0).unwrap_err().kind, AlarmKind::BadVariable);
+        assert_eq!(v.get(1.5).unwrap_err().kind, AlarmKind::BadVariable);
+        assert_eq!(Vars::number(12.0000001).unwrap(), 12);
+    }
+
+    #[test]
+    fn retained_locals_and_reset() {
+        let mut v = Vars::new();
+        assert!(v.set_retained(500, 1.25) && !v.set_retained(100, 1.0));
+        assert!(!v.set_retained(501, f64::INFINITY));
+        assert_eq!(v.retained(), [(500, 1.25)]);
+        v.set(1.0, Some(7.0)).unwrap();
+        v.set(101.0, Some(8.0)).unwrap();
+        // A macro call takes the locals and gives them back on return.
+        let saved = v.take_locals();
+        assert_eq!((saved[0], v.get(1.0).unwrap()), (Some(7.0), None));
+        let mut args = [None; 33];
+        args[0] = Some(3.0);
+        v.put_args(&args);
+        assert_eq!(v.get(1.0).unwrap(), Some(3.0));
+        v.put_locals(&saved);
+        assert_eq!(v.get(1.0).unwrap(), Some(7.0));
+        v.clear_locals();
+        v.clear_commons();
+        assert_eq!((v.get(1.0).unwrap(), v.get(101.0).unwrap()), (None, None));
+        assert_eq!(v.retained(), [(500, 1.25)]);
+    }
+
+    /// 000 §14.2.4: X#1 with #1 = 1.2345 moves 1.235 (half away from zero).
+    #[test]
+    fn round_to_the_increment() {
+        assert_eq!(round_to(1.2345, 0.001), 1.235);
+        assert_eq!(round_to(-1.2345, 0.001), -1.235);
+        assert_eq!(round_to(0.00049, 0.001), 0.0);
+    }
+}

@@ -107,8 +107,87 @@ impl Words {
         }
     }
 
+    /// Adds a G code (value × 10) written at byte `at`; false when the
+    /// block has [`MAX_CODES`] already.
+    #[inline]
+    pub fn push_g(&mut self, code10: u16, at: u32) -> bool {
+        let Some(slot) = self.g.get_mut(self.ng) else {
+            return false;
+        };
+        *slot = (code10, at);
+        self.ng += 1;
+        true
+    }
+
+    /// Adds an M code written at byte `at`; false when the block has
+    /// `max` (at most [`MAX_CODES`]) already.
+    #[inline]
+    pub fn push_m(&mut self, m: u32, at: u32, max: usize) -> bool {
+        if self.nm >= max.min(MAX_CODES) {
+            return false;
+        }
+        self.m[self.nm] = (m, at);
+        self.nm += 1;
+        true
+    }
+
     /// True when the block carries G code `code10`.
     pub fn has_g(&self, code10: u16) -> bool {
         self.gs().iter().any(|&(g, _)| g == code10)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn w(v: f64, at: u32) -> WVal {
+        WVal { v, point: true, at }
+    }
+
+    #[test]
+    fn letters_are_read_taken_and_cleared() {
+        let mut ws = Words::default();
+        ws.letters[(b'X' - b'A') as usize] = Some(w(12.5, 4));
+        assert!(ws.has(b'X') && !ws.has(b'Y'));
+        assert_eq!(ws.get(b'X'), Some(w(12.5, 4)));
+        assert_eq!(ws.take(b'X'), Some(w(12.5, 4)));
+        assert!(!ws.has(b'X'));
+        ws.letters[(b'Z' - b'A') as usize] = Some(w(-1.0, 9));
+        ws.comma_r = Some(w(2.0, 12));
+        assert!(ws.push_g(10, 0));
+        ws.clear();
+        assert!(ws.get(b'Z').is_none() && ws.corner().is_none() && ws.gs().is_empty());
+    }
+
+    #[test]
+    fn codes_keep_their_order_up_to_the_limit() {
+        let mut ws = Words::default();
+        // G90 G01 in that order, by value × 10.
+        assert!(ws.push_g(900, 0) && ws.push_g(10, 4));
+        assert_eq!(ws.gs(), [(900, 0), (10, 4)]);
+        assert!(ws.has_g(10) && !ws.has_g(0));
+        for i in 2..MAX_CODES {
+            assert!(ws.push_g(40, i as u32));
+        }
+        assert!(!ws.push_g(40, 99), "an 11th G code");
+        assert_eq!(ws.gs().len(), MAX_CODES);
+        // A control taking 3 M codes a block refuses the 4th.
+        for m in [3, 8, 98] {
+            assert!(ws.push_m(m, 0, 3));
+        }
+        assert!(!ws.push_m(30, 0, 3));
+        assert_eq!(ws.ms().iter().map(|m| m.0).collect::<Vec<_>>(), [3, 8, 98]);
+    }
+
+    #[test]
+    fn a_chamfer_word_comes_before_a_corner_r() {
+        let mut ws = Words {
+            comma_r: Some(w(3.0, 8)),
+            ..Words::default()
+        };
+        assert_eq!(ws.corner(), Some((false, w(3.0, 8))));
+        ws.comma_c = Some(w(1.0, 2));
+        assert_eq!(ws.corner(), Some((true, w(1.0, 2))));
     }
 }

@@ -12,7 +12,12 @@
 //! - in kerf-interp outside `src/dialect/`, no dialect id
 //!   (`DialectId::Hx` …) and no G code number (value×10) matched as a
 //!   literal (a pattern, an `==`/`!=` operand, a `has_g`/`gcode` argument):
-//!   the interpreter asks the dialect's tables what a code means.
+//!   the interpreter asks the dialect's tables what a code means;
+//! - likewise no number of an M code the interpreter acts on (a table M
+//!   code whose action or side effect is not just an auxiliary event:
+//!   M02/M30, M98/M99, M03-M09, M76/M77 …) as such a literal, integer or
+//!   float: M10 and up anywhere, the lower ones where the other side is
+//!   an M code (`m`, `*_m`, `m_*`, `.m[i].0`, `mcode(…)`).
 
 use std::path::{Path, PathBuf};
 
@@ -33,6 +38,13 @@ const DIALECT_DIR: &str = "crates/kerf-interp/src/dialect/";
 
 /// Calls whose integer argument is a G code number.
 const CODE_CALLS: [&str; 2] = ["has_g", "gcode"];
+
+/// Calls whose argument is an M code number.
+const M_CALLS: [&str; 2] = ["has_m", "mcode"];
+
+/// M codes below this are matched only against an M code operand (0-9
+/// are too common as plain numbers to tell apart).
+const M_ANYWHERE: u16 = 10;
 
 fn workspace() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
@@ -112,6 +124,13 @@ struct Findings {
     /// The G code numbers (value×10) of the dialects' tables that the
     /// code-literal rule looks for; empty: the rule is off.
     codes: Vec<u16>,
+    /// Lines matching a literal that is the number of an M code the
+    /// interpreter acts on.
+    m_literals: Vec<usize>,
+    /// The M code numbers the M rule looks for; empty: the rule is off.
+    mcodes: Vec<u16>,
+    /// Inside the patterns of a `match` (or `matches!`) on an M code.
+    m_scrutinee: bool,
 }
 
 impl<'ast> Visit<'ast> for Findings {
@@ -168,12 +187,17 @@ impl<'ast> Visit<'ast> for Findings {
     }
 
     fn visit_pat(&mut self, p: &'ast syn::Pat) {
+        let m = self.m_scrutinee;
         match p {
-            syn::Pat::Lit(l) => self.code_lit(&l.lit),
+            syn::Pat::Lit(l) => {
+                self.code_lit(&l.lit);
+                self.m_lit(&l.lit, m);
+            }
             syn::Pat::Range(r) => {
                 for e in [&r.start, &r.end].into_iter().flatten() {
                     if let syn::Expr::Lit(l) = &**e {
                         self.code_lit(&l.lit);
+                        self.m_lit(&l.lit, m);
                     }
                 }
             }
@@ -182,11 +206,23 @@ impl<'ast> Visit<'ast> for Findings {
         visit::visit_pat(self, p);
     }
 
+    fn visit_expr_match(&mut self, e: &'ast syn::ExprMatch) {
+        self.visit_expr(&e.expr);
+        let outer = self.m_scrutinee;
+        for arm in &e.arms {
+            self.m_scrutinee = is_m_code(&e.expr);
+            self.visit_pat(&arm.pat);
+            self.m_scrutinee = outer;
+            self.visit_expr(&arm.body);
+        }
+    }
+
     fn visit_expr_binary(&mut self, e: &'ast syn::ExprBinary) {
         if matches!(e.op, syn::BinOp::Eq(_) | syn::BinOp::Ne(_)) {
-            for side in [&*e.left, &*e.right] {
+            for (side, other) in [(&*e.left, &*e.right), (&*e.right, &*e.left)] {
                 if let syn::Expr::Lit(l) = side {
                     self.code_lit(&l.lit);
+                    self.m_lit(&l.lit, is_m_code(other));
                 }
             }
         }
@@ -194,10 +230,15 @@ impl<'ast> Visit<'ast> for Findings {
     }
 
     fn visit_expr_method_call(&mut self, e: &'ast syn::ExprMethodCall) {
-        if CODE_CALLS.iter().any(|c| e.method == c) {
-            for a in &e.args {
-                if let syn::Expr::Lit(l) = a {
+        let g = CODE_CALLS.iter().any(|c| e.method == c);
+        let m = M_CALLS.iter().any(|c| e.method == c);
+        for a in &e.args {
+            if let syn::Expr::Lit(l) = a {
+                if g {
                     self.code_lit(&l.lit);
+                }
+                if m {
+                    self.m_lit(&l.lit, true);
                 }
             }
         }
@@ -216,7 +257,10 @@ impl<'ast> Visit<'ast> for Findings {
             });
             if let Ok((e, p)) = parsed {
                 self.visit_expr(&e);
+                let outer = self.m_scrutinee;
+                self.m_scrutinee = is_m_code(&e);
                 self.visit_pat(&p);
+                self.m_scrutinee = outer;
             }
         }
         visit::visit_macro(self, m);
@@ -236,6 +280,26 @@ impl Findings {
         }
     }
 
+    /// An integer or float literal that is the number of an M code the
+    /// interpreter acts on: M10 and up anywhere, lower ones where
+    /// `m_operand` (the other side is an M code).
+    fn m_lit(&mut self, l: &syn::Lit, m_operand: bool) {
+        let v = match l {
+            syn::Lit::Int(i) => i.base10_parse::<u16>().ok(),
+            syn::Lit::Float(f) => f
+                .base10_parse::<f64>()
+                .ok()
+                .filter(|v| v.fract() == 0.0 && (0.0..=65535.0).contains(v))
+                .map(|v| v as u16),
+            _ => None,
+        };
+        if let Some(v) = v {
+            if (v >= M_ANYWHERE || m_operand) && self.mcodes.contains(&v) {
+                self.m_literals.push(l.span().start().line);
+            }
+        }
+    }
+
     fn measure(&mut self, sig: &syn::Signature, body: &syn::Block) {
         let first = sig.fn_token.span().start().line;
         let last = body.brace_token.span.close().end().line;
@@ -244,6 +308,46 @@ impl Findings {
             self.long_fns.push((sig.ident.to_string(), first, n));
         }
     }
+}
+
+/// Whether an expression is an M code by its name: `m`, `mc`, `*_m`,
+/// `m_*`, a field or index of one (`self.words.m[i].0`), `mcode(…)`.
+fn is_m_code(e: &syn::Expr) -> bool {
+    let named = |s: String| s == "m" || s == "mc" || s.starts_with("m_") || s.ends_with("_m");
+    match e {
+        syn::Expr::Path(p) => p
+            .path
+            .segments
+            .last()
+            .is_some_and(|s| named(s.ident.to_string())),
+        syn::Expr::Field(f) => match &f.member {
+            syn::Member::Named(n) => named(n.to_string()),
+            syn::Member::Unnamed(_) => is_m_code(&f.base),
+        },
+        syn::Expr::Index(i) => is_m_code(&i.expr),
+        syn::Expr::MethodCall(c) => M_CALLS.iter().any(|m| c.method == m),
+        syn::Expr::Unary(u) => is_m_code(&u.expr),
+        syn::Expr::Paren(p) => is_m_code(&p.expr),
+        syn::Expr::Cast(c) => is_m_code(&c.expr),
+        syn::Expr::Reference(r) => is_m_code(&r.expr),
+        _ => false,
+    }
+}
+
+/// The M code numbers of the three dialects' tables that the interpreter
+/// acts on (an action or side effect besides the auxiliary event).
+fn acted_mcodes() -> Vec<u16> {
+    use kerf_interp::dialect::{MAction, MAlso};
+    use kerf_interp::{Dialect, DialectId};
+    let mut v: Vec<u16> = [DialectId::Hx, DialectId::Puma, DialectId::Hurco]
+        .into_iter()
+        .flat_map(|d| Dialect::get(d).mcodes.iter())
+        .filter(|m| m.action != MAction::Aux || m.also != MAlso::Nothing)
+        .map(|m| m.code)
+        .collect();
+    v.sort_unstable();
+    v.dedup();
+    v
 }
 
 /// Every G code number of the three dialects' tables.
@@ -283,6 +387,7 @@ fn test_module_files(path: &str, file: &syn::File) -> Vec<String> {
 
 fn findings() -> Vec<(String, Findings)> {
     let codes = table_codes();
+    let mcodes = acted_mcodes();
     let parsed: Vec<(String, syn::File)> = sources()
         .into_iter()
         .map(|(path, text)| {
@@ -300,6 +405,7 @@ fn findings() -> Vec<(String, Findings)> {
         .map(|(path, file)| {
             let mut f = Findings {
                 codes: codes.clone(),
+                mcodes: mcodes.clone(),
                 ..Findings::default()
             };
             f.visit_file(&file);
@@ -356,6 +462,33 @@ fn dialect_ids_and_code_literals_only_in_dialect() {
     );
     // The rule walked the interpreter (it is not vacuous).
     assert!(checked > 30, "checked only {checked} files");
+}
+
+#[test]
+fn acted_m_code_numbers_only_in_dialect() {
+    let mut bad = Vec::new();
+    let mut checked = 0;
+    for (path, f) in findings() {
+        if !path.starts_with(INTERP_SRC) || path.starts_with(DIALECT_DIR) {
+            continue;
+        }
+        checked += 1;
+        bad.extend(
+            f.m_literals
+                .iter()
+                .map(|l| format!("{path}:{l}: M code number")),
+        );
+    }
+    assert!(
+        bad.is_empty(),
+        "M code numbers matched outside {DIALECT_DIR}: ask the dialect's M \
+         table (an MAction, an MAlso) instead:\n{}",
+        bad.join("\n")
+    );
+    assert!(checked > 30, "checked only {checked} files");
+    // The rule looks for the codes it should (it is not vacuous).
+    let m = acted_mcodes();
+    assert!([2, 30, 98, 99].iter().all(|c| m.contains(c)), "{m:?}");
 }
 
 #[test]
@@ -429,4 +562,40 @@ fn the_dialect_rule_sees_what_it_should() {
     f.visit_file(&file);
     assert_eq!(f.dialect_ids, vec![2, 3]);
     assert_eq!(f.code_literals, vec![3, 4, 4, 5, 5, 6, 7]);
+}
+
+/// The M rule on text whose answer is known: M10 and up in comparisons,
+/// patterns, `matches!` and lookups; the low codes only against an M
+/// code operand; plain numbers, auxiliary-only codes and test code not.
+#[test]
+fn the_m_code_rule_sees_what_it_should() {
+    let text = "fn f(m: u32, n: u32, code_m: f64, k: u32) {\n\
+                if m == 98 || n == 99 {}\n\
+                match m { 2 | 30 => {} _ => {} }\n\
+                let _ = matches!(self.words.m[i].0, 6);\n\
+                let _ = code_m != 2.0 || n == 2 || k == 6;\n\
+                let _ = self.mcode(3);\n\
+                match n { 0 | 1 | 2 => {} _ => {} }\n\
+                let _ = n == 12345;\n\
+                }\n\
+                #[cfg(test)]\nmod tests { fn t() { let _ = m == 98; } }\n";
+    let file = syn::parse_file(text).unwrap();
+    let mut f = Findings {
+        mcodes: acted_mcodes(),
+        ..Findings::default()
+    };
+    f.visit_file(&file);
+    // Line 2: M98 against m, M99 though n is not an M code (99 ≥ 10);
+    // line 3: M02 and M30 in a match on m; line 4: M06 against an M
+    // field; line 5: M02 as a float against code_m (not n == 2, k == 6);
+    // line 6: a lookup; line 7: small numbers matched on n are not codes.
+    assert_eq!(f.m_literals, vec![2, 2, 3, 3, 4, 5, 6]);
+    // 12345 is no M code of any table.
+    let lone = syn::parse_file("fn g(m: u32) { let _ = m == 12345; }").unwrap();
+    let mut g = Findings {
+        mcodes: acted_mcodes(),
+        ..Findings::default()
+    };
+    g.visit_file(&lone);
+    assert!(g.m_literals.is_empty());
 }

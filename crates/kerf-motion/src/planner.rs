@@ -3,6 +3,7 @@
 //! speeds, exact stop, and the timeline of everything else (dwell,
 //! spindle, tool change, M-code handshakes). Motion law: docs/motion.md.
 
+use std::cmp::Ordering;
 use std::collections::VecDeque;
 
 use kerf_canon::{
@@ -892,11 +893,11 @@ impl Planner {
         let th_max = turn_bound(s);
         if th_max > 1e-9 && t > 0.0 {
             let tol = self.d.path_tolerance;
-            // Not `v <= bound` (a NaN bound included, as before).
-            let bound = (24.0 * (lmin / th_max) * tol / self.k_tt).sqrt();
+            let floor = (24.0 * (lmin / th_max) * tol / self.k_tt).sqrt();
+            // Unless v ≤ floor (a NaN takes the full path, as before).
             if !matches!(
-                v.partial_cmp(&bound),
-                Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+                v.partial_cmp(&floor),
+                Some(Ordering::Less | Ordering::Equal)
             ) {
                 let th = c.acos();
                 if th > 1e-9 {
@@ -1299,6 +1300,117 @@ mod tests {
         d.lookahead = 8;
         d.lookahead_high_speed = 100;
         d
+    }
+
+    /// The junction limit as it was before the `acos` could be skipped:
+    /// the curvature term always computed.
+    fn junction_always_acos(pl: &Planner, p: &Seg, n: &Seg) -> Option<f64> {
+        let mut v = p.vmax.min(n.vmax);
+        let (u1, u2) = (&p.t_out, &n.t_in);
+        let (n1, n2) = (dot(u1, u1).sqrt(), dot(u2, u2).sqrt());
+        if n1 <= 0.0 || n2 <= 0.0 {
+            return None;
+        }
+        let t = pl.t_smooth;
+        let lmin = p.len.min(n.len);
+        for i in 0..NAXES {
+            let du = (u2[i] - u1[i]).abs();
+            if du > 1e-9 {
+                let a = 0.5 * pl.d.accel[i];
+                v = v.min(a * t / du).min((a * lmin / du).sqrt());
+            }
+        }
+        let c = (dot(u1, u2) / (n1 * n2)).clamp(-1.0, 1.0);
+        let s = (2.0 * (1.0 - c)).max(0.0).sqrt();
+        let (m1, m2) = if pl.stages == 1 {
+            (t / 8.0, t * t / 48.0)
+        } else {
+            (t / 6.0, t * t / 24.0)
+        };
+        if s > 1e-9 && m1 > 0.0 {
+            let room = pl.d.path_tolerance / s - m2 * p.acc.max(n.acc);
+            if room <= 0.0 {
+                return None;
+            }
+            v = v.min(room / m1);
+        }
+        let th = c.acos();
+        if th > 1e-9 && t > 0.0 {
+            let r = lmin / th;
+            let k = pl.stages as f64;
+            v = v.min((24.0 * r * pl.d.path_tolerance / (k * t * t)).sqrt());
+        }
+        Some(v.max(0.0))
+    }
+
+    #[test]
+    fn skipping_the_acos_gives_the_same_junction_speed_bit_for_bit() {
+        // Pseudo-random tangents, lengths, speeds and tolerances (an LCG,
+        // so the cases are the same every run), turns from 0 to 180°
+        // with many small ones, against the limit with the acos always
+        // computed.
+        let mut x: u64 = 0x2545_f491_4f6c_dd1d;
+        let mut rnd = move || {
+            x = x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut skipped, mut bound) = (0, 0);
+        for case in 0..200_000 {
+            let mut d = dynm();
+            d.path_tolerance = [0.001, 0.01, 0.1][case % 3];
+            let pl = Planner::new(d, [0.0; NAXES], 0.0);
+            let tilt = if case % 2 == 0 { 1e-3 } else { 1.0 };
+            // A unit vector: `base` plus a random step of up to `amp`.
+            let dir = |r: &mut dyn FnMut() -> f64, base: Pos, amp: f64| -> Pos {
+                let mut u = base;
+                for ui in u.iter_mut().take(3) {
+                    *ui += (r() - 0.5) * amp;
+                }
+                let n = dot(&u, &u).sqrt();
+                u.map(|c| c / n)
+            };
+            let u1 = dir(&mut rnd, [1.0, 0.0, 0.0, 0.0, 0.0, 0.0], 2.0);
+            let u2 = dir(&mut rnd, u1, tilt * 4.0);
+            let seg = |u: Pos, len: f64, vmax: f64| Seg {
+                id: 0,
+                last: true,
+                geom: Geom::Line {
+                    p0: [0.0; NAXES],
+                    p1: u.map(|c| c * len),
+                },
+                len,
+                vmax,
+                acc: 1000.0,
+                jmax: 0.0,
+                vb: 0.0,
+                stop: false,
+                t_in: u,
+                t_out: u,
+            };
+            let p = seg(u1, 0.01 + rnd() * 5.0, 1.0 + rnd() * 400.0);
+            let n = seg(u2, 0.01 + rnd() * 5.0, 1.0 + rnd() * 400.0);
+            let got = pl.junction(&p, &n).map(f64::to_bits);
+            let want = junction_always_acos(&pl, &p, &n).map(f64::to_bits);
+            assert_eq!(got, want, "case {case}");
+            // How often the skip applies, and how often the curvature
+            // term is what limits the speed.
+            let c = dot(&u1, &u2).clamp(-1.0, 1.0);
+            let s = (2.0 * (1.0 - c)).max(0.0).sqrt();
+            let lmin = p.len.min(n.len);
+            let k_tt = pl.k_tt;
+            let floor = (24.0 * (lmin / turn_bound(s)) * pl.d.path_tolerance / k_tt).sqrt();
+            if want.is_some_and(|w| f64::from_bits(w) <= floor) {
+                skipped += 1;
+            }
+            let curv = (24.0 * (lmin / c.acos()) * pl.d.path_tolerance / k_tt).sqrt();
+            if want.is_some_and(|w| f64::from_bits(w) == curv) {
+                bound += 1;
+            }
+        }
+        // Both paths are taken many times.
+        assert!(skipped > 1000 && bound > 1000, "{skipped} {bound}");
     }
 
     /// A gentle zig-zag (±0.5°) that never needs a stop.

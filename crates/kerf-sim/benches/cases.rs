@@ -81,7 +81,8 @@ fn sim(stock: &str, tools: &str, lathe: bool, res: Option<f64>) -> Sim {
     s
 }
 
-/// Runs the moves from the first one's position.
+/// Runs the moves from the first one's position, to the pending cut
+/// applied.
 pub fn run(s: &mut Sim, moves: &[Move]) {
     let p = moves[0].1;
     let mut prev: Pos = [p[0], p[1], p[2], 0.0, 0.0, 0.0];
@@ -89,6 +90,7 @@ pub fn run(s: &mut Sim, moves: &[Move]) {
         s.event(&ev(motion(m)), &prev, i as f64);
         prev = [m.1[0], m.1[1], m.1[2], 0.0, 0.0, 0.0];
     }
+    s.settle();
 }
 
 fn feeds(pts: Vec<[f64; 3]>) -> Vec<Move> {

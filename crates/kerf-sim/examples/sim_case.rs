@@ -6,7 +6,9 @@
 //! valgrind --tool=callgrind target/release/examples/sim_case mill_2d5_0.05mm
 //! ```
 //!
-//! A second argument N runs the case's first N moves only.
+//! A second argument N runs the case's first N moves only;
+//! `KERF_SIM_THREADS=1` keeps a height field move on one thread (the
+//! simulation reads it, docs/sim.md).
 //! Prints the case's moves, the material removed and the wall time of the
 //! run (the stock's set-up excluded); with no argument, lists the cases.
 

@@ -56,20 +56,40 @@ impl Grid {
         Some((i as usize, j as usize))
     }
 
-    /// Cells within `r` of the move's XY path, row by row: calls
-    /// `f(row, y, first, last)` with the row's span of cell columns.
-    pub fn for_rows(&self, s: &Sweep, r: f64, mut f: impl FnMut(usize, f64, usize, usize)) {
+    /// The cells of the bounding box of the points within `r` of the
+    /// move's XY path: ((first, last) column, (first, last) row), or None
+    /// when it misses the grid.
+    pub fn bounds(&self, s: &Sweep, r: f64) -> Option<((usize, usize), (usize, usize))> {
         let (xa, xb) = (s.p0[0].min(s.p1[0]) - r, s.p0[0].max(s.p1[0]) + r);
         let (ya, yb) = (s.p0[1].min(s.p1[1]) - r, s.p0[1].max(s.p1[1]) + r);
-        let (ix, iy) = (1.0 / self.dx, 1.0 / self.dy);
+        let cols = range(xa, xb, self.x0, 1.0 / self.dx, self.nx)?;
+        let rows = range(ya, yb, self.y0, 1.0 / self.dy, self.ny)?;
+        Some((cols, rows))
+    }
+
+    /// Cells within `r` of the move's XY path, row by row: calls
+    /// `f(row, y, first, last)` with the row's span of cell columns.
+    pub fn for_rows(&self, s: &Sweep, r: f64, f: impl FnMut(usize, f64, usize, usize)) {
+        if let Some((_, rows)) = self.bounds(s, r) {
+            self.for_rows_in(s, r, rows, f);
+        }
+    }
+
+    /// [`Self::for_rows`] on the rows from `rows.0` to `rows.1` only.
+    pub fn for_rows_in(
+        &self,
+        s: &Sweep,
+        r: f64,
+        rows: (usize, usize),
+        mut f: impl FnMut(usize, f64, usize, usize),
+    ) {
+        let (xa, xb) = (s.p0[0].min(s.p1[0]) - r, s.p0[0].max(s.p1[0]) + r);
+        let ix = 1.0 / self.dx;
         let Some((i0, i1)) = range(xa, xb, self.x0, ix, self.nx) else {
             return;
         };
-        let Some((j0, j1)) = range(ya, yb, self.y0, iy, self.ny) else {
-            return;
-        };
         let cap = Capsule::new(s, r);
-        for j in j0..=j1 {
+        for j in rows.0..=rows.1.min(self.ny.saturating_sub(1)) {
             let y = self.y0 + (j as f64 + 0.5) * self.dy;
             // The X span of the capsule on this row narrows the scan.
             let (lo, hi) = cap.span(y);

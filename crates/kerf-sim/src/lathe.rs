@@ -22,6 +22,9 @@ use i_overlay::float::overlay::FloatOverlay;
 use i_overlay::i_float::adapter::FloatPointAdapter;
 use i_overlay::i_float::float::rect::FloatRect;
 
+use std::cell::RefCell;
+
+use crate::deferred::Pending;
 use crate::hull::{Hull, Pt};
 
 /// Width of a tile along Z, mm (a multiple of every grid step; 2, 4, 8
@@ -73,19 +76,28 @@ impl Tile {
     }
 }
 
-/// The half section.
+/// The frame the tiles share: where they start, their integer frame's
+/// half height and the grid.
 #[derive(Clone, Debug)]
-pub struct Section {
+struct Frame {
     z0: f64,
     /// Half height of every tile's integer frame in r (centred on the
     /// axis), mm.
     rr: f64,
     /// Grid: `scale` integer steps per mm, a power of two.
     scale: f64,
-    tiles: Vec<Tile>,
     /// Whether a swept region is clipped to the tile's material box (true;
     /// false clips to the tile's frame only, the tests' reference).
     tight_clip: bool,
+}
+
+/// The half section, with the cut still pending on it (deferred.rs):
+/// every read applies it first.
+#[derive(Clone, Debug)]
+pub struct Section {
+    frame: Frame,
+    tiles: RefCell<Vec<Tile>>,
+    pending: RefCell<Pending>,
 }
 
 impl Section {
@@ -115,34 +127,41 @@ impl Section {
             })
             .collect();
         Section {
-            z0,
-            rr,
-            scale,
-            tiles,
-            tight_clip: true,
+            frame: Frame {
+                z0,
+                rr,
+                scale,
+                tight_clip: true,
+            },
+            tiles: RefCell::new(tiles),
+            pending: RefCell::new(Pending::default()),
         }
     }
 
     /// The grid step of the coordinates, mm.
     pub fn grid(&self) -> f64 {
-        1.0 / self.scale
+        1.0 / self.frame.scale
     }
 
     /// Least and greatest z the section may hold.
     pub fn z_range(&self) -> (f64, f64) {
-        (self.z0, self.z0 + self.tiles.len() as f64 * TILE)
+        let n = self.tiles.borrow().len();
+        (self.frame.z0, self.frame.z0 + n as f64 * TILE)
     }
 
     /// Volume of revolution of the material, mm³ (Pappus, exact for the
     /// polygons).
     pub fn volume(&self) -> f64 {
-        self.tiles.iter().map(|t| t.vol).sum()
+        self.settle();
+        self.tiles.borrow().iter().map(|t| t.vol).sum()
     }
 
     /// Number of polygon vertices held (the model's memory is about 16
     /// bytes each).
     pub fn vertices(&self) -> usize {
+        self.settle();
         self.tiles
+            .borrow()
             .iter()
             .flat_map(|t| t.shapes.iter().flatten())
             .map(Vec::len)
@@ -159,60 +178,150 @@ impl Section {
 
     /// [`Self::sweep`] for any region: closed contours, counter-clockwise
     /// ones filled and clockwise ones holes (as i_overlay returns them).
+    /// The pending cut is applied first where it may change the material
+    /// inside the region's box.
     pub fn sweep_regions(&mut self, region: &[Contour], write: bool) -> f64 {
-        let pts = || region.iter().flatten();
-        let za = pts().map(|p| p[0]).fold(f64::INFINITY, f64::min);
-        let zb = pts().map(|p| p[0]).fold(f64::NEG_INFINITY, f64::max);
+        let p = self.pending.get_mut();
+        if !p.is_empty() && region.iter().any(|c| p.meets(&bbox(c))) {
+            self.settle();
+        }
+        self.frame.sweep(self.tiles.get_mut(), region, write)
+    }
+
+    /// The volume of `region` in the stock as it was before the pending
+    /// cut: at least what [`Self::sweep_regions`] finds (the pending cut
+    /// only removes material), so 0 here means 0 there.
+    pub fn sweep_unsettled(&mut self, region: &[Contour]) -> f64 {
+        self.frame.sweep(self.tiles.get_mut(), region, false)
+    }
+
+    /// Removes, later, what the convex `outline` (counter-clockwise)
+    /// sweeps along the straight move `a` → `b` (deferred.rs: merged with
+    /// the moves it continues, batched with the others).
+    pub fn cut_later(&mut self, outline: &[[f64; 2]], a: Pt, b: Pt) {
+        if self.pending.get_mut().push(outline, a, b) {
+            self.settle();
+        }
+    }
+
+    /// Whether `outline` swept along `a` → `b` is inside the region the
+    /// pending cut's open run removes (it retraces that move), so that it
+    /// meets no material once the cut is applied.
+    pub fn covered_later(&self, outline: &[[f64; 2]], a: Pt, b: Pt) -> bool {
+        self.pending.borrow().covers(outline, a, b)
+    }
+
+    /// Whether [`Self::cut_later`] merges and batches moves (true, the
+    /// default) or applies each on its own (the move-by-move reference).
+    pub fn set_merge(&mut self, on: bool) {
+        self.settle();
+        self.pending.get_mut().merge = on;
+    }
+
+    /// The volume the cuts made with [`Self::cut_later`] removed, mm³
+    /// (the pending one applied first).
+    pub fn removed_later(&self) -> f64 {
+        self.settle();
+        self.pending.borrow().removed
+    }
+
+    /// Applies the pending cut.
+    pub fn settle(&self) {
+        let mut p = self.pending.borrow_mut();
+        if p.is_empty() {
+            return;
+        }
+        if let Some(regions) = p.regions() {
+            let v = self
+                .frame
+                .sweep(&mut self.tiles.borrow_mut(), regions, true);
+            p.removed += v;
+        }
+        p.clear();
+    }
+
+    /// The radius intervals of material on the line z = `z`, sorted.
+    pub fn intervals_at(&self, z: f64) -> Vec<(f64, f64)> {
+        self.settle();
+        let tiles = self.tiles.borrow();
+        let k = ((z - self.frame.z0) / TILE).floor();
+        if k < 0.0 || k as usize >= tiles.len() {
+            return Vec::new();
+        }
+        let mut rs = Vec::new();
+        for c in tiles[k as usize].shapes.iter().flatten() {
+            crossings(c, z, &mut rs);
+        }
+        rs.sort_by(f64::total_cmp);
+        rs.chunks_exact(2).map(|w| (w[0], w[1])).collect()
+    }
+
+    /// The whole section's outline: the tiles merged (outer contours
+    /// counter-clockwise, holes clockwise, so the material is on the left
+    /// of every edge).
+    pub fn outline(&self) -> Vec<Contour> {
+        let (za, zb) = self.z_range();
+        let n = self.vertices();
+        let tiles = self.tiles.borrow();
+        let mut ov = FloatOverlay::<[f64; 2], i64>::with_adapter(self.frame.adapter(za, zb), n);
+        for c in tiles.iter().flat_map(|t| t.shapes.iter().flatten()) {
+            ov = ov.unsafe_add_contour(c, ShapeType::Subject);
+        }
+        ov.overlay(OverlayRule::Subject, FillRule::NonZero)
+            .into_iter()
+            .flatten()
+            .collect()
+    }
+}
+
+/// A contour's bounding box: z from, z to, r from, r to.
+pub type Bbox = [f64; 4];
+
+/// The bounding box of a contour (inverted when it is empty).
+pub fn bbox(c: &[[f64; 2]]) -> Bbox {
+    let mut b = [
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for p in c {
+        b = [
+            b[0].min(p[0]),
+            b[1].max(p[0]),
+            b[2].min(p[1]),
+            b[3].max(p[1]),
+        ];
+    }
+    b
+}
+
+impl Frame {
+    /// Removes (when `write`) the material of `tiles` inside `region` and
+    /// its mirror about the axis; returns the volume it holds.
+    fn sweep(&self, tiles: &mut [Tile], region: &[Contour], write: bool) -> f64 {
+        let boxes: Vec<Bbox> = region.iter().map(|c| bbox(c)).collect();
+        let za = boxes.iter().map(|b| b[0]).fold(f64::INFINITY, f64::min);
+        let zb = boxes.iter().map(|b| b[1]).fold(f64::NEG_INFINITY, f64::max);
         if za > zb {
             return 0.0;
         }
         let k0 = ((za - self.z0) / TILE).floor().max(0.0) as usize;
         let k1 = ((zb - self.z0) / TILE).floor();
-        if k1 < 0.0 || k0 >= self.tiles.len() {
+        if k1 < 0.0 || k0 >= tiles.len() {
             return 0.0;
         }
-        let k1 = (k1 as usize).min(self.tiles.len() - 1);
+        let k1 = (k1 as usize).min(tiles.len() - 1);
         let mut total = 0.0;
         let half_step = 0.5 / self.scale;
-        let rmax = self.rr - MARGIN;
-        let below_axis = pts().any(|p| p[1] < 0.0);
-        let signs: &[f64] = if below_axis { &[1.0, -1.0] } else { &[1.0] };
+        let below_axis = boxes.iter().any(|b| b[2] < 0.0);
         let mut clips: Vec<Contour> = Vec::new();
-        let mut used;
-        for k in k0..=k1 {
-            let t = &self.tiles[k];
+        for t in &mut tiles[k0..=k1] {
             if t.shapes.is_empty() {
                 continue;
             }
-            // The region is clipped to the tile's material and a margin of
-            // CLIP_MARGIN (a whole number of grid steps): what it removes
-            // is the same, with fewer edges for the boolean.
-            let m = CLIP_MARGIN;
-            let (zs, rs) = if self.tight_clip {
-                (
-                    (t.za.max(t.zlo - m), (t.za + TILE).min(t.zhi + m)),
-                    ((t.lo - m).max(0.0), (t.hi + m).min(rmax)),
-                )
-            } else {
-                ((t.za, t.za + TILE), (0.0, rmax))
-            };
-            used = 0;
-            let mut reach = (f64::INFINITY, f64::NEG_INFINITY);
-            for poly in region {
-                for &sign in signs {
-                    if used == clips.len() {
-                        clips.push(Vec::new());
-                    }
-                    let c = &mut clips[used];
-                    clip_box(poly, sign, zs, rs, c);
-                    for p in c.iter() {
-                        reach = (reach.0.min(p[1]), reach.1.max(p[1]));
-                    }
-                    if c.len() >= 3 {
-                        used += 1;
-                    }
-                }
-            }
+            let (zs, rs) = self.clip_box_of(t);
+            let (used, reach) = clip_all(region, &boxes, below_axis, zs, rs, &mut clips);
             let clips = &clips[..used];
             // Neither the region nor its mirror reaches the tile's material.
             if clips.is_empty() || reach.0 > t.hi - half_step || reach.1 < t.lo + half_step {
@@ -227,11 +336,28 @@ impl Section {
             if removed > VOL_EPS {
                 total += removed;
                 if write {
-                    self.tiles[k].set(shapes, v);
+                    t.set(shapes, v);
                 }
             }
         }
         total
+    }
+
+    /// The box a swept region is clipped to in tile `t`: its material and
+    /// a margin of CLIP_MARGIN (a whole number of grid steps), so that
+    /// what the region removes is the same, with fewer edges for the
+    /// boolean.
+    fn clip_box_of(&self, t: &Tile) -> ((f64, f64), (f64, f64)) {
+        let m = CLIP_MARGIN;
+        let rmax = self.rr - MARGIN;
+        if self.tight_clip {
+            (
+                (t.za.max(t.zlo - m), (t.za + TILE).min(t.zhi + m)),
+                ((t.lo - m).max(0.0), (t.hi + m).min(rmax)),
+            )
+        } else {
+            ((t.za, t.za + TILE), (0.0, rmax))
+        }
     }
 
     /// The tile's integer frame.
@@ -257,36 +383,52 @@ impl Section {
         }
         ov.overlay(OverlayRule::Difference, FillRule::NonZero)
     }
+}
 
-    /// The radius intervals of material on the line z = `z`, sorted.
-    pub fn intervals_at(&self, z: f64) -> Vec<(f64, f64)> {
-        let k = ((z - self.z0) / TILE).floor();
-        if k < 0.0 || k as usize >= self.tiles.len() {
-            return Vec::new();
+/// Every contour of `region` (and its mirror about the axis when
+/// `below_axis`) clipped to z in `zs` and r in `rs`, into `clips`
+/// (reusing its allocations); returns how many are not empty (the first
+/// ones of `clips`) and the least and greatest r they reach. A contour
+/// whose box `boxes` misses the box is skipped.
+fn clip_all(
+    region: &[Contour],
+    boxes: &[Bbox],
+    below_axis: bool,
+    zs: (f64, f64),
+    rs: (f64, f64),
+    clips: &mut Vec<Contour>,
+) -> (usize, (f64, f64)) {
+    let signs: &[f64] = if below_axis { &[1.0, -1.0] } else { &[1.0] };
+    let mut used = 0;
+    let mut reach = (f64::INFINITY, f64::NEG_INFINITY);
+    for (poly, b) in region.iter().zip(boxes) {
+        if b[1] < zs.0 || b[0] > zs.1 {
+            continue;
         }
-        let mut rs = Vec::new();
-        for c in self.tiles[k as usize].shapes.iter().flatten() {
-            crossings(c, z, &mut rs);
+        for &sign in signs {
+            // The r range of the contour or its mirror.
+            let (r0, r1) = if sign > 0.0 {
+                (b[2], b[3])
+            } else {
+                (-b[3], -b[2])
+            };
+            if r1 < rs.0 || r0 > rs.1 {
+                continue;
+            }
+            if used == clips.len() {
+                clips.push(Vec::new());
+            }
+            let c = &mut clips[used];
+            clip_box(poly, sign, zs, rs, c);
+            for p in c.iter() {
+                reach = (reach.0.min(p[1]), reach.1.max(p[1]));
+            }
+            if c.len() >= 3 {
+                used += 1;
+            }
         }
-        rs.sort_by(f64::total_cmp);
-        rs.chunks_exact(2).map(|w| (w[0], w[1])).collect()
     }
-
-    /// The whole section's outline: the tiles merged (outer contours
-    /// counter-clockwise, holes clockwise, so the material is on the left
-    /// of every edge).
-    pub fn outline(&self) -> Vec<Contour> {
-        let (za, zb) = self.z_range();
-        let n = self.vertices();
-        let mut ov = FloatOverlay::<[f64; 2], i64>::with_adapter(self.adapter(za, zb), n);
-        for c in self.tiles.iter().flat_map(|t| t.shapes.iter().flatten()) {
-            ov = ov.unsafe_add_contour(c, ShapeType::Subject);
-        }
-        ov.overlay(OverlayRule::Subject, FillRule::NonZero)
-            .into_iter()
-            .flatten()
-            .collect()
-    }
+    (used, reach)
 }
 
 /// A convex hull as one counter-clockwise contour.
@@ -505,7 +647,7 @@ mod tests {
                 .collect();
             let mut fast = Section::new(3.0, 12.0, -24.0, 0.0);
             let mut slow = fast.clone();
-            slow.tight_clip = false;
+            slow.frame.tight_clip = false;
             let (mut region, mut h, mut scratch) = (Vec::new(), Hull::default(), Vec::new());
             for (a, b) in moves {
                 swept(&nose, a, b, &mut scratch, &mut h);

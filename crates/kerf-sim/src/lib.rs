@@ -17,6 +17,8 @@
 //! ```
 
 pub mod ball;
+pub mod bands;
+pub mod deferred;
 pub mod envelope;
 pub mod events;
 pub mod grid;

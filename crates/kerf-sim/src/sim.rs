@@ -358,8 +358,12 @@ impl Sim {
             swept_ccw(shape, a, at(f), region);
             sec.sweep_regions(std::slice::from_ref(region), write)
         };
-        // Every check is against the stock before the move.
-        if rapid || !self.spindle_on {
+        // Every check is against the stock before the move: the pending
+        // cut is applied first where it may change what the check reads
+        // (Section::sweep_regions), and a move retracing the pending cut's
+        // open run meets nothing.
+        let mut event_cut = false;
+        if (rapid || !self.spindle_on) && !sec.covered_later(outline, a, b) {
             let v = sweep_of(sec, outline, 1.0, false);
             if v > 0.0 {
                 let kind = if rapid {
@@ -369,30 +373,64 @@ impl Sim {
                 };
                 let f = first_contact(|f| sweep_of(sec, outline, f, false) > 0.0);
                 found.push((kind, v, f));
+                event_cut = true;
             }
         }
         // The holder along the whole move: what it reaches before the
-        // insert has cut it (holder.rs).
+        // insert has cut it (holder.rs). It is first measured against the
+        // stock without the pending cut, which holds at least the
+        // material (nothing there, nothing after it).
         let mut holder_hit = false;
         if !holder.is_empty() {
-            let met = |sec: &mut Section, f: f64| {
-                sec.sweep_regions(&holder_first(&pts(outline), &pts(holder), a, at(f)), false)
-            };
-            let v = met(sec, 1.0);
-            if v > 0.0 {
-                let f = first_contact(|f| met(sec, f) > 0.0);
-                found.push((EventKind::HolderCollision, v, f));
-                holder_hit = true;
+            let met_region = |f: f64| holder_first(&pts(outline), &pts(holder), a, at(f));
+            if sec.sweep_unsettled(&met_region(1.0)) > 0.0 {
+                let v = sec.sweep_regions(&met_region(1.0), false);
+                if v > 0.0 {
+                    let f = first_contact(|f| sec.sweep_regions(&met_region(f), false) > 0.0);
+                    found.push((EventKind::HolderCollision, v, f));
+                    holder_hit = true;
+                }
             }
         }
-        self.removed += sweep_of(sec, outline, 1.0, true);
-        if holder_hit {
-            // The crash removes what the holder met.
-            self.removed += sweep_of(sec, holder, 1.0, true);
+        if event_cut || holder_hit {
+            // An event's move is cut at once, with what the holder met.
+            self.removed += sweep_of(sec, outline, 1.0, true);
+            if holder_hit {
+                self.removed += sweep_of(sec, holder, 1.0, true);
+            }
+        } else if !rapid && self.spindle_on {
+            sec.cut_later(outline, a, b);
         }
         for (kind, vol, f) in found {
             let at = lerp(&p0, &p1, f);
             self.push(kind, src, tool_no, t.0 + (t.1 - t.0) * f, at, vol);
+        }
+    }
+
+    /// Whether the lathe merges consecutive feed moves into one swept
+    /// region and removes several moves' regions in one boolean (true,
+    /// the default; deferred.rs), or removes each move on its own (the
+    /// move-by-move path, the reference the tests compare it with).
+    pub fn set_lathe_merging(&mut self, on: bool) {
+        if let Model::Lathe(s) = &mut self.model {
+            s.set_merge(on);
+        }
+    }
+
+    /// Threads a height field move's rows may be split between (1 or 2;
+    /// the default is 2 where the machine has two cores). The result is
+    /// the same either way.
+    pub fn set_threads(&mut self, n: usize) {
+        if let Model::Mill(z) = &mut self.model {
+            z.threads = n.clamp(1, 2);
+        }
+    }
+
+    /// Applies the lathe's pending cut (every read of the model does so
+    /// itself; this is for timing a run to its end).
+    pub fn settle(&self) {
+        if let Model::Lathe(s) = &self.model {
+            s.settle();
         }
     }
 
@@ -402,9 +440,13 @@ impl Sim {
             Model::Mill(z) => z.volume(),
             Model::Lathe(s) => s.volume(),
         };
+        let later = match &self.model {
+            Model::Mill(_) => 0.0,
+            Model::Lathe(s) => s.removed_later(),
+        };
         SimReport {
             stock_mm3: self.stock.volume(),
-            removed_mm3: self.removed,
+            removed_mm3: self.removed + later,
             remaining_mm3: remaining,
             resolution_mm: self.res,
             events: self.events.clone(),

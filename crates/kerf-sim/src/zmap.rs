@@ -2,13 +2,17 @@
 //! at cell centres over the stock's XY rectangle, each column of
 //! material running from the stock bottom up to its height.
 
+use crate::bands::{self, Cells, Scan, Todo, SPLIT_CELLS};
 use crate::envelope::Sweep;
 use crate::grid::Grid;
-use crate::kernels::Pass;
+use crate::kernels::{Kernel, Pass};
 use crate::tool::MillTool;
 
-/// Most cells a height field may have (256 MB of f32).
-pub const MAX_CELLS: usize = 64 << 20;
+/// Most cells a height field may have: 54.5 million, 218 MB of f32 heights
+/// plus 14 MB of run and square maxima, so that a run at the largest grid
+/// stays under 256 MB of peak memory with the STL and the picture
+/// (measured: docs/benchmarks.md, "Simulation").
+pub const MAX_CELLS: usize = 52 << 20;
 /// Cells of the default resolution (64 MB of f32).
 pub const DEFAULT_CELLS: usize = 16 << 20;
 /// A grid of more than [`crate::mesh::MAX_TOP_VERTICES`] cells is a whole
@@ -38,10 +42,14 @@ pub struct ZMap {
     cmax: Vec<f32>,
     bmax: Vec<f32>,
     nc: usize,
+    /// Threads a move's rows may be split between (1 or 2; bands.rs).
+    pub threads: usize,
+    /// Cells from which a move is split ([`SPLIT_CELLS`]; the tests
+    /// split every move).
+    split_cells: usize,
+    /// The bands of the move being cut.
+    todo: Vec<Todo>,
 }
-
-/// The rows of one band that a move covers: (row, y, first, last, floor).
-type Band = [(usize, f64, usize, usize, f32); BLOCK];
 
 /// What one move does to the stock.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -97,6 +105,9 @@ impl ZMap {
             cmax: vec![max[2] as f32; nc * ny],
             bmax: vec![max[2] as f32; nc * ny.div_ceil(BLOCK)],
             nc,
+            threads: default_threads(),
+            split_cells: SPLIT_CELLS,
+            todo: Vec::new(),
         })
     }
 
@@ -135,73 +146,42 @@ impl ZMap {
         write: bool,
         undo: Option<&mut Vec<(u32, f32)>>,
     ) -> Cut {
-        let mut pass = Pass::new(tool, s, self.zmin, write, undo);
+        let zmin = self.zmin;
+        let mut pass = Pass::new(tool, s, zmin, write, undo);
+        let scan = Scan::new(tool, s, &pass, zmin);
         let grid = self.grid;
-        // Nothing at or below the move's lowest tip height can change (the
-        // tool's profile and the holder are above the tip). On a row at
-        // distance dy from the move's Y range every cell is at least dy
-        // from the axis, so the tool reaches no lower than zlow + f(dy)
-        // there (and the holder no lower than zlow + its lowest offset):
-        // cells at or below that cannot change.
-        let zlow = s.p0[2].min(s.p1[2]);
-        let bmin = pass.guards.lowest();
-        let (ya, yb) = (s.p0[1].min(s.p1[1]), s.p0[1].max(s.p1[1]));
-        let mut band: Band = [(0, 0.0, 0, 0, 0.0); BLOCK];
-        let mut n = 0;
-        grid.for_rows(s, tool.reach(), |j, y, a, b| {
-            if n > 0 && band[0].0 / BLOCK != j / BLOCK {
-                self.band(&mut pass, &band[..n]);
-                n = 0;
+        let Some(((i0, i1), (j0, j1))) = grid.bounds(s, scan.reach) else {
+            return Cut::default();
+        };
+        // A band whose squares over the capsule's columns are all at or
+        // below its lowest floor (that of its row nearest the move's Y
+        // range) cannot change.
+        self.todo.clear();
+        for bj in j0 / BLOCK..=j1 / BLOCK {
+            let rows = ((bj * BLOCK).max(j0), (bj * BLOCK + BLOCK - 1).min(j1));
+            let low = scan.floor(grid.centre(0, rows.0).1, grid.centre(0, rows.1).1);
+            let squares = &self.bmax[bj * self.nc..][i0 / CHUNK..=i1 / CHUNK];
+            if !squares.iter().all(|&m| m <= low) {
+                self.todo.push((bj, rows.0, rows.1));
             }
-            let dy = (ya - y).max(y - yb).max(0.0).min(tool.radius);
-            let floor = (zlow + pass.shape.profile(dy).min(bmin)).max(self.zmin) as f32;
-            band[n] = (j, y, a, b, floor);
-            n += 1;
-        });
-        if n > 0 {
-            self.band(&mut pass, &band[..n]);
         }
+        let cells = self.todo.len() * BLOCK * (i1 - i0 + 1);
+        let split = self.threads > 1
+            && cells >= self.split_cells
+            && !matches!(pass.kernel, Kernel::LevelFlat(_));
+        let part = Cells {
+            grid,
+            nc: self.nc,
+            band0: 0,
+            h: &mut self.h,
+            cmax: &mut self.cmax,
+            bmax: &mut self.bmax,
+        };
+        let (removed, holder) = bands::run(part, &mut pass, tool, &scan, &self.todo, split);
         let a = grid.cell_area();
         Cut {
-            removed: pass.removed * a,
-            holder: pass.holder * a,
-        }
-    }
-
-    /// The rows of one band, square by square: a square whose greatest
-    /// height is at or below every row's floor is skipped, then each row's
-    /// run whose greatest height is at or below its floor.
-    fn band(&mut self, pass: &mut Pass, rows: &[(usize, f64, usize, usize, f32)]) {
-        let (nx, nc) = (self.grid.nx, self.nc);
-        let bj = rows[0].0 / BLOCK;
-        let lo = rows.iter().map(|r| r.2).min().unwrap_or(0);
-        let hi = rows.iter().map(|r| r.3).max().unwrap_or(0);
-        let floor = rows.iter().map(|r| r.4).fold(f32::INFINITY, f32::min);
-        for c in lo / CHUNK..=hi / CHUNK {
-            if self.bmax[bj * nc + c] <= floor {
-                continue;
-            }
-            let mut changed = false;
-            for &(j, y, a, b, floor) in rows {
-                let (first, last) = (a.max(c * CHUNK), b.min(c * CHUNK + CHUNK - 1));
-                if first > last || self.cmax[j * nc + c] <= floor {
-                    continue;
-                }
-                let x0 = self.grid.x0 + (first as f64 + 0.5) * self.grid.dx;
-                let (i0, i1) = (j * nx + first, j * nx + last);
-                let h = &mut self.h[i0..=i1];
-                if pass.run(h, i0 as u32, x0, self.grid.dx, y, floor) {
-                    let run = &self.h[j * nx + c * CHUNK..j * nx + ((c + 1) * CHUNK).min(nx)];
-                    self.cmax[j * nc + c] = run.iter().fold(f32::NEG_INFINITY, |m, &v| m.max(v));
-                    changed = true;
-                }
-            }
-            if changed {
-                let rows = bj * BLOCK..((bj + 1) * BLOCK).min(self.grid.ny);
-                self.bmax[bj * nc + c] = rows
-                    .map(|j| self.cmax[j * nc + c])
-                    .fold(f32::NEG_INFINITY, f32::max);
-            }
+            removed: removed * a,
+            holder: holder * a,
         }
     }
 
@@ -222,6 +202,16 @@ impl ZMap {
     pub fn height_at(&self, x: f64, y: f64) -> Option<f64> {
         let (i, j) = self.grid.cell_at(x, y)?;
         Some(self.at(i, j))
+    }
+}
+
+/// Threads a move may be split between: `KERF_SIM_THREADS` (1 or 2) if
+/// set, else 2 where the machine has two cores or more.
+fn default_threads() -> usize {
+    let env = std::env::var("KERF_SIM_THREADS").ok();
+    match env.and_then(|v| v.trim().parse::<usize>().ok()) {
+        Some(n) => n.clamp(1, 2),
+        None => std::thread::available_parallelism().map_or(1, |n| n.get().min(2)),
     }
 }
 
@@ -302,6 +292,39 @@ mod tests {
             1 => ([x0, y0, z0], [x1, y1, z0]),
             _ => ([x0, y0, z0], [x0, y0, z1]),
         })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(60))]
+        /// Random moves of any tool, with a shank and holder or without,
+        /// every one split between two threads: the same heights, bit for
+        /// bit, the same removed and holder volumes and the same old
+        /// heights kept as on one thread.
+        #[test]
+        fn two_threads_give_what_one_gives(
+            kind in 0u8..4,
+            r in 0.4f64..4.0,
+            guarded in any::<bool>(),
+            moves in prop::collection::vec(a_move(), 1..6),
+        ) {
+            let mut one = ZMap::new([0.0, 0.0, -5.0], [20.0, 15.0, 0.0], 0.1).unwrap();
+            one.threads = 1;
+            let mut two = one.clone();
+            (two.threads, two.split_cells) = (2, 0);
+            let mut t = tool(kind, r);
+            if guarded {
+                (t.flute_length, t.holder) = (1.5, vec![(r + 1.0, 2.0)]);
+            }
+            for &(a, b) in &moves {
+                let s = Sweep::new(a, b);
+                let (mut u1, mut u2) = (Vec::new(), Vec::new());
+                let c1 = one.cut(&t, &s, true, Some(&mut u1));
+                let c2 = two.cut(&t, &s, true, Some(&mut u2));
+                prop_assert_eq!(c1, c2);
+                prop_assert_eq!(&u1, &u2);
+                prop_assert!(one.h == two.h && one.cmax == two.cmax && one.bmax == two.bmax);
+            }
+        }
     }
 
     proptest! {

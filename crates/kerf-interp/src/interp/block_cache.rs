@@ -145,3 +145,57 @@ impl BlockCache {
         self.entries.len()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn block_at(text: &str, offset: u64) -> (RawBlock, Block) {
+        let raw = RawBlock {
+            text: text.as_bytes().to_vec(),
+            mark: Mark { offset, line: 1 },
+            ..RawBlock::default()
+        };
+        let mut block = Block::default();
+        kerf_lang::parse_block(&raw.text, &kerf_lang::LexOptions::default(), &mut block).unwrap();
+        (raw, block)
+    }
+
+    #[test]
+    fn a_cached_block_is_lent_and_given_back() {
+        let mut c = BlockCache::default();
+        let (raw, block) = block_at("G01 X10", 40);
+        let next = Mark {
+            offset: 48,
+            line: 2,
+        };
+        c.insert(0, &raw, &block, next);
+        assert_eq!(c.len(), 1);
+        let (mut r, mut b) = (Box::<RawBlock>::default(), Box::<Block>::default());
+        // Not cached: another file, another offset.
+        assert_eq!(c.lend(1, raw.mark, &mut r, &mut b), None);
+        assert_eq!(c.lend(0, Mark { offset: 0, line: 1 }, &mut r, &mut b), None);
+        assert_eq!(c.lend(0, raw.mark, &mut r, &mut b), Some(next));
+        assert_eq!(r.text, b"G01 X10");
+        assert_eq!(b.words.len(), block.words.len());
+        c.give_back(&mut r, &mut b);
+        // The entry has its block again.
+        assert_eq!(c.lend(0, raw.mark, &mut r, &mut b), Some(next));
+        c.give_back(&mut r, &mut b);
+        c.clear();
+        assert_eq!(c.len(), 0);
+    }
+
+    #[test]
+    fn the_cache_is_bounded() {
+        let mut c = BlockCache::default();
+        let next = Mark::default();
+        for i in 0..MAX_ENTRIES as u64 + 5 {
+            let (raw, block) = block_at("X1", i * 3);
+            c.insert(0, &raw, &block, next);
+            assert!(c.len() <= MAX_ENTRIES);
+        }
+        // Full at MAX_ENTRIES: emptied and filled again.
+        assert_eq!(c.len(), 5);
+    }
+}

@@ -35,7 +35,7 @@ pub(super) struct Frame {
     ret: Mark,
     start: Mark,
     header: Option<u64>,
-    loops: Vec<super::LoopFrame>,
+    loops: Vec<super::program::LoopFrame>,
     end_seq: Option<u32>,
     /// The caller's #1-#99 (macro calls).
     locals: Option<Box<[Option<f64>; 99]>>,
@@ -64,7 +64,16 @@ pub(super) struct CodeCalls {
 impl CodeCalls {
     /// The table from PI 85-94 (G codes 1-255), PI 95-104 (M codes 1-97
     /// other than M02, M30) and PI 105 (T); None when all are 0.
-    pub(super) fn from_profile(p: &crate::machine::Profile) -> Option<Box<CodeCalls>> {
+    pub(super) fn from_profile(
+        p: &crate::machine::Profile,
+        dialect: &crate::dialect::Dialect,
+    ) -> Option<Box<CodeCalls>> {
+        // The program end codes cannot be made calls.
+        let ends = |m: f64| {
+            dialect
+                .mcode(m as u16)
+                .is_some_and(|c| c.action == crate::dialect::MAction::End)
+        };
         let mut cc = CodeCalls {
             g: Vec::new(),
             m: Vec::new(),
@@ -76,11 +85,17 @@ impl CodeCalls {
                 cc.g.push(((g * 10.0) as u16, 9010 + k));
             }
             let m = p.param(&format!("PI {}", 95 + k), 0.0);
-            if (1.0..=97.0).contains(&m) && m.fract() == 0.0 && m != 2.0 && m != 30.0 {
+            if (1.0..=97.0).contains(&m) && m.fract() == 0.0 && !ends(m) {
                 cc.m.push((m as u32, 9020 + k));
             }
         }
         (cc.t || !cc.g.is_empty() || !cc.m.is_empty()).then(|| Box::new(cc))
+    }
+
+    /// The M codes that call programs: (M code, program number).
+    #[cfg(test)]
+    pub(super) fn m_calls(&self) -> &[(u32, u32)] {
+        &self.m
     }
 }
 
@@ -176,54 +191,67 @@ impl Interp {
     /// Adds a folder searched for programs called by number
     /// (`O1234.nc`, `1234.nc`, `O1234`, …), after the main file.
     pub fn add_lib_dir(&mut self, dir: PathBuf) {
-        self.calls.lib_dirs.push(dir);
+        self.prog.calls.lib_dirs.push(dir);
     }
 
     /// Registers the main file in the call tables (from `load_main`).
     pub(super) fn calls_main_loaded(&mut self) {
-        while self.calls.parked.len() < self.files.len() {
-            self.calls.add_file(None, None);
+        while self.prog.calls.parked.len() < self.prog.files.len() {
+            self.prog.calls.add_file(None, None);
         }
     }
 
     /// Makes file `id` the one being executed.
     fn switch_to(&mut self, id: u32) {
-        if id == self.file_id {
+        if id == self.prog.file_id {
             return;
         }
-        let cur = self.file_id as usize;
+        let cur = self.prog.file_id as usize;
         // Library files stay open while in use and up to a few more; the
         // others are closed and reopened when called again.
-        let open = self.calls.parked.iter().filter(|s| s.is_some()).count();
-        let in_use = self.calls.stack.iter().any(|f| f.file as usize == cur);
-        if self.calls.paths[cur].is_some() && !in_use && open >= MAX_OPEN_LIBS {
-            self.calls.parked[cur] = None;
-            self.src = None;
+        let open = self
+            .prog
+            .calls
+            .parked
+            .iter()
+            .filter(|s| s.is_some())
+            .count();
+        let in_use = self.prog.calls.stack.iter().any(|f| f.file as usize == cur);
+        if self.prog.calls.paths[cur].is_some() && !in_use && open >= MAX_OPEN_LIBS {
+            self.prog.calls.parked[cur] = None;
+            self.prog.src = None;
         } else {
-            self.calls.parked[cur] = self.src.take();
+            self.prog.calls.parked[cur] = self.prog.src.take();
         }
-        self.calls.high_water[cur] = self.high_water;
-        self.src = self.calls.parked[id as usize].take();
-        self.high_water = self.calls.high_water[id as usize];
-        self.file_id = id;
+        self.prog.calls.high_water[cur] = self.guard.high_water;
+        self.prog.src = self.prog.calls.parked[id as usize].take();
+        self.guard.high_water = self.prog.calls.high_water[id as usize];
+        self.prog.file_id = id;
     }
 
     /// The source of file `id`, current or parked.
     fn source_of(&mut self, id: u32) -> Option<&mut LineSource> {
-        if id == self.file_id {
-            self.src.as_mut()
+        if id == self.prog.file_id {
+            self.prog.src.as_mut()
         } else {
-            self.calls.parked.get_mut(id as usize)?.as_mut()
+            self.prog.calls.parked.get_mut(id as usize)?.as_mut()
         }
     }
 
     /// Records the O headers of a file (one pass, at its first use).
     fn index_file(&mut self, id: u32) -> R<()> {
-        if self.calls.indexed.get(id as usize).copied().unwrap_or(true) {
+        if self
+            .prog
+            .calls
+            .indexed
+            .get(id as usize)
+            .copied()
+            .unwrap_or(true)
+        {
             return Ok(());
         }
-        self.calls.indexed[id as usize] = true;
-        let lex = self.lex;
+        self.prog.calls.indexed[id as usize] = true;
+        let lex = self.cfg.lex;
         let mut found: Vec<(u32, Mark, Mark)> = Vec::new();
         let mut overflow = false;
         let Some(src) = self.source_of(id) else {
@@ -261,12 +289,12 @@ impl Interp {
         if let Err(e) = res.and(res2) {
             return Err(self.alarm(AlarmKind::Io, 0, format!("reading programs: {e}")));
         }
-        self.calls.overflow[id as usize] = overflow;
+        self.prog.calls.overflow[id as usize] = overflow;
         if let Some(&(_, h, b)) = found.first() {
-            self.calls.first_header.insert(id, (h, b));
+            self.prog.calls.first_header.insert(id, (h, b));
         }
         for (p, h, b) in found {
-            self.calls.index.entry((id, p)).or_insert((h, b));
+            self.prog.calls.index.entry((id, p)).or_insert((h, b));
         }
         Ok(())
     }
@@ -275,13 +303,13 @@ impl Interp {
     /// file has more programs than the index holds.
     fn lookup(&mut self, id: u32, p: u32) -> R<Option<(Mark, Mark)>> {
         self.index_file(id)?;
-        if let Some(&hb) = self.calls.index.get(&(id, p)) {
+        if let Some(&hb) = self.prog.calls.index.get(&(id, p)) {
             return Ok(Some(hb));
         }
-        if !self.calls.overflow[id as usize] {
+        if !self.prog.calls.overflow[id as usize] {
             return Ok(None);
         }
-        let lex = self.lex;
+        let lex = self.cfg.lex;
         let Some(src) = self.source_of(id) else {
             return Ok(None);
         };
@@ -307,22 +335,27 @@ impl Interp {
     /// Finds program `p`: in the current file, the main file, then the
     /// library folders. Returns (file, header offset, first block).
     fn find_program(&mut self, p: u32, at: u32) -> R<(u32, Option<u64>, Mark)> {
-        for id in [self.file_id, 0] {
+        for id in [self.prog.file_id, 0] {
             if let Some((h, b)) = self.lookup(id, p)? {
                 return Ok((id, Some(h.offset), b));
             }
         }
-        let id = match self.calls.lib_files.get(&p) {
+        let id = match self.prog.calls.lib_files.get(&p) {
             Some(&id) => {
-                if id != self.file_id && self.calls.parked[id as usize].is_none() {
-                    let path = self.calls.paths[id as usize].clone().expect("library file");
+                if id != self.prog.file_id && self.prog.calls.parked[id as usize].is_none() {
+                    let path = self.prog.calls.paths[id as usize]
+                        .clone()
+                        .expect("library file");
                     let f = File::open(&path).map_err(|e| {
                         self.alarm(AlarmKind::Io, at, format!("{}: {e}", path.display()))
                     })?;
-                    let max = self.profile.max_block_chars.max(1);
-                    self.calls.parked[id as usize] =
-                        Some(LineSource::new(Box::new(f), max, self.dialect.hurco_syntax));
-                    self.calls.high_water[id as usize] = 0;
+                    let max = self.cfg.profile.max_block_chars.max(1);
+                    self.prog.calls.parked[id as usize] = Some(LineSource::new(
+                        Box::new(f),
+                        max,
+                        self.cfg.dialect.hurco_syntax,
+                    ));
+                    self.prog.calls.high_water[id as usize] = 0;
                 }
                 id
             }
@@ -337,12 +370,12 @@ impl Interp {
                 let f = File::open(&path).map_err(|e| {
                     self.alarm(AlarmKind::Io, at, format!("{}: {e}", path.display()))
                 })?;
-                let max = self.profile.max_block_chars.max(1);
-                let src = LineSource::new(Box::new(f), max, self.dialect.hurco_syntax);
-                self.files.push(path.display().to_string());
-                self.calls.add_file(Some(src), Some(path.clone()));
-                let id = (self.files.len() - 1) as u32;
-                self.calls.lib_files.insert(p, id);
+                let max = self.cfg.profile.max_block_chars.max(1);
+                let src = LineSource::new(Box::new(f), max, self.cfg.dialect.hurco_syntax);
+                self.prog.files.push(path.display().to_string());
+                self.prog.calls.add_file(Some(src), Some(path.clone()));
+                let id = (self.prog.files.len() - 1) as u32;
+                self.prog.calls.lib_files.insert(p, id);
                 id
             }
         };
@@ -350,7 +383,7 @@ impl Interp {
             return Ok((id, Some(h.offset), b));
         }
         // A library file without that O number: the file is the program.
-        match self.calls.first_header.get(&id) {
+        match self.prog.calls.first_header.get(&id) {
             Some(&(h, b)) => Ok((id, Some(h.offset), b)),
             None => Ok((id, None, Mark { offset: 0, line: 1 })),
         }
@@ -372,7 +405,7 @@ impl Interp {
                 }
             }
         }
-        for d in &self.calls.lib_dirs {
+        for d in &self.prog.calls.lib_dirs {
             for n in &names {
                 let path = d.join(n);
                 if path.is_file() {
@@ -386,15 +419,18 @@ impl Interp {
     /// An O header read while executing. Ok(true): it ends the current
     /// program (another program starts there).
     pub(super) fn program_header(&mut self) -> R<bool> {
-        let here = self.raw.mark.offset;
-        if self.calls.header == Some(here) {
+        let here = self.prog.raw.mark.offset;
+        if self.prog.calls.header == Some(here) {
             return Ok(false);
         }
-        if self.calls.stack.is_empty() && self.calls.header.is_none() && !self.calls.body_seen {
-            self.calls.header = Some(here);
+        if self.prog.calls.stack.is_empty()
+            && self.prog.calls.header.is_none()
+            && !self.prog.calls.body_seen
+        {
+            self.prog.calls.header = Some(here);
             return Ok(false);
         }
-        if self.calls.stack.is_empty() {
+        if self.prog.calls.stack.is_empty() {
             return Ok(true);
         }
         Err(self.sub_end_alarm())
@@ -411,7 +447,7 @@ impl Interp {
 
     /// True when a block read by a search starts another program.
     fn other_program(&self, blk: &Block, mark: Mark) -> bool {
-        blk.program.is_some() && self.calls.header != Some(mark.offset)
+        blk.program.is_some() && self.prog.calls.header != Some(mark.offset)
     }
 
     /// Searches the current program for sequence number `target`: forward
@@ -420,18 +456,18 @@ impl Interp {
     /// there is none.
     /// The sequence index of the current program, built on first use.
     fn sequence_index(&mut self) -> Option<&SeqIndex> {
-        let key = (self.file_id, self.program_start.offset);
-        if !self.calls.seq_index.contains_key(&key) {
+        let key = (self.prog.file_id, self.prog.program_start.offset);
+        if !self.prog.calls.seq_index.contains_key(&key) {
             let built = self.build_sequence_index();
-            self.calls.seq_index.insert(key, built);
+            self.prog.calls.seq_index.insert(key, built);
         }
-        self.calls.seq_index.get(&key).and_then(|o| o.as_ref())
+        self.prog.calls.seq_index.get(&key).and_then(|o| o.as_ref())
     }
 
     /// Scans the current program once, recording where each N stands.
     fn build_sequence_index(&mut self) -> Option<SeqIndex> {
-        let start = self.program_start;
-        let mut src = self.src.take()?;
+        let start = self.prog.program_start;
+        let mut src = self.prog.src.take()?;
         let here = src.tell();
         let mut raw = RawBlock::default();
         let mut blk = Block::default();
@@ -444,7 +480,7 @@ impl Interp {
                 Ok(true) => {}
                 _ => break,
             }
-            if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
+            if parse_block(&raw.text, &self.cfg.lex, &mut blk).is_err() {
                 continue;
             }
             if self.other_program(&blk, mark) {
@@ -460,7 +496,7 @@ impl Interp {
             }
         }
         let _ = src.seek(here);
-        self.src = Some(src);
+        self.prog.src = Some(src);
         ok.then_some(map)
     }
 
@@ -470,7 +506,7 @@ impl Interp {
     /// sequence index; programs too large for it are scanned, and the
     /// scanned blocks count against the loop guard.
     pub(super) fn seek_sequence(&mut self, target: u32, wrap: bool) -> bool {
-        let here = match self.src.as_ref() {
+        let here = match self.prog.src.as_ref() {
             Some(s) => s.tell(),
             None => return false,
         };
@@ -483,7 +519,7 @@ impl Interp {
                     .copied()
             });
             return match hit {
-                Some(m) => self.src.as_mut().is_some_and(|s| s.seek(m).is_ok()),
+                Some(m) => self.prog.src.as_mut().is_some_and(|s| s.seek(m).is_ok()),
                 None => false,
             };
         }
@@ -491,8 +527,8 @@ impl Interp {
     }
 
     fn scan_for_sequence(&mut self, target: u32, wrap: bool) -> bool {
-        let start = self.program_start;
-        let Some(mut src) = self.src.take() else {
+        let start = self.prog.program_start;
+        let Some(mut src) = self.prog.src.take() else {
             return false;
         };
         let here = src.tell();
@@ -512,8 +548,8 @@ impl Interp {
                     Ok(true) => {}
                     _ => break,
                 }
-                self.repeated += 1;
-                if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
+                self.guard.count_scanned();
+                if parse_block(&raw.text, &self.cfg.lex, &mut blk).is_err() {
                     continue;
                 }
                 if self.other_program(&blk, mark) {
@@ -532,7 +568,7 @@ impl Interp {
                 false
             }
         };
-        self.src = Some(src);
+        self.prog.src = Some(src);
         ok
     }
 
@@ -552,11 +588,17 @@ impl Interp {
     }
 
     fn nesting_check(&self, macro_call: bool, at: u32) -> R<()> {
-        let macros = self.calls.stack.iter().filter(|f| f.macro_call).count() as u32;
-        let subs = self.calls.stack.len() as u32 - macros;
-        let p = |n: &str, def: f64| self.profile.param(n, def) as u32;
+        let macros = self
+            .prog
+            .calls
+            .stack
+            .iter()
+            .filter(|f| f.macro_call)
+            .count() as u32;
+        let subs = self.prog.calls.stack.len() as u32 - macros;
+        let p = |n: &str, def: f64| self.cfg.profile.param(n, def) as u32;
         let max_macro = p("max_macro_nesting", 4.0);
-        let max_sub = p("max_sub_nesting", self.dialect.caps.sub_nesting as f64);
+        let max_sub = p("max_sub_nesting", self.cfg.dialect.caps.sub_nesting as f64);
         let max_all = p("max_call_nesting", 8.0);
         let msg = if macro_call && macros + 1 > max_macro {
             format!("macro calls nested more than {max_macro} levels")
@@ -573,7 +615,7 @@ impl Interp {
     /// M98 P_ [Q_ R_] L_ (HX, 000 §2.4.3) / M98 P_ L_ and the 8-digit
     /// count+program P (Fanuc).
     pub(super) fn m98(&mut self, at: u32) -> R<()> {
-        let hx = self.dialect.caps.m98_q_m99_l;
+        let hx = self.cfg.dialect.caps.m98_q_m99_l;
         let p = self.int_word(b'P', 99_999_999.0)?;
         let q = if hx {
             self.int_word(b'Q', 99_999.0)?
@@ -626,49 +668,53 @@ impl Interp {
         self.corner_open("a subprogram or macro call")?;
         let (file, header, body) = match prog {
             Some(p) => self.find_program(p, at)?,
-            None => (self.file_id, self.calls.header, self.program_start),
+            None => (
+                self.prog.file_id,
+                self.prog.calls.header,
+                self.prog.program_start,
+            ),
         };
         self.nesting_check(macro_call, at)?;
-        let ret = self.src.as_ref().expect("loaded").tell();
+        let ret = self.prog.src.as_ref().expect("loaded").tell();
         let frame = Frame {
             macro_call,
-            file: self.file_id,
+            file: self.prog.file_id,
             ret,
-            start: self.program_start,
-            header: self.calls.header,
-            loops: std::mem::take(&mut self.loops),
-            end_seq: self.calls.end_seq,
+            start: self.prog.program_start,
+            header: self.prog.calls.header,
+            loops: std::mem::take(&mut self.prog.loops),
+            end_seq: self.prog.calls.end_seq,
             locals: None,
             callee_start: body,
             left: count - 1,
             modal_idx: None,
             by_code: false,
         };
-        self.calls.stack.push(frame);
+        self.prog.calls.stack.push(frame);
         self.switch_to(file);
-        self.program_start = body;
-        self.calls.header = header;
-        self.calls.end_seq = end_seq;
+        self.prog.program_start = body;
+        self.prog.calls.header = header;
+        self.prog.calls.end_seq = end_seq;
         self.seek(body)?;
         if let Some((n, qat)) = q {
             if !self.seek_sequence(n, false) {
                 let err_src = self.calls_caller_src(qat);
                 self.unwind_failed_call();
                 return Err(AlarmKind::SequenceNotFound.at(
-                    self.dialect.id,
+                    self.cfg.dialect.id,
                     err_src,
                     format!("M98 Q{n}: sequence number N{n} not found in the called program"),
                 ));
             }
-            let m = self.src.as_ref().expect("loaded").tell();
-            if let Some(f) = self.calls.stack.last_mut() {
+            let m = self.prog.src.as_ref().expect("loaded").tell();
+            if let Some(f) = self.prog.calls.stack.last_mut() {
                 f.callee_start = m;
             }
         }
         if let Some(a) = args {
             let saved = self.vars.take_locals();
             self.vars.put_args(&a);
-            if let Some(f) = self.calls.stack.last_mut() {
+            if let Some(f) = self.prog.calls.stack.last_mut() {
                 f.locals = Some(Box::new(saved));
             }
         }
@@ -676,8 +722,8 @@ impl Interp {
     }
 
     fn calls_caller_src(&self, at: u32) -> SrcRef {
-        let f = self.calls.stack.last().expect("frame");
-        let (line, col) = self.raw.line_col(at as usize);
+        let f = self.prog.calls.stack.last().expect("frame");
+        let (line, col) = self.prog.raw.line_col(at as usize);
         SrcRef {
             file: f.file,
             line,
@@ -687,12 +733,12 @@ impl Interp {
 
     /// Undoes a call whose start could not be found.
     fn unwind_failed_call(&mut self) {
-        if let Some(f) = self.calls.stack.pop() {
+        if let Some(f) = self.prog.calls.stack.pop() {
             self.switch_to(f.file);
-            self.program_start = f.start;
-            self.calls.header = f.header;
-            self.loops = f.loops;
-            self.calls.end_seq = f.end_seq;
+            self.prog.program_start = f.start;
+            self.prog.calls.header = f.header;
+            self.prog.loops = f.loops;
+            self.prog.calls.end_seq = f.end_seq;
             let _ = self.seek(f.ret);
         }
     }
@@ -702,12 +748,12 @@ impl Interp {
     /// back to its start (or N P), L times when L is given.
     pub(super) fn m99(&mut self, at: u32) -> R<()> {
         let p = self.int_word(b'P', 99_999.0)?;
-        let l = if self.dialect.caps.m98_q_m99_l {
+        let l = if self.cfg.dialect.caps.m98_q_m99_l {
             self.int_word(b'L', 9999.0)?
         } else {
             None
         };
-        if self.calls.stack.is_empty() {
+        if self.prog.calls.stack.is_empty() {
             return self.main_m99(p, l, at);
         }
         self.sub_return(p, at)
@@ -717,40 +763,40 @@ impl Interp {
     /// sequence number R).
     pub(super) fn sub_return(&mut self, p: Option<(u32, u32)>, at: u32) -> R<()> {
         self.corner_open("the return from a subprogram")?;
-        let f = self.calls.stack.last_mut().expect("in a call");
+        let f = self.prog.calls.stack.last_mut().expect("in a call");
         if f.left > 0 {
             f.left -= 1;
             let m = f.callee_start;
             self.count_jump(at)?;
-            self.loops.clear();
+            self.prog.loops.clear();
             return self.seek(m);
         }
-        let f = self.calls.stack.pop().expect("in a call");
+        let f = self.prog.calls.stack.pop().expect("in a call");
         if let Some(l) = f.locals {
             self.vars.put_locals(&l);
         }
         self.switch_to(f.file);
-        self.program_start = f.start;
-        self.calls.header = f.header;
-        self.loops = f.loops;
-        self.calls.end_seq = f.end_seq;
+        self.prog.program_start = f.start;
+        self.prog.calls.header = f.header;
+        self.prog.loops = f.loops;
+        self.prog.calls.end_seq = f.end_seq;
         self.seek(f.ret)?;
         if let Some((n, pat)) = p {
             // A return to an earlier block can loop: it counts as a jump.
             self.count_jump(pat)?;
             if !self.seek_sequence(n, true) {
-                let (line, col) = self.raw.line_col(pat as usize);
+                let (line, col) = self.prog.raw.line_col(pat as usize);
                 return Err(AlarmKind::SequenceNotFound.at(
-                    self.dialect.id,
+                    self.cfg.dialect.id,
                     SrcRef {
-                        file: self.cur.file,
+                        file: self.prog.cur.file,
                         line,
                         col,
                     },
                     format!("M99 P{n}: sequence number N{n} not found in the calling program"),
                 ));
             }
-            let to = self.src.as_ref().expect("loaded").tell().offset;
+            let to = self.prog.src.as_ref().expect("loaded").tell().offset;
             self.leave_loops(to);
         }
         Ok(())
@@ -759,22 +805,22 @@ impl Interp {
     /// M99 in the main program (000 §2.4.4).
     fn main_m99(&mut self, p: Option<(u32, u32)>, l: Option<(u32, u32)>, at: u32) -> R<()> {
         self.corner_open("M99")?;
-        let here = self.raw.mark.offset;
+        let here = self.prog.raw.mark.offset;
         if let Some((n, _)) = l {
-            let left = match self.calls.main_repeat {
+            let left = match self.prog.calls.main_repeat {
                 Some((off, left)) if off == here => left,
                 _ => n.saturating_sub(1),
             };
             if left == 0 {
-                self.calls.main_repeat = None;
+                self.prog.calls.main_repeat = None;
                 return Ok(());
             }
-            self.calls.main_repeat = Some((here, left - 1));
+            self.prog.calls.main_repeat = Some((here, left - 1));
         } else if self.main_m99_last_pass()? {
             return Ok(());
         }
         self.count_jump(at)?;
-        self.loops.clear();
+        self.prog.loops.clear();
         match p {
             Some((n, pat)) => {
                 if !self.seek_sequence(n, true) {
@@ -787,7 +833,7 @@ impl Interp {
                 Ok(())
             }
             None => {
-                let s = self.program_start;
+                let s = self.prog.program_start;
                 self.seek(s)
             }
         }
@@ -799,9 +845,9 @@ impl Interp {
     /// (status 0) with an operator message saying so. True when this M99
     /// ended it.
     fn main_m99_last_pass(&mut self) -> R<bool> {
-        self.calls.main_passes += 1;
+        self.prog.calls.main_passes += 1;
         let n = self.settings.main_passes.max(1);
-        if self.calls.main_passes < n {
+        if self.prog.calls.main_passes < n {
             return Ok(false);
         }
         let s = if n == 1 { "" } else { "es" };
@@ -847,22 +893,21 @@ impl Interp {
         let count = self.int_word(b'L', 9999.0)?.map(|l| l.0).unwrap_or(1);
         let args = self.g65_args(false)?;
         if modal {
-            let max = self.profile.param("max_macro_nesting", 4.0) as usize;
-            if self.calls.modal.len() >= max {
+            let max = self.cfg.profile.param("max_macro_nesting", 4.0) as usize;
+            if self.prog.calls.modal.len() >= max {
                 return Err(self.alarm(
                     AlarmKind::CallNesting,
                     at,
                     format!("G66 modal calls nested more than {max} deep"),
                 ));
             }
-            self.calls.modal.push(ModalCall {
+            self.prog.calls.modal.push(ModalCall {
                 prog: p,
                 count,
                 args: Box::new(args),
             });
-            self.st
-                .modal
-                .set_meaning(self.dialect, Means::ModalCall(true));
+            self.modal
+                .set_meaning(self.cfg.dialect, Means::ModalCall(true));
             return Ok(());
         }
         if count == 0 {
@@ -874,8 +919,8 @@ impl Interp {
     /// True when the block names a G or M code that calls a macro (its
     /// letters are then arguments).
     pub(super) fn code_call_block(&self) -> bool {
-        match &self.code_calls {
-            Some(cc) if !self.calls.stack.iter().any(|f| f.by_code) => {
+        match &self.hx.code_calls {
+            Some(cc) if !self.prog.calls.stack.iter().any(|f| f.by_code) => {
                 self.words
                     .gs()
                     .iter()
@@ -895,10 +940,10 @@ impl Interp {
     /// Not made inside a program that a code called.
     #[inline(never)]
     pub(super) fn code_call(&mut self) -> R<Option<bool>> {
-        let Some(cc) = self.code_calls.as_ref() else {
+        let Some(cc) = self.hx.code_calls.as_ref() else {
             return Ok(None);
         };
-        if self.calls.stack.iter().any(|f| f.by_code) {
+        if self.prog.calls.stack.iter().any(|f| f.by_code) {
             return Ok(None);
         }
         let mut hit: Option<(u32, u32, bool)> = None;
@@ -928,7 +973,7 @@ impl Interp {
                 return Ok(Some(true));
             }
             self.call(Some(prog), None, None, count, true, at, Some(args))?;
-            if let Some(f) = self.calls.stack.last_mut() {
+            if let Some(f) = self.prog.calls.stack.last_mut() {
                 f.by_code = true;
             }
             return Ok(Some(true));
@@ -942,7 +987,7 @@ impl Interp {
                     .map_err(|m| self.alarm(m.kind, t.at, m.message))?;
                 let r = self.execute_block()?;
                 self.call(Some(9000), None, None, 1, false, t.at, None)?;
-                if let Some(f) = self.calls.stack.last_mut() {
+                if let Some(f) = self.prog.calls.stack.last_mut() {
                     f.by_code = true;
                 }
                 return Ok(Some(r));
@@ -955,31 +1000,30 @@ impl Interp {
     /// header, its own locals put back), drops the G66 calls, the M98 end
     /// sequence and the main-program M99 L count.
     pub(super) fn reset_calls(&mut self) {
-        if let Some(bottom) = self.calls.stack.first() {
+        if let Some(bottom) = self.prog.calls.stack.first() {
             let (file, start, header) = (bottom.file, bottom.start, bottom.header);
             // The main level's locals are in the first macro call's frame.
-            let main_locals = self.calls.stack.iter().find_map(|f| f.locals.clone());
+            let main_locals = self.prog.calls.stack.iter().find_map(|f| f.locals.clone());
             self.switch_to(file);
-            self.program_start = start;
-            self.calls.header = header;
+            self.prog.program_start = start;
+            self.prog.calls.header = header;
             if let Some(l) = main_locals {
                 self.vars.put_locals(&l);
             }
         }
-        self.calls.stack.clear();
-        self.calls.end_seq = None;
-        self.calls.main_repeat = None;
-        self.calls.main_passes = 0;
-        self.calls.modal.clear();
+        self.prog.calls.stack.clear();
+        self.prog.calls.end_seq = None;
+        self.prog.calls.main_repeat = None;
+        self.prog.calls.main_passes = 0;
+        self.prog.calls.modal.clear();
     }
 
     /// G67: cancels the most recent G66.
     pub(super) fn g67(&mut self) {
-        self.calls.modal.pop();
-        let on = !self.calls.modal.is_empty();
-        self.st
-            .modal
-            .set_meaning(self.dialect, Means::ModalCall(on));
+        self.prog.calls.modal.pop();
+        let on = !self.prog.calls.modal.is_empty();
+        self.modal
+            .set_meaning(self.cfg.dialect, Means::ModalCall(on));
     }
 
     /// After a block with an axis move while G66 is in force: call the
@@ -988,20 +1032,23 @@ impl Interp {
     /// macro calls the newest entry; moves in the oldest entry's macro call
     /// nothing.
     pub(super) fn modal_call(&mut self, at: u32) -> R<()> {
-        let n = self.calls.modal.len();
-        let inside = self.calls.stack.iter().rev().find_map(|f| f.modal_idx);
+        let n = self.prog.calls.modal.len();
+        let inside = self.prog.calls.stack.iter().rev().find_map(|f| f.modal_idx);
         let idx = match inside {
             None => n - 1,
             Some(0) => return Ok(()),
             Some(i) => (i - 1).min(n - 1),
         };
-        let (prog, count) = (self.calls.modal[idx].prog, self.calls.modal[idx].count);
+        let (prog, count) = (
+            self.prog.calls.modal[idx].prog,
+            self.prog.calls.modal[idx].count,
+        );
         if count == 0 {
             return Ok(());
         }
-        let args = *self.calls.modal[idx].args;
+        let args = *self.prog.calls.modal[idx].args;
         self.call(Some(prog), None, None, count, true, at, Some(args))?;
-        if let Some(f) = self.calls.stack.last_mut() {
+        if let Some(f) = self.prog.calls.stack.last_mut() {
             f.modal_idx = Some(idx);
         }
         Ok(())
@@ -1013,13 +1060,9 @@ impl Interp {
         let mut a = [None; 33];
         let mut set: i32 = -1;
         let mut last_k = 3usize;
-        let scale = if self.st.modal.metric() {
-            0.001
-        } else {
-            0.0001
-        };
-        for i in 0..self.block.words.len() {
-            let w = self.block.words[i];
+        let scale = if self.modal.metric() { 0.001 } else { 0.0001 };
+        for i in 0..self.prog.block.words.len() {
+            let w = self.prog.block.words[i];
             let Addr::L(l) = w.addr else { continue };
             if matches!(l, b'G' | b'P' | b'L' | b'N' | b'O') || (skip_m && l == b'M') {
                 continue;
@@ -1042,7 +1085,7 @@ impl Interp {
                             | b'Y'
                             | b'Z'
                     );
-                    if dimension && !n.point && !self.profile.calculator_decimal {
+                    if dimension && !n.point && !self.cfg.profile.calculator_decimal {
                         let s = if matches!(l, b'A' | b'B' | b'C') {
                             0.001
                         } else {
@@ -1096,11 +1139,12 @@ impl Interp {
         }
         let n = v.unwrap_or(0.0);
         let text = self
+            .prog
             .block
             .comments
             .first()
             .map(|&(s, e)| {
-                String::from_utf8_lossy(&self.raw.text[s as usize..e as usize])
+                String::from_utf8_lossy(&self.prog.raw.text[s as usize..e as usize])
                     .trim()
                     .to_string()
             })
@@ -1113,7 +1157,7 @@ impl Interp {
                     format!("#3000 = {}: alarm number must be 0-999", fmt_num(n)),
                 ));
             }
-            let (line, col) = self.raw.line_col(at as usize);
+            let (line, col) = self.prog.raw.line_col(at as usize);
             let msg = if text.is_empty() {
                 format!("user alarm {}", 3000 + n as u32)
             } else {
@@ -1123,7 +1167,7 @@ impl Interp {
                 format!("{}", 3000 + n as u32),
                 msg,
                 SrcRef {
-                    file: self.file_id,
+                    file: self.prog.file_id,
                     line,
                     col,
                 },

@@ -7,7 +7,7 @@ impl Interp {
     // ---- numbers -------------------------------------------------------------
 
     pub(super) fn unit(&self) -> f64 {
-        if self.st.modal.metric() {
+        if self.modal.metric() {
             1.0
         } else {
             25.4
@@ -17,19 +17,15 @@ impl Interp {
     /// A linear dimension in mm (least-input-increment rule applied).
     pub(super) fn linear(&self, w: WVal) -> f64 {
         let mut v = w.v;
-        if !w.point && !self.profile.calculator_decimal {
-            v *= if self.st.modal.metric() {
-                0.001
-            } else {
-                0.0001
-            };
+        if !w.point && !self.cfg.profile.calculator_decimal {
+            v *= if self.modal.metric() { 0.001 } else { 0.0001 };
         }
         v * self.unit()
     }
 
     /// A rotary dimension in degrees.
     pub(super) fn angular(&self, w: WVal) -> f64 {
-        if !w.point && !self.profile.calculator_decimal {
+        if !w.point && !self.cfg.profile.calculator_decimal {
             w.v * 0.001
         } else {
             w.v
@@ -38,7 +34,7 @@ impl Interp {
 
     /// Seconds from a dwell-time word (X/U: least increment 0.001 s).
     pub(super) fn seconds(&self, w: WVal) -> f64 {
-        if !w.point && !self.profile.calculator_decimal {
+        if !w.point && !self.cfg.profile.calculator_decimal {
             w.v * 0.001
         } else {
             w.v
@@ -48,7 +44,7 @@ impl Interp {
     /// Range check of 002 Tables 2-3 for Hurco geometric words.
     #[inline]
     pub(super) fn check_range(&self, l: u8, w: WVal) -> R<()> {
-        if !self.dialect.caps.word_ranges {
+        if !self.cfg.dialect.caps.word_ranges {
             return Ok(());
         }
         self.check_range_hurco(l, w)
@@ -60,7 +56,7 @@ impl Interp {
         let scale = self.hurco_format_scale();
         let limit = match l {
             b'X' | b'Z' | b'I' | b'K' | b'R' | b'U' | b'W' | b'F' => {
-                if self.st.modal.metric() {
+                if self.modal.metric() {
                     21463.0 * scale
                 } else {
                     845.0 * scale
@@ -89,7 +85,7 @@ impl Interp {
     /// 1, or 0.1 with 002 Table 2's optional formats (profile
     /// `optional_format = 1`).
     pub(super) fn hurco_format_scale(&self) -> f64 {
-        if self.profile.param("optional_format", 0.0) != 0.0 {
+        if self.cfg.profile.param("optional_format", 0.0) != 0.0 {
             0.1
         } else {
             1.0
@@ -99,7 +95,7 @@ impl Interp {
     /// Table 2's thread lead range in mm/rev (G33 K/I, G78 F).
     pub(super) fn hurco_lead_range(&self) -> (f64, f64) {
         let optional = self.hurco_format_scale() < 1.0;
-        match (self.st.modal.metric(), optional) {
+        match (self.modal.metric(), optional) {
             (true, false) => (0.00001, 254.0),
             (true, true) => (0.000001, 24.0),
             (false, false) => (0.000001 * 25.4, 10.0 * 25.4),
@@ -110,7 +106,7 @@ impl Interp {
     // ---- F S T ---------------------------------------------------------------
 
     pub(super) fn f_word(&mut self, dwell: bool) -> R<()> {
-        if dwell && self.dialect.caps.dwell_is_f {
+        if dwell && self.cfg.dialect.caps.dwell_is_f {
             return Ok(());
         }
         if let Some(f) = self.words.get(b'F') {
@@ -118,12 +114,12 @@ impl Interp {
             if f.v < 0.0 {
                 return Err(self.alarm(AlarmKind::OutOfRange, f.at, "negative feedrate"));
             }
-            let v = if self.st.modal.feed_mode.means == FeedMode::Inverse {
+            let v = if self.modal.feed_mode.means == FeedMode::Inverse {
                 f.v
             } else {
                 f.v * self.unit()
             };
-            self.st.feed = Some(v);
+            self.tool.feed = Some(v);
         }
         Ok(())
     }
@@ -141,40 +137,43 @@ impl Interp {
             ));
         }
         let v = t.v as u32;
-        match self.profile.kind {
+        match self.cfg.profile.kind {
             MachineKind::Mill => {
-                if v > self.profile.tools.count {
+                if v > self.cfg.profile.tools.count {
                     return Err(self.alarm(
                         AlarmKind::OutOfRange,
                         t.at,
                         format!(
                             "T{v}: the tool changer has {} pockets",
-                            self.profile.tools.count
+                            self.cfg.profile.tools.count
                         ),
                     ));
                 }
-                self.st.next_tool = v;
+                self.tool.next = v;
                 self.emit(Canon::Tool {
                     tool: v,
-                    offset: self.st.offset,
+                    offset: self.tool.offset,
                     change: false,
                 });
             }
             MachineKind::Lathe => {
                 // Turret: T(tool)(offset), the last two digits the offset.
                 let (tool, off) = (v / 100, v % 100);
-                if tool > self.profile.tools.count {
+                if tool > self.cfg.profile.tools.count {
                     return Err(self.alarm(
                         AlarmKind::OutOfRange,
                         t.at,
-                        format!("T{v}: the turret has {} stations", self.profile.tools.count),
+                        format!(
+                            "T{v}: the turret has {} stations",
+                            self.cfg.profile.tools.count
+                        ),
                     ));
                 }
-                let change = tool != 0 && tool != self.st.tool;
+                let change = tool != 0 && tool != self.tool.number;
                 if tool != 0 {
-                    self.st.tool = tool;
+                    self.tool.number = tool;
                 }
-                self.st.next_tool = self.st.tool;
+                self.tool.next = self.tool.number;
                 if !self.offsets.valid(off as usize) {
                     return Err(self.alarm(
                         AlarmKind::OutOfRange,
@@ -185,10 +184,10 @@ impl Interp {
                         ),
                     ));
                 }
-                self.st.offset = off;
+                self.tool.offset = off;
                 self.apply_lathe_offset();
                 self.emit(Canon::Tool {
-                    tool: self.st.tool,
+                    tool: self.tool.number,
                     offset: off,
                     change,
                 });
@@ -197,21 +196,21 @@ impl Interp {
         Ok(())
     }
 
-    /// The lathe tool offset selected by the T code (`st.offset`, 0 =
+    /// The lathe tool offset selected by the T code (`tool.offset`, 0 =
     /// cancel) as the tool offset vector: X (radius) and Z, geometry +
     /// wear. The path shifts by it from the next move on (the T code
     /// itself moves nothing; in a block with a move, that move carries
     /// it), fanuc-semantics §5 / docs/dialects.md.
     pub(super) fn apply_lathe_offset(&mut self) {
-        let o = self.offsets.lathe(self.st.offset as usize);
-        self.st.tlo = [0.0; NAXES];
-        self.st.tlo[Axis::X as usize] = o.total_x();
-        self.st.tlo[Axis::Z as usize] = o.total_z();
+        let o = self.offsets.lathe(self.tool.offset as usize);
+        self.frames.tlo = [0.0; NAXES];
+        self.frames.tlo[Axis::X as usize] = o.total_x();
+        self.frames.tlo[Axis::Z as usize] = o.total_z();
     }
 
     /// S word and spindle start codes, combined into one spindle event.
     pub(super) fn spindle_words(&mut self) -> R<()> {
-        let mut dir = self.st.spindle;
+        let mut dir = self.tool.spindle;
         for i in 0..self.words.nm {
             let (m, _) = self.words.m[i];
             match self.mcode(m).map(|c| c.action) {
@@ -225,16 +224,16 @@ impl Interp {
             if s.v < 0.0 {
                 return Err(self.alarm(AlarmKind::OutOfRange, s.at, "negative spindle speed"));
             }
-            self.st.s = s.v;
+            self.tool.s = s.v;
         }
-        let changed_dir = dir != self.st.spindle;
-        self.st.spindle = dir;
+        let changed_dir = dir != self.tool.spindle;
+        self.tool.spindle = dir;
         if dir == SpindleDir::Stop {
             return Ok(());
         }
         let rpm = self.rpm();
-        if changed_dir || (rpm - self.st.last_rpm).abs() > 1e-9 {
-            self.st.last_rpm = rpm;
+        if changed_dir || (rpm - self.tool.last_rpm).abs() > 1e-9 {
+            self.tool.last_rpm = rpm;
             let css = self.css_speed();
             self.emit(Canon::Spindle { dir, rpm, css });
         }
@@ -243,43 +242,37 @@ impl Interp {
 
     /// The surface speed in m/min when constant surface speed is on.
     pub(super) fn css_speed(&self) -> Option<f64> {
-        self.st
-            .modal
+        self.modal
             .css
             .means
-            .then_some(self.st.s * if self.st.modal.metric() { 1.0 } else { 0.3048 })
+            .then_some(self.tool.s * if self.modal.metric() { 1.0 } else { 0.3048 })
     }
 
     /// Spindle rpm for the programmed S at the current position.
     pub(super) fn rpm(&self) -> f64 {
-        let mut rpm = if self.st.modal.css.means {
+        let mut rpm = if self.modal.css.means {
             // Surface speed in m/min (ft/min in inch) at the current radius.
-            let vc = self.st.s
-                * if self.st.modal.metric() {
-                    1000.0
-                } else {
-                    304.8
-                };
+            let vc = self.tool.s * if self.modal.metric() { 1000.0 } else { 304.8 };
             let r = match self.hurco.css_r {
-                Some(r) if self.dialect.caps.css_radius_word => r,
+                Some(r) if self.cfg.dialect.caps.css_radius_word => r,
                 _ => self.work_position()[0].abs(),
             }
             .max(1e-3);
             vc / (std::f64::consts::TAU * r)
         } else {
-            self.st.s
+            self.tool.s
         };
-        if let Some(c) = self.st.s_clamp {
+        if let Some(c) = self.tool.s_clamp {
             rpm = rpm.min(c);
         }
-        rpm.min(self.profile.spindle.max_rpm)
+        rpm.min(self.cfg.profile.spindle.max_rpm)
     }
 
     // ---- one-shots -------------------------------------------------------------
 
     pub(super) fn dwell(&mut self) -> R<()> {
         let w = &self.words;
-        let (secs, revs) = if self.dialect.caps.dwell_is_f {
+        let (secs, revs) = if self.cfg.dialect.caps.dwell_is_f {
             // 002: "F is the only entry allowed in a G04 block".
             if let Some(x) = [b'X', b'Z', b'I', b'K', b'R', b'P', b'Q', b'A', b'H']
                 .iter()
@@ -300,7 +293,7 @@ impl Interp {
                         format!("G04 F{} out of range (0.0001-999.9999)", fmt_num(f.v)),
                     ))
                 }
-                Some(f) if self.st.modal.feed_mode.means == FeedMode::PerRev => (0.0, f.v),
+                Some(f) if self.modal.feed_mode.means == FeedMode::PerRev => (0.0, f.v),
                 Some(f) => (f.v, 0.0),
                 None => {
                     return Err(self.alarm(
@@ -329,9 +322,9 @@ impl Interp {
         }
         // HX PI 120 = 1: in G95 the dwell counts spindle revolutions, in
         // the same units (000 §5.4, "(G95) PI 120 (#3120) 1").
-        let (secs, revs) = if self.dialect.caps.dwell_revs_param
-            && self.st.modal.feed_mode.means == FeedMode::PerRev
-            && self.profile.param("PI 120", 0.0) == 1.0
+        let (secs, revs) = if self.cfg.dialect.caps.dwell_revs_param
+            && self.modal.feed_mode.means == FeedMode::PerRev
+            && self.cfg.profile.param("PI 120", 0.0) == 1.0
         {
             (0.0, secs)
         } else {
@@ -348,14 +341,14 @@ impl Interp {
     /// given values; an S alone sets the spindle speed clamp.
     pub(super) fn coordinate_setting(&mut self, at: u32) -> R<()> {
         // 002 checks the S word's range (and refuses a negative clamp).
-        if self.dialect.caps.word_ranges {
+        if self.cfg.dialect.caps.word_ranges {
             self.g92_s()?;
         } else if let Some(s) = self.words.get(b'S') {
-            self.st.s_clamp = Some(s.v);
+            self.tool.s_clamp = Some(s.v);
             self.words.take(b'S');
             self.emit(Canon::Mode(ModeChange::SpindleClamp(s.v)));
         }
-        let cur = self.programmed_position();
+        let cur = self.frames.programmed_position();
         let mut any = false;
         for ax in Axis::ALL {
             let l = ax_letter(ax);
@@ -371,9 +364,11 @@ impl Interp {
                 // G92 clears the G52 local offset of the axis (Fanuc);
                 // new shift so that pos - (wcs + shift + tlo) = t.
                 let i = ax as usize;
-                self.st.local[i] = 0.0;
-                self.st.shift[i] =
-                    self.st.mover.pos()[i] - self.st.work.origin()[i] - self.st.tlo[i] - t;
+                self.frames.local[i] = 0.0;
+                self.frames.shift[i] = self.frames.mover.pos()[i]
+                    - self.frames.work.origin()[i]
+                    - self.frames.tlo[i]
+                    - t;
             }
         }
         let _ = (any, at);
@@ -386,11 +381,11 @@ impl Interp {
     /// §7.1.1 prints the format `G90 G53 X_Y_Z_`).
     pub(super) fn g53(&mut self) -> R<()> {
         let incremental =
-            !self.st.modal.absolute() || Axis::ALL.iter().any(|&ax| self.uvw(ax).is_some());
+            !self.modal.absolute() || Axis::ALL.iter().any(|&ax| self.uvw(ax).is_some());
         if incremental {
             return Ok(());
         }
-        let mut to = self.st.mover.pos();
+        let mut to = self.frames.mover.pos();
         let mut any = false;
         for ax in Axis::ALL {
             if let Some(w) = self.words.get(ax_letter(ax)) {
@@ -407,14 +402,14 @@ impl Interp {
     }
 
     pub(super) fn linear_rapid(&self) -> bool {
-        self.dialect.caps.linear_rapid
+        self.cfg.dialect.caps.linear_rapid
     }
 
     pub(super) fn work_of(&self, mpos: &Pos) -> Pos {
-        let o = self.origin();
+        let o = self.frames.origin();
         let mut p = *mpos;
         for i in 0..NAXES {
-            p[i] -= o[i] + self.st.tlo[i];
+            p[i] -= o[i] + self.frames.tlo[i];
         }
         p
     }
@@ -426,7 +421,7 @@ impl Interp {
         } else {
             self.linear(w)
         };
-        if ax == Axis::X && self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means
+        if ax == Axis::X && self.cfg.profile.kind == MachineKind::Lathe && self.modal.diameter.means
         {
             v /= 2.0;
         }
@@ -435,7 +430,7 @@ impl Interp {
 
     /// The incremental letter for an axis, if present (PUMA U/W).
     pub(super) fn uvw(&self, ax: Axis) -> Option<u8> {
-        if !self.dialect.uvw_incremental {
+        if !self.cfg.dialect.uvw_incremental {
             return None;
         }
         let l = match ax {

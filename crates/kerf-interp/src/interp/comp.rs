@@ -86,7 +86,7 @@ pub(super) struct CompPath {
     pub(super) motion: SrcRef,
 }
 
-/// Compensation state; `Interp::comp` is None when compensation is
+/// Compensation state; `CommonFeatures::comp` is None when compensation is
 /// cancelled and nothing is left over (so plain programs pay one test).
 pub(crate) struct CompState {
     /// G41/G42 in force.
@@ -139,18 +139,18 @@ fn psub(a: P, b: P) -> P {
 
 impl Interp {
     fn comp_new(&self) -> CompState {
-        let cp = &self.dialect.caps.comp;
+        let cp = &self.cfg.dialect.caps.comp;
         let (key, default, b) = cp.type_b;
-        let type_b = self.profile.param(key, default) == b;
-        let limit = self.profile.param("comp_idle_blocks", cp.idle_blocks);
+        let type_b = self.cfg.profile.param(key, default) == b;
+        let limit = self.cfg.profile.param("comp_idle_blocks", cp.idle_blocks);
         let circular =
-            cp.circular_joining && self.profile.param("comp_circular_joining", 0.0) == 1.0;
+            cp.circular_joining && self.cfg.profile.param("comp_circular_joining", 0.0) == 1.0;
         CompState {
             on: false,
             r: 0.0,
             side: 1.0,
             tip: (0.0, 0.0),
-            plane: self.st.modal.plane.means,
+            plane: self.modal.plane.means,
             startup: false,
             vec: (0.0, 0.0),
             held: None,
@@ -168,7 +168,7 @@ impl Interp {
     /// Keeps back an event made while a compensated move is held; gives
     /// the event back when nothing is held.
     pub(super) fn comp_hold_event(&mut self, e: Event) -> Option<Event> {
-        match self.comp.as_mut().and_then(|c| c.held.as_mut()) {
+        match self.common.comp.as_mut().and_then(|c| c.held.as_mut()) {
             Some(h) => {
                 h.events.push(e);
                 None
@@ -180,10 +180,10 @@ impl Interp {
     /// The offset value and tip shift in force: D on mills, the T code's
     /// nose radius and tip on lathes.
     fn comp_value(&self) -> (f64, P) {
-        match self.profile.kind {
+        match self.cfg.profile.kind {
             MachineKind::Mill => (self.offsets.d(self.sys.d.max(0.0) as usize), (0.0, 0.0)),
             MachineKind::Lathe => {
-                let o = self.offsets.lathe(self.st.offset as usize);
+                let o = self.offsets.lathe(self.tool.offset as usize);
                 let r = o.total_r();
                 let t = comp::tip_vector(o.tip);
                 (r, (t.0 * r, t.1 * r))
@@ -195,7 +195,7 @@ impl Interp {
     /// reference return or G53, which cannot start the offset (000
     /// §13.2.1: "[G00/G01] X_ Y_ G41"; G40 with them is a cancel: allowed).
     fn comp_check_words(&self, one_shot: &[(u16, u32)]) -> R<()> {
-        if self.profile.kind == MachineKind::Mill {
+        if self.cfg.profile.kind == MachineKind::Mill {
             if let Some(dw) = self.words.get(b'D') {
                 if dw.v < 0.0 || dw.v.fract() != 0.0 || !self.offsets.valid(dw.v as usize) {
                     return Err(self.alarm(
@@ -246,12 +246,12 @@ impl Interp {
         setting: bool,
     ) -> R<bool> {
         self.comp_check_words(one_shot)?;
-        let mode = self.st.modal.cutter_comp.means;
+        let mode = self.modal.cutter_comp.means;
         let g39 = one_shot
             .iter()
             .find(|g| self.gcode(g.0).map(|c| c.means) == Some(Means::OneShot(OneShot::CompCorner)))
             .map(|g| g.1);
-        if self.comp.is_none() {
+        if self.common.comp.is_none() {
             if mode == CompSide::Off {
                 if let Some(at) = g39 {
                     return Err(self.alarm(
@@ -262,11 +262,11 @@ impl Interp {
                 }
                 return Ok(false);
             }
-            self.comp = Some(Box::new(self.comp_new()));
+            self.common.comp = Some(Box::new(self.comp_new()));
         }
-        let plane = self.st.modal.plane.means;
+        let plane = self.modal.plane.means;
         let (on, cplane) = {
-            let c = self.comp.as_deref().expect("set");
+            let c = self.common.comp.as_deref().expect("set");
             (c.on, c.plane)
         };
         if on && plane != cplane {
@@ -285,7 +285,7 @@ impl Interp {
         // figures).
         if special || setting {
             self.comp_break()?;
-            let c = self.comp.as_deref_mut().expect("set");
+            let c = self.common.comp.as_deref_mut().expect("set");
             if !setting {
                 c.vec = (0.0, 0.0);
                 c.startup = c.on;
@@ -305,7 +305,7 @@ impl Interp {
         };
         self.comp_set_mode(mode, dir);
         if let Some(at) = g39 {
-            let c = self.comp.as_deref().expect("set");
+            let c = self.common.comp.as_deref().expect("set");
             if !c.on || c.held.is_none() || c.held.as_ref().is_some_and(|h| h.startup) {
                 return Err(self.alarm(
                     AlarmKind::CompG39,
@@ -323,7 +323,7 @@ impl Interp {
                 }
             }
             .map(|d| self.xf_dir(d));
-            self.comp.as_deref_mut().expect("set").g39 = Some(dir);
+            self.common.comp.as_deref_mut().expect("set").g39 = Some(dir);
             return Ok(true);
         }
         Ok(false)
@@ -332,15 +332,15 @@ impl Interp {
     /// G40 (`dir`: its I/J/K direction), G41 or G42 in force from now on
     /// (the state exists, or is made for G41/G42).
     pub(super) fn comp_set_mode(&mut self, mode: CompSide, dir: Option<P>) {
-        if self.comp.is_none() {
+        if self.common.comp.is_none() {
             if mode == CompSide::Off {
                 return;
             }
-            self.comp = Some(Box::new(self.comp_new()));
+            self.common.comp = Some(Box::new(self.comp_new()));
         }
-        let plane = self.st.modal.plane.means;
+        let plane = self.modal.plane.means;
         let (value, tip) = self.comp_value();
-        let c = self.comp.as_deref_mut().expect("set");
+        let c = self.common.comp.as_deref_mut().expect("set");
         match mode {
             CompSide::Left | CompSide::Right => {
                 let side = if mode == CompSide::Left { 1.0 } else { -1.0 };
@@ -364,7 +364,7 @@ impl Interp {
 
     /// The compensation side in force (Off when none is).
     pub(super) fn comp_side(&self) -> CompSide {
-        match self.comp.as_deref() {
+        match self.common.comp.as_deref() {
             Some(c) if c.on => {
                 if c.side > 0.0 {
                     CompSide::Left
@@ -381,7 +381,7 @@ impl Interp {
     /// (the cycle's return to its start point is not compensated).
     pub(super) fn comp_shape_end(&mut self) -> R<()> {
         self.comp_break()?;
-        if let Some(c) = self.comp.as_deref_mut() {
+        if let Some(c) = self.common.comp.as_deref_mut() {
             c.vec = (0.0, 0.0);
             c.startup = c.on;
         }
@@ -401,7 +401,7 @@ impl Interp {
     ) -> R<()> {
         let cur = self.zx_full(seg.from);
         let tw = self.zx_full(seg.to);
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let (cur_t, tw_t) = (self.xf_point(&cur), self.xf_point(&tw));
         let (sp, ep) = ((cur[a1], cur[a2]), (tw[a1], tw[a2]));
         let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
@@ -461,11 +461,11 @@ impl Interp {
     /// The block's move in compensation (offset mode, or a held move or
     /// vector left over).
     pub(super) fn comp_motion(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<()> {
-        if self.corner.is_some() {
+        if self.common.corner.is_some() {
             // A ,C/,R move held before the compensation started.
             return Err(self.corner_broken("a cutter compensation start-up (G41/G42)"));
         }
-        let plane = self.st.modal.plane.means;
+        let plane = self.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         let cur = self.prog_pos();
         let arc = matches!(mode, MotionMode::ArcCw | MotionMode::ArcCcw);
@@ -475,7 +475,7 @@ impl Interp {
         ) {
             // G33 and the like: uncompensated, the look-ahead broken.
             self.comp_break()?;
-            let c = self.comp.as_deref_mut().expect("comp");
+            let c = self.common.comp.as_deref_mut().expect("comp");
             c.vec = (0.0, 0.0);
             c.startup = c.on;
             return self.plain_motion(mode, tw, any, at);
@@ -523,7 +523,7 @@ impl Interp {
         };
         // ,C/,R on this block: a cutting move in the plane alone.
         let off_plane = (0..NAXES).any(|i| i != a1 && i != a2 && (tw[i] - cur[i]).abs() > 1e-9);
-        let on_now = self.comp.as_deref().is_some_and(|c| c.on);
+        let on_now = self.common.comp.as_deref().is_some_and(|c| c.on);
         let corner = match word {
             None => None,
             Some((_, w)) if mode == MotionMode::Rapid => {
@@ -537,7 +537,7 @@ impl Interp {
                 chamfer,
                 size: self.linear(w),
                 seg: seg_p,
-                xf: self.st.xf,
+                xf: self.frames.xf,
                 word: self.src_here(w.at),
             })),
         };
@@ -569,7 +569,7 @@ impl Interp {
     /// from the old vector to the new one). Marks the block as moved.
     fn comp_refresh(&mut self) {
         let (value, vtip) = self.comp_value();
-        let c = self.comp.as_deref_mut().expect("comp");
+        let c = self.common.comp.as_deref_mut().expect("comp");
         if c.on {
             c.r = c.side * value;
             c.tip = if value < 0.0 { (0.0, 0.0) } else { vtip };
@@ -620,17 +620,17 @@ impl Interp {
             at,
             motion,
         } = p;
-        let plane = self.st.modal.plane.means;
+        let plane = self.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         let arc = matches!(mode, MotionMode::ArcCw | MotionMode::ArcCcw);
         let (s, e) = ((cur_t[a1], cur_t[a2]), (tw_t[a1], tw_t[a2]));
         self.comp_refresh();
-        let c = self.comp.as_deref_mut().expect("comp");
+        let c = self.common.comp.as_deref_mut().expect("comp");
         let (on, r, tip, vec, startup, type_b) = (c.on, c.r, c.tip, c.vec, c.startup, c.type_b);
         // A mirror image on one axis of the plane reverses the path's
         // turning sense: the offset goes to the other side of travel
         // (000 §15.3); its value is not scaled.
-        let r = if self.st.xf.mirrors(plane) { -r } else { r };
+        let r = if self.frames.xf.mirrors(plane) { -r } else { r };
         let mut held = c.held.take();
         let g39 = c.g39.take().or(c.circular.then_some(None));
         let ij = c.ij.take();
@@ -652,7 +652,7 @@ impl Interp {
         if !on {
             if arc {
                 return Err(AlarmKind::CompArc.at(
-                    self.dialect.id,
+                    self.cfg.dialect.id,
                     motion,
                     "cutter compensation cancelled (G40) in a G02/G03 block: cancel in G00/G01",
                 ));
@@ -661,12 +661,12 @@ impl Interp {
                 Some(h) => self.comp_cancel_held(h, ij, &seg, type_b)?,
                 None => padd(s, vec),
             };
-            if let Some(cap) = self.comp_capture.as_mut() {
+            if let Some(cap) = self.common.comp_capture.as_mut() {
                 if comp::dist(base, e) >= comp::EPS {
                     cap.push((Seg::Line { a: base, b: e }, motion, true));
                 }
                 self.place_at(&tw);
-                self.comp = None;
+                self.common.comp = None;
                 return Ok(());
             }
             let start = self.offset_to_machine(&self.plane_pt(cur_t, base));
@@ -676,7 +676,7 @@ impl Interp {
                 self.place_machine(prog);
             }
             r?;
-            self.comp = None;
+            self.common.comp = None;
             return Ok(());
         }
         // The offset at this block's start must exist (an inside arc
@@ -687,7 +687,7 @@ impl Interp {
         } else {
             if startup && arc {
                 return Err(AlarmKind::CompArc.at(
-                    self.dialect.id,
+                    self.cfg.dialect.id,
                     motion,
                     "cutter compensation start-up (G41/G42) in a G02/G03 block: start in G00/G01",
                 ));
@@ -696,8 +696,8 @@ impl Interp {
             // vector left by a broken look-ahead.
             psub(padd(s, vec), tip)
         };
-        let src = self.cur;
-        let c = self.comp.as_deref_mut().expect("comp");
+        let src = self.prog.cur;
+        let c = self.common.comp.as_deref_mut().expect("comp");
         c.startup = false;
         c.vec = (0.0, 0.0);
         let events = std::mem::take(&mut c.spare);
@@ -767,7 +767,7 @@ impl Interp {
     ) -> R<(Held, P)> {
         let (mode, on, off_plane, end2) = cut;
         let k = if hc.chamfer { 'C' } else { 'R' };
-        let id = self.dialect.id;
+        let id = self.cfg.dialect.id;
         let broken = |what: &str| {
             AlarmKind::CornerNoMove.at(
                 id,
@@ -784,7 +784,7 @@ impl Interp {
         if off_plane {
             return Err(broken("a move off the plane"));
         }
-        if hc.xf != self.st.xf {
+        if hc.xf != self.frames.xf {
             return Err(AlarmKind::CornerConflict.at(
                 id,
                 hc.word,
@@ -808,7 +808,7 @@ impl Interp {
             };
             AlarmKind::CornerTooLarge.at(id, hc.word, why)
         })?;
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let fwd = |me: &Self, q: P| {
             let p = me.xf_point(&me.plane_pt(cur, q));
             (p[a1], p[a2])
@@ -860,11 +860,11 @@ impl Interp {
     /// held it is kept back and takes the corner's plane point; otherwise
     /// it moves at the vector in force.
     fn comp_offplane(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<()> {
-        let c = self.comp.as_deref().expect("comp");
+        let c = self.common.comp.as_deref().expect("comp");
         if let Some(hc) = c.held.as_ref().and_then(|h| h.corner.as_ref()) {
             let k = if hc.chamfer { 'C' } else { 'R' };
             return Err(AlarmKind::CornerNoMove.at(
-                self.dialect.id,
+                self.cfg.dialect.id,
                 hc.word,
                 format!("a move off the plane after a ,{k} block: the next move must be G01/G02/G03 in the same plane"),
             ));
@@ -875,21 +875,21 @@ impl Interp {
         let vec = c.vec;
         let cur_t = self.xf_point(&self.prog_pos());
         let tw_t = self.xf_point(&tw);
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let p = padd((cur_t[a1], cur_t[a2]), vec);
         let start = self.offset_to_machine(&self.plane_pt(cur_t, p));
         let prog = self.place_machine(start);
-        self.comp_prog = Some(self.work_of(&self.to_machine(&tw)));
+        self.common.comp_prog = Some(self.work_of(&self.to_machine(&tw)));
         // The vector is in the transformed plane: the target back in
         // program coordinates for the move.
         let target = self.plane_pt(tw_t, p);
-        let target = if self.st.xf.active() {
-            self.st.xf.inverse(&target)
+        let target = if self.frames.xf.active() {
+            self.frames.xf.inverse(&target)
         } else {
             target
         };
         let r = self.plain_motion(mode, target, any, at);
-        self.comp_prog = None;
+        self.common.comp_prog = None;
         if r.is_ok() {
             self.place_at(&tw);
         } else {
@@ -901,7 +901,7 @@ impl Interp {
     /// Ends a held move on the vector perpendicular to its end (the
     /// look-ahead broken); the vector stays in force.
     pub(super) fn comp_break(&mut self) -> R<()> {
-        let Some(c) = self.comp.as_deref_mut() else {
+        let Some(c) = self.common.comp.as_deref_mut() else {
             return Ok(());
         };
         let Some(mut h) = c.held.take() else {
@@ -910,23 +910,23 @@ impl Interp {
         if let Some(hc) = &h.corner {
             let k = if hc.chamfer { 'C' } else { 'R' };
             return Err(AlarmKind::CornerNoMove.at(
-                self.dialect.id,
+                self.cfg.dialect.id,
                 hc.word,
                 format!("no G01/G02/G03 move in the plane follows the ,{k} block (a move of another kind, too many blocks without a move, or the end)"),
             ));
         }
         let end1 = self.comp_geom(comp::perp_end(&h.seg, h.r), h.motion)?;
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let vec = psub(padd(end1, h.tip), (h.end[a1], h.end[a2]));
         self.comp_flush(&mut h, &Join::at(end1))?;
-        self.comp.as_deref_mut().expect("comp").vec = vec;
+        self.common.comp.as_deref_mut().expect("comp").vec = vec;
         Ok(())
     }
 
     /// End of a block: blocks without a move in the plane count towards
     /// the look-ahead limit; a state with nothing left is dropped.
     pub(super) fn comp_block_end(&mut self) -> R<()> {
-        let Some(c) = self.comp.as_deref_mut() else {
+        let Some(c) = self.common.comp.as_deref_mut() else {
             return Ok(());
         };
         if c.moved {
@@ -938,9 +938,9 @@ impl Interp {
                 self.comp_break()?;
             }
         }
-        let c = self.comp.as_deref().expect("comp");
+        let c = self.common.comp.as_deref().expect("comp");
         if !c.on && c.held.is_none() && c.vec == (0.0, 0.0) {
-            self.comp = None;
+            self.common.comp = None;
         }
         Ok(())
     }
@@ -950,7 +950,7 @@ impl Interp {
     /// perpendicular vector.
     pub(super) fn comp_finish(&mut self) -> R<()> {
         self.comp_break()?;
-        self.comp = None;
+        self.common.comp = None;
         Ok(())
     }
 
@@ -967,7 +967,7 @@ impl Interp {
                     "no intersection of the compensated paths at the corner",
                 ),
             };
-            kind.at(self.dialect.id, src, msg)
+            kind.at(self.cfg.dialect.id, src, msg)
         })
     }
 
@@ -975,21 +975,21 @@ impl Interp {
     /// the corner's plane point), then the corner's pieces. Alarms point
     /// at the held block's motion word.
     fn comp_flush(&mut self, h: &mut Held, j: &Join) -> R<()> {
-        let prog = self.st.mover.pos();
+        let prog = self.frames.mover.pos();
         // The held points are already transformed (scaling, mirror,
         // rotation of their own block): emitted through the offset stack
         // only.
-        let xf = std::mem::take(&mut self.st.xf);
+        let xf = std::mem::take(&mut self.frames.xf);
         let base = self.prog_pos();
-        let here = std::mem::replace(&mut self.cur, h.src);
+        let here = std::mem::replace(&mut self.prog.cur, h.src);
         let mut events = std::mem::take(&mut h.events);
         let r = self.comp_emit(h, j, base, &mut events);
-        self.st.xf = xf;
-        self.comp_prog = None;
-        self.cur = here;
+        self.frames.xf = xf;
+        self.common.comp_prog = None;
+        self.prog.cur = here;
         self.place_machine(prog);
         events.clear();
-        if let Some(c) = self.comp.as_deref_mut() {
+        if let Some(c) = self.common.comp.as_deref_mut() {
             if c.spare.capacity() < events.capacity() {
                 c.spare = events;
             }
@@ -1009,12 +1009,12 @@ impl Interp {
         };
         if bad {
             return Err(AlarmKind::CompInterference.at(
-                self.dialect.id,
+                self.cfg.dialect.id,
                 h.motion,
                 "interference: the compensated move would run against the programmed direction (gouge)",
             ));
         }
-        if let Some(cap) = self.comp_capture.as_mut() {
+        if let Some(cap) = self.common.comp_capture.as_mut() {
             // The G71-G73 tip path: the pieces are kept, nothing emitted.
             let (a, b) = (padd(h.cstart, h.tip), padd(j.end1, h.tip));
             match h.seg {
@@ -1058,7 +1058,7 @@ impl Interp {
         let s = self.plane_pt(h.start, padd(h.cstart, h.tip));
         let e = self.plane_pt(h.end, padd(j.end1, h.tip));
         self.place_at(&s);
-        self.comp_prog = Some(self.work_of(&self.to_machine(&h.end)));
+        self.common.comp_prog = Some(self.work_of(&self.to_machine(&h.end)));
         let feed = |me: &Self| match h.speed {
             Speed::Feed(f) => Ok(f),
             _ => me.feed(0),
@@ -1081,7 +1081,7 @@ impl Interp {
         }
         let mut prev = j.end1;
         let corner = self.plane_pt(base, h.seg.end());
-        self.comp_prog = Some(self.work_of(&self.to_machine(&corner)));
+        self.common.comp_prog = Some(self.work_of(&self.to_machine(&corner)));
         for p in j.pieces() {
             match *p {
                 Piece::Line(q) => {
@@ -1103,8 +1103,8 @@ impl Interp {
     /// A program point mapped by the transforms in force (scaling,
     /// mirror, rotation): the coordinates the compensation works in.
     fn xf_point(&self, p: &Pos) -> Pos {
-        if self.st.xf.active() {
-            self.st.xf.forward(p)
+        if self.frames.xf.active() {
+            self.frames.xf.forward(p)
         } else {
             *p
         }
@@ -1113,19 +1113,19 @@ impl Interp {
     /// A direction in the plane (program coordinates) mapped by the
     /// transforms in force.
     fn xf_dir(&self, d: P) -> P {
-        if !self.st.xf.active() {
+        if !self.frames.xf.active() {
             return d;
         }
         let o = [0.0; NAXES];
         let q = self.plane_pt(o, d);
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
-        let (fo, fq) = (self.st.xf.forward(&o), self.st.xf.forward(&q));
+        let (a1, a2, _) = self.modal.plane.means.axes();
+        let (fo, fq) = (self.frames.xf.forward(&o), self.frames.xf.forward(&q));
         (fq[a1] - fo[a1], fq[a2] - fo[a2])
     }
 
     /// `p` with its plane coordinates replaced by `uv`.
     fn plane_pt(&self, p: Pos, uv: P) -> Pos {
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let mut q = p;
         q[a1] = uv.0;
         q[a2] = uv.1;
@@ -1134,9 +1134,9 @@ impl Interp {
 
     /// The source position of a byte of the current block.
     pub(super) fn src_here(&self, at: u32) -> SrcRef {
-        let (line, col) = self.raw.line_col(at as usize);
+        let (line, col) = self.prog.raw.line_col(at as usize);
         SrcRef {
-            file: self.cur.file,
+            file: self.prog.cur.file,
             line,
             col,
         }

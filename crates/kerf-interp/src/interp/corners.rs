@@ -75,9 +75,9 @@ impl Interp {
             mode,
             MotionMode::Linear | MotionMode::ArcCw | MotionMode::ArcCcw
         );
-        if self.corner.is_some() {
+        if self.common.corner.is_some() {
             if !cutting {
-                let what = format!("G{}", fmt_code(self.st.modal.motion.code10));
+                let what = format!("G{}", fmt_code(self.modal.motion.code10));
                 return Err(self.corner_broken(&what));
             }
             if !moves {
@@ -94,7 +94,7 @@ impl Interp {
                 return self.plain_motion(mode, tw, any, at);
             };
             if !cutting {
-                let what = format!("a G{} block", fmt_code(self.st.modal.motion.code10));
+                let what = format!("a G{} block", fmt_code(self.modal.motion.code10));
                 return Err(self.corner_no_move(w, &what));
             }
             if !moves {
@@ -119,24 +119,24 @@ impl Interp {
         at: u32,
         word: Option<(bool, WVal)>,
     ) -> R<()> {
-        let Some(p) = self.corner.as_deref() else {
+        let Some(p) = self.common.corner.as_deref() else {
             return self.plain_motion(mode, tw, any, at);
         };
-        if p.plane != self.st.modal.plane.means {
+        if p.plane != self.modal.plane.means {
             return Err(self.corner_broken("a move in another plane"));
         }
-        if p.origin != self.prog_origin() {
+        if p.origin != self.frames.prog_origin() {
             return Err(
                 self.corner_conflict(p, "the coordinate system or tool length offset changed")
             );
         }
-        if p.tool != self.st.tool {
+        if p.tool != self.tool.number {
             return Err(self.corner_conflict(p, "the tool changed"));
         }
         let Some(seg2) = self.plane_path(mode, tw, any, at)? else {
             return Err(self.corner_broken("a block that does not move in the plane alone"));
         };
-        let Some(p) = self.corner.take() else {
+        let Some(p) = self.common.corner.take() else {
             return self.plain_motion(mode, tw, any, at);
         };
         let found = if p.chamfer {
@@ -156,14 +156,14 @@ impl Interp {
                         format!(",{k}{msg}: the paths meet without a corner (tangent or reversing)")
                     }
                 };
-                return Err(AlarmKind::CornerTooLarge.at(self.dialect.id, p.word, why));
+                return Err(AlarmKind::CornerTooLarge.at(self.cfg.dialect.id, p.word, why));
             }
         };
         // The held block's part, attributed to it; its alarms (travel)
         // point at its motion.
-        let here = std::mem::replace(&mut self.cur, p.src);
+        let here = std::mem::replace(&mut self.prog.cur, p.src);
         let r = self.corner_emit(&p, &c);
-        self.cur = here;
+        self.prog.cur = here;
         r.map_err(|mut a| {
             a.src = p.motion;
             a
@@ -209,18 +209,18 @@ impl Interp {
             seg,
             start,
             end: tw,
-            plane: self.st.modal.plane.means,
+            plane: self.modal.plane.means,
             feed,
-            src: self.cur,
+            src: self.prog.cur,
             word,
             motion,
-            origin: self.prog_origin(),
-            tool: self.st.tool,
+            origin: self.frames.prog_origin(),
+            tool: self.tool.number,
             held: Vec::new(),
         };
         // The next block reads from the virtual corner.
         self.place_at(&tw);
-        self.corner = Some(Box::new(pending));
+        self.common.corner = Some(Box::new(pending));
         Ok(())
     }
 
@@ -248,7 +248,7 @@ impl Interp {
     /// The block's move from the current position to `tw` as a path in the
     /// plane; None when it does not move in the plane or moves another axis.
     fn plane_path(&mut self, mode: MotionMode, tw: Pos, any: bool, at: u32) -> R<Option<Seg>> {
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let cur = self.prog_pos();
         if (0..NAXES).any(|i| i != a1 && i != a2 && (tw[i] - cur[i]).abs() > 1e-9) {
             return Ok(None);
@@ -270,7 +270,7 @@ impl Interp {
 
     /// `p` with its plane coordinates replaced by `uv`.
     fn plane_point(&self, p: Pos, uv: (f64, f64)) -> Pos {
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let mut q = p;
         q[a1] = uv.0;
         q[a2] = uv.1;
@@ -313,7 +313,7 @@ impl Interp {
                 None => return Ok(()),
             }
         };
-        if self.corner.is_some() {
+        if self.common.corner.is_some() {
             return Err(self.corner_broken(&what));
         }
         match self.words.corner() {
@@ -325,7 +325,7 @@ impl Interp {
     /// An alarm when a move is held: `what` (a call, a return) cannot come
     /// before the next move.
     pub(super) fn corner_open(&self, what: &str) -> R<()> {
-        if self.corner.is_some() {
+        if self.common.corner.is_some() {
             return Err(self.corner_broken(what));
         }
         Ok(())
@@ -334,11 +334,11 @@ impl Interp {
     /// The alarm for a held move not followed by a move in its plane: at
     /// its `,C`/`,R` word.
     pub(super) fn corner_broken(&self, what: &str) -> Alarm {
-        let Some(p) = self.corner.as_deref() else {
+        let Some(p) = self.common.corner.as_deref() else {
             return self.alarm(AlarmKind::CornerNoMove, 0, what);
         };
         AlarmKind::CornerNoMove.at(
-            self.dialect.id,
+            self.cfg.dialect.id,
             p.word,
             format!(
                 "{what} after a ,{} block: the next move must be G01/G02/G03 in the same plane",
@@ -349,7 +349,7 @@ impl Interp {
 
     fn corner_conflict(&self, p: &Pending, why: &str) -> Alarm {
         AlarmKind::CornerConflict.at(
-            self.dialect.id,
+            self.cfg.dialect.id,
             p.word,
             format!("{why} between a ,{} block and its next move", p.letter()),
         )
@@ -365,9 +365,9 @@ impl Interp {
 
     /// The source position of a byte of the current block.
     fn src_at(&self, at: u32) -> SrcRef {
-        let (line, col) = self.raw.line_col(at as usize);
+        let (line, col) = self.prog.raw.line_col(at as usize);
         SrcRef {
-            file: self.cur.file,
+            file: self.prog.cur.file,
             line,
             col,
         }

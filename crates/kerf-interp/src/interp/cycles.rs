@@ -129,13 +129,13 @@ impl Interp {
             }
             // A motion code cancels the cycle mode (a table search, so
             // only when one is in force: this runs for every G01 block).
-            if self.st.modal.cycle.means.is_some() {
-                self.st.modal.set_meaning(self.dialect, Means::Cycle(None));
+            if self.modal.cycle.means.is_some() {
+                self.modal.set_meaning(self.cfg.dialect, Means::Cycle(None));
             }
         }
-        if self.st.modal.cycle.means.is_none() {
+        if self.modal.cycle.means.is_none() {
             if was_cycle {
-                self.cyc.clear();
+                self.hx.cyc.clear();
             }
             return Ok(false);
         }
@@ -167,7 +167,7 @@ impl Interp {
                     format!("canned cycle Q must be positive (Q{})", fmt_num(w.v)),
                 ));
             }
-            self.cyc.q = Some(v);
+            self.hx.cyc.q = Some(v);
         }
         if let Some(w) = self.words.get(b'P') {
             if w.point || w.v < 0.0 {
@@ -177,14 +177,14 @@ impl Interp {
                     "canned cycle dwell P is in milliseconds, positive, without a decimal point",
                 ));
             }
-            self.cyc.p = Some(w.v / 1000.0);
+            self.hx.cyc.p = Some(w.v / 1000.0);
         }
         if kind.shifts() {
             let (l1, l2) = (b"IJK"[a1], b"IJK"[a2]);
             let (w1, w2) = (self.words.get(l1), self.words.get(l2));
             if w1.is_some() || w2.is_some() {
                 let v = |me: &Self, w: Option<WVal>| w.map(|w| me.linear(w)).unwrap_or(0.0);
-                self.cyc.ij = Some((v(self, w1), v(self, w2)));
+                self.hx.cyc.ij = Some((v(self, w1), v(self, w2)));
             }
         }
         Ok(())
@@ -193,8 +193,8 @@ impl Interp {
     /// Executes a block in canned cycle mode: stores the cycle data and,
     /// if the block names a position, R or the depth, drills K holes.
     pub(super) fn canned_cycle(&mut self, entered: bool, g60: bool) -> R<()> {
-        let code = self.st.modal.cycle.code10;
-        let Some(kind) = self.st.modal.cycle.means else {
+        let code = self.modal.cycle.code10;
+        let Some(kind) = self.modal.cycle.means else {
             return Ok(());
         };
         let at = self
@@ -204,9 +204,9 @@ impl Interp {
             .find(|g| g.0 == code)
             .map(|g| g.1)
             .unwrap_or(0);
-        let (a1, a2, n) = self.st.modal.plane.means.axes();
+        let (a1, a2, n) = self.modal.plane.means.axes();
         let drill_ax = Axis::ALL[n];
-        if !self.has_axis[n] {
+        if !self.cfg.has_axis[n] {
             return Err(self.alarm(
                 AlarmKind::CannedCycle,
                 at,
@@ -217,8 +217,8 @@ impl Interp {
             ));
         }
         let cur = self.prog_pos();
-        if entered || self.cyc.initial.is_none() {
-            self.cyc.initial = Some(cur[n]);
+        if entered || self.hx.cyc.initial.is_none() {
+            self.hx.cyc.initial = Some(cur[n]);
         }
         // An M98/M99 block is a call or return: its P (and HX Q/R sequence
         // numbers) are not cycle data, and it drills nothing.
@@ -231,21 +231,21 @@ impl Interp {
         if transfer {
             return Ok(());
         }
-        let initial = self.cyc.initial.unwrap_or(cur[n]);
-        let abs = self.st.modal.absolute();
+        let initial = self.hx.cyc.initial.unwrap_or(cur[n]);
+        let abs = self.modal.absolute();
         // Data words: R, the depth (the drilling axis's address), Q, P, I/J.
         if let Some(w) = self.words.get(b'R') {
             let v = self.linear(w);
-            self.cyc.r = Some(if abs { v } else { initial + v });
+            self.hx.cyc.r = Some(if abs { v } else { initial + v });
         }
         let dl = ax_letter(drill_ax);
         if let Some(w) = self.words.get(dl) {
             let v = self.axis_value(drill_ax, w);
-            self.cyc.z =
+            self.hx.cyc.z =
                 Some(if abs {
                     v
                 } else {
-                    match self.cyc.r {
+                    match self.hx.cyc.r {
                         Some(r) => r + v,
                         None => return Err(self.alarm(
                             AlarmKind::MissingArgument,
@@ -282,7 +282,7 @@ impl Interp {
         // G91 in polar mode (G16): each repeat turns by the angle again
         // (and keeps the radius), as a repeated block would; elsewhere the
         // Cartesian step is repeated.
-        let polar_step = !abs && self.st.polar;
+        let polar_step = !abs && self.frames.polar;
         for k in 0..count {
             let tk = if polar_step && k > 0 {
                 self.target()?.0
@@ -310,7 +310,7 @@ impl Interp {
         let (kind, code) = cycle;
         // Only alarms need the name: built on demand, not for every hole.
         let name = || format!("G{}", fmt_code(code));
-        let Some(z) = self.cyc.z else {
+        let Some(z) = self.hx.cyc.z else {
             return Err(self.alarm(
                 AlarmKind::MissingArgument,
                 at,
@@ -321,7 +321,7 @@ impl Interp {
                 ),
             ));
         };
-        let Some(r) = self.cyc.r else {
+        let Some(r) = self.hx.cyc.r else {
             return Err(self.alarm(
                 AlarmKind::MissingArgument,
                 at,
@@ -329,7 +329,7 @@ impl Interp {
             ));
         };
         let peck = kind.pecks();
-        let q = match self.cyc.q {
+        let q = match self.hx.cyc.q {
             Some(q) => q,
             None if peck => {
                 return Err(self.alarm(
@@ -340,7 +340,7 @@ impl Interp {
             }
             None => 0.0,
         };
-        let g99 = self.st.modal.cycle_return.means == CycleReturn::RPoint;
+        let g99 = self.modal.cycle_return.means == CycleReturn::RPoint;
         if kind == HoleCycle::BackBore && g99 {
             return Err(self.alarm(
                 AlarmKind::CannedCycle,
@@ -370,8 +370,8 @@ impl Interp {
         }
         let mut shift = [0.0; NAXES];
         if kind.shifts() {
-            let (a1, a2, _) = self.st.modal.plane.means.axes();
-            match self.cyc.ij {
+            let (a1, a2, _) = self.modal.plane.means.axes();
+            match self.hx.cyc.ij {
                 Some((i, j)) => {
                     shift[a1] = i;
                     shift[a2] = j;
@@ -379,7 +379,7 @@ impl Interp {
                 None => {
                     // PI 70 / PI 71 as Fanuc's RD1 / RD2: 00 +first axis,
                     // 01 (PI 70 = 1) -first, 10 (PI 71 = 1) +second, 11 -second.
-                    let (rd1, rd2) = self.cyc.params.shift_bits;
+                    let (rd1, rd2) = self.hx.cyc.params.shift_bits;
                     let sign = if rd1 { -1.0 } else { 1.0 };
                     shift[if rd2 { a2 } else { a1 }] = sign * q;
                 }
@@ -393,7 +393,7 @@ impl Interp {
             z,
             ret: if g99 { r } else { initial },
             q,
-            dwell: self.cyc.p.unwrap_or(0.0),
+            dwell: self.hx.cyc.p.unwrap_or(0.0),
             shift,
             at,
         })
@@ -432,7 +432,7 @@ impl Interp {
             let mut mid = p;
             let mut any = false;
             for i in 0..NAXES {
-                let o = self.cyc.params.overrun[i];
+                let o = self.hx.cyc.params.overrun[i];
                 if Some(i) != skip && (p[i] - cur[i]).abs() > 1e-9 && o != 0.0 {
                     // Sign = approach direction: stop short (or beyond) by
                     // the overrun, then approach in that direction.
@@ -450,7 +450,12 @@ impl Interp {
     /// G60 as a positioning block (000 §4.2): a one-shot rapid through the
     /// overrun point of every moving axis.
     pub(super) fn g60(&mut self, at: u32) -> R<()> {
-        if let Some(&(c, c_at)) = self.words.gs().iter().find(|g| matches!(g.0, 10 | 20 | 30)) {
+        use crate::dialect::meaning::MotionMode::{ArcCcw, ArcCw, Linear};
+        let feed_move = |g: &&(u16, u32)| {
+            self.gcode(g.0)
+                .is_some_and(|c| matches!(c.means, Means::Motion(Linear | ArcCw | ArcCcw)))
+        };
+        if let Some(&(c, c_at)) = self.words.gs().iter().find(feed_move) {
             return Err(self.alarm(
                 AlarmKind::CannedCycle,
                 c_at,
@@ -478,23 +483,28 @@ impl Interp {
 
     /// Switches the spindle as a cycle does (reversal, stop, restart).
     fn cycle_spindle(&mut self, dir: SpindleDir) {
-        self.st.spindle = dir;
+        self.tool.spindle = dir;
         let rpm = if dir == SpindleDir::Stop {
             0.0
         } else {
             self.rpm()
         };
-        self.st.last_rpm = rpm;
+        self.tool.last_rpm = rpm;
         let css = self.css_speed().filter(|_| dir != SpindleDir::Stop);
         self.emit(Canon::Spindle { dir, rpm, css });
     }
 
     /// Oriented spindle stop: emitted as M19 "spindle orientation".
     fn orient(&mut self) {
-        self.st.spindle = SpindleDir::Stop;
-        self.st.last_rpm = 0.0;
+        self.tool.spindle = SpindleDir::Stop;
+        self.tool.last_rpm = 0.0;
         // The table's orientation code (M19 on the HX).
-        let orient = self.dialect.mcodes.iter().find(|m| m.also == MAlso::Orient);
+        let orient = self
+            .cfg
+            .dialect
+            .mcodes
+            .iter()
+            .find(|m| m.also == MAlso::Orient);
         if let Some(mc) = orient {
             self.emit(Canon::Aux {
                 m: u32::from(mc.code),
@@ -505,7 +515,7 @@ impl Interp {
 
     /// The cutting mode of group 15 in force, re-emitted after tapping.
     fn restore_cut_mode(&mut self) {
-        match self.st.modal.cutting_mode.means {
+        match self.modal.cutting_mode.means {
             Some(CuttingMode::Tapping) | None => {}
             Some(m) => self.mode_event(Means::CuttingMode(m)),
         }
@@ -514,7 +524,7 @@ impl Interp {
     /// Actions 2-6 of one hole, after the positioning in the plane.
     fn hole(&mut self, h: &Hole) -> R<()> {
         let (n, at) = (h.n, h.at);
-        let dir0 = self.st.spindle;
+        let dir0 = self.tool.spindle;
         let restart = if dir0 == SpindleDir::Stop {
             SpindleDir::Cw
         } else {
@@ -598,11 +608,11 @@ impl Interp {
         let total = (h.z - h.r).abs();
         // Scaling does not apply to Q and d (000 §15.2): in program
         // coordinates they shrink by the drilling axis's factor.
-        let f = match self.st.xf.scale {
+        let f = match self.frames.xf.scale {
             Some(s) if n < 3 => s.factor[n].abs(),
             _ => 1.0,
         };
-        let (q, d) = (h.q / f, self.cyc.params.d / f);
+        let (q, d) = (h.q / f, self.hx.cyc.params.d / f);
         let mut done = 0.0f64;
         while total - done > 1e-9 {
             let prev = done;

@@ -32,7 +32,7 @@ impl Interp {
                 "G107 takes only the cylinder radius C in its block",
             );
         }
-        let Some(w) = self.words.get(b'C').filter(|_| self.has_axis[C]) else {
+        let Some(w) = self.words.get(b'C').filter(|_| self.cfg.has_axis[C]) else {
             return alarm(
                 self,
                 at,
@@ -40,7 +40,7 @@ impl Interp {
             );
         };
         let r = self.linear(w);
-        if matches!(self.st.rot, RotInterp::Polar { .. }) {
+        if matches!(self.frames.rot, RotInterp::Polar { .. }) {
             return alarm(
                 self,
                 at,
@@ -51,21 +51,21 @@ impl Interp {
             return alarm(self, w.at, "negative cylinder radius");
         }
         if r == 0.0 {
-            self.st.rot = RotInterp::Off;
-            self.st.modal.cylindrical = modal::Active::none(false);
+            self.frames.rot = RotInterp::Off;
+            self.modal.cylindrical = modal::Active::none(false);
             return Ok(());
         }
         if let Some(what) = self.transform_after_block() {
             return Err(self.alarm(AlarmKind::CylindricalInterp, at, format!("G107 in {what}")));
         }
-        self.st.rot = RotInterp::Cylinder { r };
+        self.frames.rot = RotInterp::Cylinder { r };
         Ok(())
     }
 
     /// A block's motion in G107: straight moves as usual (C in degrees),
     /// arcs on the developed surface.
     pub(super) fn cylinder_motion(&mut self, r: f64) -> R<()> {
-        let mode = self.st.modal.motion.means;
+        let mode = self.modal.motion.means;
         let (tw, any) = self.target()?;
         let at = self.motion_at();
         match mode {
@@ -75,7 +75,7 @@ impl Interp {
             MotionMode::ArcCw | MotionMode::ArcCcw => {}
             _ => return Ok(()),
         }
-        let (a1, a2) = match self.st.modal.plane.means {
+        let (a1, a2) = match self.modal.plane.means {
             Plane::XY => (C, Axis::Y as usize),
             Plane::ZX => (Axis::Z as usize, C),
             Plane::YZ => {

@@ -10,7 +10,7 @@ impl Interp {
     pub(super) fn eval(&mut self, e: kerf_lang::ExprId, at: u32) -> R<Option<f64>> {
         // A constant (the variable number of most assignments) needs no
         // evaluation.
-        if let Some(&kerf_lang::Expr::Num(v)) = self.block.exprs.get(e as usize) {
+        if let Some(&kerf_lang::Expr::Num(v)) = self.prog.block.exprs.get(e as usize) {
             return Ok(Some(v));
         }
         self.eval_in(e, at, 0.0)
@@ -19,12 +19,12 @@ impl Interp {
     /// Evaluates the value of an address whose least input increment is
     /// `inc` (ROUND rounds to it).
     pub(super) fn eval_in(&mut self, e: kerf_lang::ExprId, at: u32, inc: f64) -> R<Option<f64>> {
-        let r = crate::macros::eval(&self.block.exprs, e, &sysvars::Env(self), inc);
+        let r = crate::macros::eval(&self.prog.block.exprs, e, &sysvars::Env(self), inc);
         r.map_err(|m| self.alarm(m.kind, at, m.message))
     }
 
     pub(super) fn statement(&mut self, stmt: Stmt) -> R<bool> {
-        let at = self.block.stmt_at;
+        let at = self.prog.block.stmt_at;
         match stmt {
             Stmt::Assign { var, value } => {
                 let idx = self.eval(var, at)?;
@@ -58,12 +58,12 @@ impl Interp {
                 self.check_loop_label(label, at)?;
                 self.loop_head(label, true, at)?;
             }
-            Stmt::End { label } => match self.loops.last() {
+            Stmt::End { label } => match self.prog.loops.last() {
                 Some(&l) if l.label == label => {
                     self.count_jump(at)?;
                     self.seek(l.start)?;
                 }
-                Some(&l) if self.loops.iter().any(|o| o.label == label) => {
+                Some(&l) if self.prog.loops.iter().any(|o| o.label == label) => {
                     return Err(self.alarm(
                         AlarmKind::BadLoop,
                         at,
@@ -115,20 +115,13 @@ impl Interp {
     }
 
     pub(super) fn count_jump(&mut self, at: u32) -> R<()> {
-        self.jumps += 1;
-        let limit = self.max_jumps;
-        if self.jumps > limit {
-            return Err(self.alarm(
-                AlarmKind::LoopLimit,
-                at,
-                format!("more than {limit} backward jumps (loop guard)"),
-            ));
-        }
-        Ok(())
+        self.guard
+            .count_jump()
+            .map_err(|over| self.loop_limit(over, at))
     }
 
     pub(super) fn seek(&mut self, m: Mark) -> R<()> {
-        let r = self.src.as_mut().map(|s| s.seek(m));
+        let r = self.prog.src.as_mut().map(|s| s.seek(m));
         match r {
             Some(Err(e)) => Err(self.alarm(AlarmKind::Io, 0, format!("seek failed: {e}"))),
             _ => Ok(()),
@@ -148,15 +141,15 @@ impl Interp {
             ));
         }
         let target = n.round() as u32;
-        let err_src = self.cur;
+        let err_src = self.prog.cur;
         self.count_jump(at)?;
         if self.seek_sequence(target, true) {
-            let to = self.src.as_ref().expect("loaded").tell().offset;
+            let to = self.prog.src.as_ref().expect("loaded").tell().offset;
             self.leave_loops(to);
             return Ok(());
         }
         Err(AlarmKind::SequenceNotFound.at(
-            self.dialect.id,
+            self.cfg.dialect.id,
             SrcRef {
                 col: at + 1,
                 ..err_src
@@ -168,7 +161,7 @@ impl Interp {
     /// The loop labels the control accepts: DO1-DO3 on the Fanuc
     /// profiles, any label 1-9999 on the HX (its sample uses DO 210).
     pub(super) fn check_loop_label(&self, label: u32, at: u32) -> R<()> {
-        let max = self.dialect.caps.max_loop_label;
+        let max = self.cfg.dialect.caps.max_loop_label;
         if label == 0 || label > max {
             return Err(self.alarm(
                 AlarmKind::BadLoop,
@@ -181,42 +174,38 @@ impl Interp {
 
     /// A WHILE (or bare DO) block: enters the loop or skips past its END.
     pub(super) fn loop_head(&mut self, label: u32, enter: bool, at: u32) -> R<()> {
-        let mark = self.raw.mark;
-        if let Some(i) = self.loops.iter().rposition(|l| l.start == mark) {
+        let mark = self.prog.raw.mark;
+        if let Some(i) = self.prog.loops.iter().rposition(|l| l.start == mark) {
             // The loop head again: loops opened inside it were left.
             if enter {
-                self.loops.truncate(i + 1);
+                self.prog.loops.truncate(i + 1);
                 return Ok(());
             }
-            let end = self.loops[i].end;
-            self.loops.truncate(i);
+            let end = self.prog.loops[i].end;
+            self.prog.loops.truncate(i);
             return self.seek(end);
         }
-        if self.loops.iter().any(|l| l.label == label) {
+        if self.prog.loops.iter().any(|l| l.label == label) {
             return Err(self.alarm(
                 AlarmKind::BadLoop,
                 at,
                 format!("DO{label} inside a loop with the same label"),
             ));
         }
-        if self.loops.len() >= MAX_LOOP_DEPTH {
+        if self.prog.loops.len() >= MAX_LOOP_DEPTH {
             return Err(self.alarm(
                 AlarmKind::BadLoop,
                 at,
                 format!("WHILE loops nested more than {MAX_LOOP_DEPTH} deep"),
             ));
         }
-        let here = self.src.as_ref().expect("loaded").tell();
+        let here = self.prog.src.as_ref().expect("loaded").tell();
         // The scan's result depends on the loop head and the labels open
         // around it; remember the last few (an inner loop is entered again
         // on every pass of its outer loop).
-        let mut outer = [0u32; MAX_LOOP_DEPTH];
-        for (o, l) in outer.iter_mut().zip(&self.loops) {
-            *o = l.label;
-        }
-        let key = (self.file_id, mark.offset, outer);
-        let end = match self.loop_ends.iter().find(|e| e.0 == key) {
-            Some(&(_, end)) => {
+        let key = (self.prog.file_id, mark.offset, self.prog.open_labels());
+        let end = match self.prog.loop_end(&key) {
+            Some(end) => {
                 if !enter {
                     self.seek(end)?;
                 }
@@ -224,16 +213,13 @@ impl Interp {
             }
             None => {
                 let end = self.scan_loop(label, at)?;
-                if self.loop_ends.len() >= 16 {
-                    self.loop_ends.remove(0);
-                }
-                self.loop_ends.push((key, end));
+                self.prog.remember_loop_end(key, end);
                 end
             }
         };
         if enter {
             self.seek(here)?;
-            self.loops.push(LoopFrame {
+            self.prog.loops.push(LoopFrame {
                 label,
                 start: mark,
                 end,
@@ -248,19 +234,16 @@ impl Interp {
     /// must not nest too deep; the END must be in the same program. Leaves
     /// the source after the END and returns that position.
     pub(super) fn scan_loop(&mut self, label: u32, at: u32) -> R<Mark> {
-        let err_src = self.cur;
-        let open = self.loops.len();
-        let mut outer = [0u32; MAX_LOOP_DEPTH];
-        for (o, l) in outer.iter_mut().zip(&self.loops) {
-            *o = l.label;
-        }
+        let err_src = self.prog.cur;
+        let open = self.prog.loops.len();
+        let outer = self.prog.open_labels();
         let outer = &outer[..open];
-        let src = self.src.as_mut().expect("loaded");
+        let src = self.prog.src.as_mut().expect("loaded");
         let mut raw = RawBlock::default();
         let mut blk = Block::default();
         let mut inner: Vec<u32> = Vec::new();
-        let dialect = self.dialect.id;
-        let file = self.file_id;
+        let dialect = self.cfg.dialect.id;
+        let file = self.prog.file_id;
         let bad = |raw: &RawBlock, msg: String| {
             AlarmKind::BadLoop.at(
                 dialect,
@@ -273,10 +256,11 @@ impl Interp {
             )
         };
         while let Ok(true) = src.next_block(&mut raw) {
-            if parse_block(&raw.text, &self.lex, &mut blk).is_err() {
+            if parse_block(&raw.text, &self.cfg.lex, &mut blk).is_err() {
                 continue;
             }
-            if blk.percent || (blk.program.is_some() && self.calls.header != Some(raw.mark.offset))
+            if blk.percent
+                || (blk.program.is_some() && self.prog.calls.header != Some(raw.mark.offset))
             {
                 break;
             }
@@ -311,7 +295,7 @@ impl Interp {
             }
         }
         Err(AlarmKind::BadLoop.at(
-            self.dialect.id,
+            self.cfg.dialect.id,
             SrcRef {
                 col: at + 1,
                 ..err_src
@@ -322,7 +306,8 @@ impl Interp {
 
     /// After a jump to `to`: the loops whose range does not hold it are left.
     pub(super) fn leave_loops(&mut self, to: u64) {
-        self.loops
+        self.prog
+            .loops
             .retain(|l| l.start.offset <= to && to < l.end.offset);
     }
 
@@ -337,17 +322,17 @@ impl Interp {
                         "loop count must be at least 1",
                     ));
                 }
-                if self.hurco_loops.len() >= 8 {
+                if self.prog.hurco_loops.len() >= 8 {
                     return Err(self.alarm(
                         AlarmKind::BadLoop,
                         0,
                         "loop commands nested more than 8 deep",
                     ));
                 }
-                let after = self.src.as_ref().expect("loaded").tell();
-                self.hurco_loops.push((count - 1, after));
+                let after = self.prog.src.as_ref().expect("loaded").tell();
+                self.prog.hurco_loops.push((count - 1, after));
             }
-            kerf_lang::LoopCmd::End => match self.hurco_loops.last_mut() {
+            kerf_lang::LoopCmd::End => match self.prog.hurco_loops.last_mut() {
                 Some((left, mark)) => {
                     if *left > 0 {
                         *left -= 1;
@@ -355,7 +340,7 @@ impl Interp {
                         self.count_jump(0)?;
                         self.seek(m)?;
                     } else {
-                        self.hurco_loops.pop();
+                        self.prog.hurco_loops.pop();
                     }
                 }
                 None => {

@@ -31,26 +31,29 @@ pub(crate) struct HurcoState {
     pub datum: [Option<f64>; 4],
 }
 
-impl Interp {
-    /// The Hurco state (E1 active: the profile's part zero, which the
-    /// work offset table holds).
-    pub(super) fn hurco_state() -> Box<HurcoState> {
+impl HurcoState {
+    /// The Hurco state at power-on: E1 active (the profile's part zero,
+    /// which the work offset table holds), no offset change waiting, no
+    /// drill data, no datums.
+    pub(super) fn new() -> Box<HurcoState> {
         Box::new(HurcoState {
             fixture: 1,
             ..Default::default()
         })
     }
+}
 
+impl Interp {
     /// Fixture offset `n` (machine coordinates of its part zero, mm).
     pub fn fixture_offset(&self, n: u32) -> Pos {
-        self.st.work.get(WorkId::Fixture(n))
+        self.frames.work.get(WorkId::Fixture(n))
     }
 
     /// Sets fixture offset `n` (1-9999; mm, X as a radius) as an offsets
     /// file or a probe cycle writes it. Takes effect when E`n` is next
     /// programmed. False when `n` is not a fixture number.
     pub fn set_fixture_offset(&mut self, n: u32, origin: Pos) -> bool {
-        self.st.work.set(WorkId::Fixture(n), origin)
+        self.frames.work.set(WorkId::Fixture(n), origin)
     }
 
     /// Remembers the program position before an offset change, once per
@@ -78,7 +81,7 @@ impl Interp {
             let n = e.v as u32;
             self.hold_position();
             self.hurco.fixture = n;
-            self.st.work.select(WorkId::Fixture(n));
+            self.frames.work.select(WorkId::Fixture(n));
         }
         Ok(())
     }
@@ -96,11 +99,14 @@ impl Interp {
         }
         let v = t.v as u32;
         let (tool, off) = (v / 100, v % 100);
-        if tool > self.profile.tools.count {
+        if tool > self.cfg.profile.tools.count {
             return Err(self.alarm(
                 AlarmKind::OutOfRange,
                 t.at,
-                format!("T{v}: the turret has {} stations", self.profile.tools.count),
+                format!(
+                    "T{v}: the turret has {} stations",
+                    self.cfg.profile.tools.count
+                ),
             ));
         }
         if off as usize > self.offsets.count() {
@@ -113,16 +119,16 @@ impl Interp {
                 ),
             ));
         }
-        let change = tool != 0 && tool != self.st.tool;
+        let change = tool != 0 && tool != self.tool.number;
         if tool != 0 {
-            self.st.tool = tool;
+            self.tool.number = tool;
         }
-        self.st.next_tool = self.st.tool;
+        self.tool.next = self.tool.number;
         self.hold_position();
-        self.st.offset = off;
+        self.tool.offset = off;
         self.apply_lathe_offset();
         self.emit(Canon::Tool {
-            tool: self.st.tool,
+            tool: self.tool.number,
             offset: off,
             change,
         });
@@ -134,7 +140,7 @@ impl Interp {
     pub(super) fn hurco_base(&self, base: &mut Pos) {
         if let Some(p) = self.hurco.pending {
             for i in 0..NAXES {
-                if self.has_axis[i] {
+                if self.cfg.has_axis[i] {
                     base[i] = p[i];
                 }
             }
@@ -148,11 +154,11 @@ impl Interp {
         let Some(p) = self.hurco.pending else {
             return;
         };
-        if !self.profile.tools.immediate_offsets {
+        if !self.cfg.profile.tools.immediate_offsets {
             return;
         }
         for i in 0..NAXES {
-            if self.has_axis[i] && !programmed[i] {
+            if self.cfg.has_axis[i] && !programmed[i] {
                 t[i] = p[i];
             }
         }
@@ -165,11 +171,11 @@ impl Interp {
 
     /// 002: M00, M01 (when it stops), M02 and M30 turn the spindle off.
     pub(super) fn hurco_stop_spindle(&mut self) {
-        if !self.dialect.caps.stops_stop_spindle || self.st.spindle == SpindleDir::Stop {
+        if !self.cfg.dialect.caps.stops_stop_spindle || self.tool.spindle == SpindleDir::Stop {
             return;
         }
-        self.st.spindle = SpindleDir::Stop;
-        self.st.last_rpm = 0.0;
+        self.tool.spindle = SpindleDir::Stop;
+        self.tool.last_rpm = 0.0;
         self.emit(Canon::Spindle {
             dir: SpindleDir::Stop,
             rpm: 0.0,
@@ -179,12 +185,12 @@ impl Interp {
 
     /// G53 preconditions (002): CRC off, G90, G00 or G01 mode.
     pub(super) fn g53_checks(&self, at: u32) -> R<()> {
-        let why = if self.st.modal.cutter_comp.means != CompSide::Off {
+        let why = if self.modal.cutter_comp.means != CompSide::Off {
             "cutter radius compensation must be off (G40)"
-        } else if !self.st.modal.absolute() {
+        } else if !self.modal.absolute() {
             "absolute mode (G90) must be active"
         } else if !matches!(
-            self.st.modal.motion.means,
+            self.modal.motion.means,
             MotionMode::Rapid | MotionMode::Linear
         ) {
             "G00 or G01 mode must be active"
@@ -218,7 +224,7 @@ impl Interp {
             if s.v < 0.0 {
                 return Err(self.alarm(AlarmKind::OutOfRange, s.at, "negative spindle clamp"));
             }
-            self.st.s_clamp = Some(s.v);
+            self.tool.s_clamp = Some(s.v);
             self.emit(Canon::Mode(ModeChange::SpindleClamp(s.v)));
         }
         Ok(())
@@ -274,7 +280,7 @@ impl Interp {
         let Some(lead) = self.hurco.g33_lead else {
             return Err(self.alarm(AlarmKind::MissingArgument, at, "G33 needs a lead (K or I)"));
         };
-        if self.st.spindle == SpindleDir::Stop {
+        if self.tool.spindle == SpindleDir::Stop {
             return Err(self.alarm(
                 AlarmKind::ThreadCycle,
                 at,
@@ -394,5 +400,20 @@ impl Interp {
         })?;
         self.run_m(|m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End))?;
         Ok(!self.finished_by_end())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 002: the part zero E1 is active at power-on; nothing waits for a
+    /// move and no probe datum is set.
+    #[test]
+    fn power_on_has_e1_active_and_nothing_pending() {
+        let h = HurcoState::new();
+        assert_eq!(h.fixture, 1);
+        assert!(h.pending.is_none() && h.css_r.is_none() && h.g33_lead.is_none());
+        assert_eq!(h.datum, [None; 4]);
     }
 }

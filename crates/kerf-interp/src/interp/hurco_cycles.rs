@@ -47,9 +47,8 @@ impl Interp {
                 ));
             }
             if motion.is_none() {
-                self.st
-                    .modal
-                    .set_meaning(self.dialect, Means::Motion(MotionMode::Rapid));
+                self.modal
+                    .set_meaning(self.cfg.dialect, Means::Motion(MotionMode::Rapid));
             }
             let r = self.hurco.drill.r;
             self.hurco.drill = Drill {
@@ -58,7 +57,7 @@ impl Interp {
             };
             return Ok(false);
         }
-        Ok(self.st.modal.cycle.means.is_some() && motion.is_none())
+        Ok(self.modal.cycle.means.is_some() && motion.is_none())
     }
 
     /// A length word in mm (no diameter rule).
@@ -68,8 +67,8 @@ impl Interp {
 
     /// One drill cycle (the block's X/Z/R/Q/P/A and the modal data).
     pub(super) fn hurco_drill(&mut self) -> R<()> {
-        let code = self.st.modal.cycle.code10;
-        let Some(kind) = self.st.modal.cycle.means else {
+        let code = self.modal.cycle.code10;
+        let Some(kind) = self.modal.cycle.means else {
             return Ok(());
         };
         let at = self
@@ -81,31 +80,23 @@ impl Interp {
         if let Some(w) = self.words.get(b'R') {
             self.check_range(b'R', w)?;
             let v = self.len_word(w);
-            self.hurco.drill.r = Some(if self.st.modal.absolute() {
-                v
-            } else {
-                init + v
-            });
+            self.hurco.drill.r = Some(if self.modal.absolute() { v } else { init + v });
         }
         let r = *self.hurco.drill.r.get_or_insert(init);
         if let Some(w) = self.words.get(b'Z') {
             self.check_range(b'Z', w)?;
             let v = self.len_word(w);
-            self.hurco.drill.z = Some(if self.st.modal.absolute() { v } else { r + v });
+            self.hurco.drill.z = Some(if self.modal.absolute() { v } else { r + v });
         }
         let z = self.hurco.drill.z.unwrap_or(r);
         let mut x = cur[0];
         if let Some(w) = self.words.get(b'X') {
             self.check_range(b'X', w)?;
             let v = self.axis_value(Axis::X, w);
-            x = if self.st.modal.absolute() {
-                v
-            } else {
-                cur[0] + v
-            };
+            x = if self.modal.absolute() { v } else { cur[0] + v };
         }
         let d = self.hurco.drill;
-        let ret = if self.st.modal.cycle_return.means == CycleReturn::RPoint {
+        let ret = if self.modal.cycle_return.means == CycleReturn::RPoint {
             r
         } else {
             init
@@ -114,7 +105,7 @@ impl Interp {
         self.drill_go(Speed::Rapid, Some(x), None, at)?;
         self.drill_go(Speed::Rapid, None, Some(r), at)?;
         let dir = if z < r { -1.0 } else { 1.0 };
-        let clear = self.profile.param("peck_clearance_mm", 0.254);
+        let clear = self.cfg.profile.param("peck_clearance_mm", 0.254);
         match kind {
             HoleCycle::Drill | HoleCycle::DrillDwell => {
                 self.drill_go(Speed::Modal, None, Some(z), at)?;
@@ -212,7 +203,7 @@ impl Interp {
         if n > 10_000.0 {
             return Err(self.alarm(AlarmKind::OutOfRange, at, "more than 10,000 in-feeds"));
         }
-        if self.st.spindle != fwd {
+        if self.tool.spindle != fwd {
             self.drill_spindle(fwd);
         }
         for k in 1..=n as u64 {
@@ -251,7 +242,7 @@ impl Interp {
         if p <= 0.0 {
             return;
         }
-        let (seconds, revolutions) = if self.st.modal.feed_mode.means == FeedMode::PerRev {
+        let (seconds, revolutions) = if self.modal.feed_mode.means == FeedMode::PerRev {
             (0.0, p)
         } else {
             (p, 0.0)
@@ -263,9 +254,9 @@ impl Interp {
     }
 
     fn drill_spindle(&mut self, dir: SpindleDir) {
-        self.st.spindle = dir;
+        self.tool.spindle = dir;
         let rpm = self.rpm();
-        self.st.last_rpm = rpm;
+        self.tool.last_rpm = rpm;
         let css = self.css_speed();
         self.emit(Canon::Spindle { dir, rpm, css });
     }

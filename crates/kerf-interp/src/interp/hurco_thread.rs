@@ -88,14 +88,14 @@ impl Interp {
             }
             p.v[(b'M' - b'A') as usize] = Some(m);
         }
-        if self.st.modal.css.means {
+        if self.modal.css.means {
             return Err(self.alarm(
                 AlarmKind::ThreadCycle,
                 at,
                 "G78 needs direct spindle speed (G97), not G96",
             ));
         }
-        if self.st.spindle == SpindleDir::Stop || self.rpm() <= 0.0 {
+        if self.tool.spindle == SpindleDir::Stop || self.rpm() <= 0.0 {
             return Err(self.alarm(
                 AlarmKind::ThreadCycle,
                 at,
@@ -119,8 +119,8 @@ impl Interp {
             }
         }
         let units = Units {
-            metric: self.st.modal.metric(),
-            calculator_decimal: self.profile.calculator_decimal,
+            metric: self.modal.metric(),
+            calculator_decimal: self.cfg.profile.calculator_decimal,
             lead_range: self.hurco_lead_range(),
         };
         ThreadPlan::from_params(p, face, units, at).map_err(|e| self.param_alarm(e))

@@ -6,14 +6,14 @@
 //! [`Interp::thread_to`]) in program coordinates.
 
 use super::*;
-use crate::dialect::MAlso;
+use crate::dialect::{Dialect, MAlso};
 use crate::turning::{self, Mv, P};
 
 /// The lathe cycle state of one interpreter: the modal data of the single
 /// cycles and of the multiple repetitive cycles (interp/lathe_mrc.rs), the
 /// thread chamfer switch.
 #[derive(Clone, Debug, Default)]
-pub(super) struct LatheData {
+pub(super) struct PumaFeatures {
     /// G90/G92/G94 in force: its end point (program coordinates, X a
     /// radius) and taper R (radius), kept for blocks that repeat the
     /// cycle with only some words.
@@ -29,6 +29,17 @@ pub(super) struct LatheData {
     pub(super) system_b: bool,
 }
 
+impl PumaFeatures {
+    /// No cycle in force, thread chamfering off; G-code system B when the
+    /// control has it and the profile selects it (`gcode_system_b = 1`).
+    pub(super) fn new(profile: &Profile, dialect: &Dialect) -> PumaFeatures {
+        PumaFeatures {
+            system_b: dialect.caps.gcode_system_b && profile.param("gcode_system_b", 0.0) != 0.0,
+            ..Default::default()
+        }
+    }
+}
+
 impl Interp {
     /// What the PUMA's compound M codes do besides their action (the
     /// table's `MAlso`), before the block's motion: M76/M77 (001 "M76,
@@ -37,7 +48,7 @@ impl Interp {
     pub(super) fn lathe_m_codes(&mut self) {
         for i in 0..self.words.nm {
             match self.mcode(self.words.m[i].0).map(|c| c.also) {
-                Some(MAlso::ThreadChamfer(on)) => self.lathe.chamfer_on = on,
+                Some(MAlso::ThreadChamfer(on)) => self.puma.chamfer_on = on,
                 Some(MAlso::CoolantOn) => self.lathe_coolant(true),
                 _ => {}
             }
@@ -54,14 +65,14 @@ impl Interp {
     }
 
     fn lathe_coolant(&mut self, on: bool) {
-        if self.st.flood != on || (!on && self.st.mist) {
-            self.st.flood = on;
+        if self.tool.flood != on || (!on && self.tool.mist) {
+            self.tool.flood = on;
             if !on {
-                self.st.mist = false;
+                self.tool.mist = false;
             }
             self.emit(Canon::Coolant {
-                mist: self.st.mist,
-                flood: self.st.flood,
+                mist: self.tool.mist,
+                flood: self.tool.flood,
             });
         }
     }
@@ -73,15 +84,15 @@ impl Interp {
     /// reaches at their end (fanuc-semantics §8.9). Clamped by G50 S and
     /// the machine maximum.
     pub(super) fn css_follow(&mut self) {
-        if self.st.spindle == SpindleDir::Stop || self.profile.kind != MachineKind::Lathe {
+        if self.tool.spindle == SpindleDir::Stop || self.cfg.profile.kind != MachineKind::Lathe {
             return;
         }
         let rpm = self.rpm();
-        if (rpm - self.st.last_rpm).abs() > 1e-6 {
-            self.st.last_rpm = rpm;
+        if (rpm - self.tool.last_rpm).abs() > 1e-6 {
+            self.tool.last_rpm = rpm;
             let css = self.css_speed();
             self.emit(Canon::Spindle {
-                dir: self.st.spindle,
+                dir: self.tool.spindle,
                 rpm,
                 css,
             });
@@ -142,10 +153,10 @@ impl Interp {
     /// must be set, the spindle turning, and (kerf's rule, docs/dialects.md)
     /// a thread that changes X is not cut in G96.
     pub(super) fn thread_to(&mut self, tw: Pos, at: u32) -> R<()> {
-        let Some(lead) = self.st.feed.filter(|f| *f > 0.0) else {
+        let Some(lead) = self.tool.feed.filter(|f| *f > 0.0) else {
             return Err(self.alarm(AlarmKind::NoFeed, at, "threading without a thread lead (F)"));
         };
-        if self.st.spindle == SpindleDir::Stop {
+        if self.tool.spindle == SpindleDir::Stop {
             return Err(self.alarm(
                 AlarmKind::NoFeed,
                 at,
@@ -154,7 +165,7 @@ impl Interp {
         }
         let cur = self.prog_pos();
         let xi = Axis::X as usize;
-        if self.st.modal.css.means && (tw[xi] - cur[xi]).abs() > 1e-9 {
+        if self.modal.css.means && (tw[xi] - cur[xi]).abs() > 1e-9 {
             return Err(self.alarm(
                 AlarmKind::LatheCycle,
                 at,
@@ -173,14 +184,14 @@ impl Interp {
             return self.thread_to(tw, at);
         }
         let a = self.zx_pos();
-        let code = self.st.modal.motion.code10;
+        let code = self.modal.motion.code10;
         let fresh = self.words.gs().iter().any(|g| g.0 == code);
         let xi = Axis::X as usize;
         let zi = Axis::Z as usize;
         let has = |me: &Self, ax: Axis| me.words.has(ax_letter(ax)) || me.uvw(ax).is_some();
         // A block that repeats the cycle takes the words it lacks from the
         // cycle in force; a new cycle from the current position.
-        let (mut e, mut r) = match (fresh, self.lathe.single) {
+        let (mut e, mut r) = match (fresh, self.puma.single) {
             (false, Some(s)) => s,
             _ => (a, 0.0),
         };
@@ -193,7 +204,7 @@ impl Interp {
         if let Some(w) = self.words.get(b'R') {
             r = self.linear(w);
         }
-        self.lathe.single = Some((e, r));
+        self.puma.single = Some((e, r));
         let at_r = self.words.get(b'R').map(|w| w.at).unwrap_or(at);
         // Cases 3 and 4 of the figures: |R| ≤ |U/2| (|W| for G94); beyond,
         // the cut would start behind the start point.
@@ -220,8 +231,9 @@ impl Interp {
             MotionMode::TurnCycle => turning::g90(a, e, r).to_vec(),
             MotionMode::FaceCycle => turning::g94(a, e, r).to_vec(),
             _ => {
-                let c = if self.lathe.chamfer_on {
-                    self.profile.param("thread_chamfer_leads", 1.0) * self.st.feed.unwrap_or(0.0)
+                let c = if self.puma.chamfer_on {
+                    self.cfg.profile.param("thread_chamfer_leads", 1.0)
+                        * self.tool.feed.unwrap_or(0.0)
                 } else {
                     0.0
                 };
@@ -244,5 +256,29 @@ pub(super) fn cycle_msg(e: &turning::CycleError) -> String {
             "the cycle would make more than {} moves",
             turning::MAX_MOVES
         ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// G-code system B is a PUMA option selected by a parameter; no
+    /// cycle is in force at power-on.
+    #[test]
+    fn system_b_is_the_pumas_and_needs_its_parameter() {
+        let features = |name: &str, b: Option<f64>| {
+            let mut p = Profile::builtin(name).unwrap();
+            if let Some(b) = b {
+                p.params.insert("gcode_system_b".into(), b);
+            }
+            PumaFeatures::new(&p, Dialect::get(p.dialect))
+        };
+        assert!(features("puma-lathe", Some(1.0)).system_b);
+        assert!(!features("puma-lathe", Some(0.0)).system_b);
+        assert!(!features("puma-lathe", None).system_b);
+        assert!(!features("hx-mc", Some(1.0)).system_b);
+        let f = features("puma-lathe", None);
+        assert!(f.single.is_none() && !f.chamfer_on && f.ddi_base.is_none());
     }
 }

@@ -35,7 +35,7 @@ impl Interp {
     /// The base for the incremental words of the block after a chamfer
     /// block: the corner B rather than the tool's C′ (001 note 2).
     pub(super) fn ddi_target(&mut self) -> R<(Pos, bool)> {
-        match self.lathe.ddi_base.take() {
+        match self.puma.ddi_base.take() {
             None => self.target(),
             Some(b) => {
                 let b = self.to_machine(&b);
@@ -102,7 +102,7 @@ impl Interp {
         }
         let (s, c) = self.ddi_next_move(tw, along_z, (l, w), len)?;
         self.ddi_corner((cur, tw), along_z, (len, s, c), l == b'R', at)?;
-        self.lathe.ddi_base = Some(tw);
+        self.puma.ddi_base = Some(tw);
         Ok(())
     }
 
@@ -252,14 +252,14 @@ impl Interp {
             to: zx(to),
             arc: arc.map(|(c, ccw)| (zx(&c), ccw)),
         };
-        if self.comp.is_some() {
+        if self.common.comp.is_some() {
             let src = self.src_here(at);
             let sp = motion::Speed::Feed(feed);
             self.comp_shape_seg(&piece(&cur, &pre, None), false, sp, at, src)?;
         } else {
             self.line_to(pre, motion::Speed::Feed(feed), at)?;
         }
-        if self.comp.is_some() {
+        if self.common.comp.is_some() {
             let src = self.src_here(at);
             let sp = motion::Speed::Feed(feed);
             self.comp_shape_seg(&piece(&pre, &post, arc), false, sp, at, src)?;
@@ -275,13 +275,13 @@ impl Interp {
     /// Reads the next block with words (skipping empty ones) and puts the
     /// source back. None at the end of the program.
     fn peek_next(&mut self) -> R<Option<Next>> {
-        let back = self.src.as_ref().expect("loaded").tell();
-        let saved_raw = std::mem::take(&mut self.raw);
-        let saved_block = std::mem::take(&mut self.block);
+        let back = self.prog.src.as_ref().expect("loaded").tell();
+        let saved_raw = std::mem::take(&mut self.prog.raw);
+        let saved_block = std::mem::take(&mut self.prog.block);
         let saved_words = self.words.clone();
         let r = self.peek_blocks();
-        self.raw = saved_raw;
-        self.block = saved_block;
+        self.prog.raw = saved_raw;
+        self.prog.block = saved_block;
         self.words = saved_words;
         self.seek(back)?;
         r
@@ -289,18 +289,18 @@ impl Interp {
 
     fn peek_blocks(&mut self) -> R<Option<Next>> {
         for _ in 0..64 {
-            let src = self.src.as_mut().expect("loaded");
-            match src.next_block(&mut self.raw) {
+            let src = self.prog.src.as_mut().expect("loaded");
+            match src.next_block(&mut self.prog.raw) {
                 Ok(true) => {}
                 _ => return Ok(None),
             }
             self.parse_raw()?;
-            if self.block.percent || self.block.program.is_some() {
+            if self.prog.block.percent || self.prog.block.program.is_some() {
                 return Ok(None);
             }
-            let mut nwords = self.block.words.len();
+            let mut nwords = self.prog.block.words.len();
             let mut skip = false;
-            for &(idx, mask) in &self.block.deletes {
+            for &(idx, mask) in &self.prog.block.deletes {
                 if mask & self.settings.block_skip != 0 {
                     skip |= idx == 0;
                     nwords = nwords.min(idx as usize);
@@ -310,10 +310,10 @@ impl Interp {
             if skip {
                 continue;
             }
-            if self.block.stmt.is_some() {
+            if self.prog.block.stmt.is_some() {
                 return Err(self.alarm(
                     AlarmKind::ChamferNextBlock,
-                    self.block.stmt_at,
+                    self.prog.block.stmt_at,
                     "a macro statement after a chamfer or corner R block (the next block must be a G01 move)",
                 ));
             }
@@ -330,11 +330,7 @@ impl Interp {
                     }
                 }
             }
-            let half = if self.st.modal.diameter.means {
-                0.5
-            } else {
-                1.0
-            };
+            let half = if self.modal.diameter.means { 0.5 } else { 1.0 };
             let ax = |me: &Self, abs: u8, inc: u8, k: f64| {
                 if let Some(w) = me.words.get(abs) {
                     Some(Coord::Abs(me.linear(w) * k))
@@ -346,7 +342,7 @@ impl Interp {
                 mode,
                 x: ax(self, b'X', b'U', half),
                 z: ax(self, b'Z', b'W', 1.0),
-                line: self.raw.mark.line,
+                line: self.prog.raw.mark.line,
             }));
         }
         Ok(None)

@@ -45,7 +45,7 @@ impl Interp {
 
     /// A parameter from the profile (`No.xxxx`) with a default.
     fn mrc_param(&self, n: u32, default: f64) -> f64 {
-        self.profile.param(&format!("No.{n}"), default)
+        self.cfg.profile.param(&format!("No.{n}"), default)
     }
 
     fn positive(&self, l: u8, what: &str) -> R<Option<f64>> {
@@ -82,23 +82,23 @@ impl Interp {
             RoughTurn | RoughFace => {
                 let l = if kind == RoughTurn { b'U' } else { b'W' };
                 if let Some(d) = self.positive(l, "depth of cut Δd")? {
-                    self.lathe.mrc.depth = Some(d);
+                    self.puma.mrc.depth = Some(d);
                 }
                 if let Some(w) = self.words.get(b'R') {
-                    self.lathe.mrc.escape = Some(self.linear(w).abs());
+                    self.puma.mrc.escape = Some(self.linear(w).abs());
                 }
             }
             _ => {
-                let (mut i, mut k) = self.lathe.mrc.relief.unwrap_or((None, None));
+                let (mut i, mut k) = self.puma.mrc.relief.unwrap_or((None, None));
                 if let Some(w) = self.words.get(b'U') {
                     i = Some(self.linear(w));
                 }
                 if let Some(w) = self.words.get(b'W') {
                     k = Some(self.linear(w));
                 }
-                self.lathe.mrc.relief = Some((i, k));
+                self.puma.mrc.relief = Some((i, k));
                 if let Some(w) = self.words.get(b'R') {
-                    self.lathe.mrc.divisions = Some(self.mrc_divisions(w, "G73 R")?);
+                    self.puma.mrc.divisions = Some(self.mrc_divisions(w, "G73 R")?);
                 }
             }
         }
@@ -126,11 +126,7 @@ impl Interp {
             }
         };
         // Second-block values, before the shape blocks overwrite the words.
-        let half = if self.st.modal.diameter.means {
-            0.5
-        } else {
-            1.0
-        };
+        let half = if self.modal.diameter.means { 0.5 } else { 1.0 };
         let du = self
             .words
             .get(b'U')
@@ -141,7 +137,7 @@ impl Interp {
         let p_at = self.words.get(b'P').map(|w| w.at).unwrap_or(at);
         let q_at = self.words.get(b'Q').map(|w| w.at).unwrap_or(at);
         let a = self.zx_pos();
-        let resume = self.src.as_ref().expect("loaded").tell();
+        let resume = self.prog.src.as_ref().expect("loaded").tell();
         let mut shape = match self.read_shape(ns, nf) {
             Ok(s) => s,
             Err(ShapeErr::Here(a)) => return Err(a),
@@ -151,7 +147,7 @@ impl Interp {
         };
         // G70 goes on after its own block; G71-G73 after N(nf) when the
         // shape follows the cycle, else after the cycle block too.
-        let after_nf = self.src.as_ref().expect("loaded").tell();
+        let after_nf = self.prog.src.as_ref().expect("loaded").tell();
         if kind == Finish || after_nf.offset <= resume.offset {
             self.seek(resume)?;
         }
@@ -174,12 +170,12 @@ impl Interp {
             RoughTurn | RoughFace => {
                 let r = turning::Rough {
                     depth: self
-                        .lathe
+                        .puma
                         .mrc
                         .depth
                         .unwrap_or_else(|| self.mrc_param(5132, 1.0)),
                     escape: self
-                        .lathe
+                        .puma
                         .mrc
                         .escape
                         .unwrap_or_else(|| self.mrc_param(5133, 0.5)),
@@ -223,13 +219,13 @@ impl Interp {
     ) -> Result<(), turning::CycleError> {
         let (start, segs) = shape;
         let (du, dw) = allow;
-        let (i, k) = self.lathe.mrc.relief.unwrap_or((None, None));
+        let (i, k) = self.puma.mrc.relief.unwrap_or((None, None));
         let relief = turning::p(
             i.unwrap_or_else(|| self.mrc_param(5135, 0.0)),
             k.unwrap_or_else(|| self.mrc_param(5136, 0.0)),
         );
         let d = self
-            .lathe
+            .puma
             .mrc
             .divisions
             .unwrap_or_else(|| self.mrc_param(5137, 1.0) as u32);
@@ -259,7 +255,7 @@ impl Interp {
             }
         }
         if kind == Pattern {
-            let (mut i, mut k) = self.lathe.mrc.relief.unwrap_or((None, None));
+            let (mut i, mut k) = self.puma.mrc.relief.unwrap_or((None, None));
             if let Some(w) = self.words.get(b'I') {
                 i = Some(self.linear(w));
             }
@@ -267,14 +263,14 @@ impl Interp {
                 k = Some(self.linear(w));
             }
             if i.is_some() || k.is_some() {
-                self.lathe.mrc.relief = Some((i, k));
+                self.puma.mrc.relief = Some((i, k));
             }
             if let Some(w) = self.words.get(b'D') {
-                self.lathe.mrc.divisions = Some(self.mrc_divisions(w, "G73 D")?);
+                self.puma.mrc.divisions = Some(self.mrc_divisions(w, "G73 D")?);
             }
         } else if kind != Finish {
             if let Some(d) = self.positive(b'D', "depth of cut Δd")? {
-                self.lathe.mrc.depth = Some(d);
+                self.puma.mrc.depth = Some(d);
             }
         }
         Ok(())
@@ -315,15 +311,15 @@ impl Interp {
         if before == CompSide::Off && !s.comp_on {
             return Ok(None);
         }
-        let saved = self.comp.take();
-        let pos = self.st.mover.pos();
+        let saved = self.common.comp.take();
+        let pos = self.frames.mover.pos();
         if before != CompSide::Off {
             self.comp_set_mode(before, None);
         }
-        self.comp_capture = Some(Vec::with_capacity(2 * s.segs.len() + 4));
+        self.common.comp_capture = Some(Vec::with_capacity(2 * s.segs.len() + 4));
         let r = self.shape_run(a, s, at, false);
-        let cap = self.comp_capture.take().unwrap_or_default();
-        self.comp = saved;
+        let cap = self.common.comp_capture.take().unwrap_or_default();
+        self.common.comp = saved;
         self.place_machine(pos);
         r?;
         let zx = |q: (f64, f64)| turning::p(q.1, q.0);
@@ -352,8 +348,8 @@ impl Interp {
 
     /// The feed of a shape block's F (mm, per the feed mode).
     fn shape_feed(&self, f: Option<f64>) -> Option<Feed> {
-        f.map(|f| match self.st.modal.feed_mode.means {
-            FeedMode::PerMin => Feed::PerMin(f.min(self.profile.feed.max_cutting)),
+        f.map(|f| match self.modal.feed_mode.means {
+            FeedMode::PerMin => Feed::PerMin(f.min(self.cfg.profile.feed.max_cutting)),
             FeedMode::PerRev => Feed::PerRev(f),
             FeedMode::Inverse => Feed::InverseTime(f),
         })
@@ -368,7 +364,7 @@ impl Interp {
     /// whole contour is offset). The last compensated move ends on its
     /// perpendicular vector.
     fn shape_run(&mut self, a: P, s: &Shape, at: u32, g70: bool) -> R<()> {
-        let s0 = self.st.s;
+        let s0 = self.tool.s;
         let ns = turning::Seg {
             from: a,
             to: s.start,
@@ -387,9 +383,8 @@ impl Interp {
             match c {
                 Some(c) if g70 => {
                     self.comp_set_mode(c, None);
-                    self.st
-                        .modal
-                        .set_meaning(self.dialect, Means::CutterComp(c));
+                    self.modal
+                        .set_meaning(self.cfg.dialect, Means::CutterComp(c));
                 }
                 // Roughing: the whole shape is offset, a G40 in it does not
                 // cancel (docs/dialects.md).
@@ -400,7 +395,7 @@ impl Interp {
                 self.g70_speed(sp.unwrap_or(s0));
             }
             let feed = self.shape_feed(f);
-            if self.comp.is_some() {
+            if self.common.comp.is_some() {
                 let speed = match (rapid, feed) {
                     (true, _) => motion::Speed::Rapid,
                     (false, Some(f)) => motion::Speed::Feed(f),
@@ -425,7 +420,7 @@ impl Interp {
                         ccw,
                     },
                 };
-                if let Some(cap) = self.comp_capture.as_mut() {
+                if let Some(cap) = self.common.comp_capture.as_mut() {
                     cap.push((cs, src, true));
                 }
                 self.place_at(&self.zx_full(seg.to));
@@ -438,7 +433,7 @@ impl Interp {
     /// shape (or the modal F), then a rapid back to the start point.
     fn g70(&mut self, a: P, s: &Shape, at: u32) -> R<()> {
         if s.comp_on || self.comp_side() != CompSide::Off {
-            let s0 = self.st.s;
+            let s0 = self.tool.s;
             self.shape_run(a, s, at, true)?;
             self.emit_moves(&[Mv::Rapid(a)], None, at)?;
             self.g70_speed(s0);
@@ -450,7 +445,7 @@ impl Interp {
         } else {
             Mv::Feed(s.start)
         };
-        let s0 = self.st.s;
+        let s0 = self.tool.s;
         let f0 = feed_of(self, s.ns_feed);
         self.g70_speed(s.ns_speed.unwrap_or(s0));
         self.emit_moves(&[first], f0, at)?;
@@ -469,19 +464,19 @@ impl Interp {
     /// G70: the S in force for the next shape block; a spindle event when
     /// the rpm changes (the spindle running).
     fn g70_speed(&mut self, sv: f64) {
-        if (sv - self.st.s).abs() < 1e-12 {
+        if (sv - self.tool.s).abs() < 1e-12 {
             return;
         }
-        self.st.s = sv;
-        if self.st.spindle == SpindleDir::Stop {
+        self.tool.s = sv;
+        if self.tool.spindle == SpindleDir::Stop {
             return;
         }
         let rpm = self.rpm();
-        if (rpm - self.st.last_rpm).abs() > 1e-6 {
-            self.st.last_rpm = rpm;
+        if (rpm - self.tool.last_rpm).abs() > 1e-6 {
+            self.tool.last_rpm = rpm;
             let css = self.css_speed();
             self.emit(Canon::Spindle {
-                dir: self.st.spindle,
+                dir: self.tool.spindle,
                 rpm,
                 css,
             });
@@ -507,16 +502,12 @@ impl Interp {
                 return Err(self.unused_word(l, w.at, "the block with the end point X/Z"));
             }
             if let Some(w) = self.words.get(b'R') {
-                self.lathe.mrc.peck_escape = Some(self.linear(w).abs());
+                self.puma.mrc.peck_escape = Some(self.linear(w).abs());
             }
             return Ok(());
         }
         let a = self.zx_pos();
-        let half = if self.st.modal.diameter.means {
-            0.5
-        } else {
-            1.0
-        };
+        let half = if self.modal.diameter.means { 0.5 } else { 1.0 };
         let val = |me: &Self, abs: u8, inc: u8, cur: f64, is_x: bool| -> Option<f64> {
             let k = if is_x { half } else { 1.0 };
             if let Some(w) = me.words.get(abs) {
@@ -540,7 +531,7 @@ impl Interp {
         let (shift, peck) = (shift.unwrap_or(0.0), peck.unwrap_or(0.0));
         let relief = self.words.get(ld).map(|w| self.linear(w)).unwrap_or(0.0);
         let escape = self
-            .lathe
+            .puma
             .mrc
             .peck_escape
             .unwrap_or_else(|| self.mrc_param(5139, 0.1));
@@ -595,10 +586,10 @@ impl Interp {
         if let Some(a) = self.words.get(b'A') {
             let v = a.v;
             *ang = v;
-            if let Some((m, r, _)) = self.lathe.mrc.thread_p {
-                self.lathe.mrc.thread_p = Some((m, r, v));
+            if let Some((m, r, _)) = self.puma.mrc.thread_p {
+                self.puma.mrc.thread_p = Some((m, r, v));
             } else {
-                self.lathe.mrc.thread_p = Some((
+                self.puma.mrc.thread_p = Some((
                     self.mrc_param(5142, 1.0) as u32,
                     self.mrc_param(5130, 10.0) as u32,
                     v,
@@ -745,22 +736,18 @@ impl Interp {
                     ));
                 }
                 let v = w.v as u32;
-                self.lathe.mrc.thread_p = Some((v / 10000, (v / 100) % 100, (v % 100) as f64));
+                self.puma.mrc.thread_p = Some((v / 10000, (v / 100) % 100, (v % 100) as f64));
             }
             if let Some(w) = self.words.get(b'Q') {
-                self.lathe.mrc.min_depth = Some(self.linear(w).abs());
+                self.puma.mrc.min_depth = Some(self.linear(w).abs());
             }
             if let Some(w) = self.words.get(b'R') {
-                self.lathe.mrc.allowance = Some(self.linear(w).abs());
+                self.puma.mrc.allowance = Some(self.linear(w).abs());
             }
             return Ok(());
         }
         let a = self.zx_pos();
-        let half = if self.st.modal.diameter.means {
-            0.5
-        } else {
-            1.0
-        };
+        let half = if self.modal.diameter.means { 0.5 } else { 1.0 };
         let mut end = a;
         if let Some(w) = self.words.get(b'X') {
             end.x = self.linear(w) * half;
@@ -772,7 +759,7 @@ impl Interp {
         } else if let Some(w) = self.words.get(b'W') {
             end.z = a.z + self.linear(w);
         }
-        let (m, r, mut ang) = self.lathe.mrc.thread_p.unwrap_or((
+        let (m, r, mut ang) = self.puma.mrc.thread_p.unwrap_or((
             self.mrc_param(5142, 1.0) as u32,
             self.mrc_param(5130, 10.0) as u32,
             self.mrc_param(5143, 60.0),
@@ -799,7 +786,7 @@ impl Interp {
                 format!("G76 without the first depth {}(Δd)", ld as char),
             ));
         };
-        let lead = self.st.feed.unwrap_or(0.0);
+        let lead = self.tool.feed.unwrap_or(0.0);
         if !self.words.has(b'F') && lead <= 0.0 {
             return Err(self.alarm(AlarmKind::NoFeed, at, "G76 without a thread lead (F)"));
         }
@@ -808,12 +795,12 @@ impl Interp {
             chamfer: r,
             angle: ang,
             min_depth: self
-                .lathe
+                .puma
                 .mrc
                 .min_depth
                 .unwrap_or_else(|| self.mrc_param(5140, 0.1)),
             allowance: self
-                .lathe
+                .puma
                 .mrc
                 .allowance
                 .unwrap_or_else(|| self.mrc_param(5141, 0.0)),

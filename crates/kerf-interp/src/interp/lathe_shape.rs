@@ -102,40 +102,41 @@ impl Interp {
                 format!("sequence number N{ns} (P) not found"),
             ));
         }
-        let saved_raw = std::mem::take(&mut self.raw);
-        let saved_block = std::mem::take(&mut self.block);
+        let saved_raw = std::mem::take(&mut self.prog.raw);
+        let saved_block = std::mem::take(&mut self.prog.block);
         let saved_words = self.words.clone();
         let r = self.read_shape_blocks(ns, nf);
-        self.raw = saved_raw;
-        self.block = saved_block;
+        self.prog.raw = saved_raw;
+        self.prog.block = saved_block;
         self.words = saved_words;
         r
     }
 
     fn read_shape_blocks(&mut self, ns: u32, nf: u32) -> Result<Shape, ShapeErr> {
+        use MotionMode::{ArcCcw, ArcCw, Linear, Rapid};
         let a = self.zx_pos();
         let mut cur = a;
-        let mut mode: Option<u16> = None;
+        let mut mode: Option<MotionMode> = None;
         let mut feed: Option<f64> = None;
         let mut speed: Option<f64> = None;
-        let mut shape = Shape::empty(a, self.cur);
+        let mut shape = Shape::empty(a, self.prog.cur);
         let mut comp_pending: Option<CompSide> = None;
         let mut count = 0usize;
         let mut corners: Vec<ShapeCorner> = Vec::new();
         let mut seg_blocks: Vec<(usize, u32)> = Vec::new();
         loop {
             let (nwords, skip) = self.shape_read_block(ns, nf)?;
-            let is_last = self.block.n == Some(nf);
+            let is_last = self.prog.block.n == Some(nf);
             if skip {
                 if is_last {
                     break;
                 }
                 continue;
             }
-            if self.block.stmt.is_some() {
+            if self.prog.block.stmt.is_some() {
                 return Err(ShapeErr::Here(self.alarm(
                     AlarmKind::MrcIllegal,
-                    self.block.stmt_at,
+                    self.prog.block.stmt_at,
                     "macro statement inside the finishing shape ns-nf",
                 )));
             }
@@ -151,18 +152,7 @@ impl Interp {
             let first = mode.is_none();
             let blk_mode = self.shape_block_codes(&mut comp_pending, &mut shape.comp_on)?;
             if first {
-                match blk_mode {
-                    Some(0 | 10) => {}
-                    _ => {
-                        return Err(ShapeErr::Here(self.alarm(
-                            AlarmKind::MrcFirstBlock,
-                            blk_mode.map(|_| self.words.gs()[0].1).unwrap_or(0),
-                            format!(
-                                "the first block N{ns} of the finishing shape has no G00 or G01"
-                            ),
-                        )))
-                    }
-                }
+                self.shape_first_mode(ns, blk_mode)?;
             }
             if let Some(m) = blk_mode {
                 mode = Some(m);
@@ -175,7 +165,7 @@ impl Interp {
                 speed = Some(w.v);
             }
             let (t, hx, hz) = self.shape_end_point(cur)?;
-            if m == 10 {
+            if m == Linear {
                 let here = (is_last, first, shape.segs.len(), count);
                 if let Some(c) = self.shape_corner_word(nf, here)? {
                     corners.push(c);
@@ -194,15 +184,15 @@ impl Interp {
                 shape.start = t;
                 shape.ns_x = hx;
                 shape.ns_z = hz;
-                shape.ns_rapid = m == 0;
+                shape.ns_rapid = m == Rapid;
                 shape.ns_feed = feed;
                 shape.ns_speed = speed;
             } else if hx
                 || hz
-                || matches!(m, 20 | 30) && self.words.has(b'I') | self.words.has(b'K')
+                || matches!(m, ArcCw | ArcCcw) && self.words.has(b'I') | self.words.has(b'K')
             {
-                let arc = if matches!(m, 20 | 30) {
-                    let ccw = m == 30;
+                let arc = if matches!(m, ArcCw | ArcCcw) {
+                    let ccw = m == ArcCcw;
                     let c = self.shape_arc_center(cur, t, ccw).map_err(ShapeErr::Here)?;
                     Some((c, ccw))
                 } else {
@@ -214,11 +204,11 @@ impl Interp {
                         to: t,
                         arc,
                     });
-                    shape.modes.push((m == 0, feed));
+                    shape.modes.push((m == Rapid, feed));
                     shape.speeds.push(speed);
                     shape.comps.push(comp_pending.take());
                     shape.srcs.push(blk_src);
-                    seg_blocks.push((count, self.raw.mark.line));
+                    seg_blocks.push((count, self.prog.raw.mark.line));
                 }
             }
             cur = t;
@@ -237,8 +227,8 @@ impl Interp {
     /// cycle when the text ends before N(nf)); returns its word count
     /// after block delete and whether block delete skips it whole.
     fn shape_read_block(&mut self, ns: u32, nf: u32) -> Result<(usize, bool), ShapeErr> {
-        let src = self.src.as_mut().expect("loaded");
-        match src.next_block(&mut self.raw) {
+        let src = self.prog.src.as_mut().expect("loaded");
+        match src.next_block(&mut self.prog.raw) {
             Ok(true) => {}
             _ => {
                 return Err(ShapeErr::AtCycle(
@@ -249,16 +239,16 @@ impl Interp {
             }
         }
         self.parse_raw().map_err(ShapeErr::Here)?;
-        if self.block.percent || self.block.program.is_some() {
+        if self.prog.block.percent || self.prog.block.program.is_some() {
             return Err(ShapeErr::AtCycle(
                 AlarmKind::MrcSeqNotFound,
                 b'Q',
                 format!("sequence number N{nf} (Q) not found after N{ns} in this program"),
             ));
         }
-        let mut nwords = self.block.words.len();
+        let mut nwords = self.prog.block.words.len();
         let mut skip = false;
-        for &(idx, mask) in &self.block.deletes {
+        for &(idx, mask) in &self.prog.block.deletes {
             if mask & self.settings.block_skip != 0 {
                 if idx == 0 {
                     skip = true;
@@ -270,6 +260,18 @@ impl Interp {
         Ok((nwords, skip))
     }
 
+    /// The first block of the finishing shape N(ns) must be G00 or G01.
+    fn shape_first_mode(&self, ns: u32, mode: Option<MotionMode>) -> Result<(), ShapeErr> {
+        match mode {
+            Some(MotionMode::Rapid | MotionMode::Linear) => Ok(()),
+            _ => Err(ShapeErr::Here(self.alarm(
+                AlarmKind::MrcFirstBlock,
+                mode.map(|_| self.words.gs()[0].1).unwrap_or(0),
+                format!("the first block N{ns} of the finishing shape has no G00 or G01"),
+            ))),
+        }
+    }
+
     /// The G and M codes a shape block may carry; its motion code. A
     /// G40-G42 is kept for the segment (`comp_pending`; `comp_on` when one
     /// switches compensation on).
@@ -277,12 +279,14 @@ impl Interp {
         &self,
         comp_pending: &mut Option<CompSide>,
         comp_on: &mut bool,
-    ) -> Result<Option<u16>, ShapeErr> {
+    ) -> Result<Option<MotionMode>, ShapeErr> {
         let mut blk_mode = None;
         use MotionMode::{ArcCcw, ArcCw, Linear, Rapid};
         for &(g, gat) in self.words.gs() {
             match self.gcode(g).map(|c| c.means) {
-                Some(Means::Motion(Rapid | Linear | ArcCw | ArcCcw)) => blk_mode = Some(g),
+                Some(Means::Motion(mode @ (Rapid | Linear | ArcCw | ArcCcw))) => {
+                    blk_mode = Some(mode)
+                }
                 Some(
                     Means::OneShot(OneShot::Dwell)
                     | Means::Units(_)
@@ -326,11 +330,7 @@ impl Interp {
         // End point.
         let mut t = cur;
         let (mut hx, mut hz) = (false, false);
-        let half = if self.st.modal.diameter.means {
-            0.5
-        } else {
-            1.0
-        };
+        let half = if self.modal.diameter.means { 0.5 } else { 1.0 };
         if let Some(w) = self.words.get(b'X') {
             t.x = self.linear(w) * half;
             hx = true;
@@ -421,7 +421,7 @@ impl Interp {
     /// rules as interp/lathe_chamfer.rs): the segment is shortened and the
     /// corner inserted before the next segment, which starts at C′.
     fn shape_corner(&self, shape: &mut Shape, c: &ShapeCorner, blocks: &[(usize, u32)]) -> R<()> {
-        let d = self.dialect.id;
+        let d = self.cfg.dialect.id;
         let at_word = |k: AlarmKind, msg: String| k.at(d, c.word, msg);
         let i = c.seg;
         let next_line = blocks.get(i + 1).map(|b| b.1).unwrap_or(c.word.line);
@@ -532,7 +532,7 @@ impl Interp {
         let i = self.words.get(b'I').map(|w| self.linear(w)).unwrap_or(0.0);
         let k = self.words.get(b'K').map(|w| self.linear(w)).unwrap_or(0.0);
         let c = turning::p(s.x + i, s.z + k);
-        if let Err(e) = crate::arc::check_end(s.zx(), e.zx(), c.zx(), self.arc_tol) {
+        if let Err(e) = crate::arc::check_end(s.zx(), e.zx(), c.zx(), self.cfg.arc_tol) {
             let msg = match e {
                 ArcError::EndNotOnCircle { r_start, r_end } => format!(
                     "arc end point is not on the circle: start radius {r_start:.4}, end radius {r_end:.4}"

@@ -99,6 +99,36 @@ impl Modal {
         m
     }
 
+    /// The power-on state of a machine: the group defaults of its
+    /// dialect in its plane (ZX on a lathe), and on the HX the power-on
+    /// parameters PI 144-147 (000 §3.2: G01, G18/G19, G91, G20).
+    pub(crate) fn at_power_on(profile: &crate::machine::Profile, dialect: &Dialect) -> Modal {
+        let plane = if profile.kind == crate::machine::MachineKind::Lathe {
+            Plane::ZX
+        } else {
+            Plane::XY
+        };
+        let mut m = Modal::power_on(dialect, plane);
+        if dialect.caps.power_on_params {
+            let p = |n: &str, d: f64| profile.param(n, d) as i64;
+            if p("PI 144", 0.0) == 1 {
+                m.set_meaning(dialect, Means::Motion(MotionMode::Linear));
+            }
+            match p("PI 145", 0.0) {
+                1 => m.set_meaning(dialect, Means::Plane(Plane::ZX)),
+                2 => m.set_meaning(dialect, Means::Plane(Plane::YZ)),
+                _ => {}
+            }
+            if p("PI 146", 0.0) == 1 {
+                m.set_meaning(dialect, Means::Distance(Distance::Incremental));
+            }
+            if p("PI 147", 1.0) == 0 {
+                m.set_meaning(dialect, Means::Units(Units::Inch));
+            }
+        }
+        m
+    }
+
     /// Puts a code of the table in force (a one-shot code changes nothing).
     pub(crate) fn set(&mut self, g: &GCode) {
         let c = g.code10;
@@ -265,6 +295,35 @@ mod tests {
     /// The power-on state from the manuals' defaults: HX G00 G17 G90 G94
     /// G21 G40 G49 G54 G64 G80 G98 (000 §3.2), PUMA G00 G18 G21 G40 G97 G99
     /// (001 `#`), Hurco G00 G08 G21 G40 G90 G94 G97 G98.
+    /// 000 §3.2: PI 144 = 1 powers on in G01, PI 145 = 2 in G19, PI 146
+    /// = 1 in G91, PI 147 = 0 in G20; the PUMA has no such parameters.
+    #[test]
+    fn the_hx_power_on_parameters() {
+        let mut p = crate::machine::Profile::builtin("hx-mc").unwrap();
+        let d = Dialect::get(p.dialect);
+        let plain = Modal::at_power_on(&p, d);
+        assert_eq!(plain.motion.means, MotionMode::Rapid);
+        assert_eq!(plain.plane.means, Plane::XY);
+        assert!(plain.absolute() && plain.metric());
+        for (k, v) in [
+            ("PI 144", 1.0),
+            ("PI 145", 2.0),
+            ("PI 146", 1.0),
+            ("PI 147", 0.0),
+        ] {
+            p.params.insert(k.into(), v);
+        }
+        let m = Modal::at_power_on(&p, d);
+        assert_eq!(m.motion.means, MotionMode::Linear);
+        assert_eq!(m.plane.means, Plane::YZ);
+        assert!(!m.absolute() && !m.metric());
+        let mut lathe = crate::machine::Profile::builtin("puma-lathe").unwrap();
+        lathe.params.insert("PI 144".into(), 1.0);
+        let l = Modal::at_power_on(&lathe, Dialect::get(lathe.dialect));
+        assert_eq!(l.motion.means, MotionMode::Rapid);
+        assert_eq!(l.plane.means, Plane::ZX);
+    }
+
     #[test]
     fn power_on_defaults() {
         let hx = Modal::power_on(Dialect::get(DialectId::Hx), Plane::XY);

@@ -15,7 +15,7 @@ impl Interp {
         let mut t = cur;
         let mut any = false;
         let mut programmed = [false; NAXES];
-        let table16 = self.dialect.caps.offsets_wait_for_move;
+        let table16 = self.cfg.dialect.caps.offsets_wait_for_move;
         if table16 {
             // Table 16: after a T/E code, before the next move.
             self.hurco_base(&mut cur);
@@ -23,7 +23,7 @@ impl Interp {
         for ax in Axis::ALL {
             let l = ax_letter(ax);
             let i = ax as usize;
-            let abs_w = self.words.get(l).filter(|_| self.has_axis[ax as usize]);
+            let abs_w = self.words.get(l).filter(|_| self.cfg.has_axis[ax as usize]);
             let inc_l = self.uvw(ax);
             if let (Some(w), Some(_)) = (abs_w, inc_l) {
                 return Err(self.alarm(
@@ -35,7 +35,7 @@ impl Interp {
             if let Some(w) = abs_w {
                 self.check_range(l, w)?;
                 let v = self.axis_value(ax, w);
-                t[i] = if self.st.modal.absolute() {
+                t[i] = if self.modal.absolute() {
                     v
                 } else {
                     cur[i] + v + self.tlo_change(i)
@@ -52,7 +52,7 @@ impl Interp {
         if any && table16 {
             self.hurco_immediate(&mut t, &programmed);
         }
-        if self.st.polar {
+        if self.frames.polar {
             self.polar_target(&cur, &mut t);
         }
         Ok((t, any))
@@ -61,10 +61,7 @@ impl Interp {
     /// The change of the tool length offset made by this block's
     /// G43/G44/G49/H in G91 on axis slot `i` (0 otherwise).
     fn tlo_change(&self, i: usize) -> f64 {
-        match self.tlo_inc {
-            Some((b, d)) if b == self.blocks => d[i],
-            _ => 0.0,
-        }
+        self.common.tlo_change(self.guard.blocks, i)
     }
 
     /// G16: the plane's first-axis word is a radius, the second an angle
@@ -73,15 +70,15 @@ impl Interp {
     /// and the current distance from it are kept. The angle is absolute in
     /// G90, added to the current angle in G91.
     fn polar_target(&self, cur: &Pos, t: &mut Pos) {
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
+        let (a1, a2, _) = self.modal.plane.means.axes();
         let rw = self.words.get(b"XYZ"[a1]);
         let aw = self.words.get(b"XYZ"[a2]);
         if rw.is_none() && aw.is_none() {
             return;
         }
-        let mut origin = self.st.polar_origin.get();
+        let mut origin = self.frames.polar_origin.get();
         if rw.is_some() {
-            origin = if self.st.modal.absolute() {
+            origin = if self.modal.absolute() {
                 (0.0, 0.0)
             } else {
                 (cur[a1], cur[a2])
@@ -96,14 +93,14 @@ impl Interp {
         };
         let r = rw.map(|w| self.linear(w)).unwrap_or(r_cur);
         let a = match aw {
-            Some(w) if self.st.modal.absolute() => self.angular(w),
+            Some(w) if self.modal.absolute() => self.angular(w),
             Some(w) => a_cur + self.angular(w),
             None => a_cur,
         };
         let (u, v) = crate::xform::polar_point(origin, r, a);
         t[a1] = u;
         t[a2] = v;
-        self.st.polar_origin.set(origin);
+        self.frames.polar_origin.set(origin);
     }
 
     /// `G22 X_ Y_ Z_ I_ J_ K_`: the forbidden area, machine coordinates,
@@ -150,13 +147,13 @@ impl Interp {
         let area = crate::stroke::Area {
             lo,
             hi,
-            outside: self.profile.param("PM 3474", 0.0) == 1.0,
+            outside: self.cfg.profile.param("PM 3474", 0.0) == 1.0,
         };
         // The tool may not already be where the check forbids.
-        if area.forbids(&self.st.mover.pos()) {
+        if area.forbids(&self.frames.mover.pos()) {
             return Err(self.stroke_alarm(&area, at));
         }
-        self.st.stroke_area = Some(area);
+        self.frames.stroke_area = Some(area);
         Ok(())
     }
 
@@ -182,15 +179,15 @@ impl Interp {
     }
 
     pub(super) fn feed(&self, at: u32) -> R<Feed> {
-        match self.st.feed {
+        match self.tool.feed {
             None => Err(self.alarm(
                 AlarmKind::NoFeed,
                 at,
                 "cutting move without a feedrate (no F commanded)",
             )),
             Some(f) if f <= 0.0 => Err(self.alarm(AlarmKind::NoFeed, at, "feedrate is zero")),
-            Some(f) => Ok(match self.st.modal.feed_mode.means {
-                FeedMode::PerMin => Feed::PerMin(f.min(self.profile.feed.max_cutting)),
+            Some(f) => Ok(match self.modal.feed_mode.means {
+                FeedMode::PerMin => Feed::PerMin(f.min(self.cfg.profile.feed.max_cutting)),
                 FeedMode::PerRev => Feed::PerRev(f),
                 FeedMode::Inverse => Feed::InverseTime(f),
             }),
@@ -198,11 +195,11 @@ impl Interp {
     }
 
     pub(super) fn motion(&mut self) -> R<()> {
-        if self.st.rot != polar_interp::RotInterp::Off {
+        if self.frames.rot != polar_interp::RotInterp::Off {
             return self.rotary_interp_motion();
         }
-        let mode = self.st.modal.motion.means;
-        let ddi = self.dialect.caps.direct_drawing;
+        let mode = self.modal.motion.means;
+        let ddi = self.cfg.dialect.caps.direct_drawing;
         let (tw, any) = if ddi {
             self.ddi_target()?
         } else {
@@ -213,12 +210,15 @@ impl Interp {
         if ddi && mode == MotionMode::Linear && any && self.ddi_words() {
             return self.ddi_motion(tw, at);
         }
-        if self.comp.is_some() {
+        if self.common.comp.is_some() {
             return self.comp_motion(mode, tw, any, at);
         }
         // One test for the look-ahead of ,C/,R (a move held, or this block
         // carries one): interp/corners.rs.
-        if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
+        if self.common.corner.is_some()
+            | self.words.comma_c.is_some()
+            | self.words.comma_r.is_some()
+        {
             return self.corner_motion(mode, tw, any, at);
         }
         self.plain_motion(mode, tw, any, at)
@@ -243,9 +243,9 @@ impl Interp {
     /// Current position in the program's coordinates: the point the next
     /// incremental word adds to (before polar, scaling and rotation).
     pub(super) fn prog_pos(&self) -> Pos {
-        let p = self.programmed_position();
-        if self.st.xf.active() {
-            self.st.xf.inverse(&p)
+        let p = self.frames.programmed_position();
+        if self.frames.xf.active() {
+            self.frames.xf.inverse(&p)
         } else {
             p
         }
@@ -278,7 +278,7 @@ impl Interp {
         ccw: bool,
         at: u32,
     ) -> R<Option<(f64, f64)>> {
-        let plane = self.st.modal.plane.means;
+        let plane = self.modal.plane.means;
         let (a1, a2, normal) = plane.axes();
         // The centre word of the axis normal to the plane (J in G18, K in
         // G17, I in G19) is not part of the arc: an alarm, never ignored.
@@ -314,10 +314,10 @@ impl Interp {
             }
             // 001 p.15 note (4): on the PUMA an R shorter than half the
             // move is overridden and a half circle made; the others alarm.
-            let tol = if self.dialect.caps.short_r_half_circle {
+            let tol = if self.cfg.dialect.caps.short_r_half_circle {
                 f64::INFINITY
             } else {
-                self.arc_tol
+                self.cfg.arc_tol
             };
             match arc::center_from_radius(s, e, rv, ccw, tol) {
                 Ok(c) => c,
@@ -362,7 +362,7 @@ impl Interp {
             .find_map(|&l| self.words.get(l))
             .map(|w| w.at)
             .unwrap_or(at);
-        match arc::check_end(s, e, center, self.arc_tol) {
+        match arc::check_end(s, e, center, self.cfg.arc_tol) {
             Ok(_) => {}
             Err(ArcError::ZeroRadius) => return Err(self.alarm(AlarmKind::ArcNoCenter, bad_at, "arc centre coincides with the start point")),
             Err(ArcError::EndNotOnCircle { r_start, r_end }) => {
@@ -390,11 +390,11 @@ impl Interp {
         ccw: bool,
         at: u32,
     ) -> R<(Pos, Pos, (f64, f64), bool)> {
-        if !self.st.xf.active() {
+        if !self.frames.xf.active() {
             return Ok((start, tw, center, ccw));
         }
-        let xf = self.st.xf;
-        let plane = self.st.modal.plane.means;
+        let xf = self.frames.xf;
+        let plane = self.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         let mut c = start;
         c[a1] = center.0;
@@ -407,14 +407,20 @@ impl Interp {
             let r = (s.0 - center.0).hypot(s.1 - center.1);
             let major = arc::sweep(s, e, center, ccw) > std::f64::consts::PI + 1e-12;
             let rs = r * f1.abs().max(f2.abs()) * if major { -1.0 } else { 1.0 };
-            arc::center_from_radius((st[a1], st[a2]), (et[a1], et[a2]), rs, ccw_t, self.arc_tol)
-                .map_err(|_| {
-                    self.alarm(
-                        AlarmKind::ArcRadius,
-                        at,
-                        "scaled arc radius is smaller than half the chord",
-                    )
-                })?
+            arc::center_from_radius(
+                (st[a1], st[a2]),
+                (et[a1], et[a2]),
+                rs,
+                ccw_t,
+                self.cfg.arc_tol,
+            )
+            .map_err(|_| {
+                self.alarm(
+                    AlarmKind::ArcRadius,
+                    at,
+                    "scaled arc radius is smaller than half the chord",
+                )
+            })?
         } else {
             (ct[a1], ct[a2])
         };
@@ -424,10 +430,10 @@ impl Interp {
     /// G33 on the HX (000 §4.8): a straight move synchronised with the
     /// spindle, F = lead (mm/rev, modal with the other feeds).
     fn thread_line(&mut self, tw: Pos, at: u32) -> R<()> {
-        let Some(lead) = self.st.feed.filter(|f| *f > 0.0) else {
+        let Some(lead) = self.tool.feed.filter(|f| *f > 0.0) else {
             return Err(self.alarm(AlarmKind::NoFeed, at, "G33 without a thread lead (F)"));
         };
-        if self.st.spindle == SpindleDir::Stop {
+        if self.tool.spindle == SpindleDir::Stop {
             return Err(self.alarm(
                 AlarmKind::NoFeed,
                 at,
@@ -442,7 +448,7 @@ impl Interp {
     /// G43/G44/G49 with H: the tool length offset on the axis normal to
     /// the plane (mills).
     pub(super) fn tool_length(&mut self) -> R<()> {
-        if self.profile.kind != MachineKind::Mill {
+        if self.cfg.profile.kind != MachineKind::Mill {
             return Ok(());
         }
         if let Some(h) = self.words.get(b'H') {
@@ -457,35 +463,35 @@ impl Interp {
                     ),
                 ));
             }
-            self.st.h = h.v as u32;
+            self.frames.h = h.v as u32;
         }
-        let old = self.st.tlo;
+        let old = self.frames.tlo;
         self.refresh_tool_length();
         // In G91 the block's incremental move counts from the tip as the
         // old offset had it, so the machine moves by the move plus the
         // offset change (fanuc-semantics §5.1).
-        if !self.st.modal.absolute() && old != self.st.tlo {
+        if !self.modal.absolute() && old != self.frames.tlo {
             let mut d = [0.0; NAXES];
             for i in 0..NAXES {
-                d[i] = self.st.tlo[i] - old[i];
+                d[i] = self.frames.tlo[i] - old[i];
             }
-            self.tlo_inc = Some((self.blocks, d));
+            self.common.set_tlo_change(self.guard.blocks, d);
         }
         Ok(())
     }
 
     /// The tool length offset vector from the G43/G44 mode and H in force.
     pub(super) fn refresh_tool_length(&mut self) {
-        let sign = match self.st.modal.length_comp.means {
+        let sign = match self.modal.length_comp.means {
             LengthComp::Plus => 1.0,
             LengthComp::Minus => -1.0,
             LengthComp::Off => 0.0,
         };
         // 000 §13.1.1: the axis normal to the plane in force when the
         // offset is taken (G17 Z, G18 Y, G19 X).
-        let normal = self.st.modal.plane.means.axes().2;
-        self.st.tlo = [0.0; NAXES];
-        self.st.tlo[normal] = sign * self.offsets.h(self.st.h as usize);
+        let normal = self.modal.plane.means.axes().2;
+        self.frames.tlo = [0.0; NAXES];
+        self.frames.tlo[normal] = sign * self.offsets.h(self.frames.h as usize);
     }
 
     /// The machine position of reference point `n` (1-4) for an axis.
@@ -494,14 +500,28 @@ impl Interp {
             2 => "second",
             3 => "third",
             4 => "fourth",
-            _ => return self.profile.axis(ax).map(|a| a.reference).unwrap_or(0.0),
+            _ => {
+                return self
+                    .cfg
+                    .profile
+                    .axis(ax)
+                    .map(|a| a.reference)
+                    .unwrap_or(0.0)
+            }
         };
-        self.profile
+        self.cfg
+            .profile
             .reference
             .get(key)
             .and_then(|m| m.get(ax.name()))
             .copied()
-            .unwrap_or_else(|| self.profile.axis(ax).map(|a| a.reference).unwrap_or(0.0))
+            .unwrap_or_else(|| {
+                self.cfg
+                    .profile
+                    .axis(ax)
+                    .map(|a| a.reference)
+                    .unwrap_or(0.0)
+            })
     }
 
     /// G27 check, G28 / G30 return via an intermediate point, G29 return
@@ -510,7 +530,7 @@ impl Interp {
         let (tw, _) = self.target()?;
         let mut named = [false; NAXES];
         for ax in Axis::ALL {
-            named[ax as usize] = self.has_axis[ax as usize]
+            named[ax as usize] = self.cfg.has_axis[ax as usize]
                 && (self.words.has(ax_letter(ax)) || self.uvw(ax).is_some());
         }
         let rapid_to = |me: &mut Self, mto: Pos| me.rapid_machine(mto, at);
@@ -521,11 +541,11 @@ impl Interp {
                 for ax in Axis::ALL {
                     let i = ax as usize;
                     if named[i]
-                        && (self.st.mover.pos()[i] - self.reference_point(1, ax)).abs() > 1e-6
+                        && (self.frames.mover.pos()[i] - self.reference_point(1, ax)).abs() > 1e-6
                     {
                         // The check follows the move: the positioning is
                         // made, then the control alarms.
-                        self.after_block = Some(self.alarm(
+                        self.common.after_block = Some(self.alarm(
                             AlarmKind::ReferenceCheck,
                             at,
                             format!(
@@ -559,10 +579,10 @@ impl Interp {
                 for ax in Axis::ALL {
                     let i = ax as usize;
                     if named[i] {
-                        self.st.g28_mid[i] = Some(tw[i]);
+                        self.frames.g28_mid[i] = Some(tw[i]);
                     }
                 }
-                let mut r = self.st.mover.pos();
+                let mut r = self.frames.mover.pos();
                 for ax in Axis::ALL {
                     if named[ax as usize] {
                         r[ax as usize] = self.reference_point(n, ax);
@@ -572,11 +592,11 @@ impl Interp {
             }
             RefReturn::Back => {
                 // Through the stored intermediate point to the commanded point.
-                let mut mid = self.programmed_position();
+                let mut mid = self.frames.programmed_position();
                 for ax in Axis::ALL {
                     let i = ax as usize;
                     if named[i] {
-                        match self.st.g28_mid[i] {
+                        match self.frames.g28_mid[i] {
                             Some(v) => mid[i] = v,
                             None => {
                                 return Err(self.alarm(
@@ -591,16 +611,12 @@ impl Interp {
                 let mm = self.to_machine(&mid);
                 rapid_to(self, mm)?;
                 // The end point: absolute as given; incremental from the intermediate point.
-                let mut end = self.programmed_position();
+                let mut end = self.frames.programmed_position();
                 for ax in Axis::ALL {
                     let i = ax as usize;
                     if let Some(w) = self.words.get(ax_letter(ax)).filter(|_| named[i]) {
                         let v = self.axis_value(ax, w);
-                        end[i] = if self.st.modal.absolute() {
-                            v
-                        } else {
-                            mid[i] + v
-                        };
+                        end[i] = if self.modal.absolute() { v } else { mid[i] + v };
                     } else if let Some(l) = self.uvw(ax) {
                         let w = self.words.get(l).expect("present");
                         end[i] = mid[i] + self.axis_value(ax, w);

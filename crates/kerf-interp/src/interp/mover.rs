@@ -68,8 +68,8 @@ impl Interp {
     /// A point in program coordinates → machine coordinates (scaling,
     /// rotation, then the offset stack).
     pub(super) fn to_machine(&self, w: &Pos) -> Pos {
-        if self.st.xf.active() {
-            self.offset_to_machine(&self.st.xf.forward(w))
+        if self.frames.xf.active() {
+            self.offset_to_machine(&self.frames.xf.forward(w))
         } else {
             self.offset_to_machine(w)
         }
@@ -78,7 +78,7 @@ impl Interp {
     /// A point in (transformed) local coordinates → machine coordinates:
     /// the offset stack only.
     pub(super) fn offset_to_machine(&self, w: &Pos) -> Pos {
-        let o = self.prog_origin();
+        let o = self.frames.prog_origin();
         let mut m = *w;
         for i in 0..NAXES {
             m[i] += o[i];
@@ -94,7 +94,7 @@ impl Interp {
         };
         let bad = if line == Line::Rapid && !self.linear_rapid() {
             let rates = [Axis::X, Axis::Y, Axis::Z]
-                .map(|a| self.profile.axis(a).map(|d| d.rapid).unwrap_or(0.0));
+                .map(|a| self.cfg.profile.axis(a).map(|d| d.rapid).unwrap_or(0.0));
             crate::stroke::dogleg(from, to, rates)
                 .windows(2)
                 .any(|w| area.segment_enters(&w[0], &w[1]))
@@ -110,8 +110,8 @@ impl Interp {
     /// The G22 area when the check is on (a control without G23 has no
     /// way to switch it off).
     pub(super) fn stroke_check_area(&self) -> Option<crate::stroke::Area> {
-        let area = self.st.stroke_area?;
-        self.st.modal.stroke.means.then_some(area)
+        let area = self.frames.stroke_area?;
+        self.modal.stroke.means.then_some(area)
     }
 
     /// The alarm of a move that would enter (or leave) the area.
@@ -134,38 +134,33 @@ impl Interp {
 
     /// The travel limits of the machine axes at machine point `m`.
     fn check_travel(&self, m: &Pos, at: u32) -> R<()> {
-        for ax in Axis::ALL {
-            if let Some((min, max)) = self.travel[ax as usize] {
-                let v = m[ax as usize];
-                if v < min - 1e-9 || v > max + 1e-9 {
-                    let side = if v > max { '+' } else { '-' };
-                    return Err(self.alarm(
-                        AlarmKind::Overtravel,
-                        at,
-                        format!(
-                            "overtravel {side}{}: machine {} = {:.3} outside [{}, {}]",
-                            ax.name().to_uppercase(),
-                            ax.name().to_uppercase(),
-                            v,
-                            min,
-                            max
-                        ),
-                    ));
-                }
-            }
-        }
-        Ok(())
+        let Some((ax, v, (min, max))) = self.cfg.outside_travel(m) else {
+            return Ok(());
+        };
+        let side = if v > max { '+' } else { '-' };
+        Err(self.alarm(
+            AlarmKind::Overtravel,
+            at,
+            format!(
+                "overtravel {side}{}: machine {} = {:.3} outside [{}, {}]",
+                ax.name().to_uppercase(),
+                ax.name().to_uppercase(),
+                v,
+                min,
+                max
+            ),
+        ))
     }
 
     /// Travel and stroke for the straight move from the position to `mto`.
     fn check_line(&self, mto: &Pos, line: Line, at: u32) -> R<()> {
         self.check_travel(mto, at)?;
-        self.check_stroke(&self.st.mover.pos, mto, line, at)
+        self.check_stroke(&self.frames.mover.pos, mto, line, at)
     }
 
     /// Takes the position `mto` and emits `cmd` (already checked).
     fn commit(&mut self, mto: Pos, cmd: Canon) {
-        self.st.mover.pos = mto;
+        self.frames.mover.pos = mto;
         self.emit(cmd);
     }
 
@@ -209,7 +204,7 @@ impl Interp {
     /// checked either way.
     pub(super) fn rapid_machine(&mut self, mto: Pos, at: u32) -> R<()> {
         self.check_line(&mto, Line::Rapid, at)?;
-        if mto != self.st.mover.pos {
+        if mto != self.frames.mover.pos {
             let m = self.motion_to(mto);
             let linear = self.linear_rapid();
             self.commit(mto, Canon::Rapid { m, linear });
@@ -232,7 +227,7 @@ impl Interp {
     pub(super) fn linear_only(&mut self, tw: Pos) -> R<()> {
         let at = self.motion_at();
         let mto = self.to_machine(&tw);
-        if mto == self.st.mover.pos {
+        if mto == self.frames.mover.pos {
             return Ok(());
         }
         self.check_line(&mto, Line::Straight, at)?;
@@ -257,7 +252,7 @@ impl Interp {
     /// committed, so a path that reaches the forbidden area or a travel
     /// limit alarms before the block moves.
     pub(super) fn chords(&mut self, points: &[Pos], feed: Feed, at: u32) -> R<()> {
-        let mut from = self.st.mover.pos;
+        let mut from = self.frames.mover.pos;
         let mut mtos = Vec::with_capacity(points.len());
         for p in points {
             let mto = self.to_machine(p);
@@ -288,7 +283,7 @@ impl Interp {
         feed: Feed,
         at: u32,
     ) -> R<()> {
-        let plane = self.st.modal.plane.means;
+        let plane = self.modal.plane.means;
         let (a1, a2, _) = plane.axes();
         let (cur, tw, center, ccw) = self.transform_arc(start, tw, center, ccw, at)?;
         let s = (cur[a1], cur[a2]);
@@ -309,7 +304,7 @@ impl Interp {
         if let Some(area) = self.stroke_check_area() {
             let sw = arc::sweep(s, e, center, ccw);
             let pts = crate::stroke::arc_points(
-                &self.st.mover.pos,
+                &self.frames.mover.pos,
                 &mto,
                 (mcenter[a1], mcenter[a2]),
                 (a1, a2),
@@ -344,7 +339,7 @@ impl Interp {
     /// position the next block starts from; nothing is emitted (the stage
     /// commits the move's pieces later, checked).
     pub(super) fn place_at(&mut self, tw: &Pos) {
-        self.st.mover.pos = self.to_machine(tw);
+        self.frames.mover.pos = self.to_machine(tw);
     }
 
     /// Sets the position to machine point `m` without a move (a stage's
@@ -352,7 +347,7 @@ impl Interp {
     /// stage has committed or captured its pieces); returns the position
     /// before.
     pub(super) fn place_machine(&mut self, m: Pos) -> Pos {
-        std::mem::replace(&mut self.st.mover.pos, m)
+        std::mem::replace(&mut self.frames.mover.pos, m)
     }
 
     /// The events held behind a compensated move, released at its corner:
@@ -360,8 +355,8 @@ impl Interp {
     /// corner's plane point `corner` (machine coordinates); each is checked
     /// from where the one before ends, and the position is the last one's.
     pub(super) fn release_held(&mut self, events: &mut Vec<Event>, corner: &Pos) -> R<()> {
-        let (a1, a2, _) = self.st.modal.plane.means.axes();
-        let mut from = self.st.mover.pos;
+        let (a1, a2, _) = self.modal.plane.means.axes();
+        let mut from = self.frames.mover.pos;
         for ev in events.iter_mut() {
             let line = match ev.cmd {
                 Canon::Rapid { .. } => Line::Rapid,
@@ -379,7 +374,7 @@ impl Interp {
             }
         }
         if let Some(last) = events.iter().rev().find_map(|e| e.motion()) {
-            self.st.mover.pos = last.mto;
+            self.frames.mover.pos = last.mto;
         }
         self.queue.extend(events.drain(..));
         Ok(())
@@ -411,7 +406,7 @@ mod tests {
         );
         assert!(plain.alarm.is_none(), "{text}: {:?}", plain.alarm);
         let mut it = Interp::new(Profile::builtin(machine).unwrap(), Settings::default());
-        it.st.stroke_area = Some(Area {
+        it.frames.stroke_area = Some(Area {
             lo: [x.0, -INF, z.0],
             hi: [x.1, INF, z.1],
             outside: false,
@@ -479,7 +474,7 @@ mod tests {
         let o = it.offsets_mut().lathe_mut(1).unwrap();
         o.r = 0.8;
         o.tip = 3;
-        it.st.stroke_area = Some(Area {
+        it.frames.stroke_area = Some(Area {
             lo: [15.0, -INF, -559.0],
             hi: [25.0, INF, -549.0],
             outside: false,
@@ -514,7 +509,7 @@ mod tests {
         let mut s = Settings::default();
         s.probe[0] = Some(5.0);
         let mut it = Interp::new(Profile::builtin("hurco-lathe").unwrap(), s);
-        it.st.stroke_area = Some(Area {
+        it.frames.stroke_area = Some(Area {
             lo: [70.0, -INF, -280.0],
             hi: [120.0, INF, -265.0],
             outside: false,

@@ -19,7 +19,7 @@ use super::*;
 impl Interp {
     /// G10 on the HX (called from `transform_codes`) and the lathes.
     pub(super) fn g10(&mut self, at: u32) -> R<()> {
-        if self.profile.kind == MachineKind::Lathe {
+        if self.cfg.profile.kind == MachineKind::Lathe {
             return self.g10_lathe(at);
         }
         let Some(l) = self.words.get(b'L') else {
@@ -64,21 +64,21 @@ impl Interp {
         )?;
         for ax in Axis::ALL {
             let i = ax as usize;
-            if !self.has_axis[i] {
+            if !self.cfg.has_axis[i] {
                 continue;
             }
             // Absolute words replace (G91 on the HX adds); the lathe's
             // U/W add.
             let (w, add) = match (self.words.get(ax_letter(ax)), self.uvw(ax)) {
-                (Some(w), _) => (w, !self.st.modal.absolute()),
+                (Some(w), _) => (w, !self.modal.absolute()),
                 (None, Some(l)) => (self.words.get(l).expect("present"), true),
                 (None, None) => continue,
             };
             let v = self.axis_value(ax, w);
             let slot = if p == 0 {
-                &mut self.st.shift[i]
+                &mut self.frames.shift[i]
             } else {
-                match self.st.work.g5x_mut(p - 1) {
+                match self.frames.work.g5x_mut(p - 1) {
                     Some(w) => &mut w[i],
                     None => continue,
                 }
@@ -106,7 +106,7 @@ impl Interp {
         };
         self.check_range(b'R', r)?;
         let v = self.linear(r);
-        let absolute = self.st.modal.absolute();
+        let absolute = self.modal.absolute();
         let e = if page == 'H' {
             self.offsets.h_mut(p)
         } else {

@@ -92,7 +92,7 @@ impl Interp {
         let Some(mut b) = self.classify_block()? else {
             return Ok(true);
         };
-        for &p in self.dialect.order {
+        for &p in self.cfg.dialect.order {
             if let Flow::Done(r) = self.run_phase(p, &mut b)? {
                 return Ok(r);
             }
@@ -146,7 +146,10 @@ impl Interp {
         let transfer = self.classify_m()?;
         // A held ,C/,R move, or one in this block, cannot be followed by a
         // block that moves otherwise or leaves the program.
-        if self.corner.is_some() | self.words.comma_c.is_some() | self.words.comma_r.is_some() {
+        if self.common.corner.is_some()
+            | self.words.comma_c.is_some()
+            | self.words.comma_r.is_some()
+        {
             self.corner_gate(&one_shot[..n_one], transfer.map(|t| t.0))?;
         }
         Ok(Some(BlockRun {
@@ -157,7 +160,7 @@ impl Interp {
             kinds,
             hurco_macro: None,
             was_cycle: false,
-            plane_before: self.st.modal.plane.means,
+            plane_before: self.modal.plane.means,
             cycle: false,
             hurco_cycle: false,
             xdata: false,
@@ -176,7 +179,7 @@ impl Interp {
             Phase::JobSyncM => self.run_m(|m| m.1 == MWhen::JobSync)?,
             Phase::ModalG => self.apply_modal_codes(b),
             Phase::HxCycleMode => {
-                let plane_changed = self.st.modal.plane.means != b.plane_before;
+                let plane_changed = self.modal.plane.means != b.plane_before;
                 b.cycle = self.cycle_mode(b.was_cycle, plane_changed, b.motion, b.kinds)?;
             }
             Phase::HurcoCycleMode => b.hurco_cycle = self.hurco_cycle_mode(b.motion)?,
@@ -189,7 +192,7 @@ impl Interp {
                 // G112/G113/G107 in the block, or a mode in force to check
                 // the block against.
                 let rotary = b.kinds.any(&[Kind::PolarInterp, Kind::Cylindrical])
-                    || self.st.rot != polar_interp::RotInterp::Off;
+                    || self.frames.rot != polar_interp::RotInterp::Off;
                 let rdata = rotary && self.rotary_codes_and_event()?;
                 b.xdata = self.transform_codes(b.one_shot(), b.kinds)? || rdata;
             }
@@ -253,7 +256,7 @@ impl Interp {
                 self.run_m(|m| matches!(m.2, MAction::Stop | MAction::OptionalStop | MAction::End))?
             }
             Phase::CompEnd => {
-                if self.comp.is_some() {
+                if self.common.comp.is_some() {
                     self.comp_block_end()?;
                 }
             }
@@ -269,8 +272,8 @@ impl Interp {
 
     /// The modal G codes (every group but 0 and 1) and the motion mode.
     fn apply_modal_codes(&mut self, b: &mut BlockRun) {
-        b.was_cycle = self.st.modal.cycle.means.is_some();
-        b.plane_before = self.st.modal.plane.means;
+        b.was_cycle = self.modal.cycle.means.is_some();
+        b.plane_before = self.modal.plane.means;
         for i in 0..self.words.ng {
             let (c, _) = self.words.g[i];
             let Some(g) = self.gcode(c) else { continue };
@@ -283,9 +286,9 @@ impl Interp {
         }
         if let Some((c, _)) = b.motion {
             // The same code again (a G01 on every line) changes nothing.
-            if c != self.st.modal.motion.code10 {
+            if c != self.modal.motion.code10 {
                 if let Some(g) = self.gcode(c) {
-                    self.st.modal.set(g);
+                    self.modal.set(g);
                 }
             }
         }
@@ -311,7 +314,7 @@ impl Interp {
             Some((_, at)) => self.m99(at)?,
             None => {
                 let moved = b.os.refret.is_some() || !b.no_motion();
-                if !self.calls.modal.is_empty() && moved && self.has_axis_word() {
+                if !self.prog.calls.modal.is_empty() && moved && self.has_axis_word() {
                     self.modal_call(self.motion_at())?;
                 }
             }
@@ -326,7 +329,7 @@ impl Interp {
         let comp_words = self.words.has(b'D')
             || kinds.any(&[Kind::Plane, Kind::CutterComp])
             || one_shot.iter().any(|g| self.means_of(g.0) == g39);
-        if comp_words || (self.comp.is_some() && (!one_shot.is_empty() || cycle)) {
+        if comp_words || (self.common.comp.is_some() && (!one_shot.is_empty() || cycle)) {
             // The one-shots that move otherwise than by G00-G03.
             let special = cycle
                 || one_shot.iter().any(|g| {
@@ -357,7 +360,7 @@ impl Interp {
                 // Fanuc programs ask for rigid tapping with M29 before G84;
                 // the HX has G84.2/G84.3 instead (000 §12.3.5-12.3.6).
                 let rigid = Means::Cycle(Some(HoleCycle::RigidTap));
-                let hint = if m == 29 && self.dialect.gcodes.iter().any(|g| g.means == rigid) {
+                let hint = if m == 29 && self.cfg.dialect.gcodes.iter().any(|g| g.means == rigid) {
                     ": rigid tapping on this control is G84.2 (G84.3 left-hand), without M29"
                 } else {
                     ""
@@ -399,7 +402,7 @@ impl Interp {
                 ExactStop => os.g09 = true,
                 SingleDirection => os.g60 = Some(at),
                 MachineCoords => {
-                    if self.dialect.caps.g53_checks {
+                    if self.cfg.dialect.caps.g53_checks {
                         self.g53_checks(at)?;
                     }
                     os.g53 = true
@@ -415,7 +418,7 @@ impl Interp {
                     os.setting = true;
                     self.coordinate_setting(at)?
                 }
-                CancelWorkShift => self.st.shift = [0.0; NAXES],
+                CancelWorkShift => self.frames.shift = [0.0; NAXES],
                 MacroCall | FrameData | LocalCoords | CompCorner | Probe | ThreadCycle => {}
             }
         }

@@ -54,10 +54,10 @@ impl Interp {
     /// it). Returns true when the block's axis words were G107's radius
     /// (the block then makes no move).
     pub(super) fn rotary_interp_codes(&mut self) -> R<bool> {
-        if !self.dialect.caps.rotary_interp {
+        if !self.cfg.dialect.caps.rotary_interp {
             return Ok(false);
         }
-        let was = self.st.rot;
+        let was = self.frames.rot;
         let mut data = false;
         for i in 0..self.words.ng {
             let (c, at) = self.words.g[i];
@@ -70,7 +70,7 @@ impl Interp {
                 _ => {}
             }
         }
-        if self.st.rot == RotInterp::Off || was == RotInterp::Off {
+        if self.frames.rot == RotInterp::Off || was == RotInterp::Off {
             return Ok(data);
         }
         let (kind, name, cancel) = self.mode_names();
@@ -89,7 +89,7 @@ impl Interp {
 
     /// The alarm kind, name and cancel code of the mode in force.
     pub(super) fn mode_names(&self) -> (AlarmKind, &'static str, &'static str) {
-        match self.st.rot {
+        match self.frames.rot {
             RotInterp::Cylinder { .. } => (
                 AlarmKind::CylindricalInterp,
                 "cylindrical interpolation",
@@ -106,11 +106,11 @@ impl Interp {
     /// G16, scaling or rotation will be in force after this block.
     pub(super) fn transform_after_block(&self) -> Option<&'static str> {
         let g = |c| self.words.has_g(c);
-        if (self.st.polar && !g(150)) || g(160) {
+        if (self.frames.polar && !g(150)) || g(160) {
             Some("polar coordinate command (G15 first)")
-        } else if (self.st.xf.scale.is_some() && !g(500)) || g(510) {
+        } else if (self.frames.xf.scale.is_some() && !g(500)) || g(510) {
             Some("scaling (G50 first)")
-        } else if (self.st.xf.rot.is_some() && !g(690)) || g(680) {
+        } else if (self.frames.xf.rot.is_some() && !g(690)) || g(680) {
             Some("coordinate rotation (G69 first)")
         } else {
             None
@@ -130,19 +130,19 @@ impl Interp {
             );
         }
         if !on {
-            if matches!(self.st.rot, RotInterp::Polar { .. }) {
-                self.st.rot = RotInterp::Off;
+            if matches!(self.frames.rot, RotInterp::Polar { .. }) {
+                self.frames.rot = RotInterp::Off;
             }
             return Ok(());
         }
-        match self.st.rot {
+        match self.frames.rot {
             RotInterp::Polar { .. } => return Ok(()),
             RotInterp::Cylinder { .. } => {
                 return alarm(self, "G112 in cylindrical interpolation (G107 C0 first)")
             }
             RotInterp::Off => {}
         }
-        if !self.has_axis[X] || !self.has_axis[C] {
+        if !self.cfg.has_axis[X] || !self.cfg.has_axis[C] {
             return alarm(
                 self,
                 "polar coordinate interpolation needs the linear axis X and the rotary axis C",
@@ -151,7 +151,7 @@ impl Interp {
         if let Some(what) = self.transform_after_block() {
             return Err(self.alarm(AlarmKind::PolarInterp, at, format!("G112 in {what}")));
         }
-        self.st.rot = RotInterp::Polar {
+        self.frames.rot = RotInterp::Polar {
             c0: self.prog_pos()[C],
         };
         Ok(())
@@ -160,14 +160,15 @@ impl Interp {
     /// The chord tolerance of polar and cylindrical interpolation (mm in
     /// the virtual plane): the profile's `interp_tolerance_mm`.
     pub(super) fn chord_tol(&self) -> f64 {
-        self.profile
+        self.cfg
+            .profile
             .param("interp_tolerance_mm", CHORD_TOL)
             .max(1e-6)
     }
 
     /// A block's motion in G112 or G107.
     pub(super) fn rotary_interp_motion(&mut self) -> R<()> {
-        match self.st.rot {
+        match self.frames.rot {
             RotInterp::Polar { c0 } => self.polar_motion(c0),
             RotInterp::Cylinder { r } => self.cylinder_motion(r),
             RotInterp::Off => Ok(()),
@@ -178,7 +179,7 @@ impl Interp {
     /// absolute or incremental); the other axes move linearly along.
     /// G00 alarms (Fanuc).
     fn polar_motion(&mut self, c0: f64) -> R<()> {
-        let mode = self.st.modal.motion.means;
+        let mode = self.modal.motion.means;
         let (tw, any) = self.target()?;
         let at = self.motion_at();
         if mode == MotionMode::Rapid {
@@ -199,7 +200,7 @@ impl Interp {
                 Some(w) => {
                     me.check_range(l, w)?;
                     let v = me.linear(w);
-                    if me.st.modal.absolute() {
+                    if me.modal.absolute() {
                         v
                     } else {
                         from + v
@@ -257,7 +258,7 @@ impl Interp {
                 // R with the end at the start: only the other axes move.
                 return Ok(Some(Path::Line { s, e: s }));
             }
-            arc::center_from_radius(s, e, rv, ccw, self.arc_tol).map_err(|_| {
+            arc::center_from_radius(s, e, rv, ccw, self.cfg.arc_tol).map_err(|_| {
                 self.alarm(
                     AlarmKind::ArcRadius,
                     r.at,
@@ -288,7 +289,7 @@ impl Interp {
             .or_else(|| self.words.get(b'R'))
             .map(|w| w.at)
             .unwrap_or(at);
-        let r = match arc::check_end(s, e, center, self.arc_tol) {
+        let r = match arc::check_end(s, e, center, self.cfg.arc_tol) {
             Ok(r) => r,
             Err(ArcError::EndNotOnCircle { r_start, r_end }) => {
                 return Err(self.alarm(

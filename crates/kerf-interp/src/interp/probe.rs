@@ -38,7 +38,7 @@ impl Interp {
     /// A value in program units from mm (X in the block's G07/G08 mode).
     fn probe_units(&self, ax: Axis, mm: f64) -> f64 {
         let mut v = mm / self.unit();
-        if ax == Axis::X && self.st.modal.diameter.means {
+        if ax == Axis::X && self.modal.diameter.means {
             v *= 2.0;
         }
         v
@@ -61,7 +61,7 @@ impl Interp {
         let probe_no = p
             .get(b'P')
             .map(|w| w.v)
-            .unwrap_or_else(|| self.profile.param("probe_number", -1.0));
+            .unwrap_or_else(|| self.cfg.profile.param("probe_number", -1.0));
         let nums = self.probe_numbers(&p, cycle, ax, at)?;
         // Direction from the start towards the expected contact.
         let start = self.prog_pos();
@@ -81,7 +81,7 @@ impl Interp {
         );
         if cycle != 0
             && self.hurco.datum[slot].is_none()
-            && self.profile.param("probe_require_datum", 1.0) != 0.0
+            && self.cfg.profile.param("probe_require_datum", 1.0) != 0.0
         {
             return Err(self.alarm(
                 AlarmKind::ProbeCycle,
@@ -105,7 +105,7 @@ impl Interp {
             self.probe_path(i, dir, levels, surface, (v, f, tol), at)?;
         let Some(c) = contact else {
             let msg = fault.unwrap_or_default();
-            self.after_block =
+            self.common.after_block =
                 Some(self.alarm(AlarmKind::NoContact, at, format!("G38 S{cycle}: {msg}")));
             return Ok(());
         };
@@ -171,7 +171,7 @@ impl Interp {
                 }
                 return Ok(self.linear(w));
             }
-            match self.profile.params.get(key) {
+            match self.cfg.profile.params.get(key) {
                 Some(&v) if v > 0.0 => Ok(v),
                 _ => Err(self.alarm(
                     AlarmKind::MissingArgument,

@@ -18,7 +18,7 @@ impl Interp {
     /// Whether the profile reads the one-block G71-G76 of the Fanuc 10/11
     /// tape format (`tape_format_10_11 = 1`, on for the PUMA).
     pub(super) fn tape_format_10_11(&self) -> bool {
-        self.profile.param("tape_format_10_11", 0.0) != 0.0
+        self.cfg.profile.param("tape_format_10_11", 0.0) != 0.0
     }
 
     /// A, D, E, L on the PUMA: allowed only where a code of the block
@@ -71,7 +71,7 @@ impl Interp {
                     )
                 ),
                 None => matches!(
-                    self.st.modal.motion.means,
+                    self.modal.motion.means,
                     MotionMode::ThreadLathe | MotionMode::ThreadCycle
                 ),
             };

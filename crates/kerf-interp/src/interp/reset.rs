@@ -39,58 +39,49 @@ impl Interp {
     /// Reset emits no event: the runtime that presses RESET knows the
     /// spindle and coolant are off.
     pub fn reset(&mut self) {
-        self.cache.give_back(&mut self.raw, &mut self.block);
+        self.prog
+            .cache
+            .give_back(&mut self.prog.raw, &mut self.prog.block);
         self.reset_calls();
-        self.loops.clear();
-        self.hurco_loops.clear();
-        if self.profile.param("clear_locals_on_reset", 1.0) != 0.0 {
+        self.prog.loops.clear();
+        self.prog.hurco_loops.clear();
+        if self.cfg.profile.param("clear_locals_on_reset", 1.0) != 0.0 {
             self.vars.clear_locals();
         }
-        if self.profile.param("clear_commons_on_reset", 1.0) != 0.0 {
+        if self.cfg.profile.param("clear_commons_on_reset", 1.0) != 0.0 {
             self.vars.clear_commons();
         }
         self.sys.c3003 = 0.0;
         self.sys.c3004 = 0.0;
-        let fresh = Self::power_on_state(&self.profile, self.dialect);
-        let old = std::mem::replace(&mut self.st, fresh);
-        let st = &mut self.st;
-        st.mover = old.mover;
-        st.work.keep_entries_of(&old.work);
-        st.shift = old.shift;
-        st.stroke_area = old.stroke_area;
-        st.g28_mid = old.g28_mid;
-        st.modal.units = old.modal.units;
-        st.feed = old.feed;
-        st.s = old.s;
-        st.s_clamp = old.s_clamp;
-        st.tool = old.tool;
-        st.next_tool = old.next_tool;
-        st.offset = old.offset;
+        let units = self.modal.units;
+        self.modal = modal::Modal::at_power_on(&self.cfg.profile, self.cfg.dialect);
+        self.modal.units = units;
+        let keep_tlo = self.cfg.dialect.caps.reset_keeps_tool_offset;
+        let fresh = frames::Frames::power_on(&self.cfg.profile);
+        self.frames = self.frames.after_reset(fresh, keep_tlo);
+        self.tool.reset();
         // Canned-cycle data goes with the cycle mode (G80 is the power-on
         // state); a move held for its ,C/,R is dropped.
-        self.cyc.clear();
-        if self.dialect.caps.reset_keeps_tool_offset {
+        self.hx.cyc.clear();
+        if keep_tlo {
             // The T offset stays active with its number; drill data and an
             // offset change waiting for its move go.
-            st.tlo = old.tlo;
             self.hurco.drill = Default::default();
             self.hurco.pending = None;
         }
-        self.corner = None;
-        self.comp = None;
+        self.common.drop_held();
         // Lathe single-cycle data and M76 go with the modes (the G70-G76
         // first-block values are parameters and stay).
-        self.lathe.single = None;
-        self.lathe.chamfer_on = false;
-        self.lathe.ddi_base = None;
+        self.puma.single = None;
+        self.puma.chamfer_on = false;
+        self.puma.ddi_base = None;
         self.queue.clear();
-        self.after_block = None;
+        self.common.after_block = None;
         self.finished = false;
-        self.jumps = 0;
-        self.repeated = 0;
-        let start = self.program_start;
+        self.guard.restart();
+        let start = self.prog.program_start;
         // Lazy: an error would show at the next read.
-        if let Some(src) = self.src.as_mut() {
+        if let Some(src) = self.prog.src.as_mut() {
             let _ = src.seek(start);
         }
     }

@@ -13,12 +13,12 @@ impl Interp {
     /// G113, `Cylinder` after `G107 C<r>` with r and the plane selected,
     /// `Off` otherwise.
     pub fn rotary_mode(&self) -> RotaryMode {
-        match self.st.rot {
+        match self.frames.rot {
             RotInterp::Off => RotaryMode::Off,
             RotInterp::Polar { .. } => RotaryMode::Polar,
             RotInterp::Cylinder { r } => RotaryMode::Cylinder {
                 radius: r,
-                plane: self.st.modal.plane.means,
+                plane: self.modal.plane.means,
             },
         }
     }
@@ -26,9 +26,9 @@ impl Interp {
     /// Runs the block's G112 / G113 / G107 (see `rotary_interp_codes`) and
     /// emits `ModeChange::Rotary` when they changed the mode.
     pub(super) fn rotary_codes_and_event(&mut self) -> R<bool> {
-        let was = self.st.rot;
+        let was = self.frames.rot;
         let data = self.rotary_interp_codes()?;
-        if self.st.rot != was {
+        if self.frames.rot != was {
             self.emit(Canon::Mode(ModeChange::Rotary(self.rotary_mode())));
         }
         Ok(data)

@@ -44,7 +44,7 @@ impl Interp {
     /// Unlike [`Interp::step`], it returns after each block, also one that
     /// made no command (a modal code alone, a macro statement).
     pub fn step_block(&mut self) -> BlockStep {
-        if let Some(a) = self.after_block.take() {
+        if let Some(a) = self.common.after_block.take() {
             self.finished = true;
             return BlockStep::Alarm(a);
         }
@@ -60,8 +60,8 @@ impl Interp {
             Err(a) => {
                 self.finished = true;
                 self.queue.clear();
-                self.corner = None;
-                self.comp = None;
+                self.common.corner = None;
+                self.common.comp = None;
                 BlockStep::Alarm(a)
             }
         }
@@ -76,14 +76,15 @@ impl Interp {
     /// GOTO, WHILE, DO, END): single block stops after it only as the
     /// control's parameter says.
     pub fn last_block_is_statement(&self) -> bool {
-        self.block.stmt.is_some()
+        self.prog.block.stmt.is_some()
     }
 
     /// Whether the last block read carried M code `m` (e.g. the Hurco M01
     /// with the optional stop off, which still empties the look-ahead,
     /// 002 Table 15).
     pub fn last_block_has_m(&self, m: u32) -> bool {
-        self.block
+        self.prog
+            .block
             .words
             .iter()
             .any(|w| w.addr == Addr::L(b'M') && matches!(w.val, Val::Num(n) if n.value == m as f64))
@@ -92,18 +93,18 @@ impl Interp {
     /// Whether a move is held for the next block (cutter / nose radius
     /// compensation, `,C`/`,R`): the block's motion is not out yet.
     pub fn holds_motion(&self) -> bool {
-        self.corner.is_some() || self.comp.is_some()
+        self.common.corner.is_some() || self.common.comp.is_some()
     }
 
     /// Where the last block read is: its file id and line, and its depth
     /// in the call stack (0 = the main program).
     pub fn block_at(&self) -> (SrcRef, usize) {
-        (self.cur, self.calls.stack.len())
+        (self.prog.cur, self.prog.calls.stack.len())
     }
 
     /// The sequence number (N) of the last block read, if it had one.
     pub fn block_n(&self) -> Option<u32> {
-        self.block.n
+        self.prog.block.n
     }
 
     /// Sets the operator-panel switches; they act from the next block read
@@ -126,12 +127,11 @@ impl Interp {
     /// source references.
     pub fn load_text(&mut self, name: &str, text: &str) {
         self.queue.clear();
-        self.after_block = None;
+        self.common.after_block = None;
         self.finished = false;
-        self.tape_started = false;
-        self.jumps = 0;
-        self.repeated = 0;
-        self.high_water = 0;
+        self.prog.tape_started = false;
+        self.guard.restart();
+        self.guard.high_water = 0;
         self.load_main(
             name,
             Box::new(std::io::Cursor::new(text.as_bytes().to_vec())),
@@ -141,8 +141,12 @@ impl Interp {
     /// Where the next block will be read: file id, line, and the call
     /// depth (0 = the main program). None before a program is loaded.
     pub fn next_block_at(&self) -> Option<(u32, u32, usize)> {
-        let src = self.src.as_ref()?;
-        Some((self.file_id, src.tell().line, self.calls.stack.len()))
+        let src = self.prog.src.as_ref()?;
+        Some((
+            self.prog.file_id,
+            src.tell().line,
+            self.prog.calls.stack.len(),
+        ))
     }
 
     /// Sets the machine position after the axes were moved by hand (jog,
@@ -153,7 +157,7 @@ impl Interp {
 
     /// The work offset of G54+`idx` (machine coordinates of its zero).
     pub fn work_offset(&self, idx: usize) -> Option<Pos> {
-        (idx < 6).then(|| self.st.work.get(work_offsets::WorkId::G5x(idx)))
+        (idx < 6).then(|| self.frames.work.get(work_offsets::WorkId::G5x(idx)))
     }
 
     /// Writes common (#100-#199) or retained macro variable `#n` from the
@@ -173,7 +177,7 @@ impl Interp {
     /// parameters read at reset (the PI 144-150 reset states) act from
     /// the next RESET.
     pub fn set_param(&mut self, name: &str, v: f64) {
-        self.profile.params.insert(name.to_string(), v);
+        self.cfg.profile.params.insert(name.to_string(), v);
     }
 
     /// Checks that every line of `text` parses as a block of this
@@ -182,7 +186,7 @@ impl Interp {
     pub fn check_syntax(&self, text: &str) -> Result<(), Alarm> {
         let mut block = Block::default();
         for (i, line) in text.lines().enumerate() {
-            if let Err(e) = parse_block(line.as_bytes(), &self.lex, &mut block) {
+            if let Err(e) = parse_block(line.as_bytes(), &self.cfg.lex, &mut block) {
                 return Err(Alarm::new(
                     "SYNTAX",
                     e.kind.message(),
@@ -201,6 +205,7 @@ impl Interp {
     /// control's modal page prints them (`G01`, `G17`, `G54`, `G84.2`).
     pub fn modal_codes(&self) -> Vec<String> {
         let mut groups: Vec<u8> = self
+            .cfg
             .dialect
             .gcodes
             .iter()
@@ -212,8 +217,9 @@ impl Interp {
         groups
             .into_iter()
             .filter_map(|g| {
-                let c = self.st.modal.code_of_group(self.dialect, g);
-                self.dialect
+                let c = self.modal.code_of_group(self.cfg.dialect, g);
+                self.cfg
+                    .dialect
                     .gcodes
                     .iter()
                     .any(|d| d.group == g && d.code10 == c)
@@ -224,18 +230,18 @@ impl Interp {
 
     /// The programmed feed (mm/min, or mm/rev in G95/G99), if an F was given.
     pub fn programmed_feed(&self) -> Option<f64> {
-        self.st.feed
+        self.tool.feed
     }
 
     /// The spindle as commanded: direction and S (rpm, or the surface
     /// speed in G96).
     pub fn spindle_state(&self) -> (SpindleDir, f64) {
-        (self.st.spindle, self.st.s)
+        (self.tool.spindle, self.tool.s)
     }
 
     /// The tool in the spindle / active turret station.
     pub fn tool(&self) -> u32 {
-        self.st.tool
+        self.tool.number
     }
 
     /// The whole modal state in comparable form.
@@ -247,11 +253,11 @@ impl Interp {
             }
         }
         InterpSnapshot {
-            state: format!("{:?}", self.st),
-            cycle: format!("{:?}", self.cyc),
-            lathe: format!("{:?}", (self.lathe.single, self.lathe.chamfer_on)),
+            state: format!("{:?}", (&self.modal, &self.frames, &self.tool)),
+            cycle: format!("{:?}", self.hx.cyc),
+            lathe: format!("{:?}", (self.puma.single, self.puma.chamfer_on)),
             vars,
-            call_depth: self.calls.stack.len(),
+            call_depth: self.prog.calls.stack.len(),
         }
     }
 }

@@ -70,7 +70,7 @@ impl Interp {
         match self.contact(n, &from, &tw) {
             Some(p) => {
                 self.move_line(false, p, at)?;
-                self.st.skip_pos = Some(p);
+                self.frames.skip_pos = Some(p);
                 Ok(())
             }
             None => Err(self.alarm(
@@ -108,7 +108,7 @@ impl Interp {
                 format!("G{} without the measurement position Z", fmt_code(c)),
             ));
         };
-        if self.st.h == 0 {
+        if self.frames.h == 0 {
             return Err(self.alarm(
                 AlarmKind::MissingArgument,
                 at,
@@ -119,9 +119,9 @@ impl Interp {
         let zi = Axis::Z as usize;
         let meas = tw[zi];
         let from = self.prog_pos();
-        let r = self.profile.param("PI 141", 10.0);
-        let e = self.profile.param("PI 142", 1.0);
-        let feed = self.profile.param("PI 143", 100.0);
+        let r = self.cfg.profile.param("PI 141", 10.0);
+        let e = self.cfg.profile.param("PI 142", 1.0);
+        let feed = self.cfg.profile.param("PI 143", 100.0);
         let dir = if meas >= from[zi] { 1.0 } else { -1.0 };
         // Rapid to r before the measurement position (when further away).
         let mut p = from;
@@ -157,8 +157,8 @@ impl Interp {
             ));
         }
         self.line_to(hit, Speed::Feed(Feed::PerMin(feed)), at)?;
-        self.st.skip_pos = Some(hit);
-        let h = self.st.h as usize;
+        self.frames.skip_pos = Some(hit);
+        let h = self.frames.h as usize;
         let delta = hit[zi] - meas;
         if let Some(e) = self.offsets.h_mut(h) {
             e.geom += delta;

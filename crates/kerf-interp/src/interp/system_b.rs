@@ -20,13 +20,13 @@ use crate::dialect::system_b::{to_a, ABS, INC};
 impl Interp {
     /// Whether the PUMA reads G-code system B (`gcode_system_b = 1`).
     pub(super) fn system_b(&self) -> bool {
-        self.lathe.system_b
+        self.puma.system_b
     }
 
     /// A G word's code as executed: system B translated, the internal
     /// G90/G91 codes refused in system A.
     pub(super) fn g_of_system(&self, c10: u16, at: u32) -> R<u16> {
-        if !self.dialect.caps.gcode_system_b {
+        if !self.cfg.dialect.caps.gcode_system_b {
             return Ok(c10);
         }
         let bad = |me: &Self, why: &str| {
@@ -62,7 +62,7 @@ impl Interp {
             .find(|g| g.0 == ABS || g.0 == INC)
         {
             Some(g) => g.0 == INC,
-            None => !self.st.modal.absolute(),
+            None => !self.modal.absolute(),
         };
         if !inc || self.macro_args() {
             return Ok(());

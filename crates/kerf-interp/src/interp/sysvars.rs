@@ -7,8 +7,6 @@
 
 use std::time::Instant;
 
-use kerf_canon::NAXES;
-
 use super::work_offsets::WorkId;
 use super::Interp;
 use crate::alarms::AlarmKind;
@@ -186,7 +184,7 @@ impl Interp {
 
     fn sys_decode(&self, i: usize) -> Option<Sys> {
         use Sys::*;
-        Some(if self.dialect.caps.hx_variables {
+        Some(if self.cfg.dialect.caps.hx_variables {
             match i {
                 2112..=2239 => D(i - 2111),
                 2240..=2367 => H(i - 2239),
@@ -263,12 +261,6 @@ impl Interp {
         })
     }
 
-    /// The position slot of the control's axis number `k` (0-based:
-    /// X Y Z A on the mill, X Z on a two-axis lathe).
-    fn axis_slot(&self, k: usize) -> Option<usize> {
-        (0..NAXES).filter(|&s| self.has_axis[s]).nth(k)
-    }
-
     /// mm (or degrees) → program units for axis slot `s`; lathe X in
     /// diameter when diameter programming is on.
     fn to_prog_units(&self, s: usize, v: f64) -> f64 {
@@ -276,7 +268,7 @@ impl Interp {
         if s < 3 {
             v /= self.unit();
         }
-        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means {
+        if s == 0 && self.cfg.profile.kind == MachineKind::Lathe && self.modal.diameter.means {
             v *= 2.0;
         }
         v
@@ -287,14 +279,14 @@ impl Interp {
         if s < 3 {
             v *= self.unit();
         }
-        if s == 0 && self.profile.kind == MachineKind::Lathe && self.st.modal.diameter.means {
+        if s == 0 && self.cfg.profile.kind == MachineKind::Lathe && self.modal.diameter.means {
             v /= 2.0;
         }
         v
     }
 
     fn axis_value_of(&self, k: usize, p: &kerf_canon::Pos) -> Option<f64> {
-        self.axis_slot(k).map(|s| self.to_prog_units(s, p[s]))
+        self.cfg.axis_slot(k).map(|s| self.to_prog_units(s, p[s]))
     }
 
     /// Reads system variable `#i`.
@@ -310,29 +302,30 @@ impl Interp {
         Ok(Some(match s {
             D(n) => self.offsets.d_entry(n).map_or(0.0, |e| e.geom) / u,
             H(n) => self.offsets.h_entry(n).map_or(0.0, |e| e.geom) / u,
-            Shift(k) => return Ok(self.axis_value_of(k, &self.st.shift).or(Some(0.0))),
+            Shift(k) => return Ok(self.axis_value_of(k, &self.frames.shift).or(Some(0.0))),
             Wcs(w, k) => {
-                let o = self.st.work.get(WorkId::G5x(w));
+                let o = self.frames.work.get(WorkId::G5x(w));
                 return Ok(self.axis_value_of(k, &o).or(Some(0.0)));
             }
             SingleBlock => self.sys.single_block,
-            Param(n) => self.profile.param(&format!("PI {n}"), 0.0),
-            Tpg => (self.profile.param("tpg", 0.0) != 0.0) as u8 as f64,
-            S => self.st.s,
+            Param(n) => self.cfg.profile.param(&format!("PI {n}"), 0.0),
+            Tpg => (self.cfg.profile.param("tpg", 0.0) != 0.0) as u8 as f64,
+            S => self.tool.s,
             DNum => self.sys.d,
-            HNum => self.st.h as f64,
-            Machine(k) => return Ok(self.axis_value_of(k, &self.st.mover.pos())),
+            HNum => self.frames.h as f64,
+            Machine(k) => return Ok(self.axis_value_of(k, &self.frames.mover.pos())),
             Work(k) => return Ok(self.axis_value_of(k, &self.work_position())),
-            Programmed(k) => return Ok(self.axis_value_of(k, &self.programmed_position())),
+            Programmed(k) => return Ok(self.axis_value_of(k, &self.frames.programmed_position())),
             Skip(k) => {
                 let p = self
-                    .st
+                    .frames
                     .skip_pos
-                    .unwrap_or_else(|| self.programmed_position());
+                    .unwrap_or_else(|| self.frames.programmed_position());
                 return Ok(self.axis_value_of(k, &p));
             }
             Modal(g) => {
-                let c = u8::try_from(g).map_or(0, |g| self.st.modal.code_of_group(self.dialect, g));
+                let c =
+                    u8::try_from(g).map_or(0, |g| self.modal.code_of_group(self.cfg.dialect, g));
                 let c = if self.system_b() {
                     crate::dialect::system_b::to_b(c)
                 } else {
@@ -345,7 +338,7 @@ impl Interp {
             OutBit(w, b) => bit(&self.sys.outputs, w, b),
             OutWord(w, mask) => (self.sys.outputs[w] & mask) as f64,
             RefPoint(n, k) => {
-                let Some(s) = self.axis_slot(k) else {
+                let Some(s) = self.cfg.axis_slot(k) else {
                     return Ok(None);
                 };
                 let ax = kerf_canon::Axis::ALL[s];
@@ -369,15 +362,15 @@ impl Interp {
             C3004 => self.sys.c3004,
             PartsDone => self.sys.parts_done,
             PartsNeeded => self.sys.parts_needed,
-            F => match self.st.feed {
+            F => match self.tool.feed {
                 Some(f) => f / u,
                 None => return Ok(None),
             },
             T => {
-                if self.profile.kind == MachineKind::Lathe {
-                    (self.st.tool * 100 + self.st.offset) as f64
+                if self.cfg.profile.kind == MachineKind::Lathe {
+                    (self.tool.number * 100 + self.tool.offset) as f64
                 } else {
-                    self.st.tool as f64
+                    self.tool.number as f64
                 }
             }
             N => self.sys.last_n,
@@ -429,7 +422,7 @@ impl Interp {
                 }
             }
             Shift(k) | Wcs(_, k) => {
-                let Some(slot) = self.axis_slot(k) else {
+                let Some(slot) = self.cfg.axis_slot(k) else {
                     return fail(
                         AlarmKind::BadVariable,
                         format!("#{i}: this machine has no axis {}", k + 1),
@@ -437,9 +430,9 @@ impl Interp {
                 };
                 let mm = self.prog_units_to_mm(slot, x);
                 match s {
-                    Shift(_) => self.st.shift[slot] = mm,
+                    Shift(_) => self.frames.shift[slot] = mm,
                     Wcs(w, _) => {
-                        if let Some(o) = self.st.work.g5x_mut(w) {
+                        if let Some(o) = self.frames.work.g5x_mut(w) {
                             o[slot] = mm;
                         }
                     }
@@ -448,7 +441,7 @@ impl Interp {
             }
             SingleBlock => self.sys.single_block = flag(x)? as u8 as f64,
             Param(n) => {
-                self.profile.params.insert(format!("PI {n}"), x);
+                self.cfg.profile.params.insert(format!("PI {n}"), x);
             }
             OutBit(w, b) => {
                 if flag(x)? {
@@ -500,5 +493,33 @@ impl Interp {
             }
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The interface inputs come from the settings, the outputs start
+    /// off, and #3003-style counters at 0; the single block switch reads
+    /// as 1.
+    #[test]
+    fn the_system_state_at_the_start_of_a_run() {
+        let s = SysState::new([0b101, 0, 0, 1 << 31], true);
+        assert_eq!(s.inputs, [0b101, 0, 0, 1 << 31]);
+        assert_eq!(s.outputs, [0; 4]);
+        assert_eq!((s.c3003, s.c3004, s.last_n, s.d), (0.0, 0.0, 0.0, 0.0));
+        assert_eq!(s.single_block, 1.0);
+        assert_eq!(SysState::new([0; 4], false).single_block, 0.0);
+        // UI000 and UI002 on, UI001 off; UI331 is word 3's top bit.
+        assert_eq!(
+            (
+                bit(&s.inputs, 0, 0),
+                bit(&s.inputs, 0, 1),
+                bit(&s.inputs, 0, 2)
+            ),
+            (1.0, 0.0, 1.0)
+        );
+        assert_eq!(bit(&s.inputs, 3, 31), 1.0);
     }
 }

@@ -22,7 +22,7 @@ impl Interp {
     /// The block's move under G45-G48: `times` D (the code's meaning) and
     /// its `code` ×10 for the alarms, `at` the code's column.
     pub(super) fn tool_offset_motion(&mut self, (times, code): (i8, u16), at: u32) -> R<()> {
-        let mode = self.st.modal.motion.means;
+        let mode = self.modal.motion.means;
         if !matches!(
             mode,
             MotionMode::Rapid | MotionMode::Linear | MotionMode::ArcCw | MotionMode::ArcCcw
@@ -33,7 +33,7 @@ impl Interp {
                 format!("G{} needs G00, G01, G02 or G03 (000 §13.3)", fmt_code(code)),
             ));
         }
-        if self.st.modal.cutter_comp.means != CompSide::Off {
+        if self.modal.cutter_comp.means != CompSide::Off {
             return Err(self.alarm(
                 AlarmKind::ToolOffset,
                 at,
@@ -55,7 +55,7 @@ impl Interp {
         let mut t = cur;
         for ax in Axis::ALL {
             let i = ax as usize;
-            if self.has_axis[i] && (self.words.has(ax_letter(ax)) || self.uvw(ax).is_some()) {
+            if self.cfg.has_axis[i] && (self.words.has(ax_letter(ax)) || self.uvw(ax).is_some()) {
                 t[i] = if i < 3 {
                     cur[i] + adj(tw[i] - cur[i])
                 } else {
@@ -70,14 +70,14 @@ impl Interp {
             }
             _ => {
                 let ccw = mode == MotionMode::ArcCcw;
-                let (a1, a2, _) = self.st.modal.plane.means.axes();
+                let (a1, a2, _) = self.modal.plane.means.axes();
                 let center =
                     if let Some(r) = self.words.get(b'R') {
                         self.check_range(b'R', r)?;
                         let rv = self.linear(r);
                         let rv = rv.signum() * adj(rv.abs());
                         let (s, e) = ((cur[a1], cur[a2]), (t[a1], t[a2]));
-                        match arc::center_from_radius(s, e, rv, ccw, self.arc_tol) {
+                        match arc::center_from_radius(s, e, rv, ccw, self.cfg.arc_tol) {
                             Ok(c) => c,
                             Err(_) => return Err(self.alarm(
                                 AlarmKind::ArcRadius,
@@ -112,7 +112,7 @@ impl Interp {
                 let s = (cur[a1], cur[a2]);
                 let e = (t[a1], t[a2]);
                 if let Err(ArcError::EndNotOnCircle { r_start, r_end }) =
-                    arc::check_end(s, e, center, self.arc_tol)
+                    arc::check_end(s, e, center, self.cfg.arc_tol)
                 {
                     return Err(self.alarm(
                         AlarmKind::ArcEndPoint,

@@ -15,7 +15,7 @@ impl Interp {
     /// true when the block's axis words were the data of one of them: the
     /// block then makes no move.
     pub(super) fn transform_codes(&mut self, one_shot: &[(u16, u32)], kinds: KindSet) -> R<bool> {
-        if !self.dialect.caps.frame_codes {
+        if !self.cfg.dialect.caps.frame_codes {
             return Ok(false);
         }
         let frame = [
@@ -25,8 +25,8 @@ impl Interp {
             Kind::Stroke,
         ];
         let mut data = kinds.any(&frame) && self.frame_modal_codes()?;
-        if let Some(r) = self.st.xf.rot {
-            if r.plane != self.st.modal.plane.means {
+        if let Some(r) = self.frames.xf.rot {
+            if r.plane != self.modal.plane.means {
                 let at = self
                     .block_g(|m| matches!(m, Means::Plane(_)))
                     .map_or(0, |g| g.1);
@@ -42,8 +42,8 @@ impl Interp {
                 continue;
             };
             let not_in_xf = matches!(what, OneShot::RefReturn(_) | OneShot::CoordinateSetting);
-            if self.st.xf.active() && not_in_xf {
-                let what = if self.st.xf.rot.is_some() {
+            if self.frames.xf.active() && not_in_xf {
+                let what = if self.frames.xf.rot.is_some() {
                     "coordinate rotation (G69 first)"
                 } else {
                     "scaling (G50 first)"
@@ -78,8 +78,8 @@ impl Interp {
         // may change the rotation in offset mode (000 §15.4.2's N1-N8).
         // Scaling is set before G41/G42 and cancelled after G40 (000
         // §15.4.2: G51, G68, G41 … G40, G69, G50).
-        if self.comp.as_deref().is_some_and(|c| c.on())
-            && self.st.modal.cutter_comp.means != CompSide::Off
+        if self.common.comp.as_deref().is_some_and(|c| c.on())
+            && self.modal.cutter_comp.means != CompSide::Off
         {
             if let Some((c, at)) = self.block_g(|m| matches!(m, Means::Scaling(_))) {
                 return Err(self.alarm(
@@ -95,13 +95,13 @@ impl Interp {
         // Cancels first, so `G69 G28 …` and `G50 G92 …` are legal.
         for i in 0..self.words.ng {
             match self.gcode(self.words.g[i].0).map(|g| g.means) {
-                Some(Means::PolarCommand(false)) => self.st.polar = false,
-                Some(Means::PolarCommand(true)) if !self.st.polar => {
-                    self.st.polar = true;
-                    self.st.polar_origin.set((0.0, 0.0));
+                Some(Means::PolarCommand(false)) => self.frames.polar = false,
+                Some(Means::PolarCommand(true)) if !self.frames.polar => {
+                    self.frames.polar = true;
+                    self.frames.polar_origin.set((0.0, 0.0));
                 }
-                Some(Means::Scaling(false)) => self.st.xf.scale = None,
-                Some(Means::Rotation(false)) => self.st.xf.rot = None,
+                Some(Means::Scaling(false)) => self.frames.xf.scale = None,
+                Some(Means::Rotation(false)) => self.frames.xf.rot = None,
                 _ => {}
             }
         }
@@ -150,14 +150,14 @@ impl Interp {
     /// factors mirror) about the given centre, the current position for
     /// an omitted axis; without P, I, J, K the factors of PI 108-110.
     fn g51(&mut self, at: u32) -> R<()> {
-        if self.st.xf.rot.is_some() {
+        if self.frames.xf.rot.is_some() {
             return Err(self.alarm(
                 AlarmKind::TransformConflict,
                 at,
                 "G51 in coordinate rotation mode: command G51 before G68 (000 §15.4.2)",
             ));
         }
-        self.st.xf.scale = None;
+        self.frames.xf.scale = None;
         let cur = self.prog_pos();
         let mut center = [0.0; 3];
         for (i, c) in center.iter_mut().enumerate() {
@@ -175,14 +175,15 @@ impl Interp {
                 factor[i] = match self.words.get(l) {
                     Some(w) => self.scale_factor(w)?,
                     None => {
-                        self.profile
+                        self.cfg
+                            .profile
                             .param(["PI 108", "PI 109", "PI 110"][i], 1000.0)
                             / 1000.0
                     }
                 };
             }
         }
-        self.st.xf.scale = Some(Scale { center, factor });
+        self.frames.xf.scale = Some(Scale { center, factor });
         Ok(())
     }
 
@@ -191,9 +192,9 @@ impl Interp {
     /// (decimal-point rule: `R60` = 0.060°, `R60.` = 60°; PI 117 when
     /// omitted). In G91 the angle is added to the rotation in force.
     fn g68(&mut self, at: u32) -> R<()> {
-        let plane = self.st.modal.plane.means;
+        let plane = self.modal.plane.means;
         let (a1, a2, _) = plane.axes();
-        if let Some(r) = self.st.xf.rot {
+        if let Some(r) = self.frames.xf.rot {
             if r.plane != plane {
                 return Err(self.alarm(
                     AlarmKind::TransformConflict,
@@ -214,7 +215,7 @@ impl Interp {
         c[a1] = coord(self, a1);
         c[a2] = coord(self, a2);
         // With scaling in force the centre is scaled too (000 §15.4.2).
-        if let Some(s) = self.st.xf.scale {
+        if let Some(s) = self.frames.xf.scale {
             let only = crate::xform::Xform {
                 scale: Some(s),
                 rot: None,
@@ -223,7 +224,7 @@ impl Interp {
         }
         let r = match self.words.get(b'R') {
             Some(w) => self.angular(w),
-            None => self.profile.param("PI 117", 0.0) / 1000.0,
+            None => self.cfg.profile.param("PI 117", 0.0) / 1000.0,
         };
         if r.abs() > 360.0 {
             let rat = self.words.get(b'R').map(|w| w.at).unwrap_or(at);
@@ -233,11 +234,11 @@ impl Interp {
                 format!("rotation angle {} out of range (±360°)", fmt_num(r)),
             ));
         }
-        let deg = match (self.st.modal.absolute(), self.st.xf.rot) {
+        let deg = match (self.modal.absolute(), self.frames.xf.rot) {
             (false, Some(old)) => old.deg + r,
             _ => r,
         };
-        self.st.xf.rot = Some(Rotation {
+        self.frames.xf.rot = Some(Rotation {
             plane,
             center: (c[a1], c[a2]),
             deg,
@@ -251,15 +252,15 @@ impl Interp {
     fn g52(&mut self) {
         for ax in Axis::ALL {
             let i = ax as usize;
-            if !self.has_axis[i] {
+            if !self.cfg.has_axis[i] {
                 continue;
             }
             if let Some(w) = self.words.get(ax_letter(ax)) {
                 let v = self.axis_value(ax, w);
-                self.st.local[i] = if self.st.modal.absolute() {
+                self.frames.local[i] = if self.modal.absolute() {
                     v
                 } else {
-                    self.st.local[i] + v
+                    self.frames.local[i] + v
                 };
             }
         }

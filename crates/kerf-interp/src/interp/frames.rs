@@ -1,0 +1,216 @@
+//! Machine state and coordinate frames: the machine position (owned by
+//! the move seam, interp/mover.rs) and everything that relates it to the
+//! program's coordinates — the work offset table, the G92/G50 shift, the
+//! G52 local system, scaling and rotation, polar coordinates, G112/G107,
+//! the tool length offset — with the stored stroke area, the G28
+//! intermediate point and the last skip position.
+//!
+//! The frames nest as on the control: machine = work origin + shift +
+//! local + tool length offset + program coordinates.
+
+use kerf_canon::{Pos, NAXES};
+
+use super::mover::Mover;
+use super::polar_interp::RotInterp;
+use super::work_offsets::WorkOffsets;
+use crate::machine::Profile;
+
+/// The machine position and the coordinate frames.
+#[derive(Clone, Debug)]
+pub(super) struct Frames {
+    /// Current position, machine coordinates: set only by the move seam
+    /// (interp/mover.rs).
+    pub(super) mover: Mover,
+    /// The work offset table (G54-G59, Hurco E1-E9999) and the active
+    /// system (interp/work_offsets.rs).
+    pub(super) work: WorkOffsets,
+    /// G92 / G50 shift (the HX "work shift" of 000 §7.2.4, also set by
+    /// `G10 L2 P0`).
+    pub(super) shift: Pos,
+    /// G52 local coordinate system offset (work coordinates; the same for
+    /// every work system).
+    pub(super) local: Pos,
+    /// Scaling (G51) and rotation (G68) in force.
+    pub(super) xf: crate::xform::Xform,
+    /// Position where the last skip signal came (program coordinates).
+    pub(super) skip_pos: Option<Pos>,
+    /// Stored stroke check 2 area (G22 X Y Z I J K), machine coordinates.
+    pub(super) stroke_area: Option<crate::stroke::Area>,
+    /// G16 polar coordinate command in force.
+    pub(super) polar: bool,
+    /// Origin of the polar coordinates (program coordinates in the plane).
+    pub(super) polar_origin: std::cell::Cell<(f64, f64)>,
+    /// G112 polar / G107 cylindrical interpolation in force.
+    pub(super) rot: RotInterp,
+    /// Tool length offset vector (G43/G44), added to the control point.
+    pub(super) tlo: Pos,
+    /// Active H number (0 = none).
+    pub(super) h: u32,
+    /// G28 intermediate point (programmed coordinates), per axis.
+    pub(super) g28_mid: [Option<f64>; NAXES],
+}
+
+impl Frames {
+    /// The frames at power-on: at the profile's start position, G54-G59
+    /// as the profile gives them (a missing one as its G54), no shift,
+    /// no local system, no transform, no tool length offset.
+    pub(super) fn power_on(profile: &Profile) -> Frames {
+        let mut wcs = [[0.0; NAXES]; 6];
+        for (i, w) in wcs.iter_mut().enumerate() {
+            let key = format!("g5{}", 4 + i);
+            if let Some(m) = profile
+                .work_offsets
+                .get(&key)
+                .or_else(|| profile.work_offsets.get("g54"))
+            {
+                *w = Profile::pos_of(m);
+            }
+        }
+        Frames {
+            mover: Mover::new(profile.start_position()),
+            work: WorkOffsets::new(wcs),
+            shift: [0.0; NAXES],
+            local: [0.0; NAXES],
+            xf: Default::default(),
+            skip_pos: None,
+            stroke_area: None,
+            polar: false,
+            polar_origin: std::cell::Cell::new((0.0, 0.0)),
+            rot: RotInterp::Off,
+            tlo: [0.0; NAXES],
+            h: 0,
+            g28_mid: [None; NAXES],
+        }
+    }
+
+    /// The frames after RESET (interp/reset.rs): `fresh` (the power-on
+    /// frames) with what RESET keeps of `self` — the position, the work
+    /// offset entries, the shift, the G22 area, the G28 point, and the
+    /// tool length offset vector when `keep_tlo`.
+    pub(super) fn after_reset(&self, mut fresh: Frames, keep_tlo: bool) -> Frames {
+        fresh.mover = self.mover;
+        fresh.work.keep_entries_of(&self.work);
+        fresh.shift = self.shift;
+        fresh.stroke_area = self.stroke_area;
+        fresh.g28_mid = self.g28_mid;
+        if keep_tlo {
+            fresh.tlo = self.tlo;
+        }
+        fresh
+    }
+
+    /// The origin of work coordinates in machine coordinates: the active
+    /// work offset plus the G92/G50 shift.
+    pub(super) fn origin(&self) -> Pos {
+        let w = self.work.origin();
+        let mut o = [0.0; NAXES];
+        for i in 0..NAXES {
+            o[i] = w[i] + self.shift[i];
+        }
+        o
+    }
+
+    /// Origin of programmed coordinates: the work origin plus the G52
+    /// local offset and the tool length offset.
+    pub(super) fn prog_origin(&self) -> Pos {
+        let mut o = self.origin();
+        for i in 0..NAXES {
+            o[i] += self.tlo[i] + self.local[i];
+        }
+        o
+    }
+
+    /// Current position in programmed coordinates (tool tip).
+    pub(super) fn programmed_position(&self) -> Pos {
+        let o = self.prog_origin();
+        let mut p = self.mover.pos();
+        for i in 0..NAXES {
+            p[i] -= o[i];
+        }
+        p
+    }
+
+    /// Current position of the tool tip in the active work coordinate
+    /// system (the G52 local system not taken off).
+    pub(super) fn work_position(&self) -> Pos {
+        let o = self.origin();
+        let mut p = self.mover.pos();
+        for i in 0..NAXES {
+            p[i] -= o[i] + self.tlo[i];
+        }
+        p
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::work_offsets::WorkId;
+    use super::*;
+
+    fn frames() -> Frames {
+        Frames::power_on(&Profile::builtin("hx-mc").unwrap())
+    }
+
+    #[test]
+    fn the_frames_nest_work_shift_local_and_tool_length() {
+        let mut f = frames();
+        f.work
+            .set(WorkId::G5x(1), [100.0, 50.0, -200.0, 0.0, 0.0, 0.0]);
+        f.work.select(WorkId::G5x(1));
+        f.shift = [1.0, 2.0, 3.0, 0.0, 0.0, 0.0];
+        f.local = [10.0, 20.0, 30.0, 0.0, 0.0, 0.0];
+        f.tlo = [0.0, 0.0, 150.0, 0.0, 0.0, 0.0];
+        // G55 + shift.
+        assert_eq!(f.origin(), [101.0, 52.0, -197.0, 0.0, 0.0, 0.0]);
+        // + G52 + tool length: -197 + 30 + 150 = -17.
+        assert_eq!(f.prog_origin(), [111.0, 72.0, -17.0, 0.0, 0.0, 0.0]);
+        f.mover = Mover::new([111.0, 72.0, -7.0, 0.0, 0.0, 0.0]);
+        assert_eq!(f.programmed_position(), [0.0, 0.0, 10.0, 0.0, 0.0, 0.0]);
+        // The work position keeps the G52 offset: 111 - 101 = 10.
+        assert_eq!(f.work_position(), [10.0, 20.0, 40.0, 0.0, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn reset_keeps_position_offsets_shift_and_stroke_area_only() {
+        let mut f = frames();
+        f.mover = Mover::new([5.0, 6.0, 7.0, 0.0, 0.0, 0.0]);
+        f.work.set(WorkId::G5x(2), [9.0; NAXES]);
+        f.work.select(WorkId::G5x(2));
+        f.shift = [1.0; NAXES];
+        f.local = [2.0; NAXES];
+        f.tlo = [0.0, 0.0, 80.0, 0.0, 0.0, 0.0];
+        f.h = 3;
+        f.polar = true;
+        f.g28_mid[0] = Some(4.0);
+        let g54 = f.work.get(WorkId::G5x(0));
+        let r = f.after_reset(frames(), false);
+        assert_eq!(r.mover.pos(), [5.0, 6.0, 7.0, 0.0, 0.0, 0.0]);
+        assert_eq!(r.shift, [1.0; NAXES]);
+        assert_eq!(r.g28_mid[0], Some(4.0));
+        // G54 is selected again (with the shift), G56's entry kept.
+        assert_eq!(r.origin(), g54.map(|v| v + 1.0));
+        let mut g56 = r.clone();
+        g56.work.select(WorkId::G5x(2));
+        assert_eq!(g56.origin(), [10.0; NAXES]);
+        assert_eq!(
+            (r.local, r.tlo, r.h, r.polar),
+            ([0.0; NAXES], [0.0; NAXES], 0, false)
+        );
+        // A control that keeps the tool offset over RESET.
+        let kept = f.after_reset(frames(), true);
+        assert_eq!(kept.tlo[2], 80.0);
+    }
+
+    #[test]
+    fn power_on_takes_the_profiles_work_offsets() {
+        let p = Profile::builtin("hx-mc").unwrap();
+        let f = Frames::power_on(&p);
+        let want = p
+            .work_offsets
+            .get("g54")
+            .map(Profile::pos_of)
+            .unwrap_or([0.0; NAXES]);
+        assert_eq!(f.origin(), want);
+        assert_eq!(f.mover.pos(), p.start_position());
+    }
+}
