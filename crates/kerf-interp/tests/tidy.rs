@@ -434,8 +434,10 @@ fn motion_commands_are_built_only_in_the_move_seam() {
     assert!(in_seam >= 4, "found {in_seam} motion builds in {MOVE_SEAM}");
 }
 
-#[test]
-fn dialect_ids_and_code_literals_only_in_dialect() {
+/// What `pick` finds in the interpreter's files outside dialect/ (as
+/// "LINE: what"), each prefixed with its file, and how many files were
+/// walked.
+fn outside_dialect(pick: impl Fn(&Findings) -> Vec<String>) -> (Vec<String>, usize) {
     let mut bad = Vec::new();
     let mut checked = 0;
     for (path, f) in findings() {
@@ -443,17 +445,23 @@ fn dialect_ids_and_code_literals_only_in_dialect() {
             continue;
         }
         checked += 1;
-        bad.extend(
-            f.dialect_ids
-                .iter()
-                .map(|l| format!("{path}:{l}: dialect id")),
-        );
-        bad.extend(
-            f.code_literals
-                .iter()
-                .map(|l| format!("{path}:{l}: G code number")),
-        );
+        bad.extend(pick(&f).into_iter().map(|l| format!("{path}:{l}")));
     }
+    (bad, checked)
+}
+
+/// The lines as "LINE: what".
+fn named(lines: &[usize], what: &str) -> Vec<String> {
+    lines.iter().map(|l| format!("{l}: {what}")).collect()
+}
+
+#[test]
+fn dialect_ids_and_code_literals_only_in_dialect() {
+    let (bad, checked) = outside_dialect(|f| {
+        let mut v = named(&f.dialect_ids, "dialect id");
+        v.extend(named(&f.code_literals, "G code number"));
+        v
+    });
     assert!(
         bad.is_empty(),
         "dialect ids or G code numbers matched outside {DIALECT_DIR}: ask the \
@@ -466,19 +474,7 @@ fn dialect_ids_and_code_literals_only_in_dialect() {
 
 #[test]
 fn acted_m_code_numbers_only_in_dialect() {
-    let mut bad = Vec::new();
-    let mut checked = 0;
-    for (path, f) in findings() {
-        if !path.starts_with(INTERP_SRC) || path.starts_with(DIALECT_DIR) {
-            continue;
-        }
-        checked += 1;
-        bad.extend(
-            f.m_literals
-                .iter()
-                .map(|l| format!("{path}:{l}: M code number")),
-        );
-    }
+    let (bad, checked) = outside_dialect(|f| named(&f.m_literals, "M code number"));
     assert!(
         bad.is_empty(),
         "M code numbers matched outside {DIALECT_DIR}: ask the dialect's M \

@@ -60,6 +60,16 @@ impl Downstream {
         }
     }
 
+    /// What the sinks read while the run goes on.
+    fn live<'a>(&'a self, files: Files<'a>, profile: &'a Profile) -> Live<'a> {
+        Live {
+            files,
+            profile,
+            planner: &self.planner,
+            warnings: &self.warnings.list,
+        }
+    }
+
     /// Hands one event to the sinks and the planner, and out what it lets
     /// the planner finish.
     #[inline]
@@ -74,12 +84,7 @@ impl Downstream {
         if let Some(m) = e.motion() {
             self.work = m.to;
         }
-        let cx = Live {
-            files,
-            profile,
-            planner: &self.planner,
-            warnings: &self.warnings.list,
-        };
+        let cx = self.live(files, profile);
         for s in sinks.iter_mut() {
             s.event(&e, &from, &cx).map_err(sink_err(*s))?;
         }
@@ -134,12 +139,7 @@ impl Downstream {
                 time: d.time,
                 feed_mm_min: p.feed_mm_min,
             };
-            let cx = Live {
-                files,
-                profile,
-                planner: &self.planner,
-                warnings: &self.warnings.list,
-            };
+            let cx = self.live(files, profile);
             for s in sinks.iter_mut() {
                 s.timed(&t, &cx).map_err(sink_err(*s))?;
             }
@@ -152,12 +152,7 @@ impl Downstream {
         while let Some(p) = self.planner.next_piece() {
             self.batch.push(p);
         }
-        let cx = Live {
-            files,
-            profile,
-            planner: &self.planner,
-            warnings: &self.warnings.list,
-        };
+        let cx = self.live(files, profile);
         for s in sinks.iter_mut().filter(|s| s.wants_pieces()) {
             s.pieces(&self.batch, &cx).map_err(sink_err(*s))?;
         }
