@@ -206,13 +206,13 @@ impl ZMap {
 }
 
 /// Threads a move may be split between: `KERF_SIM_THREADS` (1 or 2) if
-/// set, else 2 where the machine has two cores or more.
+/// set, else 1. The split starts its thread for each move, which on the
+/// 2-core machine costs more than it saves even with the cores free
+/// (docs/benchmarks.md), so it is asked for, not assumed.
 fn default_threads() -> usize {
     let env = std::env::var("KERF_SIM_THREADS").ok();
-    match env.and_then(|v| v.trim().parse::<usize>().ok()) {
-        Some(n) => n.clamp(1, 2),
-        None => std::thread::available_parallelism().map_or(1, |n| n.get().min(2)),
-    }
+    env.and_then(|v| v.trim().parse::<usize>().ok())
+        .map_or(1, |n| n.clamp(1, 2))
 }
 
 /// A `--sim-res` refused.
