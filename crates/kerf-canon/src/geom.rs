@@ -4,6 +4,29 @@
 
 use std::f64::consts::{PI, TAU};
 
+use crate::{Pos, NAXES};
+
+/// The length of a straight move from `p0` to `p1` as a control times it
+/// outside G112/G107: its linear axes (X Y Z), or its rotary axes (A B C,
+/// degrees as mm) when no linear axis moves. The planner times feeds by
+/// it and the G-code writer scales G112/G107 feeds against it.
+#[inline]
+pub fn machine_len(p0: &Pos, p1: &Pos) -> f64 {
+    let mut s = 0.0;
+    for i in 0..3 {
+        let d = p1[i] - p0[i];
+        s += d * d;
+    }
+    if s > 0.0 {
+        return s.sqrt();
+    }
+    for i in 3..NAXES {
+        let d = p1[i] - p0[i];
+        s += d * d;
+    }
+    s.sqrt()
+}
+
 /// Swept angle (radians, > 0) from `s` to `e` about `c`. Coincident start
 /// and end make a full circle.
 pub fn sweep(s: (f64, f64), e: (f64, f64), c: (f64, f64), ccw: bool) -> f64 {

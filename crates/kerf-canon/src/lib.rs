@@ -272,7 +272,11 @@ impl RotaryMode {
     /// Cartesian plane of the face, from the radii `r0` and `r1` (the work
     /// X at the two ends, X0 on the C axis) and the turn of C, with Y and
     /// Z. None when neither is in force (the machine's own length).
+    #[inline]
     pub fn programmed_len(self, p0: &Pos, p1: &Pos, r0: f64, r1: f64) -> Option<f64> {
+        if self == RotaryMode::Off {
+            return None;
+        }
         let d: [f64; NAXES] = std::array::from_fn(|i| p1[i] - p0[i]);
         let c = Axis::C as usize;
         match self {

@@ -26,12 +26,9 @@ use crate::num;
 use crate::target::Target;
 
 /// The length of a move `d` (per axis) as a control without G112/G107
-/// times it: its linear axes; its rotary axes, degrees as mm, when no
-/// linear axis moves.
+/// times it (kerf-canon's machine rule).
 pub(crate) fn plain_len(d: &Pos) -> f64 {
-    let sq = |r: std::ops::Range<usize>| r.map(|i| d[i] * d[i]).sum::<f64>();
-    let linear = sq(0..3);
-    if linear > 0.0 { linear } else { sq(3..NAXES) }.sqrt()
+    kerf_canon::geom::machine_len(&[0.0; NAXES], d)
 }
 
 /// The feed factor that makes a control without G112/G107 take the

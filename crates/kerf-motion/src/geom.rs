@@ -27,22 +27,9 @@ pub enum Geom {
 }
 
 /// Path length of a straight move: the linear axes, or the rotary axes
-/// when no linear axis moves (degrees then).
-pub fn line_len(p0: &Pos, p1: &Pos) -> f64 {
-    let mut s = 0.0;
-    for i in 0..3 {
-        let d = p1[i] - p0[i];
-        s += d * d;
-    }
-    if s > 0.0 {
-        return s.sqrt();
-    }
-    for i in 3..NAXES {
-        let d = p1[i] - p0[i];
-        s += d * d;
-    }
-    s.sqrt()
-}
+/// when no linear axis moves (degrees then): kerf-canon's
+/// [`machine_len`](kerf_canon::geom::machine_len).
+pub use kerf_canon::geom::machine_len as line_len;
 
 impl Geom {
     /// An arc from the canonical data (machine coordinates).

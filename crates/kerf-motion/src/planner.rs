@@ -560,9 +560,10 @@ impl Planner {
                     p1: m.mto,
                 };
                 let off = comp_offset(m, e.prog.as_deref());
+                let len = g.len();
                 let r = (self.work_x, m.to[0]);
                 let surface = self.rotary.programmed_len(&self.pos, &m.mto, r.0, r.1);
-                let (len, surface) = (g.len(), surface.unwrap_or_else(|| g.len()));
+                let surface = surface.unwrap_or(len);
                 let ratio = if surface > 0.0 { len / surface } else { 1.0 };
                 self.cut(g, *feed, m.to[0], false, off, ratio);
                 self.feed_length += surface - len;
