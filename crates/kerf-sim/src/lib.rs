@@ -17,6 +17,7 @@
 //! ```
 
 pub mod ball;
+pub mod ball_row;
 pub mod bands;
 pub mod deferred;
 pub mod envelope;
