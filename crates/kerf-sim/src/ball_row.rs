@@ -56,6 +56,17 @@ pub struct LaneRow {
     wy1: f64,
 }
 
+/// 0, 1, 2, ... as f64 (a conversion per cell is not vector code).
+const IDX: [f64; CHUNK] = {
+    let mut t = [0.0; CHUNK];
+    let mut k = 0;
+    while k < CHUNK {
+        t[k] = k as f64;
+        k += 1;
+    }
+    t
+};
+
 /// Margin on the b bounds of the spheres (rounding of b and of √a).
 const B_MARGIN: f64 = 1e-9;
 
@@ -111,6 +122,63 @@ impl BallLanes {
         self.envelope_body(row, x0, dx, out);
     }
 
+    /// The envelope and its slope along the row at `x`, or None where the
+    /// ball does not pass over x or passes over it only at its rim.
+    #[inline]
+    fn with_slope(&self, row: &LaneRow, x: f64) -> Option<(f64, f64)> {
+        let wx = x - self.c0[0];
+        let b = wx * self.bx + row.b;
+        let e = wx * self.ex + row.e;
+        let a = self.r2 - e * e;
+        if a <= 0.0 {
+            return None;
+        }
+        let sa = a.sqrt();
+        let t = b - self.kappa * sa;
+        if (0.0..=1.0).contains(&t) {
+            let z = self.c0[2] + b * self.d[2] - self.l3_l * sa;
+            return Some((z, self.bx * self.d[2] + self.l3_l * e * self.ex / sa));
+        }
+        // The end sphere nearest the minimum (t < 0: the start).
+        let (wx, wy2, cz) = if t < 0.0 {
+            (wx, row.wy2, self.c0[2])
+        } else {
+            (wx - self.d[0], row.wy1, self.c0[2] + self.d[2])
+        };
+        let q = self.r2 - (wx * wx + wy2);
+        if q <= 0.0 {
+            return None;
+        }
+        let sq = q.sqrt();
+        Some((cz - sq, wx / sq))
+    }
+
+    /// A lower bound of the envelope over the row from `xa` to `xb`
+    /// (`xa <= xb`), or minus infinity when the ball does not pass over
+    /// the whole interval. The lower envelope of a convex body is a convex
+    /// function on its (convex) footprint, so on the interval it is above
+    /// the tangents at both ends; the bound is the lowest point of the
+    /// greater of the two.
+    pub fn floor_over(&self, y: f64, xa: f64, xb: f64) -> f64 {
+        let row = self.row(y);
+        let (Some((za, sa)), Some((zb, sb))) =
+            (self.with_slope(&row, xa), self.with_slope(&row, xb))
+        else {
+            return f64::NEG_INFINITY;
+        };
+        let low = if sa >= 0.0 {
+            za
+        } else if sb <= 0.0 {
+            zb
+        } else {
+            // sa < 0 < sb: the tangents cross inside the interval.
+            let x = (zb - za + sa * xa - sb * xb) / (sa - sb);
+            za + sa * (x.clamp(xa, xb) - xa)
+        };
+        // The rounding of the two evaluations, with room to spare.
+        low - 1e-9 * (1.0 + low.abs())
+    }
+
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
     fn envelope_avx2(&self, row: &LaneRow, x0: f64, dx: f64, out: &mut [f64]) {
@@ -129,8 +197,8 @@ impl BallLanes {
         let (blo, bhi) = if ba < bb { (ba, bb) } else { (bb, ba) };
         let (r2, c0z, dz) = (self.r2, self.c0[2], self.d[2]);
         let (bx, ex, kappa, l3_l) = (self.bx, self.ex, self.kappa, self.l3_l);
-        for (k, o) in out.iter_mut().enumerate() {
-            let wx = wx0 + k as f64 * dx;
+        for (o, &k) in out.iter_mut().zip(&IDX) {
+            let wx = wx0 + k * dx;
             let b = wx * bx + row.b;
             let e = wx * ex + row.e;
             let a = r2 - e * e;
@@ -141,8 +209,8 @@ impl BallLanes {
             *o = if ok { cyl } else { f64::INFINITY };
         }
         if blo < self.b0_max && row.wy2 <= r2 {
-            for (k, o) in out.iter_mut().enumerate() {
-                let wx = wx0 + k as f64 * dx;
+            for (o, &k) in out.iter_mut().zip(&IDX) {
+                let wx = wx0 + k * dx;
                 let q = r2 - (wx * wx + row.wy2);
                 let s = c0z - if q > 0.0 { q } else { 0.0 }.sqrt();
                 let s = if q >= 0.0 { s } else { f64::INFINITY };
@@ -151,8 +219,8 @@ impl BallLanes {
         }
         if bhi > self.b1_min && row.wy1 <= r2 {
             let (dx0, c1z) = (self.d[0], c0z + dz);
-            for (k, o) in out.iter_mut().enumerate() {
-                let wx = wx0 + k as f64 * dx - dx0;
+            for (o, &k) in out.iter_mut().zip(&IDX) {
+                let wx = wx0 + k * dx - dx0;
                 let q = r2 - (wx * wx + row.wy1);
                 let s = c1z - if q > 0.0 { q } else { 0.0 }.sqrt();
                 let s = if q >= 0.0 { s } else { f64::INFINITY };
@@ -203,6 +271,48 @@ mod tests {
         assert!((out[1] - (3.0 - 5f64.sqrt())).abs() < 1e-12, "{out:?}");
         b.envelope(&b.row(3.01), 5.0, 1.0, &mut out);
         assert_eq!(out, [f64::INFINITY; 2]);
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+        /// The bound over an interval of a row is at or below the envelope
+        /// at 64 points of it (the brute-force minimum).
+        #[test]
+        fn the_floor_over_an_interval_is_below_every_point(
+            p0 in prop::array::uniform3(-10.0f64..10.0),
+            d in prop::array::uniform3(-6.0f64..6.0),
+            q in prop::array::uniform2(-16.0f64..16.0),
+            w in 0.0f64..3.0,
+            r in 0.2f64..6.0,
+        ) {
+            let p1 = [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]];
+            let s = Sweep::new(p0, p1);
+            let Some(one) = BallSweep::new(&s, r) else { return Ok(()); };
+            let lanes = BallLanes::new(&s, r);
+            let low = lanes.floor_over(q[1], q[0], q[0] + w);
+            for k in 0..=63 {
+                let x = q[0] + w * k as f64 / 63.0;
+                if let Some(z) = one.lowest(&one.row(q[1]), x) {
+                    prop_assert!(low <= z, "{low} above {z} at {x}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_floor_of_a_level_slot_by_hand() {
+        // R 3 along X at z 0 from x 0 to 10; on the row 2 mm off the
+        // path the envelope is 3 - √5 everywhere over x 2..8, and the
+        // bound is that; over x 11..12 (the end sphere, rising with x)
+        // it is the height at x 11: 3 - √(9 - 1 - 4).
+        let s = Sweep::new([0.0, 0.0, 0.0], [10.0, 0.0, 0.0]);
+        let b = BallLanes::new(&s, 3.0);
+        let z = b.floor_over(2.0, 2.0, 8.0);
+        assert!((z - (3.0 - 5f64.sqrt())).abs() < 1e-8, "{z}");
+        let z = b.floor_over(2.0, 11.0, 12.0);
+        assert!((z - 1.0).abs() < 1e-8, "{z}");
+        // Past the rim at x 13.0: no bound.
+        assert_eq!(b.floor_over(0.0, 12.0, 13.5), f64::NEG_INFINITY);
     }
 
     proptest! {

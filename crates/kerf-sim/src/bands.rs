@@ -150,6 +150,11 @@ impl<'a> Cells<'a> {
                     continue;
                 }
                 let x0 = g.x0 + (first as f64 + 0.5) * g.dx;
+                // A run at or below the tool's lowest point over it.
+                let top = self.cmax[lj * nc + c] as f64;
+                if top <= pass.floor_over(y, x0, x0 + (last - first) as f64 * g.dx) {
+                    continue;
+                }
                 let h = &mut self.h[lj * nx + first..=lj * nx + last];
                 if pass.run(h, (j * nx + first) as u32, x0, g.dx, y, floor) {
                     let run = &self.h[lj * nx + c * CHUNK..lj * nx + ((c + 1) * CHUNK).min(nx)];

@@ -167,6 +167,16 @@ impl<'a> Pass<'a> {
         }
     }
 
+    /// A lower bound of what the tool reaches over the row at `y` from
+    /// `xa` to `xb` (minus infinity where none is known).
+    #[inline]
+    pub fn floor_over(&self, y: f64, xa: f64, xb: f64) -> f64 {
+        match self.kernel {
+            Kernel::Ball(b) => b.floor_over(y, xa, xb),
+            _ => f64::NEG_INFINITY,
+        }
+    }
+
     /// A level flat end mill: one height for every covered cell.
     #[inline]
     fn level_flat(&mut self, h: &mut [f32], idx: u32, z: f64, floor: f32) -> bool {
