@@ -122,10 +122,12 @@ impl BallLanes {
         self.envelope_body(row, x0, dx, out);
     }
 
-    /// The envelope and its slope along the row at `x`, or None where the
-    /// ball does not pass over x or passes over it only at its rim.
+    /// The envelope and its slope along the row at (x, y), or None where
+    /// the ball does not pass over the point or passes over it only at
+    /// its rim.
     #[inline]
-    fn with_slope(&self, row: &LaneRow, x: f64) -> Option<(f64, f64)> {
+    pub fn with_slope(&self, y: f64, x: f64) -> Option<(f64, f64)> {
+        let row = self.row(y);
         let wx = x - self.c0[0];
         let b = wx * self.bx + row.b;
         let e = wx * self.ex + row.e;
@@ -153,30 +155,11 @@ impl BallLanes {
         Some((cz - sq, wx / sq))
     }
 
-    /// A lower bound of the envelope over the row from `xa` to `xb`
-    /// (`xa <= xb`), or minus infinity when the ball does not pass over
-    /// the whole interval. The lower envelope of a convex body is a convex
-    /// function on its (convex) footprint, so on the interval it is above
-    /// the tangents at both ends; the bound is the lowest point of the
-    /// greater of the two.
+    /// A lower bound of the envelope over the row at `y` from `xa` to
+    /// `xb` (`xa <= xb`), or minus infinity when the ball does not pass
+    /// over the whole interval: [`floor_between`] of the two ends.
     pub fn floor_over(&self, y: f64, xa: f64, xb: f64) -> f64 {
-        let row = self.row(y);
-        let (Some((za, sa)), Some((zb, sb))) =
-            (self.with_slope(&row, xa), self.with_slope(&row, xb))
-        else {
-            return f64::NEG_INFINITY;
-        };
-        let low = if sa >= 0.0 {
-            za
-        } else if sb <= 0.0 {
-            zb
-        } else {
-            // sa < 0 < sb: the tangents cross inside the interval.
-            let x = (zb - za + sa * xa - sb * xb) / (sa - sb);
-            za + sa * (x.clamp(xa, xb) - xa)
-        };
-        // The rounding of the two evaluations, with room to spare.
-        low - 1e-9 * (1.0 + low.abs())
+        floor_between(xa, self.with_slope(y, xa), xb, self.with_slope(y, xb))
     }
 
     #[cfg(target_arch = "x86_64")]
@@ -190,10 +173,7 @@ impl BallLanes {
         let n = out.len();
         let wx0 = x0 - self.c0[0];
         let wxn = wx0 + (n as f64 - 1.0) * dx;
-        let (ba, bb) = (
-            wx0 * self.bx + row.b,
-            wxn * self.bx + row.b,
-        );
+        let (ba, bb) = (wx0 * self.bx + row.b, wxn * self.bx + row.b);
         let (blo, bhi) = if ba < bb { (ba, bb) } else { (bb, ba) };
         let (r2, c0z, dz) = (self.r2, self.c0[2], self.d[2]);
         let (bx, ex, kappa, l3_l) = (self.bx, self.ex, self.kappa, self.l3_l);
@@ -205,7 +185,7 @@ impl BallLanes {
             let sa = if a > 0.0 { a } else { 0.0 }.sqrt();
             let t = b - kappa * sa;
             let cyl = c0z + b * dz - l3_l * sa;
-            let ok = a >= 0.0 && t >= 0.0 && t <= 1.0;
+            let ok = a >= 0.0 && (0.0..=1.0).contains(&t);
             *o = if ok { cyl } else { f64::INFINITY };
         }
         if blo < self.b0_max && row.wy2 <= r2 {
@@ -228,6 +208,29 @@ impl BallLanes {
             }
         }
     }
+}
+
+/// A lower bound over [xa, xb] of a convex function whose value and slope
+/// at the ends are `a` and `b` (minus infinity when either is unknown):
+/// the function is above the tangents at both ends, so the bound is the
+/// lowest point of the greater of the two. The lower envelope of a convex
+/// body (the capsule) is such a function on its convex footprint.
+#[inline]
+pub fn floor_between(xa: f64, a: Option<(f64, f64)>, xb: f64, b: Option<(f64, f64)>) -> f64 {
+    let (Some((za, sa)), Some((zb, sb))) = (a, b) else {
+        return f64::NEG_INFINITY;
+    };
+    let low = if sa >= 0.0 {
+        za
+    } else if sb <= 0.0 {
+        zb
+    } else {
+        // sa < 0 < sb: the tangents cross inside the interval.
+        let x = (zb - za + sa * xa - sb * xb) / (sa - sb);
+        za + sa * (x.clamp(xa, xb) - xa)
+    };
+    // The rounding of the two evaluations, with room to spare.
+    low - 1e-9 * (1.0 + low.abs())
 }
 
 /// True when the CPU has AVX2 and FMA (checked once).

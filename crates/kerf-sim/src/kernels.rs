@@ -167,13 +167,13 @@ impl<'a> Pass<'a> {
         }
     }
 
-    /// A lower bound of what the tool reaches over the row at `y` from
-    /// `xa` to `xb` (minus infinity where none is known).
+    /// The ball move's row kernel, whose envelope bounds a run from
+    /// below ([`BallLanes::with_slope`]), if the move has one.
     #[inline]
-    pub fn floor_over(&self, y: f64, xa: f64, xb: f64) -> f64 {
+    pub fn ball(&self) -> Option<BallLanes> {
         match self.kernel {
-            Kernel::Ball(b) => b.floor_over(y, xa, xb),
-            _ => f64::NEG_INFINITY,
+            Kernel::Ball(b) => Some(b),
+            _ => None,
         }
     }
 

@@ -23,6 +23,7 @@ pub mod deferred;
 pub mod envelope;
 pub mod events;
 pub mod grid;
+pub mod helper;
 pub mod holder;
 pub mod hull;
 pub mod kernels;
