@@ -158,7 +158,7 @@ impl<'a> Cells<'a> {
                 let h = &mut self.h[lj * nx + first..=lj * nx + last];
                 if pass.run(h, (j * nx + first) as u32, x0, g.dx, y, floor) {
                     let run = &self.h[lj * nx + c * CHUNK..lj * nx + ((c + 1) * CHUNK).min(nx)];
-                    self.cmax[lj * nc + c] = run.iter().fold(f32::NEG_INFINITY, |m, &v| m.max(v));
+                    self.cmax[lj * nc + c] = greatest(run);
                     changed = true;
                 }
             }
@@ -166,7 +166,7 @@ impl<'a> Cells<'a> {
                 let rows = bj * BLOCK..((bj + 1) * BLOCK).min(g.ny);
                 self.bmax[lb * nc + c] = rows
                     .map(|j| self.cmax[(j - row0) * nc + c])
-                    .fold(f32::NEG_INFINITY, f32::max);
+                    .fold(f32::NEG_INFINITY, |m, v| if v > m { v } else { m });
             }
         }
     }
@@ -209,6 +209,24 @@ pub fn run(
     }
     sums.iter()
         .fold((0.0, 0.0), |(r, h), &(dr, dh)| (r + dr, h + dh))
+}
+
+/// The greatest of `v` (heights are never NaN), in a loop the compiler
+/// makes vector code of (`f32::max` orders NaN, which costs a branch).
+#[inline]
+fn greatest(v: &[f32]) -> f32 {
+    let mut m = [f32::NEG_INFINITY; 8];
+    let mut it = v.chunks_exact(8);
+    for q in &mut it {
+        for j in 0..8 {
+            m[j] = if q[j] > m[j] { q[j] } else { m[j] };
+        }
+    }
+    for &x in it.remainder() {
+        m[0] = if x > m[0] { x } else { m[0] };
+    }
+    m.iter()
+        .fold(f32::NEG_INFINITY, |a, &b| if b > a { b } else { a })
 }
 
 /// Each band's sums, written by whichever thread works it.
