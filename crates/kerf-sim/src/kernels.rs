@@ -129,6 +129,10 @@ impl<'a> Pass<'a> {
     #[inline]
     pub fn run(&mut self, h: &mut [f32], idx: u32, x0: f64, dx: f64, y: f64, floor: f32) -> bool {
         match self.kernel {
+            Kernel::LevelFlat(z) if h.len() <= CHUNK => {
+                let env = [z; CHUNK];
+                self.lower(h, idx, &env[..h.len()], floor)
+            }
             Kernel::LevelFlat(z) => self.level_flat(h, idx, z, floor),
             Kernel::Vertical { x, y: ya, z } => {
                 let r2 = self.shape.radius * self.shape.radius;
