@@ -210,14 +210,17 @@ impl ZMap {
     }
 }
 
-/// Threads a move may be split between: `KERF_SIM_THREADS` (1 or 2) if
-/// set, else 1. The split starts its thread for each move, which on the
-/// 2-core machine costs more than it saves even with the cores free
-/// (docs/benchmarks.md), so it is asked for, not assumed.
+/// Threads a move's bands may be shared between: `KERF_SIM_THREADS` (1
+/// or 2) if set, else 2 where the machine runs two threads at once. The
+/// helper thread is kept for the run and claims bands as it gets time
+/// (helper.rs), so on a busy machine it costs the caller only the job's
+/// publishing (docs/benchmarks.md).
 fn default_threads() -> usize {
     let env = std::env::var("KERF_SIM_THREADS").ok();
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     env.and_then(|v| v.trim().parse::<usize>().ok())
-        .map_or(1, |n| n.clamp(1, 2))
+        .unwrap_or(cores)
+        .clamp(1, 2)
 }
 
 /// A `--sim-res` refused.
