@@ -211,16 +211,14 @@ impl ZMap {
 }
 
 /// Threads a move's bands may be shared between: `KERF_SIM_THREADS` (1
-/// or 2) if set, else 2 where the machine runs two threads at once. The
-/// helper thread is kept for the run and claims bands as it gets time
-/// (helper.rs), so on a busy machine it costs the caller only the job's
-/// publishing (docs/benchmarks.md).
+/// or 2) if set, else 1. The helper is kept for the run and claims bands
+/// as it gets time (helper.rs), but on the 2-core machine it gave no
+/// shorter runs, with the cores busy or nearly free, for a fifth more
+/// CPU time (docs/benchmarks.md), so it is asked for, not assumed.
 fn default_threads() -> usize {
     let env = std::env::var("KERF_SIM_THREADS").ok();
-    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     env.and_then(|v| v.trim().parse::<usize>().ok())
-        .unwrap_or(cores)
-        .clamp(1, 2)
+        .map_or(1, |n| n.clamp(1, 2))
 }
 
 /// A `--sim-res` refused.
