@@ -212,9 +212,9 @@ impl ZMap {
 
 /// Threads a move's bands may be shared between: `KERF_SIM_THREADS` (1
 /// or 2) if set, else 1. The helper is kept for the run and claims bands
-/// as it gets time (helper.rs), but on the 2-core machine it gave no
-/// shorter runs, with the cores busy or nearly free, for a fifth more
-/// CPU time (docs/benchmarks.md), so it is asked for, not assumed.
+/// as it gets time (helper.rs), but on the shared 2-core machine it gave
+/// no run that was reliably shorter (docs/benchmarks.md), so it is asked
+/// for, not assumed.
 fn default_threads() -> usize {
     let env = std::env::var("KERF_SIM_THREADS").ok();
     env.and_then(|v| v.trim().parse::<usize>().ok())
