@@ -137,19 +137,11 @@ fn fast(v: f64) -> Option<(Text, usize)> {
         PAIRS[r + 1],
     ]);
     // Trailing zeros off: frac is not 0, so at most 5 of them.
-    let tz = if frac % 10 != 0 {
-        0
-    } else if frac % 100 != 0 {
-        1
-    } else if frac % 1_000 != 0 {
-        2
-    } else if frac % 10_000 != 0 {
-        3
-    } else if frac % 100_000 != 0 {
-        4
-    } else {
-        5
-    };
+    let tz = usize::from(frac.is_multiple_of(10))
+        + usize::from(frac.is_multiple_of(100))
+        + usize::from(frac.is_multiple_of(1_000))
+        + usize::from(frac.is_multiple_of(10_000))
+        + usize::from(frac.is_multiple_of(100_000));
     Some((buf, i + 6 - tz))
 }
 
