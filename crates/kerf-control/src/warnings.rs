@@ -76,8 +76,9 @@ pub struct Detector {
     end: Option<(u32, SrcRef)>,
     /// First sign of a lathe program on a mill: where and why.
     lathe: Option<(SrcRef, String)>,
-    /// The work position after the last motion (None before the first).
-    here: Option<Pos>,
+    /// The rotary axes' work positions (A, B, C) after the last motion
+    /// (None before the first).
+    rotary: Option<[f64; 3]>,
 }
 
 impl Detector {
@@ -110,11 +111,11 @@ impl Detector {
             self.end = Some((code, e.src));
         }
         if self.lathe.is_none() && profile.kind == MachineKind::Mill {
-            let turns = e.motion().is_some_and(|m| turns_rotary(self.here, &m.to));
-            self.lathe = lathe_sign(e, turns).map(|why| (e.src, why));
+            let from = self.rotary;
+            self.lathe = lathe_sign(e, || turns_rotary(from, e)).map(|why| (e.src, why));
         }
         if let Some(m) = e.motion() {
-            self.here = Some(m.to);
+            self.rotary = Some(rotary_of(&m.to));
         }
     }
 
@@ -165,23 +166,28 @@ impl Detector {
     }
 }
 
-/// Whether a move from `from` (unknown before the first motion) to `to`
-/// turns a rotary axis.
-fn turns_rotary(from: Option<Pos>, to: &Pos) -> bool {
-    from.is_some_and(|p| {
-        Axis::ALL
-            .iter()
-            .any(|&a| a.is_rotary() && p[a as usize] != to[a as usize])
-    })
+/// A, B and C of a position.
+fn rotary_of(p: &Pos) -> [f64; 3] {
+    [Axis::A, Axis::B, Axis::C].map(|a| p[a as usize])
+}
+
+/// Whether motion `e` from rotary positions `from` (unknown before the
+/// first motion) turns a rotary axis.
+fn turns_rotary(from: Option<[f64; 3]>, e: &Event) -> bool {
+    match (from, e.motion()) {
+        (Some(r), Some(m)) => r != rotary_of(&m.to),
+        _ => false,
+    }
 }
 
 /// Why an event looks like it was written for a lathe, if it does.
-/// `turns` says whether the move turns a rotary axis: its F is then a
+/// `turns` says whether the move turns a rotary axis (asked only of a
+/// slow feed): its F is then a
 /// rate of the combined move in degrees and mm (the feeds of a G112 or
 /// G107 program written out as plain X and C moves, `kerf expand`'s
 /// output, fall below 1 where a chord is mostly rotation), no sign of a
 /// lathe's feed per revolution.
-fn lathe_sign(e: &Event, turns: bool) -> Option<String> {
+fn lathe_sign(e: &Event, turns: impl Fn() -> bool) -> Option<String> {
     match &e.cmd {
         Canon::Feed {
             feed: Feed::PerMin(v),
@@ -190,7 +196,7 @@ fn lathe_sign(e: &Event, turns: bool) -> Option<String> {
         | Canon::Arc {
             feed: Feed::PerMin(v),
             ..
-        } if *v > 0.0 && *v < 1.0 && !turns => Some(format!(
+        } if *v > 0.0 && *v < 1.0 && !turns() => Some(format!(
             "F{v} is {v} mm/min here: a lathe's feed per revolution?"
         )),
         Canon::Spindle { css: Some(v), .. } => Some(format!("constant surface speed G96 S{v}")),
