@@ -154,39 +154,25 @@ pub fn num(out: &mut Vec<u8>, v: f64) {
     }
 }
 
-/// One value with its text.
+/// The last value written in one place of a record (an axis of `to`, the
+/// feed …) with its text: toolpaths repeat most coordinates from one
+/// record to the next, and a repeated value is copied, not formatted.
 #[derive(Clone, Copy, Debug)]
-struct Entry {
+pub struct Memo {
     bits: u64,
     len: u8,
     text: Text,
 }
 
-/// The last two values written in one place of a record (an axis of
-/// `to`, the feed …) with their texts: toolpaths repeat most coordinates
-/// from one record to the next, and a canned cycle's Z goes back and
-/// forth between two levels (R and the bottom), so a value seen in one of
-/// the last two records is copied, not formatted.
-#[derive(Clone, Copy, Debug)]
-pub struct Memo {
-    seen: [Entry; 2],
-    /// The entry used last (the other is replaced by a new value).
-    recent: u8,
-}
-
 impl Default for Memo {
     fn default() -> Memo {
         // NaN bits that `num` never caches (it caches only the texts of
-        // its fast path, finite values), so the first values are always
+        // its fast path, finite values), so the first value is always
         // formatted.
-        let none = Entry {
+        Memo {
             bits: u64::MAX,
             len: 0,
             text: [0; 24],
-        };
-        Memo {
-            seen: [none; 2],
-            recent: 0,
         }
     }
 }
@@ -196,25 +182,15 @@ impl Memo {
     #[inline]
     pub fn put(&mut self, out: &mut Vec<u8>, v: f64) {
         let bits = v.to_bits();
-        let i = if self.seen[0].bits == bits {
-            0
-        } else if self.seen[1].bits == bits {
-            1
-        } else {
+        if bits != self.bits {
             let Some((text, len)) = fast(v) else {
                 return slow(out, v);
             };
-            let i = 1 - usize::from(self.recent & 1);
-            self.seen[i] = Entry {
-                bits,
-                len: len as u8,
-                text,
-            };
-            i
-        };
-        self.recent = i as u8;
-        let e = &self.seen[i];
-        put_fixed(out, &e.text, e.len as usize);
+            self.text = text;
+            self.len = len as u8;
+            self.bits = bits;
+        }
+        put_fixed(out, &self.text, self.len as usize);
     }
 }
 
@@ -312,30 +288,7 @@ mod tests {
     fn a_memo_writes_what_num_writes() {
         let mut m = Memo::default();
         let (mut a, mut b) = (Vec::new(), Vec::new());
-        // Repeats, alternation (a cycle's R and Z levels), signed zeros,
-        // and values of the slow path.
-        for v in [
-            1.5,
-            1.5,
-            -0.0,
-            0.0,
-            2.25,
-            2.25,
-            1e300,
-            1e300,
-            1.5,
-            2.0,
-            -1.5,
-            2.0,
-            -1.5,
-            3.0,
-            2.0,
-            -1.5,
-            -1.5,
-            2.0,
-            f64::NAN,
-            2.0,
-        ] {
+        for v in [1.5, 1.5, -0.0, 0.0, 2.25, 2.25, 1e300, 1e300, 1.5] {
             m.put(&mut a, v);
             num(&mut b, v);
             a.push(b' ');
