@@ -137,11 +137,20 @@ fn fast(v: f64) -> Option<(Text, usize)> {
         PAIRS[r + 1],
     ]);
     // Trailing zeros off: frac is not 0, so at most 5 of them.
-    let tz = usize::from(frac.is_multiple_of(10))
-        + usize::from(frac.is_multiple_of(100))
-        + usize::from(frac.is_multiple_of(1_000))
-        + usize::from(frac.is_multiple_of(10_000))
-        + usize::from(frac.is_multiple_of(100_000));
+    // Most have none: the first test decides.
+    let tz = if !frac.is_multiple_of(10) {
+        0
+    } else if !frac.is_multiple_of(100) {
+        1
+    } else if !frac.is_multiple_of(1_000) {
+        2
+    } else if !frac.is_multiple_of(10_000) {
+        3
+    } else if !frac.is_multiple_of(100_000) {
+        4
+    } else {
+        5
+    };
     Some((buf, i + 6 - tz))
 }
 
