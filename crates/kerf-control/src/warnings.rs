@@ -76,18 +76,17 @@ pub struct Detector {
     end: Option<(u32, SrcRef)>,
     /// First sign of a lathe program on a mill: where and why.
     lathe: Option<(SrcRef, String)>,
-    /// The rotary axes' work positions (A, B, C) after the last motion
-    /// (None before the first).
-    rotary: Option<[f64; 3]>,
 }
 
 impl Detector {
-    /// Looks at one event; `stalled` says whether the planner could not
-    /// time it (a cut with no feed because the spindle is stopped);
-    /// `files` names the file the event points into.
+    /// Looks at one event; `from` is the work position before it,
+    /// `stalled` says whether the planner could not time it (a cut with
+    /// no feed because the spindle is stopped); `files` names the file
+    /// the event points into.
     pub fn event(
         &mut self,
         e: &Event,
+        from: &Pos,
         stalled: bool,
         profile: &Profile,
         files: Files,
@@ -111,11 +110,7 @@ impl Detector {
             self.end = Some((code, e.src));
         }
         if self.lathe.is_none() && profile.kind == MachineKind::Mill {
-            let from = self.rotary;
             self.lathe = lathe_sign(e, || turns_rotary(from, e)).map(|why| (e.src, why));
-        }
-        if let Some(m) = e.motion() {
-            self.rotary = Some(rotary_of(&m.to));
         }
     }
 
@@ -166,18 +161,13 @@ impl Detector {
     }
 }
 
-/// A, B and C of a position.
-fn rotary_of(p: &Pos) -> [f64; 3] {
-    [Axis::A, Axis::B, Axis::C].map(|a| p[a as usize])
-}
-
-/// Whether motion `e` from rotary positions `from` (unknown before the
-/// first motion) turns a rotary axis.
-fn turns_rotary(from: Option<[f64; 3]>, e: &Event) -> bool {
-    match (from, e.motion()) {
-        (Some(r), Some(m)) => r != rotary_of(&m.to),
-        _ => false,
-    }
+/// Whether motion `e` from work position `from` turns a rotary axis.
+fn turns_rotary(from: &Pos, e: &Event) -> bool {
+    e.motion().is_some_and(|m| {
+        [Axis::A, Axis::B, Axis::C]
+            .iter()
+            .any(|&a| from[a as usize] != m.to[a as usize])
+    })
 }
 
 /// Why an event looks like it was written for a lathe, if it does.
@@ -233,8 +223,11 @@ mod tests {
         let p = Profile::builtin("hx-mc").unwrap();
         let names = ["t.nc".to_string()];
         let (mut d, mut out) = (Detector::default(), Warnings::default());
+        // The run starts at the work origin.
+        let mut from = [0.0; 6];
         for e in events {
-            d.event(e, false, &p, Files::Names(&names), &mut out);
+            d.event(e, &from, false, &p, Files::Names(&names), &mut out);
+            from = e.motion().unwrap().to;
         }
         d.lathe.map(|(src, _)| src.line)
     }
@@ -246,8 +239,10 @@ mod tests {
             lathe_line(&[feed(0.0, 0.0, 500.0, 1), feed(150.0, 0.0, 0.2, 2)]),
             Some(2)
         );
-        // The first motion too (no position before it to compare).
+        // The first motion too.
         assert_eq!(lathe_line(&[feed(150.0, 0.0, 0.2, 1)]), Some(1));
+        // The first motion turning C from the origin is not.
+        assert_eq!(lathe_line(&[feed(150.0, 0.9, 0.2, 1)]), None);
     }
 
     #[test]
