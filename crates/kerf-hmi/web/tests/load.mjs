@@ -5,7 +5,8 @@
 // measures click to repaint in chromium (OPT STOP, 200 clicks spread
 // over the run; the clients' process: KERF_LOAD_CLIENTS below):
 // `click_ms` the whole click, `request_ms` its request as the page's
-// network stack timed it, `server_ms` 200 commands sent from this process
+// network stack timed it, `page_ms` the rest (the answer handled until
+// the switch changed, then the wait for the next frame), `server_ms` 200 commands sent from this process
 // (the server and loopback alone); `cpu_s` the CPU seconds the server
 // and the node clients used.
 //   cargo build --release -p kerf-cli
@@ -83,17 +84,23 @@ const direct = (async () => {
 const screen = await ctx.newPage();
 await screen.goto(server.url);
 await screen.waitForFunction(() => window.kerf && window.kerf.state);
-const { clicks, requests } = await screen.evaluate(async (secs) => {
+const { clicks, requests, handled, frame } = await screen.evaluate(async (secs) => {
   const b = document.querySelector('[data-switch=optional_stop]');
   const out = [];
   // The command's request as the page's network stack timed it (from
   // sending to the answer's last byte: loopback and the server); the rest
   // of a click is the page's own (the answer handled, the switch drawn).
   const requests = [];
+  const ends = []; // each command request's [start, answer's last byte]
   performance.setResourceTimingBufferSize(1000);
   new PerformanceObserver((l) => {
-    for (const e of l.getEntries()) if (e.name.endsWith('/api/command')) requests.push(e.responseEnd - e.startTime);
+    for (const e of l.getEntries()) {
+      if (!e.name.endsWith('/api/command')) continue;
+      requests.push(e.responseEnd - e.startTime);
+      ends.push([e.startTime, e.responseEnd]);
+    }
   }).observe({ type: 'resource' });
+  const marks = []; // each click's [start, switch changed, next frame]
   const gap = (secs * 1000 * 0.8) / 200;
   for (let i = 0; i < 200; i++) {
     const was = b.classList.contains('on');
@@ -104,12 +111,26 @@ const { clicks, requests } = await screen.evaluate(async (secs) => {
     });
     b.click();
     await changed;
+    const t1 = performance.now();
     await new Promise((r) => requestAnimationFrame(r));
-    out.push(performance.now() - t0);
+    const t2 = performance.now();
+    out.push(t2 - t0);
+    marks.push([t0, t1, t2]);
     await new Promise((r) => setTimeout(r, gap));
   }
   await new Promise((r) => setTimeout(r, 100));
-  return { clicks: out.sort((a, b) => a - b), requests: requests.sort((a, b) => a - b) };
+  // The page's own part of each click, split at its request's answer:
+  // the answer handled until the switch changed, then the wait for the
+  // next frame.
+  const handled = [];
+  const frame = [];
+  for (const [t0, t1, t2] of marks) {
+    const e = ends.find(([st, end]) => st >= t0 && end <= t1);
+    if (e) handled.push(t1 - e[1]);
+    frame.push(t2 - t1);
+  }
+  const up = (a, b) => a - b;
+  return { clicks: out.sort(up), requests: requests.sort(up), handled: handled.sort(up), frame: frame.sort(up) };
 }, secs);
 const counted = await counting;
 const counts = Array.isArray(counted) ? counted : counted.counts;
@@ -128,6 +149,11 @@ function cpuSeconds(pid) {
   } catch { return null; }
 }
 
+/** n, median, p99 and max of sorted `a`. */
+function spread(a) {
+  return { n: a.length, median: a[a.length >> 1], p99: a[Math.ceil(a.length * 0.99) - 1], max: a[a.length - 1] };
+}
+
 const rates = counts.map((c) => c.states / secs).sort((a, b) => a - b);
 const errors = counts.filter((c) => c.error).map((c) => c.error);
 const kinds = {};
@@ -142,6 +168,7 @@ console.log(JSON.stringify({
   click_ms: { median: clicks[100], p99, max: clicks[clicks.length - 1] },
   server_ms: { median: server_ms[100], p99: server_ms[197], max: server_ms[199] },
   request_ms: { n: requests.length, median: requests[requests.length >> 1], p99: rp99, max: requests[requests.length - 1] },
+  page_ms: { answer_to_switch: spread(handled), switch_to_frame: spread(frame) },
   clients_in: where,
   cpu_s: { server: serverCpu, clients: clientsCpu }, load_average: { before: loadBefore, after: load }, cores: cpus().length, judged,
 }));
