@@ -211,11 +211,13 @@ impl Interp {
     /// Sets the work offset of G54+`idx` (machine coordinates of its zero),
     /// as loaded with `--offsets`.
     pub fn set_work_offset(&mut self, idx: usize, origin: Pos) {
-        self.frames.work.set(work_offsets::WorkId::G5x(idx), origin);
+        self.frames
+            .work_mut()
+            .set(work_offsets::WorkId::G5x(idx), origin);
         if idx == 0 && self.cfg.dialect.caps.part_zero_is_e1 {
             // The Hurco's part zero is fixture offset E1.
             self.frames
-                .work
+                .work_mut()
                 .set(work_offsets::WorkId::Fixture(1), origin);
         }
     }
@@ -894,7 +896,7 @@ impl Interp {
         match g.means {
             Means::Work(n) => self
                 .frames
-                .work
+                .work_mut()
                 .select(work_offsets::WorkId::G5x(n as usize)),
             m => self.mode_event(m),
         }

@@ -418,7 +418,7 @@ impl Interp {
                     os.setting = true;
                     self.coordinate_setting(at)?
                 }
-                CancelWorkShift => self.frames.shift = [0.0; NAXES],
+                CancelWorkShift => *self.frames.shift_mut() = [0.0; NAXES],
                 MacroCall | FrameData | LocalCoords | CompCorner | Probe | ThreadCycle => {}
             }
         }
