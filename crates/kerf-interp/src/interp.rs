@@ -156,6 +156,9 @@ pub struct Interp {
     /// The Hurco's fixture offsets, offset activation, drill cycles,
     /// probe datums (interp/hurco.rs).
     hurco: Box<hurco::HurcoState>,
+    /// Quiet blocks take the short phase walk (interp/phases.rs); off
+    /// only to show that both walks give the same results.
+    quiet_walk: bool,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -196,7 +199,15 @@ impl Interp {
             hx: hx_features,
             puma,
             hurco,
+            quiet_walk: true,
         }
+    }
+
+    /// Switches the short phase walk for quiet blocks (on by default) —
+    /// for tests comparing it with the full walk; results are the same.
+    #[doc(hidden)]
+    pub fn set_quiet_walk(&mut self, on: bool) {
+        self.quiet_walk = on;
     }
 
     /// Loads the main program from a reader; `name` is used in source

@@ -33,6 +33,10 @@ pub(super) struct Config {
     /// once: (min - 1e-9, max + 1e-9), and (-inf, +inf) for an axis
     /// without limits (no coordinate is outside those).
     travel_hair: [(f64, f64); NAXES],
+    /// The dialect executes a block in [`crate::dialect::FANUC_MILL`]
+    /// order (the HX): quiet blocks may take the short walk
+    /// (interp/phases.rs).
+    pub(super) mill_order: bool,
 }
 
 impl Config {
@@ -69,7 +73,9 @@ impl Config {
                 travel[ax as usize] = Some((a.min, a.max));
             }
         }
+        let mill_order = dialect.order == crate::dialect::FANUC_MILL;
         Config {
+            mill_order,
             profile,
             dialect,
             lex,
