@@ -95,7 +95,10 @@ pub struct LexError {
 
 type R<T> = Result<T, LexError>;
 
-struct P<'a> {
+/// The parser's cursor; `FAST`: plain words and numbers by their fast
+/// paths ([`P::plain_value`], [`plain_number`]), false only in
+/// [`parse_block_general`].
+struct P<'a, const FAST: bool> {
     t: &'a [u8],
     i: usize,
     o: LexOptions,
@@ -112,19 +115,19 @@ fn err<T>(kind: LexErrorKind, at: usize) -> R<T> {
 /// Parses one block of text into `out` (which is cleared first).
 pub fn parse_block(text: &[u8], opts: &LexOptions, out: &mut Block) -> Result<(), LexError> {
     out.clear();
-    let mut p = P {
+    let mut p = P::<true> {
         t: text,
         i: 0,
         o: *opts,
         depth: 0,
     };
-    p.block::<true>(out)
+    p.block(out)
 }
 
-/// [`parse_block`] without its fast path for a plain word (an address
-/// letter and an unsigned or negative number written without blanks):
-/// every word goes through the general reader. Gives the same block as
-/// [`parse_block`] for every text; kept so that tests can show it.
+/// [`parse_block`] without its fast paths: every word goes through the
+/// general value reader and every number is read digit by digit (no
+/// [`plain_number`]). Gives the same block as [`parse_block`] for every
+/// text; kept so that tests can show it.
 #[doc(hidden)]
 pub fn parse_block_general(
     text: &[u8],
@@ -132,13 +135,13 @@ pub fn parse_block_general(
     out: &mut Block,
 ) -> Result<(), LexError> {
     out.clear();
-    let mut p = P {
+    let mut p = P::<false> {
         t: text,
         i: 0,
         o: *opts,
         depth: 0,
     };
-    p.block::<false>(out)
+    p.block(out)
 }
 
 /// Longest keyword or function name (`WHILE`, `ROUND`, ...).
@@ -162,7 +165,7 @@ pub fn is_blank(c: u8) -> bool {
     c == b' ' || c == b'\t' || c == b'\r' || c == 0x0c
 }
 
-impl<'a> P<'a> {
+impl<'a, const FAST: bool> P<'a, FAST> {
     #[inline]
     fn skip(&mut self) {
         while self.i < self.t.len() && is_blank(self.t[self.i]) {
@@ -193,8 +196,8 @@ impl<'a> P<'a> {
         self.t.get(self.i).copied()
     }
 
-    /// The block's words; `FAST`: plain words by [`P::plain_value`].
-    fn block<const FAST: bool>(&mut self, b: &mut Block) -> R<()> {
+    /// The block's words.
+    fn block(&mut self, b: &mut Block) -> R<()> {
         if self.peek() == Some(b'%') {
             // Tape start/end mark; whatever follows on the line is ignored.
             b.percent = true;
@@ -269,7 +272,7 @@ impl<'a> P<'a> {
                         && !matches!(l, b'N' | b'O')
                     {
                         self.i += 1;
-                        let val = match self.plain_value::<FAST>() {
+                        let val = match self.plain_value() {
                             Some(v) => v,
                             None => self.value(b, start)?,
                         };
@@ -540,7 +543,7 @@ impl<'a> P<'a> {
     /// without its general steps. None (cursor unmoved) for anything
     /// else, and always when `FAST` is false.
     #[inline(always)]
-    fn plain_value<const FAST: bool>(&mut self) -> Option<Val> {
+    fn plain_value(&mut self) -> Option<Val> {
         if !FAST {
             return None;
         }
@@ -603,6 +606,9 @@ impl<'a> P<'a> {
     /// common form.
     #[inline]
     fn number(&mut self, at: usize) -> R<Num> {
+        if !FAST {
+            return self.number_slow(at);
+        }
         match plain_number(self.t, self.i, self.o.max_digits as usize) {
             Some((num, end)) => {
                 self.i = end;

@@ -74,3 +74,11 @@ fn the_surface_blocks_read_the_same_both_ways() {
     parse_block(b"X-0", &o, &mut b).unwrap();
     assert!(format!("{:?}", b.words[0].val).contains("-0.0"));
 }
+
+#[test]
+fn a_blank_is_a_space_tab_cr_or_form_feed_only() {
+    for c in 0..=255u8 {
+        let want = matches!(c, b' ' | b'\t' | b'\r' | 0x0c);
+        assert_eq!(kerf_lang::is_blank(c), want, "byte {c:#04x}");
+    }
+}
