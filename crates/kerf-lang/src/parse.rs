@@ -95,10 +95,7 @@ pub struct LexError {
 
 type R<T> = Result<T, LexError>;
 
-/// The parser's cursor; `FAST`: plain words and numbers by their fast
-/// paths ([`P::plain_value`], [`plain_number`]), false only in
-/// [`parse_block_general`].
-struct P<'a, const FAST: bool> {
+struct P<'a> {
     t: &'a [u8],
     i: usize,
     o: LexOptions,
@@ -115,19 +112,21 @@ fn err<T>(kind: LexErrorKind, at: usize) -> R<T> {
 /// Parses one block of text into `out` (which is cleared first).
 pub fn parse_block(text: &[u8], opts: &LexOptions, out: &mut Block) -> Result<(), LexError> {
     out.clear();
-    let mut p = P::<true> {
+    let mut p = P {
         t: text,
         i: 0,
         o: *opts,
         depth: 0,
     };
-    p.block(out)
+    p.block::<true>(out)
 }
 
-/// [`parse_block`] without its fast paths: every word goes through the
-/// general value reader and every number is read digit by digit (no
-/// [`plain_number`]). Gives the same block as [`parse_block`] for every
-/// text; kept so that tests can show it.
+/// [`parse_block`] without its fast path for a plain word (an address
+/// letter and an unsigned or negative number written without blanks):
+/// every word goes through the general value reader. Gives the same
+/// block as [`parse_block`] for every text; kept so that tests can show
+/// it. (Both read a number by [`plain_number`] where it can; the unit
+/// test below shows it reads what the digit-by-digit reader reads.)
 #[doc(hidden)]
 pub fn parse_block_general(
     text: &[u8],
@@ -135,13 +134,13 @@ pub fn parse_block_general(
     out: &mut Block,
 ) -> Result<(), LexError> {
     out.clear();
-    let mut p = P::<false> {
+    let mut p = P {
         t: text,
         i: 0,
         o: *opts,
         depth: 0,
     };
-    p.block(out)
+    p.block::<false>(out)
 }
 
 /// Longest keyword or function name (`WHILE`, `ROUND`, ...).
@@ -165,7 +164,7 @@ pub fn is_blank(c: u8) -> bool {
     c == b' ' || c == b'\t' || c == b'\r' || c == 0x0c
 }
 
-impl<'a, const FAST: bool> P<'a, FAST> {
+impl<'a> P<'a> {
     #[inline]
     fn skip(&mut self) {
         while self.i < self.t.len() && is_blank(self.t[self.i]) {
@@ -196,8 +195,8 @@ impl<'a, const FAST: bool> P<'a, FAST> {
         self.t.get(self.i).copied()
     }
 
-    /// The block's words.
-    fn block(&mut self, b: &mut Block) -> R<()> {
+    /// The block's words; `FAST`: plain words by [`P::plain_value`].
+    fn block<const FAST: bool>(&mut self, b: &mut Block) -> R<()> {
         if self.peek() == Some(b'%') {
             // Tape start/end mark; whatever follows on the line is ignored.
             b.percent = true;
@@ -272,7 +271,7 @@ impl<'a, const FAST: bool> P<'a, FAST> {
                         && !matches!(l, b'N' | b'O')
                     {
                         self.i += 1;
-                        let val = match self.plain_value() {
+                        let val = match self.plain_value::<FAST>() {
                             Some(v) => v,
                             None => self.value(b, start)?,
                         };
@@ -543,7 +542,7 @@ impl<'a, const FAST: bool> P<'a, FAST> {
     /// without its general steps. None (cursor unmoved) for anything
     /// else, and always when `FAST` is false.
     #[inline(always)]
-    fn plain_value(&mut self) -> Option<Val> {
+    fn plain_value<const FAST: bool>(&mut self) -> Option<Val> {
         if !FAST {
             return None;
         }
@@ -606,9 +605,6 @@ impl<'a, const FAST: bool> P<'a, FAST> {
     /// common form.
     #[inline]
     fn number(&mut self, at: usize) -> R<Num> {
-        if !FAST {
-            return self.number_slow(at);
-        }
         match plain_number(self.t, self.i, self.o.max_digits as usize) {
             Some((num, end)) => {
                 self.i = end;
@@ -961,4 +957,43 @@ pub fn loop_command(text: &[u8]) -> Option<LoopCmd> {
         }
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// What the digit-by-digit reader gives at the start of `t`.
+    fn slow(t: &[u8], max: u8) -> R<(Num, usize)> {
+        let mut p = P {
+            t,
+            i: 0,
+            o: LexOptions {
+                max_digits: max,
+                ..LexOptions::default()
+            },
+            depth: 0,
+        };
+        let n = p.number_slow(0)?;
+        Ok((n, p.i))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(5000))]
+
+        /// Where `plain_number` reads a number, the digit-by-digit reader
+        /// reads the same one (value to the bit, point, digits, end).
+        #[test]
+        fn plain_number_reads_what_the_digit_reader_reads(
+            t in "[0-9]{0,16}[.]?[0-9]{0,12}[ \t]{0,2}[0-9.XY;]{0,2}",
+            max in 1u8..=18,
+        ) {
+            if let Some((n, end)) = plain_number(t.as_bytes(), 0, max as usize) {
+                let (m, slow_end) = slow(t.as_bytes(), max).expect("the digit reader reads it too");
+                prop_assert_eq!(n.value.to_bits(), m.value.to_bits(), "{:?}", t);
+                prop_assert_eq!((n.point, n.digits, end), (m.point, m.digits, slow_end), "{:?}", t);
+            }
+        }
+    }
 }
