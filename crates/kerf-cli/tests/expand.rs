@@ -308,3 +308,32 @@ fn g112_moves_keep_their_speed_on_the_face() {
         "original {want} s, expanded {got} s"
     );
 }
+
+#[test]
+fn expanded_g112_output_runs_without_a_lathe_warning() {
+    // Issue 21: the expansion's chords that are mostly rotation get
+    // feeds below 1 (line 7: X20.002 C0.895 F0.64), which once read as a
+    // lathe's feed per revolution (KERF-W002). The original gives no
+    // warning, nor must its expansion.
+    let prog = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/hx/polar_interp_g112.nc");
+    let out = scratch("g112-w002", "nc");
+    let st = std::process::Command::new(env!("CARGO_BIN_EXE_kerf"))
+        .args(["expand", "--machine", "hx-mc", "--quiet", "-o"])
+        .arg(&out)
+        .arg(&prog)
+        .status()
+        .unwrap();
+    assert!(st.success());
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert!(text.contains(" F0.64 "), "{text}");
+    for p in [&prog, &out] {
+        let run = std::process::Command::new(env!("CARGO_BIN_EXE_kerf"))
+            .args(["run", "--machine", "hx-mc"])
+            .arg(p)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&run.stderr);
+        assert!(run.status.success(), "{err}");
+        assert!(!err.contains("warning"), "{}: {err}", p.display());
+    }
+}

@@ -13,7 +13,31 @@
 //! a number past the digit limit) is refused, and the block goes to the
 //! parser: [`BlockDims::read_parsed`] takes the same from its result.
 
-use kerf_lang::{is_blank, plain_number, Addr, Block, Val};
+use kerf_lang::{is_blank, Addr, Block, Val};
+
+/// A set of address letters `A`..`Z` (one bit each), for the dimension
+/// letters of a profile: a test of one bit where a slice search was a
+/// call per word.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Letters(u32);
+
+impl Letters {
+    /// The set of the upper-case letters in `of`.
+    pub fn new(of: &[u8]) -> Letters {
+        Letters(
+            of.iter()
+                .filter(|c| c.is_ascii_uppercase())
+                .fold(0, |m, c| m | 1 << (c - b'A')),
+        )
+    }
+
+    /// Whether `c` (any byte) is in the set.
+    #[inline]
+    pub fn has(self, c: u8) -> bool {
+        let i = c.wrapping_sub(b'A');
+        i < 26 && self.0 & (1 << i) != 0
+    }
+}
 
 /// One non-zero literal dimension word.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -40,6 +64,82 @@ pub(crate) struct BlockDims {
     pub inch: Option<bool>,
 }
 
+/// Exact powers of ten, as kerf-lang's parser divides by them.
+const POW10: [f64; 19] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18,
+];
+
+/// A number read as [`kerf_lang::plain_number`] reads it, its value left
+/// as the integer of its digits and the count of them after the point.
+struct Digits {
+    mant: u64,
+    frac: usize,
+    point: bool,
+    /// Index after the number and the blanks that follow it.
+    end: usize,
+}
+
+impl Digits {
+    /// The value the parser gives (`mant / 10^frac`).
+    #[inline]
+    fn value(&self) -> f64 {
+        if self.frac == 0 {
+            self.mant as f64
+        } else {
+            self.mant as f64 / POW10[self.frac]
+        }
+    }
+}
+
+/// Reads the digits of a run of `[0-9]`: (integer, index after).
+#[inline(always)]
+fn run(t: &[u8], mut i: usize, mut mant: u64) -> (u64, usize) {
+    while let Some(&c) = t.get(i) {
+        let d = c.wrapping_sub(b'0');
+        if d >= 10 {
+            break;
+        }
+        // Wrapping: a run long enough to overflow is past the digit
+        // limit and refused.
+        mant = mant.wrapping_mul(10).wrapping_add(u64::from(d));
+        i += 1;
+    }
+    (mant, i)
+}
+
+/// The number at `s`, where [`kerf_lang::plain_number`] reads one (the
+/// same refusals: no digit, past `max` digits or 18, digits or a first
+/// point after blanks), without working out its value.
+#[inline(always)]
+fn digits_at(t: &[u8], s: usize, max: usize) -> Option<Digits> {
+    let (mant, int_end) = run(t, s, 0);
+    let point = t.get(int_end) == Some(&b'.');
+    let (mant, i) = if point {
+        run(t, int_end + 1, mant)
+    } else {
+        (mant, int_end)
+    };
+    let frac = i - int_end - usize::from(point);
+    let count = int_end - s + frac;
+    let mut j = i;
+    while t.get(j).is_some_and(|&c| is_blank(c)) {
+        j += 1;
+    }
+    let more = t
+        .get(j)
+        .is_some_and(|c| c.is_ascii_digit() || (*c == b'.' && !point));
+    if count == 0 || count > max.min(18) || more {
+        return None;
+    }
+    Some(Digits {
+        mant,
+        frac,
+        point,
+        end: j,
+    })
+}
+
 impl BlockDims {
     fn clear(&mut self) {
         self.dims.clear();
@@ -47,9 +147,9 @@ impl BlockDims {
         self.inch = None;
     }
 
-    /// Notes one literal word (`value` as the parser reads it).
+    /// Notes a G or M word (`value` as the parser reads it).
     #[inline]
-    fn word(&mut self, letters: &[u8], letter: u8, value: f64, point: bool, at: u32) {
+    fn code(&mut self, letter: u8, value: f64) {
         match letter {
             b'G' => {
                 self.skipped |= [4.0, 10.0, 65.0, 66.0].contains(&value);
@@ -60,7 +160,12 @@ impl BlockDims {
             b'M' => self.skipped |= value == 98.0,
             _ => {}
         }
-        if value != 0.0 && letters.contains(&letter) {
+    }
+
+    /// Notes one dimension word if it is one and not zero.
+    #[inline]
+    fn dim(&mut self, letters: Letters, letter: u8, value: f64, point: bool, at: u32) {
+        if value != 0.0 && letters.has(letter) {
             let value = if point { 0.0 } else { value };
             self.dims.push(Dim {
                 letter,
@@ -72,11 +177,12 @@ impl BlockDims {
     }
 
     /// The same from a parsed block.
-    pub fn read_parsed(&mut self, b: &Block, letters: &[u8]) {
+    pub fn read_parsed(&mut self, b: &Block, letters: Letters) {
         self.clear();
         for w in &b.words {
             if let (Addr::L(letter), Val::Num(n)) = (w.addr, w.val) {
-                self.word(letters, letter, n.value, n.point, w.at);
+                self.code(letter, n.value);
+                self.dim(letters, letter, n.value, n.point, w.at);
             }
         }
     }
@@ -85,32 +191,55 @@ impl BlockDims {
     /// blanks and an end-of-block `;`; false (and the fields unspecified)
     /// when the parser must read it. `letters` are the dimension
     /// letters, `max_digits` the parser's digit limit.
-    pub fn read_plain(&mut self, text: &[u8], letters: &[u8], max_digits: u8) -> bool {
+    ///
+    /// A number's value is worked out only where it is needed: for G and
+    /// M, and for a dimension written without a point; otherwise whether
+    /// it is zero is whether its digits are.
+    pub fn read_plain(&mut self, text: &[u8], letters: Letters, max_digits: u8) -> bool {
         self.clear();
         let max = usize::from(max_digits);
-        let n = text.len();
         let mut i = 0;
         loop {
-            while i < n && is_blank(text[i]) {
+            while text.get(i).is_some_and(|&c| is_blank(c)) {
                 i += 1;
             }
-            if i == n || text[i] == b';' {
+            let Some(&c) = text.get(i) else {
+                return true;
+            };
+            if c == b';' {
                 return true;
             }
-            let letter = text[i].to_ascii_uppercase();
+            let letter = c.to_ascii_uppercase();
             if !letter.is_ascii_uppercase() || letter == b'N' || letter == b'O' {
                 return false;
             }
             let at = i as u32;
             i += 1;
-            let neg = i < n && text[i] == b'-';
+            let neg = text.get(i) == Some(&b'-');
             i += usize::from(neg);
-            let Some((num, end)) = plain_number(text, i, max) else {
+            let Some(num) = digits_at(text, i, max) else {
                 return false;
             };
-            i = end;
-            let value = if neg { -num.value } else { num.value };
-            self.word(letters, letter, value, num.point, at);
+            i = num.end;
+            if letter == b'G' || letter == b'M' {
+                let v = num.value();
+                self.code(letter, if neg { -v } else { v });
+            } else if num.mant != 0 && letters.has(letter) {
+                // Digits not all zero: a value of at least 1e-18.
+                let value = if num.point {
+                    0.0
+                } else if neg {
+                    -num.value()
+                } else {
+                    num.value()
+                };
+                self.dims.push(Dim {
+                    letter,
+                    point: num.point,
+                    value,
+                    at,
+                });
+            }
         }
     }
 }
@@ -120,20 +249,22 @@ mod tests {
     use super::*;
     use kerf_lang::{parse_block, LexOptions};
 
-    const HX: &[u8] = b"XYZUVWIJR";
+    fn hx() -> Letters {
+        Letters::new(b"XYZUVWIJR")
+    }
 
     /// What the full parser's block gives.
     fn parsed(text: &str) -> (Vec<Dim>, bool, Option<bool>) {
         let mut b = Block::default();
         parse_block(text.as_bytes(), &LexOptions::default(), &mut b).unwrap();
         let mut d = BlockDims::default();
-        d.read_parsed(&b, HX);
+        d.read_parsed(&b, hx());
         (d.dims, d.skipped, d.inch)
     }
 
     fn plain(text: &str) -> Option<(Vec<Dim>, bool, Option<bool>)> {
         let mut d = BlockDims::default();
-        d.read_plain(text.as_bytes(), HX, LexOptions::default().max_digits)
+        d.read_plain(text.as_bytes(), hx(), LexOptions::default().max_digits)
             .then_some((d.dims, d.skipped, d.inch))
     }
 
@@ -208,5 +339,50 @@ mod tests {
         ] {
             assert!(plain(text).is_none(), "{text:?}");
         }
+    }
+
+    #[test]
+    fn generated_blocks_read_as_the_parser_reads_them() {
+        // Blocks of random bytes from the alphabet of plain words and of
+        // what must go to the parser (xorshift, fixed seed): wherever the
+        // plain reader takes one, the parser reads it to the same view.
+        const ALPHA: &[u8] = b"GMXYZRIJKFNOxgz0123456789000...--  \t;(#[+,";
+        let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+        let mut taken = 0;
+        for _ in 0..100_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let len = (x % 24) as usize;
+            let mut y = x;
+            let text: String = (0..len)
+                .map(|_| {
+                    y = y
+                        .wrapping_mul(6364136223846793005)
+                        .wrapping_add(1442695040888963407);
+                    ALPHA[(y >> 33) as usize % ALPHA.len()] as char
+                })
+                .collect();
+            // Mostly letters in front of numbers, as programs write them.
+            let text = format!("G{}X{text}", x % 100);
+            if let Some(got) = plain(&text) {
+                let mut b = Block::default();
+                assert!(
+                    parse_block(text.as_bytes(), &LexOptions::default(), &mut b).is_ok(),
+                    "{text:?}"
+                );
+                assert_eq!(got, parsed(&text), "{text:?}");
+                taken += 1;
+            }
+        }
+        // The comparison is not empty.
+        assert!(taken > 1000, "{taken}");
+    }
+
+    #[test]
+    fn letters_are_a_set() {
+        let l = hx();
+        assert!(l.has(b'X') && l.has(b'R') && !l.has(b'K') && !l.has(b'x'));
+        assert!(!l.has(b'[') && !l.has(b'@') && !l.has(0xC1));
     }
 }

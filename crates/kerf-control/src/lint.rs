@@ -21,7 +21,7 @@ use std::io;
 use kerf_interp::{Dialect, DialectId, Profile};
 use kerf_lang::{parse_block, Block, LexOptions, LineSource, ProgramRead, RawBlock};
 
-use crate::block_dims::BlockDims;
+use crate::block_dims::{BlockDims, Letters};
 
 use crate::warnings::Warning;
 
@@ -62,11 +62,11 @@ pub fn decimal_points(
     // HX: R is a radius or a cycle's R level; K is a canned cycle's
     // repeat count, left out. Lathes: R counts divisions (G73) or is coded
     // (G76), left out.
-    let letters: &[u8] = if d.id == DialectId::Hx {
+    let letters = Letters::new(if d.id == DialectId::Hx {
         b"XYZUVWIJR"
     } else {
         b"XYZUVWIJK"
-    };
+    });
     let mut inch = false;
     let mut src = LineSource::new(reader, profile.max_block_chars.max(1), d.hurco_syntax);
     let (mut raw, mut block) = (RawBlock::default(), Block::default());

@@ -13,7 +13,7 @@
 //! | `KERF-W005` | a program that ends without M02/M30 |
 //! | `KERF-W006` | a main program that ends in M99 (a bar-feed loop): kerf ran `main_passes` passes, the control repeats until reset |
 
-use kerf_canon::{Canon, Event, Feed, SrcRef};
+use kerf_canon::{Axis, Canon, Event, Feed, Pos, SrcRef};
 use kerf_interp::{Interp, MachineKind, Profile};
 
 use crate::sink::Files;
@@ -79,12 +79,14 @@ pub struct Detector {
 }
 
 impl Detector {
-    /// Looks at one event; `stalled` says whether the planner could not
-    /// time it (a cut with no feed because the spindle is stopped);
-    /// `files` names the file the event points into.
+    /// Looks at one event; `from` is the work position before it,
+    /// `stalled` says whether the planner could not time it (a cut with
+    /// no feed because the spindle is stopped); `files` names the file
+    /// the event points into.
     pub fn event(
         &mut self,
         e: &Event,
+        from: &Pos,
         stalled: bool,
         profile: &Profile,
         files: Files,
@@ -108,7 +110,7 @@ impl Detector {
             self.end = Some((code, e.src));
         }
         if self.lathe.is_none() && profile.kind == MachineKind::Mill {
-            self.lathe = lathe_sign(e).map(|why| (e.src, why));
+            self.lathe = lathe_sign(e, || turns_rotary(from, e)).map(|why| (e.src, why));
         }
     }
 
@@ -159,8 +161,23 @@ impl Detector {
     }
 }
 
+/// Whether motion `e` from work position `from` turns a rotary axis.
+fn turns_rotary(from: &Pos, e: &Event) -> bool {
+    e.motion().is_some_and(|m| {
+        [Axis::A, Axis::B, Axis::C]
+            .iter()
+            .any(|&a| from[a as usize] != m.to[a as usize])
+    })
+}
+
 /// Why an event looks like it was written for a lathe, if it does.
-fn lathe_sign(e: &Event) -> Option<String> {
+/// `turns` says whether the move turns a rotary axis (asked only of a
+/// slow feed): its F is then a
+/// rate of the combined move in degrees and mm (the feeds of a G112 or
+/// G107 program written out as plain X and C moves, `kerf expand`'s
+/// output, fall below 1 where a chord is mostly rotation), no sign of a
+/// lathe's feed per revolution.
+fn lathe_sign(e: &Event, turns: impl Fn() -> bool) -> Option<String> {
     match &e.cmd {
         Canon::Feed {
             feed: Feed::PerMin(v),
@@ -169,10 +186,74 @@ fn lathe_sign(e: &Event) -> Option<String> {
         | Canon::Arc {
             feed: Feed::PerMin(v),
             ..
-        } if *v > 0.0 && *v < 1.0 => Some(format!(
+        } if *v > 0.0 && *v < 1.0 && !turns() => Some(format!(
             "F{v} is {v} mm/min here: a lathe's feed per revolution?"
         )),
         Canon::Spindle { css: Some(v), .. } => Some(format!("constant surface speed G96 S{v}")),
         _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kerf_canon::Motion;
+
+    fn feed(x: f64, c: f64, f: f64, line: u32) -> Event {
+        let mut to = [0.0; 6];
+        to[Axis::X as usize] = x;
+        to[Axis::C as usize] = c;
+        Event {
+            src: SrcRef {
+                file: 0,
+                line,
+                col: 1,
+            },
+            tool: 1,
+            cmd: Canon::Feed {
+                m: Motion { to, mto: to },
+                feed: Feed::PerMin(f),
+            },
+            prog: None,
+        }
+    }
+
+    /// The line of the lathe sign found in `events` on the HX, if any.
+    fn lathe_line(events: &[Event]) -> Option<u32> {
+        let p = Profile::builtin("hx-mc").unwrap();
+        let names = ["t.nc".to_string()];
+        let (mut d, mut out) = (Detector::default(), Warnings::default());
+        // The run starts at the work origin.
+        let mut from = [0.0; 6];
+        for e in events {
+            d.event(e, &from, false, &p, Files::Names(&names), &mut out);
+            from = e.motion().unwrap().to;
+        }
+        d.lathe.map(|(src, _)| src.line)
+    }
+
+    #[test]
+    fn a_slow_feed_of_x_and_z_alone_is_a_lathe_sign() {
+        // 001 p.9: G01 X150. Z100. F0.2, mm/rev on the lathe.
+        assert_eq!(
+            lathe_line(&[feed(0.0, 0.0, 500.0, 1), feed(150.0, 0.0, 0.2, 2)]),
+            Some(2)
+        );
+        // The first motion too.
+        assert_eq!(lathe_line(&[feed(150.0, 0.0, 0.2, 1)]), Some(1));
+        // The first motion turning C from the origin is not.
+        assert_eq!(lathe_line(&[feed(150.0, 0.9, 0.2, 1)]), None);
+    }
+
+    #[test]
+    fn a_slow_feed_that_turns_c_is_not() {
+        // `kerf expand` of 000 §4.6's G112 example: the first chord of
+        // "C10." from X20 C0 is X20.002 C0.895 at F0.64, a rate of the
+        // combined move, as the expanded program's line 7 writes it.
+        let evs = [feed(20.0, 0.0, 100.0, 6), feed(20.002, 0.895, 0.64, 7)];
+        assert_eq!(lathe_line(&evs), None);
+        // A later slow feed without rotation is still found.
+        let more = [evs[0].clone(), evs[1].clone(), feed(30.0, 0.895, 0.5, 8)];
+        assert_eq!(lathe_line(&more), Some(8));
     }
 }

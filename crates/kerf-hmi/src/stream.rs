@@ -1,5 +1,5 @@
 //! `WS /api/stream`: the state as a JSON text message whenever it changes
-//! (every tick, 50 Hz, while the program runs; at least once a second when
+//! (every tick, 30 Hz, while the program runs; at least once a second when
 //! nothing changes) and the backplot as binary messages of point records.
 //! A slow client skips states (it always gets the newest), so memory per
 //! client is bounded. Client messages larger than [`MAX_CLIENT_MESSAGE`]

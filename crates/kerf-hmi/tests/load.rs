@@ -21,8 +21,10 @@ async fn server() -> std::net::SocketAddr {
         Ok(Box::new(kerf_hmi::RuntimeControl::new(rt)) as Box<dyn kerf_hmi::Control>)
     });
     let shared = kerf_hmi::Shared::new(make, profile, vec![], None, 1.0).unwrap();
-    // A square of 100 mm sides at F300, over and over: 80 s a lap.
-    let prog = "G90 G17 G21 G54\nG00 X0. Y0. Z5.\nWHILE [1 EQ 1] DO1\nG01 X100. F300.\nY100.\nX0.\nY0.\nEND1\nM30\n";
+    // A square of 100 mm sides at F300, three laps: 80 s a lap (longer
+    // than the longest run; not an endless loop, whose backplot trace
+    // would keep a core busy up to the 50-million-block guard).
+    let prog = "G90 G17 G21 G54\nG00 X0. Y0. Z5.\n#100=0\nWHILE [#100 LT 3] DO1\nG01 X100. F300.\nY100.\nX0.\nY0.\n#100=#100+1\nEND1\nM30\n";
     shared.load("square.nc", prog).unwrap();
     for c in [
         kerf_hmi::command::Command::Mode(kerf_hmi::state::Mode::MEM),

@@ -38,7 +38,7 @@ async fn while_running_states_come_on_the_servers_tick() {
         200
     );
     // The double runs for 1 s of machine time. States are pushed on the
-    // server's tick (50 Hz), not only when the execution state changes: a
+    // server's tick (30 Hz), not only when the execution state changes: a
     // second of motion brings many ACTIVE states, each further along X.
     // The rate is printed, not asserted (tests never assert time; a loaded
     // machine slows the ticks).

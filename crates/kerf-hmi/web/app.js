@@ -53,7 +53,7 @@ export async function command(body) {
 
 /**
  * A new state. The answer to a command is drawn at once (the operator's
- * click repaints in the same task); the stream's states (50 a second) are
+ * click repaints in the same task); the stream's states (30 a second) are
  * drawn once per animation frame, the newest only, so a busy page does
  * not spend its main thread on states it cannot show.
  */

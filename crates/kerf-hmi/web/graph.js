@@ -514,7 +514,7 @@ export class Graph {
     if (cur !== this.hlCurrent.shownLine || (cur && this.hlCurrent.shownN !== this.n && this.done)) this.showLine(this.hlCurrent, cur);
     if (this.selected && this.hlSelected.shownN !== this.n && this.done) this.showLine(this.hlSelected, this.selected);
     const w = s.position.work;
-    // A frame only when the tool has moved (states come at 50 Hz; a frame
+    // A frame only when the tool has moved (states come at 30 Hz; a frame
     // of a large path costs more than that in software GL).
     const moved = this.tool.position.x !== (w.X || 0) || this.tool.position.y !== (w.Y || 0) || this.tool.position.z !== (w.Z || 0);
     this.tool.position.set(w.X || 0, w.Y || 0, w.Z || 0);

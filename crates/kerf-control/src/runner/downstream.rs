@@ -90,7 +90,7 @@ impl Downstream {
         }
         if !self.plan {
             self.detector
-                .event(&e, false, profile, files, &mut self.warnings);
+                .event(&e, &from, false, profile, files, &mut self.warnings);
             return Ok(());
         }
         let feed_mm_min = match &e.cmd {
@@ -105,7 +105,7 @@ impl Downstream {
         self.planner.push(&e);
         let stalled = self.planner.stalled > stalled;
         self.detector
-            .event(&e, stalled, profile, files, &mut self.warnings);
+            .event(&e, &from, stalled, profile, files, &mut self.warnings);
         if e.motion().is_some() || matches!(e.cmd, Canon::Dwell { .. }) {
             self.pending.push_back(Pending {
                 event: e,

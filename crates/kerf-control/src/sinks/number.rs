@@ -21,7 +21,7 @@ const PAIRS: &[u8; 200] = b"\
 /// known size compiles to a few moves, where a short copy of unknown size
 /// is a call) and the tail cut off again.
 #[inline]
-fn put_fixed<const N: usize>(out: &mut Vec<u8>, text: &[u8; N], len: usize) {
+pub(crate) fn put_fixed<const N: usize>(out: &mut Vec<u8>, text: &[u8; N], len: usize) {
     let at = out.len();
     out.extend_from_slice(text);
     out.truncate(at + len);
@@ -81,25 +81,43 @@ fn round(x: f64) -> i64 {
     }
 }
 
-/// Appends `v` rounded to 1e-6: no `-0`, no exponent, at least one digit
-/// after the point (`1.0`, `-12.345679`, `0.0`).
-pub fn num(out: &mut Vec<u8>, v: f64) {
+/// The text of a number: at most 23 bytes, kept in a fixed array so that
+/// it is copied by a few moves.
+type Text = [u8; 24];
+
+/// Number of decimal digits of `n` < 10^9 (at least 1), by comparisons.
+#[inline]
+fn digits9(n: u64) -> usize {
+    1 + usize::from(n >= 10)
+        + usize::from(n >= 100)
+        + usize::from(n >= 1_000)
+        + usize::from(n >= 10_000)
+        + usize::from(n >= 100_000)
+        + usize::from(n >= 1_000_000)
+        + usize::from(n >= 10_000_000)
+        + usize::from(n >= 100_000_000)
+}
+
+/// The text [`num`] writes for `v` and its length, or None where it takes
+/// the `{}` path (NaN, infinite, |v| ≥ 1e9).
+#[inline]
+fn fast(v: f64) -> Option<(Text, usize)> {
     let x = v * 1e6;
     if x.is_nan() || x.abs() >= 1e15 {
-        return slow(out, v);
+        return None;
     }
+    let mut buf = [0u8; 24];
     let n = round(x);
     if n == 0 {
-        out.extend_from_slice(b"0.0");
-        return;
+        buf[..3].copy_from_slice(b"0.0");
+        return Some((buf, 3));
     }
     // Sign, at most 9 integer digits, the point, 6 decimals: 17 bytes.
-    let mut buf = [0u8; 24];
     let mut i = usize::from(n < 0);
     buf[0] = b'-';
     let a = n.unsigned_abs();
     let whole = a / 1_000_000;
-    let len = digits(whole);
+    let len = digits9(whole);
     fill(&mut buf[i..], whole, len);
     i += len;
     buf[i] = b'.';
@@ -107,7 +125,7 @@ pub fn num(out: &mut Vec<u8>, v: f64) {
     let frac = (a % 1_000_000) as usize;
     if frac == 0 {
         buf[i] = b'0';
-        return put_fixed(out, &buf, i + 1);
+        return Some((buf, i + 1));
     }
     let (p, q, r) = (frac / 10_000 * 2, frac / 100 % 100 * 2, frac % 100 * 2);
     buf[i..i + 6].copy_from_slice(&[
@@ -118,11 +136,31 @@ pub fn num(out: &mut Vec<u8>, v: f64) {
         PAIRS[r],
         PAIRS[r + 1],
     ]);
-    let mut end = i + 6;
-    while buf[end - 1] == b'0' {
-        end -= 1;
+    // Trailing zeros off: frac is not 0, so at most 5 of them.
+    // Most have none: the first test decides.
+    let tz = if !frac.is_multiple_of(10) {
+        0
+    } else if !frac.is_multiple_of(100) {
+        1
+    } else if !frac.is_multiple_of(1_000) {
+        2
+    } else if !frac.is_multiple_of(10_000) {
+        3
+    } else if !frac.is_multiple_of(100_000) {
+        4
+    } else {
+        5
+    };
+    Some((buf, i + 6 - tz))
+}
+
+/// Appends `v` rounded to 1e-6: no `-0`, no exponent, at least one digit
+/// after the point (`1.0`, `-12.345679`, `0.0`).
+pub fn num(out: &mut Vec<u8>, v: f64) {
+    match fast(v) {
+        Some((text, len)) => put_fixed(out, &text, len),
+        None => slow(out, v),
     }
-    put_fixed(out, &buf, end);
 }
 
 /// The last value written in one place of a record (an axis of `to`, the
@@ -132,37 +170,36 @@ pub fn num(out: &mut Vec<u8>, v: f64) {
 pub struct Memo {
     bits: u64,
     len: u8,
-    text: [u8; 23],
+    text: Text,
 }
 
 impl Default for Memo {
     fn default() -> Memo {
-        // NaN bits that `num` never caches (it caches only short texts of
-        // finite values), so the first value is always formatted.
+        // NaN bits that `num` never caches (it caches only the texts of
+        // its fast path, finite values), so the first value is always
+        // formatted.
         Memo {
             bits: u64::MAX,
             len: 0,
-            text: [0; 23],
+            text: [0; 24],
         }
     }
 }
 
 impl Memo {
     /// Appends `v` as [`num`] does.
+    #[inline]
     pub fn put(&mut self, out: &mut Vec<u8>, v: f64) {
         let bits = v.to_bits();
-        if bits == self.bits {
-            put_fixed(out, &self.text, self.len as usize);
-            return;
-        }
-        let at = out.len();
-        num(out, v);
-        let written = &out[at..];
-        if written.len() <= self.text.len() {
-            self.text[..written.len()].copy_from_slice(written);
-            self.len = written.len() as u8;
+        if bits != self.bits {
+            let Some((text, len)) = fast(v) else {
+                return slow(out, v);
+            };
+            self.text = text;
+            self.len = len as u8;
             self.bits = bits;
         }
+        put_fixed(out, &self.text, self.len as usize);
     }
 }
 
@@ -267,6 +304,24 @@ mod tests {
             b.push(b' ');
         }
         assert_eq!(a, b);
+    }
+
+    #[test]
+    fn digit_counts_by_comparison_are_the_counts() {
+        for n in [
+            0,
+            9,
+            10,
+            99,
+            100,
+            999_999,
+            1_000_000,
+            99_999_999,
+            100_000_000,
+            999_999_999,
+        ] {
+            assert_eq!(digits9(n), n.to_string().len(), "{n}");
+        }
     }
 
     #[test]

@@ -24,7 +24,16 @@ pub struct Toolpath<W: Write> {
 }
 
 pub use super::number::num;
-use super::number::{int, Memo};
+use super::number::{int, put_fixed, Memo};
+
+/// `,"KEY":{` of the memo rows (to, mto, prog, center), padded to a fixed
+/// size with the length used.
+const KEYS: [([u8; 12], usize); 4] = [
+    (*b",\"to\":{\0\0\0\0\0", 7),
+    (*b",\"mto\":{\0\0\0\0", 8),
+    (*b",\"prog\":{\0\0\0", 9),
+    (*b",\"center\":{\0", 11),
+];
 
 /// `{"file":"NAME","line":`
 fn head_of(out: &mut Vec<u8>, file: &str) {
@@ -64,20 +73,19 @@ impl<W: Write> Toolpath<W> {
     }
 
     /// `,"KEY":{"x":…}`; `slot` picks the memo row (0 to, 1 mto, 2 prog,
-    /// 3 center).
-    fn pos(&mut self, key: &str, slot: usize, p: &Pos) {
-        self.buf.extend_from_slice(b",\"");
-        self.buf.extend_from_slice(key.as_bytes());
-        self.buf.extend_from_slice(b"\":{");
-        for (i, a) in self.axes.iter().enumerate() {
-            let k = &self.keys[i];
+    /// 3 center) and its key.
+    fn pos(&mut self, slot: usize, p: &Pos) {
+        let (key, len) = &KEYS[slot];
+        put_fixed(&mut self.buf, key, *len);
+        let memo = &mut self.memo[slot];
+        for (i, (a, k)) in self.axes.iter().zip(&self.keys).enumerate() {
             if i == 0 {
                 // The first key without its comma.
                 self.buf.extend_from_slice(&[k[1], k[2], k[3], k[4]]);
             } else {
                 self.buf.extend_from_slice(k);
             }
-            self.memo[slot][i].put(&mut self.buf, p[*a as usize]);
+            memo[i].put(&mut self.buf, p[*a as usize]);
         }
         self.buf.push(b'}');
     }
@@ -134,10 +142,10 @@ impl<W: Write> Toolpath<W> {
             | Canon::Thread { m, .. }
             | Canon::Arc { m, .. } => {
                 let (to, mto) = (m.to, m.mto);
-                self.pos("to", 0, &to);
-                self.pos("mto", 1, &mto);
+                self.pos(0, &to);
+                self.pos(1, &mto);
                 if let Some(p) = e.prog.as_deref() {
-                    self.pos("prog", 2, p);
+                    self.pos(2, p);
                 }
             }
             Canon::Dwell {
@@ -145,7 +153,7 @@ impl<W: Write> Toolpath<W> {
                 revolutions,
             } => {
                 let p = *here;
-                self.pos("to", 0, &p);
+                self.pos(0, &p);
                 self.buf.extend_from_slice(b",\"seconds\":");
                 num(&mut self.buf, *seconds);
                 if *revolutions > 0.0 {
@@ -157,7 +165,7 @@ impl<W: Write> Toolpath<W> {
         }
         if let Canon::Arc { center, dir, .. } = &e.cmd {
             let c = *center;
-            self.pos("center", 3, &c);
+            self.pos(3, &c);
             self.buf.extend_from_slice(b",\"dir\":\"");
             self.buf.extend_from_slice(dir.name().as_bytes());
             self.buf.push(b'"');
