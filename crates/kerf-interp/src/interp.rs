@@ -156,6 +156,9 @@ pub struct Interp {
     /// The Hurco's fixture offsets, offset activation, drill cycles,
     /// probe datums (interp/hurco.rs).
     hurco: Box<hurco::HurcoState>,
+    /// Quiet blocks take the short phase walk (interp/phases.rs); off
+    /// only to show that both walks give the same results.
+    quiet_walk: bool,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -196,7 +199,15 @@ impl Interp {
             hx: hx_features,
             puma,
             hurco,
+            quiet_walk: true,
         }
+    }
+
+    /// Switches the short phase walk for quiet blocks (on by default) —
+    /// for tests comparing it with the full walk; results are the same.
+    #[doc(hidden)]
+    pub fn set_quiet_walk(&mut self, on: bool) {
+        self.quiet_walk = on;
     }
 
     /// Loads the main program from a reader; `name` is used in source
@@ -211,11 +222,13 @@ impl Interp {
     /// Sets the work offset of G54+`idx` (machine coordinates of its zero),
     /// as loaded with `--offsets`.
     pub fn set_work_offset(&mut self, idx: usize, origin: Pos) {
-        self.frames.work.set(work_offsets::WorkId::G5x(idx), origin);
+        self.frames
+            .work_mut()
+            .set(work_offsets::WorkId::G5x(idx), origin);
         if idx == 0 && self.cfg.dialect.caps.part_zero_is_e1 {
             // The Hurco's part zero is fixture offset E1.
             self.frames
-                .work
+                .work_mut()
                 .set(work_offsets::WorkId::Fixture(1), origin);
         }
     }
@@ -894,7 +907,7 @@ impl Interp {
         match g.means {
             Means::Work(n) => self
                 .frames
-                .work
+                .work_mut()
                 .select(work_offsets::WorkId::G5x(n as usize)),
             m => self.mode_event(m),
         }

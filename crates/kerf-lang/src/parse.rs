@@ -118,7 +118,29 @@ pub fn parse_block(text: &[u8], opts: &LexOptions, out: &mut Block) -> Result<()
         o: *opts,
         depth: 0,
     };
-    p.block(out)
+    p.block::<true>(out)
+}
+
+/// [`parse_block`] without its fast path for a plain word (an address
+/// letter and an unsigned or negative number written without blanks):
+/// every word goes through the general value reader. Gives the same
+/// block as [`parse_block`] for every text; kept so that tests can show
+/// it. (Both read a number by [`plain_number`] where it can; the unit
+/// test below shows it reads what the digit-by-digit reader reads.)
+#[doc(hidden)]
+pub fn parse_block_general(
+    text: &[u8],
+    opts: &LexOptions,
+    out: &mut Block,
+) -> Result<(), LexError> {
+    out.clear();
+    let mut p = P {
+        t: text,
+        i: 0,
+        o: *opts,
+        depth: 0,
+    };
+    p.block::<false>(out)
 }
 
 /// Longest keyword or function name (`WHILE`, `ROUND`, ...).
@@ -173,7 +195,8 @@ impl<'a> P<'a> {
         self.t.get(self.i).copied()
     }
 
-    fn block(&mut self, b: &mut Block) -> R<()> {
+    /// The block's words; `FAST`: plain words by [`P::plain_value`].
+    fn block<const FAST: bool>(&mut self, b: &mut Block) -> R<()> {
         if self.peek() == Some(b'%') {
             // Tape start/end mark; whatever follows on the line is ignored.
             b.percent = true;
@@ -248,7 +271,10 @@ impl<'a> P<'a> {
                         && !matches!(l, b'N' | b'O')
                     {
                         self.i += 1;
-                        let val = self.value(b, start)?;
+                        let val = match self.plain_value::<FAST>() {
+                            Some(v) => v,
+                            None => self.value(b, start)?,
+                        };
                         b.words.push(Word {
                             addr: Addr::L(l),
                             val,
@@ -509,6 +535,29 @@ impl<'a> P<'a> {
             Some(b'#' | b'[' | b'0'..=b'9' | b'.') => self.unary(b),
             _ => err(LexErrorKind::BadStatement, self.i),
         }
+    }
+
+    /// A word's value when it is a number [`plain_number`] reads, right
+    /// at the cursor or after a `-`: what [`P::value`] gives there, read
+    /// without its general steps. None (cursor unmoved) for anything
+    /// else, and always when `FAST` is false.
+    #[inline(always)]
+    fn plain_value<const FAST: bool>(&mut self) -> Option<Val> {
+        if !FAST {
+            return None;
+        }
+        let t = self.t;
+        let neg = t.get(self.i) == Some(&b'-');
+        let s = self.i + neg as usize;
+        if !t.get(s).is_some_and(u8::is_ascii_digit) {
+            return None;
+        }
+        let (mut num, end) = plain_number(t, s, self.o.max_digits as usize)?;
+        if neg {
+            num.value = -num.value;
+        }
+        self.i = end;
+        Some(Val::Num(num))
     }
 
     /// The value of a word.
@@ -908,4 +957,43 @@ pub fn loop_command(text: &[u8]) -> Option<LoopCmd> {
         }
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// What the digit-by-digit reader gives at the start of `t`.
+    fn slow(t: &[u8], max: u8) -> R<(Num, usize)> {
+        let mut p = P {
+            t,
+            i: 0,
+            o: LexOptions {
+                max_digits: max,
+                ..LexOptions::default()
+            },
+            depth: 0,
+        };
+        let n = p.number_slow(0)?;
+        Ok((n, p.i))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(5000))]
+
+        /// Where `plain_number` reads a number, the digit-by-digit reader
+        /// reads the same one (value to the bit, point, digits, end).
+        #[test]
+        fn plain_number_reads_what_the_digit_reader_reads(
+            t in "[0-9]{0,16}[.]?[0-9]{0,12}[ \t]{0,2}[0-9.XY;]{0,2}",
+            max in 1u8..=18,
+        ) {
+            if let Some((n, end)) = plain_number(t.as_bytes(), 0, max as usize) {
+                let (m, slow_end) = slow(t.as_bytes(), max).expect("the digit reader reads it too");
+                prop_assert_eq!(n.value.to_bits(), m.value.to_bits(), "{:?}", t);
+                prop_assert_eq!((n.point, n.digits, end), (m.point, m.digits, slow_end), "{:?}", t);
+            }
+        }
+    }
 }

@@ -203,9 +203,10 @@ impl Interp {
     /// it), fanuc-semantics §5 / docs/dialects.md.
     pub(super) fn apply_lathe_offset(&mut self) {
         let o = self.offsets.lathe(self.tool.offset as usize);
-        self.frames.tlo = [0.0; NAXES];
-        self.frames.tlo[Axis::X as usize] = o.total_x();
-        self.frames.tlo[Axis::Z as usize] = o.total_z();
+        let tlo = self.frames.tlo_mut();
+        *tlo = [0.0; NAXES];
+        tlo[Axis::X as usize] = o.total_x();
+        tlo[Axis::Z as usize] = o.total_z();
     }
 
     /// S word and spindle start codes, combined into one spindle event.
@@ -364,10 +365,10 @@ impl Interp {
                 // G92 clears the G52 local offset of the axis (Fanuc);
                 // new shift so that pos - (wcs + shift + tlo) = t.
                 let i = ax as usize;
-                self.frames.local[i] = 0.0;
-                self.frames.shift[i] = self.frames.mover.pos()[i]
-                    - self.frames.work.origin()[i]
-                    - self.frames.tlo[i]
+                self.frames.local_mut()[i] = 0.0;
+                self.frames.shift_mut()[i] = self.frames.mover.pos()[i]
+                    - self.frames.work().origin()[i]
+                    - self.frames.tlo()[i]
                     - t;
             }
         }
@@ -406,10 +407,10 @@ impl Interp {
     }
 
     pub(super) fn work_of(&self, mpos: &Pos) -> Pos {
-        let o = self.frames.origin();
+        let o = self.frames.origin_with_tlo();
         let mut p = *mpos;
         for i in 0..NAXES {
-            p[i] -= o[i] + self.frames.tlo[i];
+            p[i] -= o[i];
         }
         p
     }

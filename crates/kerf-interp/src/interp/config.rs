@@ -29,6 +29,14 @@ pub(super) struct Config {
     pub(super) has_axis: [bool; NAXES],
     /// Travel limits (machine coordinates) per axis slot.
     pub(super) travel: [Option<(f64, f64)>; NAXES],
+    /// The limits as [`Config::outside_travel`] tests them, worked out
+    /// once: (min - 1e-9, max + 1e-9), and (-inf, +inf) for an axis
+    /// without limits (no coordinate is outside those).
+    travel_hair: [(f64, f64); NAXES],
+    /// The dialect executes a block in [`crate::dialect::FANUC_MILL`]
+    /// order (the HX): quiet blocks may take the short walk
+    /// (interp/phases.rs).
+    pub(super) mill_order: bool,
 }
 
 impl Config {
@@ -65,7 +73,9 @@ impl Config {
                 travel[ax as usize] = Some((a.min, a.max));
             }
         }
+        let mill_order = dialect.order == crate::dialect::FANUC_MILL;
         Config {
+            mill_order,
             profile,
             dialect,
             lex,
@@ -75,6 +85,10 @@ impl Config {
             letter_ok,
             has_axis,
             travel,
+            travel_hair: travel.map(|t| match t {
+                Some((min, max)) => (min - 1e-9, max + 1e-9),
+                None => (f64::NEG_INFINITY, f64::INFINITY),
+            }),
         }
     }
 
@@ -83,6 +97,15 @@ impl Config {
     /// limit is on it).
     #[inline]
     pub(super) fn outside_travel(&self, m: &Pos) -> Option<(Axis, f64, (f64, f64))> {
+        // Every move asks: one test per axis against the bounds worked
+        // out once, and the search below only for a point outside.
+        let out = (0..NAXES).any(|i| {
+            let (lo, hi) = self.travel_hair[i];
+            m[i] < lo || m[i] > hi
+        });
+        if !out {
+            return None;
+        }
         for ax in Axis::ALL {
             if let Some((min, max)) = self.travel[ax as usize] {
                 let v = m[ax as usize];
@@ -184,6 +207,26 @@ mod tests {
         assert_eq!(c.outside_travel(&both).map(|o| o.0), Some(Axis::X));
         both[Axis::X as usize] = xlo;
         assert_eq!(c.outside_travel(&both).map(|o| o.0), Some(Axis::Y));
+    }
+
+    #[test]
+    fn an_axis_the_machine_lacks_and_a_nan_are_never_outside() {
+        // The lathe has no Y: any Y, however far, is not an overtravel.
+        let lathe = cfg("puma-lathe");
+        let (xlo, _) = lathe.travel[Axis::X as usize].unwrap();
+        let (zlo, _) = lathe.travel[Axis::Z as usize].unwrap();
+        let mut p = [xlo, 0.0, zlo, 0.0, 0.0, 0.0];
+        for y in [1e300, -1e300, f64::INFINITY, f64::NEG_INFINITY] {
+            p[Axis::Y as usize] = y;
+            assert_eq!(lathe.outside_travel(&p), None, "Y = {y}");
+        }
+        // A NaN compares false with both limits, as the search finds.
+        p[Axis::X as usize] = f64::NAN;
+        assert_eq!(lathe.outside_travel(&p), None);
+        // Just past the hair of 1e-9 mm below Z's limit: Z is named.
+        p[Axis::X as usize] = xlo;
+        p[Axis::Z as usize] = zlo - 1e-6;
+        assert_eq!(lathe.outside_travel(&p).map(|o| o.0), Some(Axis::Z));
     }
 
     #[test]

@@ -8,6 +8,8 @@
 //! The frames nest as on the control: machine = work origin + shift +
 //! local + tool length offset + program coordinates.
 
+use std::cell::Cell;
+
 use kerf_canon::{Pos, NAXES};
 
 use super::mover::Mover;
@@ -22,14 +24,15 @@ pub(super) struct Frames {
     /// (interp/mover.rs).
     pub(super) mover: Mover,
     /// The work offset table (G54-G59, Hurco E1-E9999) and the active
-    /// system (interp/work_offsets.rs).
-    pub(super) work: WorkOffsets,
+    /// system (interp/work_offsets.rs); written through
+    /// [`Frames::work_mut`].
+    work: WorkOffsets,
     /// G92 / G50 shift (the HX "work shift" of 000 §7.2.4, also set by
-    /// `G10 L2 P0`).
-    pub(super) shift: Pos,
+    /// `G10 L2 P0`); written through [`Frames::shift_mut`].
+    shift: Pos,
     /// G52 local coordinate system offset (work coordinates; the same for
-    /// every work system).
-    pub(super) local: Pos,
+    /// every work system); written through [`Frames::local_mut`].
+    local: Pos,
     /// Scaling (G51) and rotation (G68) in force.
     pub(super) xf: crate::xform::Xform,
     /// Position where the last skip signal came (program coordinates).
@@ -42,12 +45,39 @@ pub(super) struct Frames {
     pub(super) polar_origin: std::cell::Cell<(f64, f64)>,
     /// G112 polar / G107 cylindrical interpolation in force.
     pub(super) rot: RotInterp,
-    /// Tool length offset vector (G43/G44), added to the control point.
-    pub(super) tlo: Pos,
+    /// Tool length offset vector (G43/G44), added to the control point;
+    /// written through [`Frames::tlo_mut`].
+    tlo: Pos,
     /// Active H number (0 = none).
     pub(super) h: u32,
     /// G28 intermediate point (programmed coordinates), per axis.
     pub(super) g28_mid: [Option<f64>; NAXES],
+    /// The origins as last worked out from the four fields above; None
+    /// once any of them may have changed (every `*_mut` clears it).
+    origins: KeptOrigins,
+}
+
+/// The origins kept between moves. Worked out from the frames, not part
+/// of their state: its `Debug` shows no value, so a snapshot of the
+/// frames (interp/runtime_hooks.rs) is the same whether it is filled.
+#[derive(Clone, Default)]
+struct KeptOrigins(Cell<Option<Origins>>);
+
+impl std::fmt::Debug for KeptOrigins {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("KeptOrigins")
+    }
+}
+
+/// The origins every move asks for, worked out together from the work
+/// offset, shift, local offset and tool length offset, by the same sums
+/// in the same order as each would be alone (so bit for bit the same).
+#[derive(Clone, Copy, Debug)]
+struct Origins {
+    /// [`Frames::origin`] + the tool length offset, per axis.
+    work_tlo: Pos,
+    /// [`Frames::prog_origin`].
+    prog: Pos,
 }
 
 impl Frames {
@@ -80,6 +110,7 @@ impl Frames {
             tlo: [0.0; NAXES],
             h: 0,
             g28_mid: [None; NAXES],
+            origins: KeptOrigins::default(),
         }
     }
 
@@ -96,7 +127,75 @@ impl Frames {
         if keep_tlo {
             fresh.tlo = self.tlo;
         }
+        fresh.origins.0.set(None);
         fresh
+    }
+
+    /// The work offset table and the active work system.
+    pub(super) fn work(&self) -> &WorkOffsets {
+        &self.work
+    }
+
+    /// The work offset table, to change an entry or the selection.
+    pub(super) fn work_mut(&mut self) -> &mut WorkOffsets {
+        self.origins.0.set(None);
+        &mut self.work
+    }
+
+    /// The G92 / G50 shift.
+    pub(super) fn shift(&self) -> &Pos {
+        &self.shift
+    }
+
+    /// The G92 / G50 shift, to change it.
+    pub(super) fn shift_mut(&mut self) -> &mut Pos {
+        self.origins.0.set(None);
+        &mut self.shift
+    }
+
+    /// The G52 local offset.
+    pub(super) fn local(&self) -> &Pos {
+        &self.local
+    }
+
+    /// The G52 local offset, to change it.
+    pub(super) fn local_mut(&mut self) -> &mut Pos {
+        self.origins.0.set(None);
+        &mut self.local
+    }
+
+    /// The tool length offset vector.
+    pub(super) fn tlo(&self) -> &Pos {
+        &self.tlo
+    }
+
+    /// The tool length offset vector, to change it.
+    pub(super) fn tlo_mut(&mut self) -> &mut Pos {
+        self.origins.0.set(None);
+        &mut self.tlo
+    }
+
+    /// The origins, worked out again only after a change.
+    #[inline]
+    fn origins(&self) -> Origins {
+        if let Some(o) = self.origins.0.get() {
+            return o;
+        }
+        let o = self.work_out_origins();
+        self.origins.0.set(Some(o));
+        o
+    }
+
+    #[cold]
+    fn work_out_origins(&self) -> Origins {
+        let work = self.origin();
+        let mut work_tlo = work;
+        let mut prog = work;
+        for i in 0..NAXES {
+            work_tlo[i] = work[i] + self.tlo[i];
+            prog[i] += self.tlo[i] + self.local[i];
+        }
+        Origins { work_tlo, prog }
     }
 
     /// The origin of work coordinates in machine coordinates: the active
@@ -110,14 +209,16 @@ impl Frames {
         o
     }
 
+    /// [`Frames::origin`] plus the tool length offset: the origin of the
+    /// work coordinates of the tool tip.
+    pub(super) fn origin_with_tlo(&self) -> Pos {
+        self.origins().work_tlo
+    }
+
     /// Origin of programmed coordinates: the work origin plus the G52
     /// local offset and the tool length offset.
     pub(super) fn prog_origin(&self) -> Pos {
-        let mut o = self.origin();
-        for i in 0..NAXES {
-            o[i] += self.tlo[i] + self.local[i];
-        }
-        o
+        self.origins().prog
     }
 
     /// Current position in programmed coordinates (tool tip).
@@ -133,10 +234,10 @@ impl Frames {
     /// Current position of the tool tip in the active work coordinate
     /// system (the G52 local system not taken off).
     pub(super) fn work_position(&self) -> Pos {
-        let o = self.origin();
+        let o = self.origin_with_tlo();
         let mut p = self.mover.pos();
         for i in 0..NAXES {
-            p[i] -= o[i] + self.tlo[i];
+            p[i] -= o[i];
         }
         p
     }
@@ -154,12 +255,12 @@ mod tests {
     #[test]
     fn the_frames_nest_work_shift_local_and_tool_length() {
         let mut f = frames();
-        f.work
+        f.work_mut()
             .set(WorkId::G5x(1), [100.0, 50.0, -200.0, 0.0, 0.0, 0.0]);
-        f.work.select(WorkId::G5x(1));
-        f.shift = [1.0, 2.0, 3.0, 0.0, 0.0, 0.0];
-        f.local = [10.0, 20.0, 30.0, 0.0, 0.0, 0.0];
-        f.tlo = [0.0, 0.0, 150.0, 0.0, 0.0, 0.0];
+        f.work_mut().select(WorkId::G5x(1));
+        *f.shift_mut() = [1.0, 2.0, 3.0, 0.0, 0.0, 0.0];
+        *f.local_mut() = [10.0, 20.0, 30.0, 0.0, 0.0, 0.0];
+        *f.tlo_mut() = [0.0, 0.0, 150.0, 0.0, 0.0, 0.0];
         // G55 + shift.
         assert_eq!(f.origin(), [101.0, 52.0, -197.0, 0.0, 0.0, 0.0]);
         // + G52 + tool length: -197 + 30 + 150 = -17.
@@ -174,11 +275,11 @@ mod tests {
     fn reset_keeps_position_offsets_shift_and_stroke_area_only() {
         let mut f = frames();
         f.mover = Mover::new([5.0, 6.0, 7.0, 0.0, 0.0, 0.0]);
-        f.work.set(WorkId::G5x(2), [9.0; NAXES]);
-        f.work.select(WorkId::G5x(2));
-        f.shift = [1.0; NAXES];
-        f.local = [2.0; NAXES];
-        f.tlo = [0.0, 0.0, 80.0, 0.0, 0.0, 0.0];
+        f.work_mut().set(WorkId::G5x(2), [9.0; NAXES]);
+        f.work_mut().select(WorkId::G5x(2));
+        *f.shift_mut() = [1.0; NAXES];
+        *f.local_mut() = [2.0; NAXES];
+        *f.tlo_mut() = [0.0, 0.0, 80.0, 0.0, 0.0, 0.0];
         f.h = 3;
         f.polar = true;
         f.g28_mid[0] = Some(4.0);
@@ -190,7 +291,7 @@ mod tests {
         // G54 is selected again (with the shift), G56's entry kept.
         assert_eq!(r.origin(), g54.map(|v| v + 1.0));
         let mut g56 = r.clone();
-        g56.work.select(WorkId::G5x(2));
+        g56.work_mut().select(WorkId::G5x(2));
         assert_eq!(g56.origin(), [10.0; NAXES]);
         assert_eq!(
             (r.local, r.tlo, r.h, r.polar),
@@ -199,6 +300,76 @@ mod tests {
         // A control that keeps the tool offset over RESET.
         let kept = f.after_reset(frames(), true);
         assert_eq!(kept.tlo[2], 80.0);
+    }
+
+    #[test]
+    fn every_change_of_a_frame_is_seen_by_the_next_move() {
+        // The origins are kept between moves; each writer clears them.
+        let mut f = frames();
+        *f.work_mut().g5x_mut(0).unwrap() = [0.0; NAXES];
+        f.mover = Mover::new([10.0, 20.0, 30.0, 0.0, 0.0, 0.0]);
+        assert_eq!(f.programmed_position(), [10.0, 20.0, 30.0, 0.0, 0.0, 0.0]);
+        f.shift_mut()[0] = 1.0;
+        assert_eq!(f.programmed_position()[0], 9.0);
+        f.local_mut()[1] = 2.0;
+        assert_eq!(f.programmed_position()[1], 18.0);
+        f.tlo_mut()[2] = 5.0;
+        assert_eq!(f.programmed_position()[2], 25.0);
+        // Work position: the G52 offset stays in, the tool length not.
+        assert_eq!(f.work_position(), [9.0, 20.0, 25.0, 0.0, 0.0, 0.0]);
+        f.work_mut().g5x_mut(0).unwrap()[0] = 4.0;
+        assert_eq!(f.programmed_position()[0], 5.0);
+        f.work_mut()
+            .set(WorkId::G5x(1), [0.0, 0.0, 7.0, 0.0, 0.0, 0.0]);
+        f.work_mut().select(WorkId::G5x(1));
+        assert_eq!(f.prog_origin(), [1.0, 2.0, 12.0, 0.0, 0.0, 0.0]);
+        // RESET keeps the shift and the entries (G54 X = 4), selects G54
+        // again and drops the local and tool offsets: the origins come
+        // from the frames it returns, not from the G55 ones kept before.
+        let r = f.after_reset(frames(), false);
+        assert_eq!(r.prog_origin(), [5.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn the_kept_origins_are_not_part_of_the_state() {
+        // Snapshots compare the frames' Debug text: a move that fills the
+        // kept origins must not make two equal states differ.
+        let fresh = frames();
+        let used = frames();
+        let _ = used.programmed_position();
+        assert_eq!(format!("{fresh:?}"), format!("{used:?}"));
+    }
+
+    #[test]
+    fn the_kept_origins_are_the_sums_bit_for_bit() {
+        // Values whose sums round differently by grouping: the kept
+        // origin is (work + shift) + (tlo + local), as it always was.
+        let mut f = frames();
+        *f.work_mut().g5x_mut(0).unwrap() = [0.1, 1e16, 0.3, 0.0, 0.0, 0.0];
+        *f.shift_mut() = [0.2, 1.0, 0.6, 0.0, 0.0, 0.0];
+        *f.local_mut() = [0.7, 1.0, 1e-17, 0.0, 0.0, 0.0];
+        *f.tlo_mut() = [0.3, 1.0, 0.1, 0.0, 0.0, 0.0];
+        let want: Vec<f64> = (0..3)
+            .map(|i| {
+                let (w, s, t, l) = (
+                    [0.1, 1e16, 0.3][i],
+                    [0.2, 1.0, 0.6][i],
+                    [0.3, 1.0, 0.1][i],
+                    [0.7, 1.0, 1e-17][i],
+                );
+                (w + s) + (t + l)
+            })
+            .collect();
+        for _ in 0..2 {
+            let o = f.prog_origin();
+            assert_eq!(
+                o[..3].iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+                want.iter().map(|v| v.to_bits()).collect::<Vec<_>>()
+            );
+        }
+        // (1e16 + 1) + (1 + 1) is 1e16 + 2 here, where 1e16 + 1 + 1 + 1
+        // one at a time would be 1e16: the grouping is kept.
+        assert_eq!(f.prog_origin()[1], 1e16 + 2.0);
     }
 
     #[test]

@@ -46,14 +46,14 @@ impl HurcoState {
 impl Interp {
     /// Fixture offset `n` (machine coordinates of its part zero, mm).
     pub fn fixture_offset(&self, n: u32) -> Pos {
-        self.frames.work.get(WorkId::Fixture(n))
+        self.frames.work().get(WorkId::Fixture(n))
     }
 
     /// Sets fixture offset `n` (1-9999; mm, X as a radius) as an offsets
     /// file or a probe cycle writes it. Takes effect when E`n` is next
     /// programmed. False when `n` is not a fixture number.
     pub fn set_fixture_offset(&mut self, n: u32, origin: Pos) -> bool {
-        self.frames.work.set(WorkId::Fixture(n), origin)
+        self.frames.work_mut().set(WorkId::Fixture(n), origin)
     }
 
     /// Remembers the program position before an offset change, once per
@@ -81,7 +81,7 @@ impl Interp {
             let n = e.v as u32;
             self.hold_position();
             self.hurco.fixture = n;
-            self.frames.work.select(WorkId::Fixture(n));
+            self.frames.work_mut().select(WorkId::Fixture(n));
         }
         Ok(())
     }

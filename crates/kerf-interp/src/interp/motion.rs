@@ -465,15 +465,15 @@ impl Interp {
             }
             self.frames.h = h.v as u32;
         }
-        let old = self.frames.tlo;
+        let old = *self.frames.tlo();
         self.refresh_tool_length();
         // In G91 the block's incremental move counts from the tip as the
         // old offset had it, so the machine moves by the move plus the
         // offset change (fanuc-semantics §5.1).
-        if !self.modal.absolute() && old != self.frames.tlo {
+        if !self.modal.absolute() && old != *self.frames.tlo() {
             let mut d = [0.0; NAXES];
             for i in 0..NAXES {
-                d[i] = self.frames.tlo[i] - old[i];
+                d[i] = self.frames.tlo()[i] - old[i];
             }
             self.common.set_tlo_change(self.guard.blocks, d);
         }
@@ -490,8 +490,10 @@ impl Interp {
         // 000 §13.1.1: the axis normal to the plane in force when the
         // offset is taken (G17 Z, G18 Y, G19 X).
         let normal = self.modal.plane.means.axes().2;
-        self.frames.tlo = [0.0; NAXES];
-        self.frames.tlo[normal] = sign * self.offsets.h(self.frames.h as usize);
+        let h = self.offsets.h(self.frames.h as usize);
+        let tlo = self.frames.tlo_mut();
+        *tlo = [0.0; NAXES];
+        tlo[normal] = sign * h;
     }
 
     /// The machine position of reference point `n` (1-4) for an axis.

@@ -76,9 +76,9 @@ impl Interp {
             };
             let v = self.axis_value(ax, w);
             let slot = if p == 0 {
-                &mut self.frames.shift[i]
+                &mut self.frames.shift_mut()[i]
             } else {
-                match self.frames.work.g5x_mut(p - 1) {
+                match self.frames.work_mut().g5x_mut(p - 1) {
                     Some(w) => &mut w[i],
                     None => continue,
                 }

@@ -70,7 +70,44 @@ impl BlockRun {
     }
 }
 
+/// The phases of [`crate::dialect::FANUC_MILL`] that can act on a quiet block (see
+/// [`Interp::quiet_block`]), in its order. The others do nothing for
+/// such a block: HxCycleMode (no cycle in force and no cycle code: it
+/// returns false), ToolLength (no D, no H, no G43/G44/G49), Comp (no D,
+/// no plane or compensation code, no one-shot, no compensation in
+/// force: false), OneShots (none: the default), Tool (no T), MBefore,
+/// MAfter and Stop (no M code), Dwell and ExactStopBefore (no G04, no
+/// G09), CompEnd (no compensation in force). The walk over them costs
+/// more than the plain move itself.
+static QUIET_MILL: &[Phase] = &[
+    Phase::ModalG,
+    Phase::Frames,
+    Phase::Feed,
+    Phase::Spindle,
+    Phase::Motion,
+    Phase::Transfer,
+];
+
 impl Interp {
+    /// A block the [`QUIET_MILL`] walk gives the same results for as the
+    /// [`crate::dialect::FANUC_MILL`] one: on a control with that order, its only G code
+    /// (if any) a motion code, no M code, no D, H or T word, no canned
+    /// cycle and no cutter compensation in force.
+    #[inline]
+    fn quiet_block(&self, b: &BlockRun) -> bool {
+        let mut motion_only = KindSet::default();
+        motion_only.insert(Kind::Motion);
+        self.quiet_walk
+            && self.modal.cycle.means.is_none()
+            && self.common.comp.is_none()
+            && self.words.nm == 0
+            && (b.kinds == motion_only || b.kinds == KindSet::default())
+            && !self.words.has(b'D')
+            && !self.words.has(b'H')
+            && !self.words.has(b'T')
+            && self.cfg.mill_order
+    }
+
     /// The first G code of the block (code, byte) whose table meaning
     /// satisfies `is`.
     pub(super) fn block_g(&self, is: impl Fn(Means) -> bool) -> Option<(u16, u32)> {
@@ -92,7 +129,12 @@ impl Interp {
         let Some(mut b) = self.classify_block()? else {
             return Ok(true);
         };
-        for &p in self.cfg.dialect.order {
+        let order = if self.quiet_block(&b) {
+            QUIET_MILL
+        } else {
+            self.cfg.dialect.order
+        };
+        for &p in order {
             if let Flow::Done(r) = self.run_phase(p, &mut b)? {
                 return Ok(r);
             }
@@ -418,7 +460,7 @@ impl Interp {
                     os.setting = true;
                     self.coordinate_setting(at)?
                 }
-                CancelWorkShift => self.frames.shift = [0.0; NAXES],
+                CancelWorkShift => *self.frames.shift_mut() = [0.0; NAXES],
                 MacroCall | FrameData | LocalCoords | CompCorner | Probe | ThreadCycle => {}
             }
         }

@@ -157,7 +157,7 @@ impl Interp {
 
     /// The work offset of G54+`idx` (machine coordinates of its zero).
     pub fn work_offset(&self, idx: usize) -> Option<Pos> {
-        (idx < 6).then(|| self.frames.work.get(work_offsets::WorkId::G5x(idx)))
+        (idx < 6).then(|| self.frames.work().get(work_offsets::WorkId::G5x(idx)))
     }
 
     /// Writes common (#100-#199) or retained macro variable `#n` from the

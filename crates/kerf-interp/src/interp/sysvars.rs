@@ -302,9 +302,9 @@ impl Interp {
         Ok(Some(match s {
             D(n) => self.offsets.d_entry(n).map_or(0.0, |e| e.geom) / u,
             H(n) => self.offsets.h_entry(n).map_or(0.0, |e| e.geom) / u,
-            Shift(k) => return Ok(self.axis_value_of(k, &self.frames.shift).or(Some(0.0))),
+            Shift(k) => return Ok(self.axis_value_of(k, self.frames.shift()).or(Some(0.0))),
             Wcs(w, k) => {
-                let o = self.frames.work.get(WorkId::G5x(w));
+                let o = self.frames.work().get(WorkId::G5x(w));
                 return Ok(self.axis_value_of(k, &o).or(Some(0.0)));
             }
             SingleBlock => self.sys.single_block,
@@ -430,9 +430,9 @@ impl Interp {
                 };
                 let mm = self.prog_units_to_mm(slot, x);
                 match s {
-                    Shift(_) => self.frames.shift[slot] = mm,
+                    Shift(_) => self.frames.shift_mut()[slot] = mm,
                     Wcs(w, _) => {
-                        if let Some(o) = self.frames.work.g5x_mut(w) {
+                        if let Some(o) = self.frames.work_mut().g5x_mut(w) {
                             o[slot] = mm;
                         }
                     }

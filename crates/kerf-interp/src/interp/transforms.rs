@@ -257,10 +257,10 @@ impl Interp {
             }
             if let Some(w) = self.words.get(ax_letter(ax)) {
                 let v = self.axis_value(ax, w);
-                self.frames.local[i] = if self.modal.absolute() {
+                self.frames.local_mut()[i] = if self.modal.absolute() {
                     v
                 } else {
-                    self.frames.local[i] + v
+                    self.frames.local()[i] + v
                 };
             }
         }
