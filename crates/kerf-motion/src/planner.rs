@@ -15,9 +15,11 @@ use crate::geom::{line_len, Geom};
 use crate::trap::Trap;
 
 mod lag_memo;
+mod lower;
 mod resume;
 mod turn;
 use lag_memo::LagMemo;
+use lower::lower;
 pub use resume::Modes;
 use turn::turn_bound;
 
@@ -810,8 +812,8 @@ impl Planner {
                 for i in 0..NAXES {
                     let ui = u[i].abs();
                     if ui > 1e-12 {
-                        v = v.min(d.rapid[i] / 60.0 / ui);
-                        a = a.min(0.5 * d.accel[i] / ui);
+                        v = lower(v, d.rapid[i] / 60.0 / ui);
+                        a = lower(a, 0.5 * d.accel[i] / ui);
                     }
                 }
             }
@@ -869,7 +871,7 @@ impl Planner {
             let du = (u2[i] - u1[i]).abs();
             if du > 1e-9 {
                 let a = 0.5 * self.d.accel[i];
-                v = v.min(a * t / du).min((a * lmin / du).sqrt());
+                v = lower(lower(v, a * t / du), (a * lmin / du).sqrt());
             }
         }
         let c = (dot(u1, u2) / (n1 * n2)).clamp(-1.0, 1.0);
@@ -885,7 +887,7 @@ impl Planner {
             if room <= 0.0 {
                 return None;
             }
-            v = v.min(room / m1);
+            v = lower(v, room / m1);
         }
         // The smoothing's radial error on the turn as an arc of radius
         // lmin/θ; the `acos` is skipped when even the largest angle the
@@ -903,7 +905,7 @@ impl Planner {
                 let th = c.acos();
                 if th > 1e-9 {
                     let r = lmin / th;
-                    v = v.min((24.0 * r * tol / self.k_tt).sqrt());
+                    v = lower(v, (24.0 * r * tol / self.k_tt).sqrt());
                 }
             }
         }
@@ -1156,9 +1158,9 @@ impl Planner {
                 }
             },
             _ => 0.0,
-        }
-        .min(s.vmax);
-        s.vb = s.jmax.min((2.0 * s.acc * s.len).sqrt());
+        };
+        s.jmax = lower(s.jmax, s.vmax);
+        s.vb = lower(s.jmax, (2.0 * s.acc * s.len).sqrt());
         let stop = s.stop;
         self.q_tmin += s.len / s.vmax;
         self.q.push_back(s);
@@ -1178,9 +1180,7 @@ impl Planner {
         for i in (0..n.saturating_sub(1)).rev() {
             let next_vb = self.q[i + 1].vb;
             let si = &mut self.q[i];
-            let nb = si
-                .jmax
-                .min((next_vb * next_vb + 2.0 * si.acc * si.len).sqrt());
+            let nb = lower(si.jmax, (next_vb * next_vb + 2.0 * si.acc * si.len).sqrt());
             if nb == si.vb {
                 break;
             }
@@ -1215,7 +1215,7 @@ impl Planner {
             0.0
         } else {
             match next_vb {
-                Some(vb) => vb.min((v0 * v0 + 2.0 * acc * len).sqrt()),
+                Some(vb) => lower(vb, (v0 * v0 + 2.0 * acc * len).sqrt()),
                 None => 0.0,
             }
         };
