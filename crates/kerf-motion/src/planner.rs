@@ -241,15 +241,6 @@ pub struct Planner {
     /// end of the interpolation to its error when the smoothed command
     /// arrives: `((1 − e^(−K·T))/(K·T))^k`.
     lag_c: f64,
-    /// Per axis, of the dynamics (which do not change after
-    /// [`Planner::new`]), worked out once with the operations the limits
-    /// used on every event: `rapid / 60` (mm/s), `0.5 · accel` and
-    /// `0.5 · accel · t_smooth`.
-    rapid_mm_s: Pos,
-    half_acc: Pos,
-    half_acc_t: Pos,
-    /// `stages · t_smooth`, the smoothing's drain (see [`Planner::drain_time`]).
-    drain: f64,
     /// Cutting moves with no feed (per-revolution feed or thread with the
     /// spindle stopped): the control would wait for ever; they are timed
     /// as 0 s and counted here.
@@ -299,7 +290,6 @@ impl Planner {
         };
         let k = stages as f64;
         let t = t_smooth;
-        let half_acc = d.accel.map(|a| 0.5 * a);
         let (m1, m2) = if stages == 1 {
             (t / 8.0, t * t / 48.0)
         } else {
@@ -345,10 +335,6 @@ impl Planner {
             last_off: [0.0; 3],
             last_feed: 0.0,
             lag_c,
-            rapid_mm_s: d.rapid.map(|r| r / 60.0),
-            half_acc,
-            half_acc_t: half_acc.map(|a| a * t_smooth),
-            drain: stages as f64 * t_smooth,
             d,
         }
     }
@@ -436,7 +422,7 @@ impl Planner {
     }
 
     fn drain_time(&self) -> f64 {
-        self.drain
+        self.stages as f64 * self.t_smooth
     }
 
     /// Runs the position loops through one trapezoid along the fixed
@@ -826,8 +812,8 @@ impl Planner {
                 for i in 0..NAXES {
                     let ui = u[i].abs();
                     if ui > 1e-12 {
-                        v = lower(v, self.rapid_mm_s[i] / ui);
-                        a = lower(a, self.half_acc[i] / ui);
+                        v = lower(v, d.rapid[i] / 60.0 / ui);
+                        a = lower(a, 0.5 * d.accel[i] / ui);
                     }
                 }
             }
@@ -884,8 +870,8 @@ impl Planner {
         for i in 0..NAXES {
             let du = (u2[i] - u1[i]).abs();
             if du > 1e-9 {
-                let a = self.half_acc[i];
-                v = lower(lower(v, self.half_acc_t[i] / du), (a * lmin / du).sqrt());
+                let a = 0.5 * self.d.accel[i];
+                v = lower(lower(v, a * t / du), (a * lmin / du).sqrt());
             }
         }
         let c = (dot(u1, u2) / (n1 * n2)).clamp(-1.0, 1.0);
@@ -1058,14 +1044,9 @@ impl Planner {
         // Per-revolution feed with constant surface speed: the spindle
         // speed follows X along the move; split it so that each piece
         // runs at the speed of its middle.
-        let pieces = if self.css.is_some()
-            && !thread
-            && matches!(feed, Feed::PerRev(_))
-            && (to_work_x - from_x).abs() > 1e-9
-        {
-            16
-        } else {
-            1
+        let pieces = match (feed, self.css, thread) {
+            (Feed::PerRev(_), Some(_), false) if (to_work_x - from_x).abs() > 1e-9 => 16,
+            _ => 1,
         };
         for k in 0..pieces {
             let (u0, u1) = (k as f64 / pieces as f64, (k + 1) as f64 / pieces as f64);
