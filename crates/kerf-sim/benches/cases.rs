@@ -16,6 +16,11 @@
 //!   flat end mill at Z-2 in a 300×200 block at 0.05 mm cells;
 //! - `mill_3d_0.05mm`: the same raster over a wavy surface with a 6 mm
 //!   ball;
+//! - `mill_surface_0.05mm`: surface_1m's moves (../shared/bench/
+//!   gen_programs.py: 48 moves of 6.23 mm a pass over X0.5..299.5, 0.5 mm
+//!   stepover, the turnaround as a straight step) with its 10 mm ball on
+//!   its 300×200×50 block, the first 40 passes of its first layer (base
+//!   Z40, 1,960 moves) and then of its second (base Z39.4, 1,960 more);
 //! - `mill_drill_0.05mm`: a 20×20 grid of 8 mm 118° drill holes 10 mm
 //!   deep at 12 mm pitch, each a rapid over the hole, a rapid down to
 //!   Z1, three 4 mm pecks with rapid retracts to Z1, and the rapid up.
@@ -184,6 +189,32 @@ fn raster(n: usize, wavy: bool) -> Vec<Move> {
     feeds(pts)
 }
 
+/// gen_programs.py's surface: ±8 mm about `base`.
+fn surface_z(x: f64, y: f64, base: f64) -> f64 {
+    use std::f64::consts::PI;
+    base + 5.0 * (2.0 * PI * x / 150.0).sin() * (2.0 * PI * y / 100.0).cos()
+        + 3.0 * (2.0 * PI * (x + y) / 70.0).sin()
+}
+
+fn surface() -> Vec<Move> {
+    let xs: Vec<f64> = (0..=48).map(|i| 0.5 + 299.0 * i as f64 / 48.0).collect();
+    let mut pts = vec![[xs[0], 0.0, surface_z(xs[0], 0.0, 40.0)]];
+    for base in [40.0, 39.4] {
+        for p in 0..40 {
+            let y = 0.5 * p as f64;
+            let order: Vec<f64> = if p % 2 == 0 {
+                xs[1..].to_vec()
+            } else {
+                xs[..48].iter().rev().copied().collect()
+            };
+            for x in order {
+                pts.push([x, y, surface_z(x, y, base)]);
+            }
+        }
+    }
+    feeds(pts)
+}
+
 fn drill_grid() -> Vec<Move> {
     let mut m = vec![(false, [-114.0, -114.0, 5.0])];
     for j in 0..20 {
@@ -237,6 +268,11 @@ fn mill_ball() -> Sim {
     )
 }
 
+fn mill_ball10() -> Sim {
+    let tools = "[tool.1]\nkind=\"ball\"\ndiameter=10\n";
+    sim("box:0,0,0,300,200,50", tools, false, Some(0.05))
+}
+
 fn mill_drill() -> Sim {
     let tools = "[tool.1]\nkind=\"drill\"\ndiameter=8\npoint_angle=118\n";
     sim(BLOCK, tools, false, Some(0.05))
@@ -274,6 +310,11 @@ pub fn all() -> Vec<Case> {
             name: "mill_3d_0.05mm",
             make: mill_ball,
             moves: raster(5_000, true),
+        },
+        Case {
+            name: "mill_surface_0.05mm",
+            make: mill_ball10,
+            moves: surface(),
         },
         Case {
             name: "mill_drill_0.05mm",

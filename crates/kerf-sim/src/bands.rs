@@ -7,17 +7,19 @@
 //! summed on its own and the bands' sums are added in band order, on one
 //! thread or two.
 
+use crate::ball_row::floor_between;
 use crate::envelope::Sweep;
 use crate::grid::Grid;
+use crate::helper::Helper;
 use crate::kernels::Pass;
 use crate::shape::Shape;
 use crate::tool::MillTool;
 use crate::zmap::{BLOCK, CHUNK};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Cells to evaluate (rows of the bands not skipped by the span of the
-/// capsule's columns) from which a move is split between two threads:
-/// about a million instructions of the envelope, against some 50,000 to
-/// start and join a thread.
+/// capsule's columns) from which a move's bands are shared with the
+/// helper thread (some 10,000 instructions to publish a job and wake it).
 pub const SPLIT_CELLS: usize = 16_384;
 
 /// The rows of one band that a move covers: (row, y, first, last, floor).
@@ -88,44 +90,29 @@ impl<'a> Scan<'a> {
 }
 
 impl<'a> Cells<'a> {
-    /// The bands from band `m` on, and those before it.
-    fn split(self, m: usize) -> (Cells<'a>, Cells<'a>) {
-        let rows = (m - self.band0) * BLOCK;
-        let (nx, nc) = (self.grid.nx, self.nc);
-        let (h0, h1) = self.h.split_at_mut((rows * nx).min(self.h.len()));
-        let (c0, c1) = self.cmax.split_at_mut((rows * nc).min(self.cmax.len()));
-        let (b0, b1) = self
-            .bmax
-            .split_at_mut(((m - self.band0) * nc).min(self.bmax.len()));
-        let part = |band0, h, cmax, bmax| Cells {
-            grid: self.grid,
-            nc,
-            band0,
-            h,
-            cmax,
-            bmax,
-        };
-        (part(self.band0, h0, c0, b0), part(m, h1, c1, b1))
-    }
-
     /// Works the bands `todo` (in order), pushing each one's removed and
     /// holder sums (cell heights, mm) to `out`.
     fn work(&mut self, pass: &mut Pass, scan: &Scan, todo: &[Todo], out: &mut Vec<(f64, f64)>) {
+        for t in todo {
+            out.push(self.work_one(pass, scan, t));
+        }
+    }
+
+    /// Works one band: its removed and holder sums.
+    fn work_one(&mut self, pass: &mut Pass, scan: &Scan, todo: &Todo) -> (f64, f64) {
         let grid = self.grid;
         let mut band: Band = [(0, 0.0, 0, 0, 0.0); BLOCK];
-        for &(_, first, last) in todo {
-            let rows = (first, last);
-            let mut n = 0;
-            grid.for_rows_in(scan.s, scan.reach, rows, |j, y, a, b| {
-                band[n] = (j, y, a, b, scan.floor(y, y));
-                n += 1;
-            });
-            (pass.removed, pass.holder) = (0.0, 0.0);
-            if n > 0 {
-                self.band(pass, &band[..n]);
-            }
-            out.push((pass.removed, pass.holder));
+        let &(_, first, last) = todo;
+        let mut n = 0;
+        grid.for_rows_in(scan.s, scan.reach, (first, last), |j, y, a, b| {
+            band[n] = (j, y, a, b, scan.floor(y, y));
+            n += 1;
+        });
+        (pass.removed, pass.holder) = (0.0, 0.0);
+        if n > 0 {
+            self.band(pass, &band[..n]);
         }
+        (pass.removed, pass.holder)
     }
 
     /// The rows of one band, square by square: a square whose greatest
@@ -138,22 +125,40 @@ impl<'a> Cells<'a> {
         let lo = rows.iter().map(|r| r.2).min().unwrap_or(0);
         let hi = rows.iter().map(|r| r.3).max().unwrap_or(0);
         let floor = rows.iter().map(|r| r.4).fold(f32::INFINITY, f32::min);
+        let ball = pass.ball();
+        // Each row's last envelope and slope worked out: (cell, value).
+        let mut memo = [(usize::MAX, None); BLOCK];
         for c in lo / CHUNK..=hi / CHUNK {
             if self.bmax[lb * nc + c] <= floor {
                 continue;
             }
             let mut changed = false;
-            for &(j, y, a, b, floor) in rows {
+            for (ri, &(j, y, a, b, floor)) in rows.iter().enumerate() {
                 let lj = j - row0;
                 let (first, last) = (a.max(c * CHUNK), b.min(c * CHUNK + CHUNK - 1));
                 if first > last || self.cmax[lj * nc + c] <= floor {
                     continue;
                 }
                 let x0 = g.x0 + (first as f64 + 0.5) * g.dx;
+                // A run at or below the ball's lowest point over it (from
+                // its first cell to the next run's first, whose envelope
+                // the next run reuses).
+                if let Some(ball) = ball {
+                    let end = if last < b { last + 1 } else { last };
+                    let at = |k: usize| ball.with_slope(y, g.x0 + (k as f64 + 0.5) * g.dx);
+                    let m = &mut memo[ri];
+                    let left = if m.0 == first { m.1 } else { at(first) };
+                    *m = (end, at(end));
+                    let xe = g.x0 + (end as f64 + 0.5) * g.dx;
+                    let low = floor_between(x0, left, xe, m.1);
+                    if self.cmax[lj * nc + c] as f64 <= low {
+                        continue;
+                    }
+                }
                 let h = &mut self.h[lj * nx + first..=lj * nx + last];
                 if pass.run(h, (j * nx + first) as u32, x0, g.dx, y, floor) {
                     let run = &self.h[lj * nx + c * CHUNK..lj * nx + ((c + 1) * CHUNK).min(nx)];
-                    self.cmax[lj * nc + c] = run.iter().fold(f32::NEG_INFINITY, |m, &v| m.max(v));
+                    self.cmax[lj * nc + c] = greatest(run);
                     changed = true;
                 }
             }
@@ -161,48 +166,131 @@ impl<'a> Cells<'a> {
                 let rows = bj * BLOCK..((bj + 1) * BLOCK).min(g.ny);
                 self.bmax[lb * nc + c] = rows
                     .map(|j| self.cmax[(j - row0) * nc + c])
-                    .fold(f32::NEG_INFINITY, f32::max);
+                    .fold(f32::NEG_INFINITY, |m, v| if v > m { v } else { m });
             }
         }
     }
 }
 
-/// Works the bands `todo` of `cells` with `pass`, the pass of `tool` (on a
-/// second thread, with a pass of its own, for the later half of the bands
-/// when `split`); returns the removed and holder sums added in band order.
+/// Works the bands `todo` of `cells` with `pass`, the pass of `tool`
+/// (with `helper`, when given and no old heights are kept, both threads
+/// claiming the bands one at a time, each with a pass of its own);
+/// returns the removed and holder sums added in band order.
 pub fn run(
     mut cells: Cells,
     pass: &mut Pass,
     tool: &MillTool,
     scan: &Scan,
     todo: &[Todo],
-    split: bool,
+    helper: Option<&Helper>,
 ) -> (f64, f64) {
     let mut sums = Vec::with_capacity(todo.len());
-    if split && todo.len() >= 2 {
-        let k = todo.len() / 2;
-        let (mut a, mut b) = cells.split(todo[k].0);
-        let mut undo = Vec::new();
-        let (keep, write) = (pass.undo.is_some(), pass.write);
-        let later = std::thread::scope(|sc| {
-            let worker = sc.spawn(|| {
-                let mut p = Pass::new(tool, scan.s, scan.zmin, write, keep.then_some(&mut undo));
-                let mut out = Vec::with_capacity(todo.len() - k);
-                b.work(&mut p, scan, &todo[k..], &mut out);
-                out
+    match helper {
+        Some(helper) if todo.len() >= 2 && pass.undo.is_none() => {
+            sums.resize(todo.len(), (0.0, 0.0));
+            let (raw, out) = (Shared::of(&mut cells), SumsPtr(sums.as_mut_ptr()));
+            let (next, write) = (AtomicUsize::new(0), pass.write);
+            helper.run(&|| {
+                let mut p = Pass::new(tool, scan.s, scan.zmin, write, None);
+                loop {
+                    let k = next.fetch_add(1, Ordering::Relaxed);
+                    let Some(t) = todo.get(k) else { break };
+                    // SAFETY: band k is claimed by this thread alone (the
+                    // counter), its cells are its own (raw.band), and the
+                    // caller's borrows outlive the job (Helper::run).
+                    unsafe {
+                        let r = raw.band(t.0).work_one(&mut p, scan, t);
+                        out.put(k, r);
+                    }
+                }
             });
-            a.work(pass, scan, &todo[..k], &mut sums);
-            worker
-                .join()
-                .unwrap_or_else(|e| std::panic::resume_unwind(e))
-        });
-        sums.extend(later);
-        if let Some(u) = pass.undo.as_deref_mut() {
-            u.append(&mut undo);
         }
-    } else {
-        cells.work(pass, scan, todo, &mut sums);
+        _ => cells.work(pass, scan, todo, &mut sums),
     }
     sums.iter()
         .fold((0.0, 0.0), |(r, h), &(dr, dh)| (r + dr, h + dh))
+}
+
+/// The greatest of `v` (heights are never NaN), in a loop the compiler
+/// makes vector code of (`f32::max` orders NaN, which costs a branch).
+#[inline]
+fn greatest(v: &[f32]) -> f32 {
+    let mut m = [f32::NEG_INFINITY; 8];
+    let mut it = v.chunks_exact(8);
+    for q in &mut it {
+        for j in 0..8 {
+            m[j] = if q[j] > m[j] { q[j] } else { m[j] };
+        }
+    }
+    for &x in it.remainder() {
+        m[0] = if x > m[0] { x } else { m[0] };
+    }
+    m.iter()
+        .fold(f32::NEG_INFINITY, |a, &b| if b > a { b } else { a })
+}
+
+/// Each band's sums, written by whichever thread works it.
+#[derive(Clone, Copy)]
+struct SumsPtr(*mut (f64, f64));
+// SAFETY: each slot is written by one thread (its band's claimant).
+unsafe impl Sync for SumsPtr {}
+unsafe impl Send for SumsPtr {}
+
+impl SumsPtr {
+    /// # Safety
+    /// `k` within the sums, written by one thread.
+    unsafe fn put(&self, k: usize, r: (f64, f64)) {
+        unsafe { self.0.add(k).write(r) }
+    }
+}
+
+/// [`Cells`] as raw parts, from which each thread makes the cells of the
+/// bands it claims.
+struct Shared {
+    grid: Grid,
+    nc: usize,
+    band0: usize,
+    h: (*mut f32, usize),
+    cmax: (*mut f32, usize),
+    bmax: (*mut f32, usize),
+}
+// SAFETY: the bands made from it are disjoint and each is used by one
+// thread at a time.
+unsafe impl Sync for Shared {}
+unsafe impl Send for Shared {}
+
+impl Shared {
+    fn of(c: &mut Cells) -> Shared {
+        Shared {
+            grid: c.grid,
+            nc: c.nc,
+            band0: c.band0,
+            h: (c.h.as_mut_ptr(), c.h.len()),
+            cmax: (c.cmax.as_mut_ptr(), c.cmax.len()),
+            bmax: (c.bmax.as_mut_ptr(), c.bmax.len()),
+        }
+    }
+
+    /// The cells of band `bj` alone.
+    ///
+    /// # Safety
+    /// No other live reference to that band's cells.
+    #[allow(clippy::mut_from_ref)]
+    unsafe fn band(&self, bj: usize) -> Cells<'_> {
+        let (nx, nc) = (self.grid.nx, self.nc);
+        let r0 = (bj - self.band0) * BLOCK;
+        let rows = BLOCK.min(self.grid.ny - bj * BLOCK);
+        let part = |(p, len): (*mut f32, usize), at: usize, n: usize| {
+            let (at, n) = (at.min(len), n.min(len - at.min(len)));
+            unsafe { std::slice::from_raw_parts_mut(p.add(at), n) }
+        };
+        Cells {
+            grid: self.grid,
+            nc,
+            band0: bj,
+            h: part(self.h, r0 * nx, rows * nx),
+            cmax: part(self.cmax, r0 * nc, rows * nc),
+            bmax: part(self.bmax, (bj - self.band0) * nc, nc),
+        }
+    }
 }

@@ -11,11 +11,12 @@
 //! - a ball end mill without shank or holder: the capsule (ball.rs);
 //! - anything else: the general envelope and the holder's cylinders.
 
-use crate::ball::{BallRow, BallSweep};
+use crate::ball::BallSweep;
+use crate::ball_row::BallLanes;
 use crate::envelope::Sweep;
 use crate::shape::Shape;
 use crate::tool::{MillKind, MillTool};
-use crate::zmap::EPS;
+use crate::zmap::{CHUNK, EPS};
 
 /// The evaluation a move uses.
 #[derive(Clone, Copy, Debug)]
@@ -25,7 +26,7 @@ pub enum Kernel {
     /// Vertical move: the axis and the lowest tip height.
     Vertical { x: f64, y: f64, z: f64 },
     /// Ball end mill.
-    Ball(BallSweep),
+    Ball(BallLanes),
     /// The general envelope and the guards.
     General,
 }
@@ -102,9 +103,10 @@ impl<'a> Pass<'a> {
         } else {
             match tool.kind {
                 MillKind::Flat if s.level() => Kernel::LevelFlat(s.p0[2].max(zmin)),
-                MillKind::Ball => {
-                    BallSweep::new(s, tool.radius).map_or(Kernel::General, Kernel::Ball)
-                }
+                MillKind::Ball => match BallSweep::new(s, tool.radius) {
+                    Some(_) => Kernel::Ball(BallLanes::new(s, tool.radius)),
+                    None => Kernel::General,
+                },
                 _ => Kernel::General,
             }
         };
@@ -127,6 +129,10 @@ impl<'a> Pass<'a> {
     #[inline]
     pub fn run(&mut self, h: &mut [f32], idx: u32, x0: f64, dx: f64, y: f64, floor: f32) -> bool {
         match self.kernel {
+            Kernel::LevelFlat(z) if h.len() <= CHUNK => {
+                let env = [z; CHUNK];
+                self.lower(h, idx, &env[..h.len()], floor)
+            }
             Kernel::LevelFlat(z) => self.level_flat(h, idx, z, floor),
             Kernel::Vertical { x, y: ya, z } => {
                 let r2 = self.shape.radius * self.shape.radius;
@@ -140,11 +146,10 @@ impl<'a> Pass<'a> {
                 })
             }
             Kernel::Ball(b) => {
-                let row: BallRow = b.row(y);
-                let zmin = self.zmin;
-                self.each(h, idx, floor, |k, _| {
-                    b.lowest(&row, x0 + k as f64 * dx).map(|z| z.max(zmin))
-                })
+                let mut env = [0.0; CHUNK];
+                let env = &mut env[..h.len().min(CHUNK)];
+                b.envelope(&b.row(y), x0, dx, env);
+                self.lower(h, idx, env, floor)
             }
             Kernel::General => {
                 let (s, shape, guards, zmin) = (self.s, self.shape, self.guards, self.zmin);
@@ -163,6 +168,16 @@ impl<'a> Pass<'a> {
                 self.holder += met;
                 changed
             }
+        }
+    }
+
+    /// The ball move's row kernel, whose envelope bounds a run from
+    /// below ([`BallLanes::with_slope`]), if the move has one.
+    #[inline]
+    pub fn ball(&self) -> Option<BallLanes> {
+        match self.kernel {
+            Kernel::Ball(b) => Some(b),
+            _ => None,
         }
     }
 
@@ -188,6 +203,30 @@ impl<'a> Pass<'a> {
         }
         self.removed += removed;
         changed
+    }
+
+    /// The cells `h` lowered to the envelope `env` (infinite where the
+    /// tool does not pass) where it is lower, as [`Self::each`] does, in a
+    /// loop without branches when no old heights are kept.
+    #[inline]
+    fn lower(&mut self, h: &mut [f32], idx: u32, env: &[f64], floor: f32) -> bool {
+        let zmin = self.zmin;
+        if self.undo.is_some() || h.len() > CHUNK {
+            return self.each(h, idx, floor, |k, _| {
+                env[k].is_finite().then(|| env[k].max(zmin))
+            });
+        }
+        #[cfg(target_arch = "x86_64")]
+        let (sum, any) = if crate::ball_row::avx2() {
+            // SAFETY: the CPU has AVX2 and FMA (checked at run time).
+            unsafe { lower_avx2(h, env, floor, zmin, self.write) }
+        } else {
+            lower_body(h, env, floor, zmin, self.write)
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let (sum, any) = lower_body(h, env, floor, zmin, self.write);
+        self.removed += sum;
+        any && self.write
     }
 
     /// Every cell above `floor` (and above the stock's bottom) lowered to
@@ -225,4 +264,41 @@ impl<'a> Pass<'a> {
         self.removed += removed;
         changed
     }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn lower_avx2(h: &mut [f32], env: &[f64], floor: f32, zmin: f64, write: bool) -> (f64, bool) {
+    lower_body(h, env, floor, zmin, write)
+}
+
+/// The cells of `h` above `floor` and above the stock's bottom `zmin`
+/// lowered (when `write`) to `env`, not below `zmin`, where that is lower
+/// by more than [`EPS`]: Σ (old - new) in four lanes, and whether a
+/// height changed.
+#[inline(always)]
+fn lower_body(h: &mut [f32], env: &[f64], floor: f32, zmin: f64, write: bool) -> (f64, bool) {
+    let n = h.len().min(env.len()).min(CHUNK);
+    let (h, env) = (&mut h[..n], &env[..n]);
+    let lim = zmin + EPS;
+    let mut cut = [0.0f64; CHUNK];
+    let mut any = 0u32;
+    for k in 0..n {
+        let v = h[k];
+        let old = v as f64;
+        let z = if env[k] > zmin { env[k] } else { zmin };
+        let c = (v > floor) & (old > lim) & (z < old - EPS);
+        cut[k] = if c { old - z } else { 0.0 };
+        if write {
+            h[k] = if c { z as f32 } else { v };
+        }
+        any |= c as u32;
+    }
+    let mut lanes = [0.0f64; 4];
+    for q in cut.chunks_exact(4) {
+        for j in 0..4 {
+            lanes[j] += q[j];
+        }
+    }
+    ((lanes[0] + lanes[1]) + (lanes[2] + lanes[3]), any != 0)
 }

@@ -17,11 +17,13 @@
 //! ```
 
 pub mod ball;
+pub mod ball_row;
 pub mod bands;
 pub mod deferred;
 pub mod envelope;
 pub mod events;
 pub mod grid;
+pub mod helper;
 pub mod holder;
 pub mod hull;
 pub mod kernels;

@@ -417,9 +417,9 @@ impl Sim {
         }
     }
 
-    /// Threads a height field move's rows may be split between (1 or 2;
-    /// the default is 2 where the machine has two cores). The result is
-    /// the same either way.
+    /// Threads a height field move's bands may be shared between (1 or 2;
+    /// the default is 1, or `KERF_SIM_THREADS`). The result is the same
+    /// either way.
     pub fn set_threads(&mut self, n: usize) {
         if let Model::Mill(z) = &mut self.model {
             z.threads = n.clamp(1, 2);

@@ -1,0 +1,357 @@
+//! A ball end mill's capsule over a run of cells of one row, in loops
+//! without branches that the compiler turns into vector code: the
+//! capsule's lower envelope as its cylinder and its two end spheres, each
+//! worked out for every cell of the run and the lowest kept.
+//!
+//! Over a vertical line at (x, y) the lowest point of the ball swept from
+//! centre `c0` along `d` is, with `b` the parameter of the point's
+//! projection on the move's XY line and `e` its signed distance from it
+//! (both linear in x along a row), `a = R² - e²`, `L` and `L3` the move's
+//! horizontal and whole lengths:
+//!
+//! - on the cylinder, where `t = b - dz √a / (L L3)` is in [0, 1]:
+//!   `c0z + b dz - (L3 / L) √a` (the minimum of `z(t) + R - √(R² - ρ(t)²)`,
+//!   envelope.rs);
+//! - otherwise on the end sphere it covers: `c0z - √(R² - |q - c0|²)` or
+//!   `c0z + dz - √(R² - |q - c1|²)`.
+//!
+//! Where the cylinder's point is valid it is the lowest of the three (it
+//! is the minimum over the whole move; the spheres are its ends), so the
+//! minimum of the three, each infinite where it does not apply, is the
+//! envelope ([`crate::ball::BallSweep::lowest`] within rounding). A sphere
+//! is worked out only on the runs where it can be the answer: `t < 0`
+//! needs `b < max(κ, 0) R` (κ = dz / (L L3)), `t > 1` needs
+//! `b > 1 + min(κ, 0) R`.
+
+use crate::envelope::Sweep;
+use crate::zmap::CHUNK;
+
+/// A ball end mill's straight move prepared for the row kernel.
+#[derive(Clone, Copy, Debug)]
+pub struct BallLanes {
+    /// The ball's centre at the start and the move.
+    c0: [f64; 3],
+    d: [f64; 3],
+    r2: f64,
+    /// b = (wx d0 + wy d1) / L², e = (wx d1 - wy d0) / L.
+    bx: f64,
+    by: f64,
+    ex: f64,
+    ey: f64,
+    /// κ = dz / (L L3) and L3 / L.
+    kappa: f64,
+    l3_l: f64,
+    /// The b beyond which no cell is on the start sphere, and below which
+    /// none is on the end sphere.
+    b0_max: f64,
+    b1_min: f64,
+}
+
+/// The terms of one row (constant y).
+#[derive(Clone, Copy, Debug)]
+pub struct LaneRow {
+    b: f64,
+    e: f64,
+    wy2: f64,
+    wy1: f64,
+}
+
+/// 0, 1, 2, ... as f64 (a conversion per cell is not vector code).
+const IDX: [f64; CHUNK] = {
+    let mut t = [0.0; CHUNK];
+    let mut k = 0;
+    while k < CHUNK {
+        t[k] = k as f64;
+        k += 1;
+    }
+    t
+};
+
+/// Margin on the b bounds of the spheres (rounding of b and of √a).
+const B_MARGIN: f64 = 1e-9;
+
+impl BallLanes {
+    /// A ball of radius `r` along `s` (a move with a horizontal component;
+    /// see [`crate::ball::MIN_RUN`]).
+    pub fn new(s: &Sweep, r: f64) -> BallLanes {
+        let d = [s.p1[0] - s.p0[0], s.p1[1] - s.p0[1], s.p1[2] - s.p0[2]];
+        let l2 = d[0] * d[0] + d[1] * d[1];
+        let l = l2.sqrt();
+        let l3 = (l2 + d[2] * d[2]).sqrt();
+        let kappa = d[2] / (l * l3);
+        BallLanes {
+            c0: [s.p0[0], s.p0[1], s.p0[2] + r],
+            d,
+            r2: r * r,
+            bx: d[0] / l2,
+            by: d[1] / l2,
+            ex: d[1] / l,
+            ey: -d[0] / l,
+            kappa,
+            l3_l: l3 / l,
+            b0_max: if kappa > 0.0 { kappa * r } else { 0.0 } + B_MARGIN,
+            b1_min: 1.0 + if kappa < 0.0 { kappa * r } else { 0.0 } - B_MARGIN,
+        }
+    }
+
+    /// The row at `y`.
+    #[inline]
+    pub fn row(&self, y: f64) -> LaneRow {
+        let wy = y - self.c0[1];
+        let wy1 = wy - self.d[1];
+        LaneRow {
+            b: wy * self.by,
+            e: wy * self.ey,
+            wy2: wy * wy,
+            wy1: wy1 * wy1,
+        }
+    }
+
+    /// The envelope over the cells at `x0 + k dx`, `k < out.len()` (at most
+    /// [`CHUNK`]), into `out`: infinite where the ball does not pass.
+    #[inline]
+    pub fn envelope(&self, row: &LaneRow, x0: f64, dx: f64, out: &mut [f64]) {
+        let n = out.len().min(CHUNK);
+        let out = &mut out[..n];
+        #[cfg(target_arch = "x86_64")]
+        if avx2() {
+            // SAFETY: the CPU has AVX2 and FMA (checked at run time).
+            unsafe { self.envelope_avx2(row, x0, dx, out) };
+            return;
+        }
+        self.envelope_body(row, x0, dx, out);
+    }
+
+    /// The envelope and its slope along the row at (x, y), or None where
+    /// the ball does not pass over the point or passes over it only at
+    /// its rim.
+    #[inline]
+    pub fn with_slope(&self, y: f64, x: f64) -> Option<(f64, f64)> {
+        let row = self.row(y);
+        let wx = x - self.c0[0];
+        let b = wx * self.bx + row.b;
+        let e = wx * self.ex + row.e;
+        let a = self.r2 - e * e;
+        if a <= 0.0 {
+            return None;
+        }
+        let sa = a.sqrt();
+        let t = b - self.kappa * sa;
+        if (0.0..=1.0).contains(&t) {
+            let z = self.c0[2] + b * self.d[2] - self.l3_l * sa;
+            return Some((z, self.bx * self.d[2] + self.l3_l * e * self.ex / sa));
+        }
+        // The end sphere nearest the minimum (t < 0: the start).
+        let (wx, wy2, cz) = if t < 0.0 {
+            (wx, row.wy2, self.c0[2])
+        } else {
+            (wx - self.d[0], row.wy1, self.c0[2] + self.d[2])
+        };
+        let q = self.r2 - (wx * wx + wy2);
+        if q <= 0.0 {
+            return None;
+        }
+        let sq = q.sqrt();
+        Some((cz - sq, wx / sq))
+    }
+
+    /// A lower bound of the envelope over the row at `y` from `xa` to
+    /// `xb` (`xa <= xb`), or minus infinity when the ball does not pass
+    /// over the whole interval: [`floor_between`] of the two ends.
+    pub fn floor_over(&self, y: f64, xa: f64, xb: f64) -> f64 {
+        floor_between(xa, self.with_slope(y, xa), xb, self.with_slope(y, xb))
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    fn envelope_avx2(&self, row: &LaneRow, x0: f64, dx: f64, out: &mut [f64]) {
+        self.envelope_body(row, x0, dx, out);
+    }
+
+    #[inline(always)]
+    fn envelope_body(&self, row: &LaneRow, x0: f64, dx: f64, out: &mut [f64]) {
+        let n = out.len();
+        let wx0 = x0 - self.c0[0];
+        let wxn = wx0 + (n as f64 - 1.0) * dx;
+        let (ba, bb) = (wx0 * self.bx + row.b, wxn * self.bx + row.b);
+        let (blo, bhi) = if ba < bb { (ba, bb) } else { (bb, ba) };
+        let (r2, c0z, dz) = (self.r2, self.c0[2], self.d[2]);
+        let (bx, ex, kappa, l3_l) = (self.bx, self.ex, self.kappa, self.l3_l);
+        for (o, &k) in out.iter_mut().zip(&IDX) {
+            let wx = wx0 + k * dx;
+            let b = wx * bx + row.b;
+            let e = wx * ex + row.e;
+            let a = r2 - e * e;
+            let sa = if a > 0.0 { a } else { 0.0 }.sqrt();
+            let t = b - kappa * sa;
+            let cyl = c0z + b * dz - l3_l * sa;
+            let ok = a >= 0.0 && (0.0..=1.0).contains(&t);
+            *o = if ok { cyl } else { f64::INFINITY };
+        }
+        if blo < self.b0_max && row.wy2 <= r2 {
+            for (o, &k) in out.iter_mut().zip(&IDX) {
+                let wx = wx0 + k * dx;
+                let q = r2 - (wx * wx + row.wy2);
+                let s = c0z - if q > 0.0 { q } else { 0.0 }.sqrt();
+                let s = if q >= 0.0 { s } else { f64::INFINITY };
+                *o = if s < *o { s } else { *o };
+            }
+        }
+        if bhi > self.b1_min && row.wy1 <= r2 {
+            let (dx0, c1z) = (self.d[0], c0z + dz);
+            for (o, &k) in out.iter_mut().zip(&IDX) {
+                let wx = wx0 + k * dx - dx0;
+                let q = r2 - (wx * wx + row.wy1);
+                let s = c1z - if q > 0.0 { q } else { 0.0 }.sqrt();
+                let s = if q >= 0.0 { s } else { f64::INFINITY };
+                *o = if s < *o { s } else { *o };
+            }
+        }
+    }
+}
+
+/// A lower bound over [xa, xb] of a convex function whose value and slope
+/// at the ends are `a` and `b` (minus infinity when either is unknown):
+/// the function is above the tangents at both ends, so the bound is the
+/// lowest point of the greater of the two. The lower envelope of a convex
+/// body (the capsule) is such a function on its convex footprint.
+#[inline]
+pub fn floor_between(xa: f64, a: Option<(f64, f64)>, xb: f64, b: Option<(f64, f64)>) -> f64 {
+    let (Some((za, sa)), Some((zb, sb))) = (a, b) else {
+        return f64::NEG_INFINITY;
+    };
+    let low = if sa >= 0.0 {
+        za
+    } else if sb <= 0.0 {
+        zb
+    } else {
+        // sa < 0 < sb: the tangents cross inside the interval.
+        let x = (zb - za + sa * xa - sb * xb) / (sa - sb);
+        za + sa * (x.clamp(xa, xb) - xa)
+    };
+    // The rounding of the two evaluations, with room to spare.
+    low - 1e-9 * (1.0 + low.abs())
+}
+
+/// True when the CPU has AVX2 and FMA (checked once).
+#[cfg(target_arch = "x86_64")]
+#[inline]
+pub fn avx2() -> bool {
+    use std::sync::atomic::{AtomicU8, Ordering};
+    static HAS: AtomicU8 = AtomicU8::new(0);
+    match HAS.load(Ordering::Relaxed) {
+        1 => false,
+        2 => true,
+        _ => {
+            let has = std::arch::is_x86_feature_detected!("avx2")
+                && std::arch::is_x86_feature_detected!("fma");
+            HAS.store(if has { 2 } else { 1 }, Ordering::Relaxed);
+            has
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ball::BallSweep;
+    use proptest::prelude::*;
+
+    #[test]
+    fn a_level_slot_by_hand() {
+        // R 3 along X at z 0 from x 0 to 10: 2 mm off the path the
+        // ball's surface is 3 - √5 above the tip; 1 mm past the end on
+        // the path, the end sphere: 3 - √8 above it; 3.01 mm off the
+        // path, nothing; nor 8 mm past the end.
+        let s = Sweep::new([0.0, 0.0, 0.0], [10.0, 0.0, 0.0]);
+        let b = BallLanes::new(&s, 3.0);
+        let mut out = [0.0; 2];
+        b.envelope(&b.row(2.0), 5.0, 13.0, &mut out);
+        assert!((out[0] - (3.0 - 5f64.sqrt())).abs() < 1e-12, "{out:?}");
+        assert_eq!(out[1], f64::INFINITY);
+        b.envelope(&b.row(0.0), 11.0, 1.0, &mut out);
+        assert!((out[0] - (3.0 - 8f64.sqrt())).abs() < 1e-12, "{out:?}");
+        assert!((out[1] - (3.0 - 5f64.sqrt())).abs() < 1e-12, "{out:?}");
+        b.envelope(&b.row(3.01), 5.0, 1.0, &mut out);
+        assert_eq!(out, [f64::INFINITY; 2]);
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+        /// The bound over an interval of a row is at or below the envelope
+        /// at 64 points of it (the brute-force minimum).
+        #[test]
+        fn the_floor_over_an_interval_is_below_every_point(
+            p0 in prop::array::uniform3(-10.0f64..10.0),
+            d in prop::array::uniform3(-6.0f64..6.0),
+            q in prop::array::uniform2(-16.0f64..16.0),
+            w in 0.0f64..3.0,
+            r in 0.2f64..6.0,
+        ) {
+            let p1 = [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]];
+            let s = Sweep::new(p0, p1);
+            let Some(one) = BallSweep::new(&s, r) else { return Ok(()); };
+            let lanes = BallLanes::new(&s, r);
+            let low = lanes.floor_over(q[1], q[0], q[0] + w);
+            for k in 0..=63 {
+                let x = q[0] + w * k as f64 / 63.0;
+                if let Some(z) = one.lowest(&one.row(q[1]), x) {
+                    prop_assert!(low <= z, "{low} above {z} at {x}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_floor_of_a_level_slot_by_hand() {
+        // R 3 along X at z 0 from x 0 to 10; on the row 2 mm off the
+        // path the envelope is 3 - √5 everywhere over x 2..8, and the
+        // bound is that; over x 11..12 (the end sphere, rising with x)
+        // it is the height at x 11: 3 - √(9 - 1 - 4).
+        let s = Sweep::new([0.0, 0.0, 0.0], [10.0, 0.0, 0.0]);
+        let b = BallLanes::new(&s, 3.0);
+        let z = b.floor_over(2.0, 2.0, 8.0);
+        assert!((z - (3.0 - 5f64.sqrt())).abs() < 1e-8, "{z}");
+        let z = b.floor_over(2.0, 11.0, 12.0);
+        assert!((z - 1.0).abs() < 1e-8, "{z}");
+        // Past the rim at x 13.0: no bound.
+        assert_eq!(b.floor_over(0.0, 12.0, 13.5), f64::NEG_INFINITY);
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+        /// On random moves and runs of cells the row kernel gives what
+        /// the capsule's per-point evaluation gives (ball.rs, itself
+        /// checked against the general envelope).
+        #[test]
+        fn agrees_with_the_capsule(
+            p0 in prop::array::uniform3(-10.0f64..10.0),
+            d in prop::array::uniform3(-6.0f64..6.0),
+            q in prop::array::uniform2(-16.0f64..16.0),
+            dx in 0.01f64..1.0,
+            r in 0.2f64..6.0,
+        ) {
+            let p1 = [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]];
+            let s = Sweep::new(p0, p1);
+            let Some(one) = BallSweep::new(&s, r) else { return Ok(()); };
+            let lanes = BallLanes::new(&s, r);
+            let mut out = [0.0; CHUNK];
+            lanes.envelope(&lanes.row(q[1]), q[0], dx, &mut out);
+            for (k, &z) in out.iter().enumerate() {
+                let x = q[0] + k as f64 * dx;
+                let want = one.lowest(&one.row(q[1]), x).unwrap_or(f64::INFINITY);
+                if z.is_finite() && want.is_finite() {
+                    prop_assert!((z - want).abs() < 1e-9, "{k}: {z} vs {want}");
+                } else if z != want {
+                    // Only on the rim may one see the ball and not the
+                    // other: the point within 1e-6 of R from the segment.
+                    let l2 = d[0] * d[0] + d[1] * d[1];
+                    let (wx, wy) = (x - p0[0], q[1] - p0[1]);
+                    let t = ((wx * d[0] + wy * d[1]) / l2).clamp(0.0, 1.0);
+                    let e = (wx - t * d[0]).hypot(wy - t * d[1]);
+                    prop_assert!((e - r).abs() < 1e-6, "{k}: {z} vs {want} at {e} of {r}");
+                }
+            }
+        }
+    }
+}
