@@ -14,7 +14,7 @@
 
 mod common;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use common::programs::{corpus, examples, expand_programs, records, rs274_programs, scratch, Case};
 use common::records::differs;
@@ -282,15 +282,11 @@ fn g107_moves_keep_their_surface_speed() {
     assert!((f - 250.0 / k).abs() < 1e-4, "{f}");
 }
 
-#[test]
-fn g112_moves_keep_their_speed_on_the_face() {
-    // 000 §4.6's example: F100 along the contour in the face's Cartesian
-    // plane, 231.4 mm of it (40 + 10 + 5π + 30 + 30 + 5π + 30 + 20 + 40),
-    // so at least 138.8 s of cutting. Its chords reach the output as
-    // machine X and C (no G112 on any target), each F scaled so that it
-    // takes that time timed by X.
+/// 000 §4.6's G112 example expanded for the HX (`--to fanuc`) into a
+/// scratch file named by `tag`: (the program, the output, its text).
+fn expand_g112(tag: &str) -> (PathBuf, PathBuf, String) {
     let prog = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/hx/polar_interp_g112.nc");
-    let out = scratch("g112-fanuc", "nc");
+    let out = scratch(tag, "nc");
     let st = std::process::Command::new(env!("CARGO_BIN_EXE_kerf"))
         .args(["expand", "--machine", "hx-mc", "--quiet", "-o"])
         .arg(&out)
@@ -299,6 +295,17 @@ fn g112_moves_keep_their_speed_on_the_face() {
         .unwrap();
     assert!(st.success());
     let text = std::fs::read_to_string(&out).unwrap();
+    (prog, out, text)
+}
+
+#[test]
+fn g112_moves_keep_their_speed_on_the_face() {
+    // 000 §4.6's example: F100 along the contour in the face's Cartesian
+    // plane, 231.4 mm of it (40 + 10 + 5π + 30 + 30 + 5π + 30 + 20 + 40),
+    // so at least 138.8 s of cutting. Its chords reach the output as
+    // machine X and C (no G112 on any target), each F scaled so that it
+    // takes that time timed by X.
+    let (prog, out, text) = expand_g112("g112-fanuc");
     assert!(!text.contains("G112"), "{text}");
     let (want, got) = (cycle_time(&prog), cycle_time(&out));
     let contour = 40.0 + 10.0 + 30.0 + 30.0 + 30.0 + 20.0 + 40.0 + 10.0 * std::f64::consts::PI;
@@ -315,16 +322,7 @@ fn expanded_g112_output_runs_without_a_lathe_warning() {
     // feeds below 1 (line 7: X20.002 C0.895 F0.64), which once read as a
     // lathe's feed per revolution (KERF-W002). The original gives no
     // warning, nor must its expansion.
-    let prog = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/hx/polar_interp_g112.nc");
-    let out = scratch("g112-w002", "nc");
-    let st = std::process::Command::new(env!("CARGO_BIN_EXE_kerf"))
-        .args(["expand", "--machine", "hx-mc", "--quiet", "-o"])
-        .arg(&out)
-        .arg(&prog)
-        .status()
-        .unwrap();
-    assert!(st.success());
-    let text = std::fs::read_to_string(&out).unwrap();
+    let (prog, out, text) = expand_g112("g112-w002");
     assert!(text.contains(" F0.64 "), "{text}");
     for p in [&prog, &out] {
         let run = std::process::Command::new(env!("CARGO_BIN_EXE_kerf"))

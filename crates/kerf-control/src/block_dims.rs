@@ -8,12 +8,12 @@
 //! Z43.0946 F1500.`); [`BlockDims::read_plain`] reads those in one pass
 //! over the bytes without building the parser's [`Block`], and finds what
 //! kerf-lang's `parse_block` gives for them: its numbers are read by the
-//! parser's own fast path, [`kerf_lang::plain_number`]. Anything else (a
+//! parser's own fast path, [`kerf_lang::plain_digits`]. Anything else (a
 //! comment, a macro word, N or O, a block delete, blanks inside a number,
 //! a number past the digit limit) is refused, and the block goes to the
 //! parser: [`BlockDims::read_parsed`] takes the same from its result.
 
-use kerf_lang::{is_blank, Addr, Block, Val};
+use kerf_lang::{is_blank, plain_digits, Addr, Block, Val};
 
 /// A set of address letters `A`..`Z` (one bit each), for the dimension
 /// letters of a profile: a test of one bit where a slice search was a
@@ -62,82 +62,6 @@ pub(crate) struct BlockDims {
     pub skipped: bool,
     /// Its first G20 (true) or G21 (false).
     pub inch: Option<bool>,
-}
-
-/// Exact powers of ten, as kerf-lang's parser divides by them.
-const POW10: [f64; 19] = [
-    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
-    1e17, 1e18,
-];
-
-/// A number read as [`kerf_lang::plain_number`] reads it, its value left
-/// as the integer of its digits and the count of them after the point.
-struct Digits {
-    mant: u64,
-    frac: usize,
-    point: bool,
-    /// Index after the number and the blanks that follow it.
-    end: usize,
-}
-
-impl Digits {
-    /// The value the parser gives (`mant / 10^frac`).
-    #[inline]
-    fn value(&self) -> f64 {
-        if self.frac == 0 {
-            self.mant as f64
-        } else {
-            self.mant as f64 / POW10[self.frac]
-        }
-    }
-}
-
-/// Reads the digits of a run of `[0-9]`: (integer, index after).
-#[inline(always)]
-fn run(t: &[u8], mut i: usize, mut mant: u64) -> (u64, usize) {
-    while let Some(&c) = t.get(i) {
-        let d = c.wrapping_sub(b'0');
-        if d >= 10 {
-            break;
-        }
-        // Wrapping: a run long enough to overflow is past the digit
-        // limit and refused.
-        mant = mant.wrapping_mul(10).wrapping_add(u64::from(d));
-        i += 1;
-    }
-    (mant, i)
-}
-
-/// The number at `s`, where [`kerf_lang::plain_number`] reads one (the
-/// same refusals: no digit, past `max` digits or 18, digits or a first
-/// point after blanks), without working out its value.
-#[inline(always)]
-fn digits_at(t: &[u8], s: usize, max: usize) -> Option<Digits> {
-    let (mant, int_end) = run(t, s, 0);
-    let point = t.get(int_end) == Some(&b'.');
-    let (mant, i) = if point {
-        run(t, int_end + 1, mant)
-    } else {
-        (mant, int_end)
-    };
-    let frac = i - int_end - usize::from(point);
-    let count = int_end - s + frac;
-    let mut j = i;
-    while t.get(j).is_some_and(|&c| is_blank(c)) {
-        j += 1;
-    }
-    let more = t
-        .get(j)
-        .is_some_and(|c| c.is_ascii_digit() || (*c == b'.' && !point));
-    if count == 0 || count > max.min(18) || more {
-        return None;
-    }
-    Some(Digits {
-        mant,
-        frac,
-        point,
-        end: j,
-    })
 }
 
 impl BlockDims {
@@ -217,7 +141,7 @@ impl BlockDims {
             i += 1;
             let neg = text.get(i) == Some(&b'-');
             i += usize::from(neg);
-            let Some(num) = digits_at(text, i, max) else {
+            let Some(num) = plain_digits(text, i, max) else {
                 return false;
             };
             i = num.end;

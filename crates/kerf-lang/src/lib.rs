@@ -15,8 +15,8 @@ pub mod source;
 
 pub use block::{Addr, BinOp, Block, Expr, ExprId, Func, LoopCmd, Num, Stmt, Val, Word};
 pub use parse::{
-    is_blank, loop_command, parse_block, parse_block_general, plain_number, LexError, LexErrorKind,
-    LexOptions,
+    is_blank, loop_command, parse_block, parse_block_general, plain_digits, plain_number, LexError,
+    LexErrorKind, LexOptions, PlainDigits,
 };
 pub use source::{LineSource, Mark, ProgramRead, RawBlock};
 

@@ -112,12 +112,7 @@ fn err<T>(kind: LexErrorKind, at: usize) -> R<T> {
 /// Parses one block of text into `out` (which is cleared first).
 pub fn parse_block(text: &[u8], opts: &LexOptions, out: &mut Block) -> Result<(), LexError> {
     out.clear();
-    let mut p = P {
-        t: text,
-        i: 0,
-        o: *opts,
-        depth: 0,
-    };
+    let mut p = P::new(text, opts);
     p.block::<true>(out)
 }
 
@@ -134,12 +129,7 @@ pub fn parse_block_general(
     out: &mut Block,
 ) -> Result<(), LexError> {
     out.clear();
-    let mut p = P {
-        t: text,
-        i: 0,
-        o: *opts,
-        depth: 0,
-    };
+    let mut p = P::new(text, opts);
     p.block::<false>(out)
 }
 
@@ -165,6 +155,17 @@ pub fn is_blank(c: u8) -> bool {
 }
 
 impl<'a> P<'a> {
+    /// A parser at the start of `t`.
+    #[inline]
+    fn new(t: &'a [u8], opts: &LexOptions) -> P<'a> {
+        P {
+            t,
+            i: 0,
+            o: *opts,
+            depth: 0,
+        }
+    }
+
     #[inline]
     fn skip(&mut self) {
         while self.i < self.t.len() && is_blank(self.t[self.i]) {
@@ -870,15 +871,58 @@ impl<'a> P<'a> {
     }
 }
 
-/// The parser's fast path for an unsigned number at `s` in `t`: digits,
-/// a point, digits, with no blank between them and at most `max` digits
-/// (at most 18). Gives the number and the index after it and after the
-/// blanks that follow it; `None` where the parser reads digit by digit
-/// instead (no digit, past `max` digits, digits or a first point after
-/// blanks), which is also where a reader mirroring the parser must hand
-/// the block to it. Inlined into both (the parser's hot path).
+/// A number as [`plain_digits`] reads it: the integer of its digits and
+/// how many of them stand after the point, its value not yet worked out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PlainDigits {
+    /// The digits as one integer (`12.50` is 1250).
+    pub mant: u64,
+    /// Digits after the point.
+    pub frac: usize,
+    /// Whether a decimal point was written.
+    pub point: bool,
+    /// Digits written in all.
+    pub count: usize,
+    /// Index after the number and the blanks that follow it.
+    pub end: usize,
+}
+
+impl PlainDigits {
+    /// The value the parser gives: `mant / 10^frac`, one division by an
+    /// exact power of ten.
+    #[inline(always)]
+    pub fn value(&self) -> f64 {
+        if self.frac == 0 {
+            self.mant as f64
+        } else {
+            self.mant as f64 / POW10[self.frac]
+        }
+    }
+}
+
+/// [`plain_digits`] with the number's value: the number and the index
+/// after it and after the blanks that follow it.
 #[inline(always)]
 pub fn plain_number(t: &[u8], s: usize, max: usize) -> Option<(Num, usize)> {
+    let d = plain_digits(t, s, max)?;
+    let num = Num {
+        value: d.value(),
+        point: d.point,
+        digits: d.count as u8,
+    };
+    Some((num, d.end))
+}
+
+/// The parser's fast path for an unsigned number at `s` in `t`: digits,
+/// a point, digits, with no blank between them and at most `max` digits
+/// (at most 18). Gives the digits read and the index after the number and
+/// after the blanks that follow it; `None` where the parser reads digit
+/// by digit instead (no digit, past `max` digits, digits or a first point
+/// after blanks), which is also where a reader mirroring the parser must
+/// hand the block to it. Inlined into both (the parser's hot path);
+/// [`plain_number`] is this with the value worked out.
+#[inline(always)]
+pub fn plain_digits(t: &[u8], s: usize, max: usize) -> Option<PlainDigits> {
     let mut i = s;
     let mut mant: u64 = 0;
     // Wrapping: a run long enough to overflow is past the digit limit and
@@ -912,17 +956,13 @@ pub fn plain_number(t: &[u8], s: usize, max: usize) -> Option<(Num, usize)> {
         // between digits, errors: digit by digit.
         return None;
     }
-    let value = if frac == 0 {
-        mant as f64
-    } else {
-        mant as f64 / POW10[frac]
-    };
-    let num = Num {
-        value,
+    Some(PlainDigits {
+        mant,
+        frac,
         point,
-        digits: digits as u8,
-    };
-    Some((num, j))
+        count: digits,
+        end: j,
+    })
 }
 
 const POW10: [f64; 19] = [
@@ -966,15 +1006,11 @@ mod tests {
 
     /// What the digit-by-digit reader gives at the start of `t`.
     fn slow(t: &[u8], max: u8) -> R<(Num, usize)> {
-        let mut p = P {
-            t,
-            i: 0,
-            o: LexOptions {
-                max_digits: max,
-                ..LexOptions::default()
-            },
-            depth: 0,
+        let o = LexOptions {
+            max_digits: max,
+            ..LexOptions::default()
         };
+        let mut p = P::new(t, &o);
         let n = p.number_slow(0)?;
         Ok((n, p.i))
     }

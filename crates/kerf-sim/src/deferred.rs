@@ -225,18 +225,9 @@ fn on_segment(r: &Run, p: Pt) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::lathe::signed_area;
 
     const SQ: [[f64; 2]; 4] = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
-
-    fn area(c: &[[f64; 2]]) -> f64 {
-        (0..c.len())
-            .map(|i| {
-                let (p, q) = (c[i], c[(i + 1) % c.len()]);
-                p[0] * q[1] - q[0] * p[1]
-            })
-            .sum::<f64>()
-            / 2.0
-    }
 
     #[test]
     fn collinear_moves_are_one_swept_region() {
@@ -248,7 +239,7 @@ mod tests {
         assert!(!p.push(&SQ, (3.0, 0.0), (6.0, 0.0)));
         let r = p.regions().unwrap();
         assert_eq!(r.len(), 1);
-        assert!((area(&r[0]) - 7.0).abs() < 1e-12, "{r:?}");
+        assert!((signed_area(&r[0]) - 7.0).abs() < 1e-12, "{r:?}");
     }
 
     #[test]

@@ -122,20 +122,10 @@ fn lead(insert: &[Pt], holder: &[Pt], p0: Pt, p1: Pt) -> Vec<Contour> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lathe::volume;
+    use crate::lathe::{signed_area, volume};
 
     fn area(c: &[Contour]) -> f64 {
-        c.iter()
-            .map(|c| {
-                (0..c.len())
-                    .map(|i| {
-                        let (p, q) = (c[i], c[(i + 1) % c.len()]);
-                        p[0] * q[1] - q[0] * p[1]
-                    })
-                    .sum::<f64>()
-                    / 2.0
-            })
-            .sum()
+        c.iter().map(|c| signed_area(c)).sum()
     }
 
     #[test]

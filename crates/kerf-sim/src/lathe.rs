@@ -431,6 +431,19 @@ fn clip_all(
     (used, reach)
 }
 
+/// The signed area of a closed polygon (positive counter-clockwise), by
+/// the shoelace formula: the tests' independent measure of a region.
+#[cfg(test)]
+pub(crate) fn signed_area(c: &[[f64; 2]]) -> f64 {
+    (0..c.len())
+        .map(|i| {
+            let (p, q) = (c[i], c[(i + 1) % c.len()]);
+            p[0] * q[1] - q[0] * p[1]
+        })
+        .sum::<f64>()
+        / 2.0
+}
+
 /// A convex hull as one counter-clockwise contour.
 pub fn ccw(h: &Hull) -> Contour {
     let mut p: Contour = h.lower.iter().map(|q| [q.0, q.1]).collect();
