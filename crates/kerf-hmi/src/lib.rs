@@ -14,6 +14,7 @@ pub mod error;
 pub mod live_part;
 pub mod path;
 pub mod relative;
+pub mod repeat;
 pub mod runtime_control;
 pub mod serve_error;
 pub mod server;

@@ -13,6 +13,8 @@ use std::time::{Duration, Instant};
 use kerf_canon::{Canon, Event, Pos};
 use kerf_interp::{Interp, Profile, Settings, Step};
 
+use crate::repeat::Repeats;
+
 /// Bytes per point record.
 pub const RECORD: usize = 20;
 /// Most points held; past it the path is decimated.
@@ -23,6 +25,13 @@ const CHORD_TOL: f64 = 0.005;
 const MAX_BLOCKS: u64 = 50_000_000;
 /// Longest time the trace runs.
 const MAX_TIME: Duration = Duration::from_secs(120);
+/// Consecutive moves that only retrace the path after which the trace
+/// stops (a program that loops for ever draws nothing new).
+#[cfg(not(test))]
+const MAX_RETRACED: u64 = 1_000_000;
+/// The same, small enough for a test in a debug build.
+#[cfg(test)]
+const MAX_RETRACED: u64 = 1_000;
 
 /// Move kinds in a record.
 pub mod kind {
@@ -214,6 +223,12 @@ fn run(
             }
             b.publish(store, stop);
         }
+        if b.retraced {
+            note = Some(format!(
+                "repeats itself: stopped after {MAX_RETRACED} retraced moves"
+            ));
+            break;
+        }
         match it.step() {
             Step::Event(e) => {
                 if let Some(sim) = sim.as_deref_mut() {
@@ -251,6 +266,10 @@ struct Builder {
     last_kind: u8,
     min_step: f64,
     at: Pos,
+    /// The moves' end points drawn so far.
+    repeats: Repeats,
+    /// The last [`MAX_RETRACED`] moves all ended on points drawn before.
+    retraced: bool,
 }
 
 impl Builder {
@@ -261,6 +280,8 @@ impl Builder {
             last_kind: kind::START,
             min_step: 0.0,
             at: start,
+            repeats: Repeats::new(MAX_RETRACED),
+            retraced: false,
         };
         b.push(&start, 0, kind::START, 0, true);
         b
@@ -269,10 +290,17 @@ impl Builder {
     fn event(&mut self, e: &Event) {
         let line = e.src.line;
         let tool = e.tool;
+        let k = match &e.cmd {
+            Canon::Rapid { .. } => kind::RAPID,
+            Canon::Feed { .. } => kind::FEED,
+            Canon::Thread { .. } => kind::THREAD,
+            Canon::Arc { .. } => kind::ARC,
+            _ => return,
+        };
         match &e.cmd {
-            Canon::Rapid { m, .. } => self.push(&m.to, line, kind::RAPID, tool, false),
-            Canon::Feed { m, .. } => self.push(&m.to, line, kind::FEED, tool, false),
-            Canon::Thread { m, .. } => self.push(&m.to, line, kind::THREAD, tool, false),
+            Canon::Rapid { m, .. } | Canon::Feed { m, .. } | Canon::Thread { m, .. } => {
+                self.push(&m.to, line, k, tool, false)
+            }
             Canon::Arc {
                 m,
                 center,
@@ -297,6 +325,7 @@ impl Builder {
             _ => return,
         }
         if let Some(m) = e.motion() {
+            self.retraced = self.repeats.retraces(&move_words(k, &self.at, e));
             self.at = m.to;
         }
     }
@@ -348,6 +377,29 @@ impl Builder {
             s.id = s.id.wrapping_add(1);
         }
     }
+}
+
+/// What the picture draws of a move from `from` (its kind, ends, and an
+/// arc's centre and direction) as words for [`Repeats`].
+fn move_words(k: u8, from: &Pos, e: &Event) -> [u32; 11] {
+    let bits = |p: &Pos, i: usize| (p[i] as f32).to_bits();
+    let mut w = [0u32; 11];
+    w[0] = u32::from(k);
+    let to = e.motion().map_or(*from, |m| m.to);
+    for i in 0..3 {
+        w[1 + i] = bits(from, i);
+        w[4 + i] = bits(&to, i);
+    }
+    if let Canon::Arc {
+        center, dir, turns, ..
+    } = &e.cmd
+    {
+        for i in 0..3 {
+            w[7 + i] = bits(center, i);
+        }
+        w[10] = u32::from(*dir == kerf_canon::ArcDir::Ccw) | turns << 1;
+    }
+    w
 }
 
 /// Keeps the points at least `step` from the last kept point of the same
@@ -491,6 +543,32 @@ mod tests {
         let note = s.note.clone().unwrap_or_default();
         assert!(note.contains("line 2"), "{note}");
         assert_eq!(points(&s).len(), 2);
+    }
+
+    #[test]
+    fn a_program_that_loops_for_ever_stops_once_it_only_retraces() {
+        let s = trace(
+            "hx-mc",
+            "G90 G17 G54 G00 X0 Y0 Z5.\nWHILE [1 EQ 1] DO1\nG01 X10. F500.\nY10.\nX0.\nY0.\nEND1\nM30\n",
+        );
+        let note = s.note.clone().unwrap_or_default();
+        assert!(note.contains("repeats itself"), "{note}");
+        // The start, the rapid, the square's 4 new sides, then the
+        // MAX_RETRACED sides that retrace them (the last one drawn
+        // before the trace stops).
+        assert_eq!(points(&s).len(), 2 + 4 + MAX_RETRACED as usize);
+        assert!(s.done);
+    }
+
+    #[test]
+    fn a_long_loop_that_draws_new_moves_runs_to_its_end() {
+        // 3,000 distinct moves, three times the retrace limit, all traced.
+        let s = trace(
+            "hx-mc",
+            "G90 G17 G54 G00 X0 Y0 Z5.\n#1=0\nWHILE [#1 LT 3000] DO1\nG01 X[#1 MOD 100] Y[FIX[#1/100]] F500.\n#1=#1+1\nEND1\nM30\n",
+        );
+        assert!(s.note.is_none(), "{:?}", s.note);
+        assert_eq!(points(&s).len(), 2 + 3000);
     }
 
     #[test]

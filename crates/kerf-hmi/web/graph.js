@@ -50,6 +50,11 @@ const MOVE_SCALE = 0.5;
 const MOVE_REBUILD_MS = 200;
 const STILL_MAX = 400000;
 const STILL_PX = 0.5;
+/**
+ * The still copy is drawn only while its vertices are at most this many
+ * pixels apart (past it, corners are visibly cut).
+ */
+const STILL_SPREAD_PX = 4;
 
 /** Most segments one highlighted line draws. */
 const HIGHLIGHT_MAX = 200000;
@@ -591,7 +596,8 @@ export class Graph {
    * Draws the scene now. A path of FULL_MAX vertices or fewer is drawn
    * whole; a larger one as the coarse copy while it streams in, then
    * decimated for the view: on the screen grid while the camera moves
-   * (grid.js), STILL_MAX vertices when it is still (lod.js).
+   * (grid.js), STILL_MAX vertices when it is still (lod.js), or the
+   * screen grid again when no such copy holds the view.
    */
   draw() {
     let show = this.line;
@@ -611,8 +617,15 @@ export class Graph {
       const copy = moving ? this.moveGrid : this.stillCopy;
       show = moving ? this.moveLine : this.stillLine;
       this.refresh(copy, show, moving ? MOVE_CELL_PX : STILL_PX, moving);
-      // A view the still copy cannot hold: the coarse copy instead.
-      if (copy.failed) show = this.coarseLine;
+      // A view the still copy cannot hold within STILL_SPREAD_PX (passes
+      // drawn over each other more often than it has room for: keeping
+      // vertices apart cannot thin a path that only retraces itself, it
+      // cuts its corners): the screen grid, which drops the passes that
+      // reach no cell not drawn before.
+      if (!moving && (copy.failed || copy.scale * STILL_PX > STILL_SPREAD_PX)) {
+        this.refresh(this.moveGrid, this.moveLine, MOVE_CELL_PX, true);
+        show = this.moveLine;
+      }
     }
     this.line.visible = show === this.line;
     this.coarseLine.visible = show === this.coarseLine;

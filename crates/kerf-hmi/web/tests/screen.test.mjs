@@ -501,3 +501,38 @@ test('GRAPH shows the simulated part with --stock, and the part as cut while the
   await p2.close();
   await s.stop();
 });
+
+test('GRAPH draws a path that retraces itself 120,000 times with its corners', async () => {
+  // A 100 mm square run 120,000 times: 480,002 points, more than the
+  // still copy holds, every one a corner of the same four sides. Keeping
+  // vertices apart cannot thin it without cutting the square away (it
+  // did: the still frame was 5 vertices of the rapid), so the still frame
+  // must be the screen grid, holding the four corners.
+  const laps = 'G90 G17 G21 G54\nG00 X0. Y0. Z5.\n#100=0\nWHILE [#100 LT 120000] DO1\n'
+    + 'G01 X100. F3000.\nY100.\nX0.\nY0.\n#100=#100+1\nEND1\nM30\n';
+  await mode('EDIT');
+  await fetch(new URL('/api/program?name=laps.nc', server.url), { method: 'POST', body: laps });
+  const s = await until('laps.nc traced', async () => {
+    const st = await api('/api/state');
+    return st.program.name === 'laps.nc' && st.path.done ? st : null;
+  }, 120000);
+  assert.equal(s.path.points, 2 + 4 * 120000);
+  await page.click('[data-show=graph]');
+  const frames = await page.evaluate(() => window.kerf.graph.frames);
+  await page.click('[data-view=iso]');
+  await frameAfter(frames);
+  await until('all points', async () => page.evaluate((n) => window.kerf.graph && window.kerf.graph.points === n && window.kerf.graph.done, s.path.points), 60000);
+  await redrawn();
+  const drawn = await page.evaluate(() => {
+    const g = window.kerf.graph;
+    const c = g.drewLod === 'move' ? g.moveGrid : g.stillCopy;
+    const v = [];
+    for (let i = 0; i < c.n; i++) v.push([0, 1, 2].map((k) => Math.round(c.pos[i * 3 + k])).join(','));
+    return { lod: g.drewLod, vertices: [...new Set(v)] };
+  });
+  assert.equal(drawn.lod, 'move');
+  for (const corner of ['0,0,5', '100,0,5', '100,100,5', '0,100,5']) {
+    assert.ok(drawn.vertices.includes(corner), `corner ${corner} not drawn: ${drawn.vertices.join(' ')}`);
+  }
+  await shot('graph-retraced');
+});
