@@ -266,9 +266,9 @@ struct Builder {
     last_kind: u8,
     min_step: f64,
     at: Pos,
-    /// The moves' end points drawn so far.
+    /// The moves drawn so far.
     repeats: Repeats,
-    /// The last [`MAX_RETRACED`] moves all ended on points drawn before.
+    /// The last [`MAX_RETRACED`] moves had all been drawn before.
     retraced: bool,
 }
 
@@ -290,17 +290,10 @@ impl Builder {
     fn event(&mut self, e: &Event) {
         let line = e.src.line;
         let tool = e.tool;
-        let k = match &e.cmd {
-            Canon::Rapid { .. } => kind::RAPID,
-            Canon::Feed { .. } => kind::FEED,
-            Canon::Thread { .. } => kind::THREAD,
-            Canon::Arc { .. } => kind::ARC,
-            _ => return,
-        };
-        match &e.cmd {
-            Canon::Rapid { m, .. } | Canon::Feed { m, .. } | Canon::Thread { m, .. } => {
-                self.push(&m.to, line, k, tool, false)
-            }
+        let (k, m) = match &e.cmd {
+            Canon::Rapid { m, .. } => (kind::RAPID, m),
+            Canon::Feed { m, .. } => (kind::FEED, m),
+            Canon::Thread { m, .. } => (kind::THREAD, m),
             Canon::Arc {
                 m,
                 center,
@@ -320,14 +313,14 @@ impl Builder {
                 ) {
                     self.push(&p, line, kind::ARC, tool, false);
                 }
-                self.push(&m.to, line, kind::ARC, tool, true);
+                (kind::ARC, m)
             }
             _ => return,
-        }
-        if let Some(m) = e.motion() {
-            self.retraced = self.repeats.retraces(&move_words(k, &self.at, e));
-            self.at = m.to;
-        }
+        };
+        // An arc's end point is kept whatever the decimation.
+        self.push(&m.to, line, k, tool, k == kind::ARC);
+        self.retraced = self.repeats.retraces(&move_words(k, &self.at, &m.to, e));
+        self.at = m.to;
     }
 
     /// Adds a point; a point closer than `min_step` to the last one of
@@ -379,16 +372,15 @@ impl Builder {
     }
 }
 
-/// What the picture draws of a move from `from` (its kind, ends, and an
-/// arc's centre and direction) as words for [`Repeats`].
-fn move_words(k: u8, from: &Pos, e: &Event) -> [u32; 11] {
+/// What the picture draws of the move `e` from `from` to `to` (its kind,
+/// ends, and an arc's centre and direction) as words for [`Repeats`].
+fn move_words(k: u8, from: &Pos, to: &Pos, e: &Event) -> [u32; 11] {
     let bits = |p: &Pos, i: usize| (p[i] as f32).to_bits();
     let mut w = [0u32; 11];
     w[0] = u32::from(k);
-    let to = e.motion().map_or(*from, |m| m.to);
     for i in 0..3 {
         w[1 + i] = bits(from, i);
-        w[4 + i] = bits(&to, i);
+        w[4 + i] = bits(to, i);
     }
     if let Canon::Arc {
         center, dir, turns, ..

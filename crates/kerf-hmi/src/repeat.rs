@@ -108,14 +108,21 @@ mod tests {
     #[test]
     fn a_new_move_ends_the_run() {
         let mut r = Repeats::new(3);
-        let (a, b) = ([1.0, 2.0, 3.0], [4.0, 5.0, 6.0]);
-        assert!(!r.retraces(&line(a, b)));
-        assert!(!r.retraces(&line(a, b)));
-        assert!(!r.retraces(&line(a, b)));
-        assert!(!r.retraces(&line(a, [4.0, 5.0, 6.5])));
-        assert!(!r.retraces(&line(a, b)));
-        assert!(!r.retraces(&line(a, b)));
-        assert!(r.retraces(&line(a, b)));
+        let (a, b, c) = ([1.0, 2.0, 3.0], [4.0, 5.0, 6.0], [4.0, 5.0, 6.5]);
+        // a-b new, twice again (a run of 2), a-c new (the run ends), a-b
+        // three times again: the third makes a run of 3.
+        let moves = [
+            (b, false),
+            (b, false),
+            (b, false),
+            (c, false),
+            (b, false),
+            (b, false),
+            (b, true),
+        ];
+        for (i, (to, want)) in moves.into_iter().enumerate() {
+            assert_eq!(r.retraces(&line(a, to)), want, "move {i}");
+        }
     }
 
     #[test]

@@ -176,9 +176,9 @@ export class Graph {
    * view or path (while moving, at most every MOVE_REBUILD_MS unless the
    * zoom changed by a quarter): moving, the screen grid (grid.js) with
    * cells `px` pixels wide; still, the view copy (lod.js) with vertices
-   * `px` pixels apart.
+   * `px` pixels apart, or (`grid`) the screen grid made for this view.
    */
-  refresh(copy, line, px, moving) {
+  refresh(copy, line, px, moving, grid = moving) {
     this.camera.updateMatrixWorld();
     const m = this.vp.multiplyMatrices(this.camera.projectionMatrix, this.camera.matrixWorldInverse).elements;
     if (copy.fits(m, this.n)) return;
@@ -195,7 +195,7 @@ export class Graph {
     }
     const g = this.line.geometry;
     const pos = g.attributes.position.array, col = g.attributes.color.array;
-    if (moving) copy.build(pos, col, this.keys, this.n, m, canvas.width, canvas.height, px, { tol: MOVE_TOL_PX, byTool: this.byTool });
+    if (grid) copy.build(pos, col, this.keys, this.n, m, canvas.width, canvas.height, px, { tol: MOVE_TOL_PX, byTool: this.byTool });
     else copy.build(pos, col, this.keys, this.n, m, worldPx * px);
     copy.worldPx = worldPx;
     copy.at = performance.now();
@@ -525,6 +525,8 @@ export class Graph {
     this.tool.position.set(w.X || 0, w.Y || 0, w.Z || 0);
     if (this.info) {
       this.info.textContent = `${this.points} PTS${s.path.done ? '' : ' …'}${s.path.note ? ` (${s.path.note})` : ''}${this.selected ? `  SEL LINE ${this.selected}` : ''}  X${(w.X || 0).toFixed(3)} ${this.lathe ? '' : `Y${(w.Y || 0).toFixed(3)} `}Z${(w.Z || 0).toFixed(3)}`;
+      // The line is cut to the view's width; the whole of it on hover.
+      this.info.title = this.info.textContent;
     }
     if (shown && (moved || cur !== this.lastDrawnLine)) this.render();
     this.lastDrawnLine = cur;
@@ -623,7 +625,7 @@ export class Graph {
       // cuts its corners): the screen grid, which drops the passes that
       // reach no cell not drawn before.
       if (!moving && (copy.failed || copy.scale * STILL_PX > STILL_SPREAD_PX)) {
-        this.refresh(this.moveGrid, this.moveLine, MOVE_CELL_PX, true);
+        this.refresh(this.moveGrid, this.moveLine, MOVE_CELL_PX, false, true);
         show = this.moveLine;
       }
     }
