@@ -36,10 +36,29 @@ fn workspace_rust_version() -> String {
         .to_string()
 }
 
+/// The host's target triple (`rustc -vV`'s `host:` line).
+fn host_triple() -> String {
+    let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".to_string());
+    let output = Command::new(rustc)
+        .arg("-vV")
+        .output()
+        .expect("rustc -vV runs");
+    String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .find_map(|l| l.strip_prefix("host: "))
+        .expect("rustc -vV names the host")
+        .to_string()
+}
+
+/// The locked graph for the host. Offline, cargo has only the packages a
+/// build here downloaded: those of other platforms (Windows console
+/// crates, say) are not on a fresh machine, so the graph is the host's.
 fn locked_metadata() -> serde_json::Value {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_string());
+    let host = host_triple();
     let output = Command::new(cargo)
         .args(["metadata", "--format-version", "1", "--locked", "--offline"])
+        .args(["--filter-platform", &host])
         .current_dir(workspace_root())
         .output()
         .expect("cargo metadata runs");
