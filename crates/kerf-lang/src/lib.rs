@@ -8,9 +8,13 @@
 //! This crate knows nothing of execution, machines or units: a word's value
 //! is the number as written (with a flag telling whether it had a decimal
 //! point); what `X100` means is the interpreter's business.
+//!
+//! [`plain_words`] recognises a block made only of simple number words and
+//! reads it in one pass, with the words [`parse_block`] would give.
 
 pub mod block;
 pub mod parse;
+pub mod plain;
 pub mod source;
 
 pub use block::{Addr, BinOp, Block, Expr, ExprId, Func, LoopCmd, Num, Stmt, Val, Word};
@@ -18,6 +22,7 @@ pub use parse::{
     is_blank, loop_command, parse_block, parse_block_general, plain_digits, plain_number, LexError,
     LexErrorKind, LexOptions, PlainDigits,
 };
+pub use plain::{letter_bit, plain_words, PlainWord, PlainWords, MAX_PLAIN};
 pub use source::{LineSource, Mark, ProgramRead, RawBlock};
 
 #[cfg(test)]

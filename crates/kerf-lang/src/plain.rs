@@ -1,0 +1,192 @@
+//! The plain-block scanner: a block made only of simple words (an
+//! upper-case address letter from a given set, an optional `-` and a
+//! plain number: digits, a point, digits, no blank inside), each letter
+//! at most once, separated by blanks, and nothing else: no comment, no
+//! `;`, no `/`, no `%`, no `N` or `O`, no macro syntax, no lower case.
+//!
+//! [`plain_words`] reads such a block in one pass and gives its words
+//! exactly as [`crate::parse_block`] would (the same numbers, digit
+//! counts and byte positions: both read a number by
+//! [`crate::plain_number`]); for any other text it says no, and the
+//! caller parses the block the general way. `tests/plain_scan.rs` checks
+//! it against the parser on generated blocks.
+
+use crate::block::Num;
+use crate::parse::{is_blank, plain_number};
+
+/// Most words a plain block may have.
+pub const MAX_PLAIN: usize = 8;
+
+/// One word of a plain block.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlainWord {
+    /// The address letter (upper case).
+    pub letter: u8,
+    /// The number as the parser reads it (sign applied).
+    pub num: Num,
+    /// Byte index of the letter in the block text.
+    pub at: u32,
+}
+
+/// The words of a plain block, in the order written.
+#[derive(Clone, Copy, Debug)]
+pub struct PlainWords {
+    /// The words; the first `len` are the block's.
+    pub words: [PlainWord; MAX_PLAIN],
+    /// How many words the block has.
+    pub len: usize,
+}
+
+impl Default for PlainWords {
+    fn default() -> PlainWords {
+        let w = PlainWord {
+            letter: 0,
+            num: Num {
+                value: 0.0,
+                point: false,
+                digits: 0,
+            },
+            at: 0,
+        };
+        PlainWords {
+            words: [w; MAX_PLAIN],
+            len: 0,
+        }
+    }
+}
+
+impl PlainWords {
+    /// The block's words.
+    pub fn words(&self) -> &[PlainWord] {
+        &self.words[..self.len]
+    }
+}
+
+/// The bit of letter `l` (`A`-`Z`) in a letter set.
+#[inline]
+pub const fn letter_bit(l: u8) -> u32 {
+    1 << (l - b'A')
+}
+
+/// Reads `text` as a plain block whose letters are all in `allowed` (a
+/// set of [`letter_bit`]s; `N` and `O` are never plain): true and the
+/// words in `out` when it is one, false (with `out` in no defined state)
+/// for anything else, including a block with no word. `max_digits` is
+/// the parser's digit limit ([`crate::LexOptions::max_digits`]).
+#[inline]
+pub fn plain_words(text: &[u8], max_digits: u8, allowed: u32, out: &mut PlainWords) -> bool {
+    let allowed = allowed & !(letter_bit(b'N') | letter_bit(b'O'));
+    let t = text;
+    let mut i = 0;
+    while i < t.len() && is_blank(t[i]) {
+        i += 1;
+    }
+    let mut seen = 0u32;
+    let mut n = 0;
+    while i < t.len() {
+        let l = t[i];
+        if !l.is_ascii_uppercase() {
+            return false;
+        }
+        let bit = letter_bit(l);
+        if allowed & bit == 0 || seen & bit != 0 || n == MAX_PLAIN {
+            return false;
+        }
+        seen |= bit;
+        let neg = t.get(i + 1) == Some(&b'-');
+        let s = i + 1 + neg as usize;
+        if !t.get(s).is_some_and(u8::is_ascii_digit) {
+            return false;
+        }
+        let Some((mut num, end)) = plain_number(t, s, max_digits as usize) else {
+            return false;
+        };
+        if neg {
+            num.value = -num.value;
+        }
+        out.words[n] = PlainWord {
+            letter: l,
+            num,
+            at: i as u32,
+        };
+        n += 1;
+        i = end;
+    }
+    out.len = n;
+    n > 0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const XYZ: u32 = letter_bit(b'X') | letter_bit(b'Y') | letter_bit(b'Z');
+    const GXYZF: u32 = XYZ | letter_bit(b'G') | letter_bit(b'F');
+
+    fn scan(t: &str, allowed: u32) -> Option<Vec<(char, f64, bool, u8, u32)>> {
+        let mut out = PlainWords::default();
+        plain_words(t.as_bytes(), 12, allowed, &mut out).then(|| {
+            out.words()
+                .iter()
+                .map(|w| {
+                    let n = w.num;
+                    (w.letter as char, n.value, n.point, n.digits, w.at)
+                })
+                .collect()
+        })
+    }
+
+    #[test]
+    fn a_surface_block_reads_word_by_word() {
+        // Bytes: G0 1 _3 X4 .. Y14 .. Z24 ..; X6.7292 is 5 digits.
+        let w = scan("G01 X6.7292 Y0.0000 Z-43.0946 F1500.", GXYZF).unwrap();
+        assert_eq!(
+            w,
+            [
+                ('G', 1.0, false, 2, 0),
+                ('X', 6.7292, true, 5, 4),
+                ('Y', 0.0, true, 5, 12),
+                ('Z', -43.0946, true, 6, 20),
+                ('F', 1500.0, true, 4, 30),
+            ]
+        );
+        // Leading and trailing blanks, a carriage return.
+        let w = scan("  X1 Y-2.\r", XYZ).unwrap();
+        assert_eq!(w, [('X', 1.0, false, 1, 2), ('Y', -2.0, true, 1, 5)]);
+    }
+
+    #[test]
+    fn anything_else_is_not_plain() {
+        for t in [
+            "",
+            "   ",
+            "x1",
+            "X1 X2",
+            "N10 X1",
+            "X1 ; note",
+            "X1 (note)",
+            "/X1",
+            "%",
+            "X#1",
+            "X[1+2]",
+            "X 1",
+            "X1 2",
+            "X.5",
+            "X-.5",
+            "X+1",
+            "X1,Y2",
+            "X1 ,C1",
+            "M03",
+            "X1234567890123",
+            "X--1",
+        ] {
+            assert_eq!(scan(t, GXYZF), None, "{t:?}");
+        }
+        // A letter outside the set.
+        assert_eq!(scan("G01 X1", XYZ), None);
+        // More than MAX_PLAIN words.
+        let many = "A1 B1 C1 D1 E1 F1 G1 H1 I1";
+        assert_eq!(scan(many, u32::MAX), None);
+        assert!(scan("A1 B1 C1 D1 E1 F1 G1 H1", u32::MAX).is_some());
+    }
+}
