@@ -3,8 +3,6 @@
 //! the end of the program. A block's commands are queued in execution
 //! order and handed out one per call.
 
-use std::collections::VecDeque;
-
 use kerf_canon::*;
 use kerf_lang::{parse_block, Addr, Block, LexErrorKind, Mark, ProgramRead, RawBlock, Stmt, Val};
 
@@ -43,10 +41,12 @@ mod motion;
 mod mover;
 mod offset_data;
 mod phases;
+mod plain;
 mod polar_interp;
 mod probe;
 mod program;
 mod puma_words;
+mod queue;
 mod reset;
 mod rotary_mode;
 mod runtime_hooks;
@@ -114,6 +114,18 @@ pub enum Step {
     Alarm(Alarm),
 }
 
+/// What one call of [`Interp::step_into`] stopped on.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Filled {
+    /// The batch has the events asked for (or more); the program goes on.
+    Room,
+    /// The program has ended; all its events are in the batch.
+    End,
+    /// The program stopped on an alarm; the events before it are in the
+    /// batch.
+    Alarm(Alarm),
+}
+
 /// The interpreter: the coordinator of the owning types below. Each
 /// kind of state has its own type and file (docs/ARCHITECTURE.md,
 /// "kerf-interp").
@@ -129,8 +141,9 @@ pub struct Interp {
     guard: loop_guard::LoopGuard,
     /// The words of the block being executed (words.rs).
     words: Words,
-    /// The block's commands not yet handed out by [`Interp::step`].
-    queue: VecDeque<Event>,
+    /// The block's commands not yet handed out by [`Interp::step`]
+    /// (interp/queue.rs).
+    queue: queue::Queue,
     /// The program has ended or stopped on an alarm.
     finished: bool,
     /// The modal G codes in force, by meaning (interp/modal.rs).
@@ -159,6 +172,9 @@ pub struct Interp {
     /// Quiet blocks take the short phase walk (interp/phases.rs); off
     /// only to show that both walks give the same results.
     quiet_walk: bool,
+    /// Plain blocks take the direct path (interp/plain.rs); off only to
+    /// show that both paths give the same results.
+    plain_path: bool,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -187,7 +203,7 @@ impl Interp {
             prog: program::Program::default(),
             guard,
             words: Words::default(),
-            queue: VecDeque::with_capacity(16),
+            queue: queue::Queue::new(),
             finished: false,
             modal,
             frames,
@@ -200,6 +216,7 @@ impl Interp {
             puma,
             hurco,
             quiet_walk: true,
+            plain_path: true,
         }
     }
 
@@ -208,6 +225,13 @@ impl Interp {
     #[doc(hidden)]
     pub fn set_quiet_walk(&mut self, on: bool) {
         self.quiet_walk = on;
+    }
+
+    /// Switches the direct path for plain blocks (on by default) — for
+    /// tests comparing it with the general path; results are the same.
+    #[doc(hidden)]
+    pub fn set_plain_path(&mut self, on: bool) {
+        self.plain_path = on;
     }
 
     /// Loads the main program from a reader; `name` is used in source
@@ -349,6 +373,50 @@ impl Interp {
         }
     }
 
+    /// Runs blocks until at least `room` more events are at the end of
+    /// `out`, or to the end of the program or an alarm: the events
+    /// [`Interp::step`] would hand out one per call, in the same order,
+    /// with the same end or alarm after them, pushed straight onto the
+    /// caller's batch (a block's events are made in place there, not
+    /// queued and copied out). Events left by earlier `step` calls come
+    /// first.
+    pub fn step_into(&mut self, out: &mut Vec<Event>, room: usize) -> Filled {
+        let want = out.len() + room;
+        self.queue.drain_into(out);
+        self.queue.lend(out);
+        let r = self.fill(want);
+        self.queue.lend(out);
+        r
+    }
+
+    /// [`Interp::step_into`] with the batch lent to the queue: blocks
+    /// until the queue's storage holds `want` events.
+    fn fill(&mut self, want: usize) -> Filled {
+        loop {
+            self.queue.set_base();
+            if self.queue.total() >= want {
+                return Filled::Room;
+            }
+            if let Some(a) = self.common.after_block.take() {
+                self.finished = true;
+                return Filled::Alarm(a);
+            }
+            if self.finished {
+                return Filled::End;
+            }
+            match self.next_block() {
+                Ok(true) => {}
+                Ok(false) => self.finished = true,
+                Err(a) => {
+                    self.finished = true;
+                    self.queue.clear();
+                    self.common.drop_held();
+                    return Filled::Alarm(a);
+                }
+            }
+        }
+    }
+
     fn alarm(&self, k: AlarmKind, at: u32, msg: impl Into<String>) -> Alarm {
         let (line, col) = self.prog.raw.line_col(at as usize);
         k.at(
@@ -477,6 +545,13 @@ impl Interp {
             .count_read(next.offset)
             .map_err(|over| self.loop_limit(over, 0))?;
         if cached.is_none() {
+            // A block of simple words, read for the first time, while
+            // nothing unusual is in force: executed directly.
+            if !repeated && self.plain_state() {
+                if let Some(r) = self.plain_block() {
+                    return r;
+                }
+            }
             self.parse_raw()?;
             if repeated {
                 self.prog
@@ -816,9 +891,7 @@ impl Interp {
     }
 
     fn finished_by_end(&self) -> bool {
-        self.queue
-            .back()
-            .is_some_and(|e| matches!(e.cmd, Canon::End { .. }))
+        self.queue.ends()
     }
 
     fn mcode(&self, m: u32) -> Option<crate::dialect::MCode> {

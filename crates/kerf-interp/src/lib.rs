@@ -35,7 +35,7 @@ pub mod words;
 pub use kerf_geom::{arc, comp, corner, rotary, stroke, turning, xform};
 
 pub use dialect::{Dialect, DialectId};
-pub use interp::{BlockStep, Interp, InterpSnapshot, MacroSwitches, Settings, Step};
+pub use interp::{BlockStep, Filled, Interp, InterpSnapshot, MacroSwitches, Settings, Step};
 pub use machine::{MachineKind, Profile};
 
 use kerf_canon::{Alarm, Event};

@@ -2,8 +2,8 @@
 //! interpreter on a thread of its own, the planner and the sinks
 //! ([`Downstream`]) on the caller's.
 //!
-//! The interpreter's thread moves its events into a [`Batch`] of
-//! [`BATCH`]; full batches go over a bounded channel and come back empty
+//! The interpreter's thread has its events made in a [`Batch`] of
+//! [`BATCH`] (`Interp::step_into`); full batches go over a bounded channel and come back empty
 //! to be filled again, so nothing is allocated per event and at most
 //! [`IN_FLIGHT`] + 1 batches exist. With the events a batch carries what
 //! the sinks read of the interpreter while the program runs: the name of
@@ -24,7 +24,7 @@ use std::sync::mpsc::{self, Receiver, SyncSender, TryRecvError};
 use std::thread;
 
 use kerf_canon::{Alarm, Event};
-use kerf_interp::{Interp, Profile, Step};
+use kerf_interp::{Filled, Interp, Profile};
 
 use super::downstream::Downstream;
 use super::RunError;
@@ -97,18 +97,19 @@ fn produce(it: &mut Interp, full: SyncSender<Batch>, empty: Receiver<Batch>) {
     let mut made = 1;
     let mut b = Batch::new();
     loop {
-        let end = match it.step() {
-            Step::Event(e) => {
-                let id = e.src.file;
-                if named.first(id) {
-                    b.names.push((id, it.file_name(id).to_string()));
-                }
-                b.events.push(e);
-                None
-            }
-            Step::End => Some(End::Done),
-            Step::Alarm(a) => Some(End::Alarm(a)),
+        // The interpreter pushes the events straight onto the batch.
+        let before = b.events.len();
+        let end = match it.step_into(&mut b.events, BATCH.saturating_sub(before)) {
+            Filled::Room => None,
+            Filled::End => Some(End::Done),
+            Filled::Alarm(a) => Some(End::Alarm(a)),
         };
+        for e in &b.events[before..] {
+            let id = e.src.file;
+            if named.first(id) {
+                b.names.push((id, it.file_name(id).to_string()));
+            }
+        }
         let last = end.is_some();
         if !last && b.events.len() < BATCH {
             continue;

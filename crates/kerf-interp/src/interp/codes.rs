@@ -114,14 +114,21 @@ impl Interp {
             if f.v < 0.0 {
                 return Err(self.alarm(AlarmKind::OutOfRange, f.at, "negative feedrate"));
             }
-            let v = if self.modal.feed_mode.means == FeedMode::Inverse {
-                f.v
-            } else {
-                f.v * self.unit()
-            };
-            self.tool.feed = Some(v);
+            self.set_feed(f.v);
         }
         Ok(())
+    }
+
+    /// The feed in force from an F word's value `v` (not negative): mm
+    /// (or mm/rev) from program units, G93's inverse time as written.
+    #[inline]
+    pub(super) fn set_feed(&mut self, v: f64) {
+        let v = if self.modal.feed_mode.means == FeedMode::Inverse {
+            v
+        } else {
+            v * self.unit()
+        };
+        self.tool.feed = Some(v);
     }
 
     pub(super) fn t_word(&mut self) -> R<()> {
@@ -227,10 +234,20 @@ impl Interp {
             }
             self.tool.s = s.v;
         }
+        self.spindle_to(dir);
+        Ok(())
+    }
+
+    /// The spindle turning `dir` at the speed the S in force gives: one
+    /// spindle event when the direction or the rpm changed (a block
+    /// without M or S calls it with the direction in force, for the rpm
+    /// that G96 or a clamp may have changed).
+    #[inline]
+    pub(super) fn spindle_to(&mut self, dir: SpindleDir) {
         let changed_dir = dir != self.tool.spindle;
         self.tool.spindle = dir;
         if dir == SpindleDir::Stop {
-            return Ok(());
+            return;
         }
         let rpm = self.rpm();
         if changed_dir || (rpm - self.tool.last_rpm).abs() > 1e-9 {
@@ -238,7 +255,6 @@ impl Interp {
             let css = self.css_speed();
             self.emit(Canon::Spindle { dir, rpm, css });
         }
-        Ok(())
     }
 
     /// The surface speed in m/min when constant surface speed is on.

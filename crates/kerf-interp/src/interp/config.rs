@@ -37,6 +37,15 @@ pub(super) struct Config {
     /// order (the HX): quiet blocks may take the short walk
     /// (interp/phases.rs).
     pub(super) mill_order: bool,
+    /// The control and machine let a plain block take the direct path
+    /// (interp/plain.rs): the HX's order, a mill with X, Y and Z, G, X,
+    /// Y, Z and F accepted, G00 and G01 rapid and linear motion, and none
+    /// of the dialect features a plain block would have to pass through
+    /// (word ranges, U/V/W, restricted words, direct drawing, G-code
+    /// system B, offsets waiting for a move).
+    pub(super) plain_ok: bool,
+    /// G00 and G01 of the table (the plain path's motion codes).
+    pub(super) plain_g: [Option<&'static GCode>; 2],
 }
 
 impl Config {
@@ -74,8 +83,12 @@ impl Config {
             }
         }
         let mill_order = dialect.order == crate::dialect::FANUC_MILL;
+        let plain_g = [0u16, 10].map(|c| g_index[c as usize]);
+        let plain_ok = plain_allowed(&profile, dialect, &letter_ok, &has_axis, plain_g);
         Config {
             mill_order,
+            plain_ok,
+            plain_g,
             profile,
             dialect,
             lex,
@@ -153,6 +166,35 @@ impl Config {
     pub(super) fn letter_ok(&self, l: u8) -> bool {
         self.letter_ok[(l - b'A') as usize]
     }
+}
+
+/// Whether the plain path may run on this control and machine (see
+/// [`Config::plain_ok`]).
+fn plain_allowed(
+    profile: &Profile,
+    dialect: &Dialect,
+    letter_ok: &[bool; 26],
+    has_axis: &[bool; NAXES],
+    plain_g: [Option<&'static GCode>; 2],
+) -> bool {
+    use crate::dialect::meaning::MotionMode;
+    use crate::dialect::{Means, Support};
+    let caps = &dialect.caps;
+    let motion_ok = |g: Option<&GCode>, m: MotionMode| {
+        g.is_some_and(|g| g.means == Means::Motion(m) && matches!(g.support, Support::Yes))
+    };
+    dialect.order == crate::dialect::FANUC_MILL
+        && profile.kind == crate::machine::MachineKind::Mill
+        && b"GXYZF".iter().all(|&l| letter_ok[(l - b'A') as usize])
+        && has_axis[..3].iter().all(|&a| a)
+        && motion_ok(plain_g[0], MotionMode::Rapid)
+        && motion_ok(plain_g[1], MotionMode::Linear)
+        && !dialect.uvw_incremental
+        && !caps.word_ranges
+        && !caps.restricted_words
+        && !caps.direct_drawing
+        && !caps.gcode_system_b
+        && !caps.offsets_wait_for_move
 }
 
 #[cfg(test)]

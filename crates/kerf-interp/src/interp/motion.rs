@@ -34,12 +34,7 @@ impl Interp {
             }
             if let Some(w) = abs_w {
                 self.check_range(l, w)?;
-                let v = self.axis_value(ax, w);
-                t[i] = if self.modal.absolute() {
-                    v
-                } else {
-                    cur[i] + v + self.tlo_change(i)
-                };
+                t[i] = self.axis_end(&cur, ax, w);
                 any = true;
                 programmed[i] = true;
             } else if let Some(il) = inc_l {
@@ -56,6 +51,20 @@ impl Interp {
             self.polar_target(&cur, &mut t);
         }
         Ok((t, any))
+    }
+
+    /// Where axis word `w` puts axis `ax`: its value in G90, added to
+    /// the current point `cur` (and this block's tool length change) in
+    /// G91.
+    #[inline]
+    pub(super) fn axis_end(&self, cur: &Pos, ax: Axis, w: WVal) -> f64 {
+        let i = ax as usize;
+        let v = self.axis_value(ax, w);
+        if self.modal.absolute() {
+            v
+        } else {
+            cur[i] + v + self.tlo_change(i)
+        }
     }
 
     /// The change of the tool length offset made by this block's
