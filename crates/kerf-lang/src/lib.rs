@@ -22,7 +22,7 @@ pub use parse::{
     is_blank, loop_command, parse_block, parse_block_general, plain_digits, plain_number, LexError,
     LexErrorKind, LexOptions, PlainDigits,
 };
-pub use plain::{letter_bit, plain_words, PlainWord, PlainWords, MAX_PLAIN};
+pub use plain::{letter_bit, plain_words, PlainWord};
 pub use source::{LineSource, Mark, ProgramRead, RawBlock};
 
 #[cfg(test)]

@@ -892,10 +892,15 @@ impl PlainDigits {
     /// exact power of ten.
     #[inline(always)]
     pub fn value(&self) -> f64 {
+        // At most 18 digits (as plain_digits gives them): below 2^63,
+        // where the signed conversion (one instruction) rounds as the
+        // unsigned one.
+        debug_assert!(self.mant < 1 << 63);
+        let m = self.mant as i64 as f64;
         if self.frac == 0 {
-            self.mant as f64
+            m
         } else {
-            self.mant as f64 / POW10[self.frac]
+            m / POW10[self.frac]
         }
     }
 }

@@ -14,9 +14,6 @@
 use crate::block::Num;
 use crate::parse::{is_blank, plain_number};
 
-/// Most words a plain block may have.
-pub const MAX_PLAIN: usize = 8;
-
 /// One word of a plain block.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlainWord {
@@ -28,40 +25,6 @@ pub struct PlainWord {
     pub at: u32,
 }
 
-/// The words of a plain block, in the order written.
-#[derive(Clone, Copy, Debug)]
-pub struct PlainWords {
-    /// The words; the first `len` are the block's.
-    pub words: [PlainWord; MAX_PLAIN],
-    /// How many words the block has.
-    pub len: usize,
-}
-
-impl Default for PlainWords {
-    fn default() -> PlainWords {
-        let w = PlainWord {
-            letter: 0,
-            num: Num {
-                value: 0.0,
-                point: false,
-                digits: 0,
-            },
-            at: 0,
-        };
-        PlainWords {
-            words: [w; MAX_PLAIN],
-            len: 0,
-        }
-    }
-}
-
-impl PlainWords {
-    /// The block's words.
-    pub fn words(&self) -> &[PlainWord] {
-        &self.words[..self.len]
-    }
-}
-
 /// The bit of letter `l` (`A`-`Z`) in a letter set.
 #[inline]
 pub const fn letter_bit(l: u8) -> u32 {
@@ -69,12 +32,19 @@ pub const fn letter_bit(l: u8) -> u32 {
 }
 
 /// Reads `text` as a plain block whose letters are all in `allowed` (a
-/// set of [`letter_bit`]s; `N` and `O` are never plain): true and the
-/// words in `out` when it is one, false (with `out` in no defined state)
-/// for anything else, including a block with no word. `max_digits` is
-/// the parser's digit limit ([`crate::LexOptions::max_digits`]).
+/// set of [`letter_bit`]s; `N` and `O` are never plain), handing each
+/// word to `each` in the order written: true when the block is one and
+/// `each` took every word, false as soon as the text shows it is not (or
+/// `each` says no), and for a block with no word. `max_digits` is the
+/// parser's digit limit ([`crate::LexOptions::max_digits`]). The words
+/// handed out before a false are not the block's: the caller drops them.
 #[inline]
-pub fn plain_words(text: &[u8], max_digits: u8, allowed: u32, out: &mut PlainWords) -> bool {
+pub fn plain_words(
+    text: &[u8],
+    max_digits: u8,
+    allowed: u32,
+    mut each: impl FnMut(PlainWord) -> bool,
+) -> bool {
     let allowed = allowed & !(letter_bit(b'N') | letter_bit(b'O'));
     let t = text;
     let mut i = 0;
@@ -82,14 +52,13 @@ pub fn plain_words(text: &[u8], max_digits: u8, allowed: u32, out: &mut PlainWor
         i += 1;
     }
     let mut seen = 0u32;
-    let mut n = 0;
     while i < t.len() {
         let l = t[i];
         if !l.is_ascii_uppercase() {
             return false;
         }
         let bit = letter_bit(l);
-        if allowed & bit == 0 || seen & bit != 0 || n == MAX_PLAIN {
+        if allowed & bit == 0 || seen & bit != 0 {
             return false;
         }
         seen |= bit;
@@ -104,16 +73,13 @@ pub fn plain_words(text: &[u8], max_digits: u8, allowed: u32, out: &mut PlainWor
         if neg {
             num.value = -num.value;
         }
-        out.words[n] = PlainWord {
-            letter: l,
-            num,
-            at: i as u32,
-        };
-        n += 1;
+        let at = i as u32;
+        if !each(PlainWord { letter: l, num, at }) {
+            return false;
+        }
         i = end;
     }
-    out.len = n;
-    n > 0
+    seen != 0
 }
 
 #[cfg(test)]
@@ -124,16 +90,13 @@ mod tests {
     const GXYZF: u32 = XYZ | letter_bit(b'G') | letter_bit(b'F');
 
     fn scan(t: &str, allowed: u32) -> Option<Vec<(char, f64, bool, u8, u32)>> {
-        let mut out = PlainWords::default();
-        plain_words(t.as_bytes(), 12, allowed, &mut out).then(|| {
-            out.words()
-                .iter()
-                .map(|w| {
-                    let n = w.num;
-                    (w.letter as char, n.value, n.point, n.digits, w.at)
-                })
-                .collect()
-        })
+        let mut out = Vec::new();
+        let plain = plain_words(t.as_bytes(), 12, allowed, |w| {
+            let n = w.num;
+            out.push((w.letter as char, n.value, n.point, n.digits, w.at));
+            true
+        });
+        plain.then_some(out)
     }
 
     #[test]
@@ -184,9 +147,13 @@ mod tests {
         }
         // A letter outside the set.
         assert_eq!(scan("G01 X1", XYZ), None);
-        // More than MAX_PLAIN words.
-        let many = "A1 B1 C1 D1 E1 F1 G1 H1 I1";
-        assert_eq!(scan(many, u32::MAX), None);
-        assert!(scan("A1 B1 C1 D1 E1 F1 G1 H1", u32::MAX).is_some());
+        // Every letter but N and O may be allowed.
+        assert_eq!(
+            scan("A1 B1 C1 D1 E1 F1 G1 H1 I1", u32::MAX).map(|w| w.len()),
+            Some(9)
+        );
+        assert_eq!(scan("A1 N1", u32::MAX), None);
+        // The caller may refuse a word.
+        assert!(!plain_words(b"X1 Y2", 12, XYZ, |w| w.letter != b'Y'));
     }
 }

@@ -5,9 +5,7 @@
 //! position) and nothing else; and a block the parser reads as only such
 //! words with no blank inside a number is one the scanner takes.
 
-use kerf_lang::{
-    letter_bit, parse_block, plain_words, Addr, Block, LexOptions, PlainWords, Val,
-};
+use kerf_lang::{letter_bit, parse_block, plain_words, Addr, Block, LexOptions, PlainWord, Val};
 use proptest::prelude::*;
 
 fn word() -> impl Strategy<Value = String> {
@@ -31,15 +29,12 @@ fn block_text() -> impl Strategy<Value = String> {
     (prop::collection::vec(word(), 0..7), "[ ]{0,2}").prop_map(|(ws, lead)| lead + &ws.concat())
 }
 
-const GXYZF: u32 = letter_bit(b'G')
-    | letter_bit(b'X')
-    | letter_bit(b'Y')
-    | letter_bit(b'Z')
-    | letter_bit(b'F');
+const GXYZF: u32 =
+    letter_bit(b'G') | letter_bit(b'X') | letter_bit(b'Y') | letter_bit(b'Z') | letter_bit(b'F');
 
 /// The parser's words as (letter, value bits, point, digits, at), or None
 /// when the block is not only number words of GXYZF, each once.
-fn parsed(text: &str, o: &LexOptions) -> Option<Vec<(u8, u64, bool, u8, u32)>> {
+fn parsed(text: &str, o: &LexOptions) -> Option<Vec<Seen>> {
     let mut b = Block::default();
     parse_block(text.as_bytes(), o, &mut b).ok()?;
     if b.n.is_some() || b.stmt.is_some() || !b.deletes.is_empty() || !b.comments.is_empty() {
@@ -55,19 +50,35 @@ fn parsed(text: &str, o: &LexOptions) -> Option<Vec<(u8, u64, bool, u8, u32)>> {
     Some(out)
 }
 
+type Seen = (u8, u64, bool, u8, u32);
+
+fn seen(w: PlainWord) -> Seen {
+    (
+        w.letter,
+        w.num.value.to_bits(),
+        w.num.point,
+        w.num.digits,
+        w.at,
+    )
+}
+
+/// The scanner's words, or None when it says the block is not plain.
+fn scan(text: &str, max: u8) -> Option<Vec<Seen>> {
+    let mut out = Vec::new();
+    plain_words(text.as_bytes(), max, GXYZF, |w| {
+        out.push(seen(w));
+        true
+    })
+    .then_some(out)
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(4000))]
 
     #[test]
     fn a_plain_block_is_what_the_parser_reads(text in block_text(), max in 4u8..=14) {
         let o = LexOptions { max_digits: max, ..LexOptions::default() };
-        let mut pw = PlainWords::default();
-        if plain_words(text.as_bytes(), max, GXYZF, &mut pw) {
-            let mine: Vec<_> = pw
-                .words()
-                .iter()
-                .map(|w| (w.letter, w.num.value.to_bits(), w.num.point, w.num.digits, w.at))
-                .collect();
+        if let Some(mine) = scan(&text, max) {
             prop_assert_eq!(Some(mine), parsed(&text, &o), "{:?}", text);
         }
     }
@@ -84,13 +95,8 @@ fn the_surface_blocks_are_plain() {
         "G01X1.Y2.Z3.F4",
         "X-0",
     ] {
-        let mut pw = PlainWords::default();
-        assert!(plain_words(text.as_bytes(), 12, GXYZF, &mut pw), "{text}");
-        let mine: Vec<_> = pw
-            .words()
-            .iter()
-            .map(|w| (w.letter, w.num.value.to_bits(), w.num.point, w.num.digits, w.at))
-            .collect();
-        assert_eq!(Some(mine), parsed(text, &o), "{text}");
+        let mine = scan(text, 12);
+        assert!(mine.is_some(), "{text}");
+        assert_eq!(mine, parsed(text, &o), "{text}");
     }
 }

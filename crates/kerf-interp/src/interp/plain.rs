@@ -27,7 +27,7 @@
 //! with the path on and off (`Interp::set_plain_path`) and compares
 //! every step.
 
-use kerf_lang::{letter_bit, plain_words};
+use kerf_lang::{letter_bit, plain_words, PlainWord};
 
 use super::*;
 
@@ -70,45 +70,45 @@ impl Interp {
     #[inline]
     pub(super) fn plain_block(&mut self) -> Option<R<bool>> {
         let raw = &self.prog.raw;
-        if raw.overlong
-            || !plain_words(
-                &raw.text,
-                self.cfg.lex.max_digits,
-                PLAIN_LETTERS,
-                &mut self.prog.plain,
-            )
-        {
+        if raw.overlong {
             return None;
         }
-        let p = self.decode_plain()?;
-        Some(self.run_plain(&p))
-    }
-
-    /// The scanned words as a plain block; None when one is not what the
-    /// path takes (another G code, a negative F, an arc or other motion
-    /// in force).
-    fn decode_plain(&self) -> Option<Plain> {
         let mut p = Plain {
             g: None,
             axes: [None; 3],
             f: None,
         };
-        for w in self.prog.plain.words() {
+        let g = self.cfg.plain_g;
+        let each = |w: PlainWord| {
             let wv = WVal {
                 v: w.num.value,
                 point: w.num.point,
                 at: w.at,
             };
-            match w.letter {
-                b'G' if wv.v == 0.0 => p.g = Some((self.cfg.plain_g[0]?, w.at)),
-                b'G' if wv.v == 1.0 => p.g = Some((self.cfg.plain_g[1]?, w.at)),
-                b'X' => p.axes[0] = Some(wv),
-                b'Y' => p.axes[1] = Some(wv),
-                b'Z' => p.axes[2] = Some(wv),
-                b'F' if wv.v >= 0.0 => p.f = Some(wv),
-                _ => return None,
-            }
+            let slot = match w.letter {
+                b'G' => {
+                    let code = match wv.v {
+                        0.0 => g[0],
+                        1.0 => g[1],
+                        _ => None,
+                    };
+                    p.g = code.map(|c| (c, w.at));
+                    return p.g.is_some();
+                }
+                b'X' => &mut p.axes[0],
+                b'Y' => &mut p.axes[1],
+                b'Z' => &mut p.axes[2],
+                // A negative F is the general path's alarm.
+                b'F' if wv.v >= 0.0 => &mut p.f,
+                _ => return false,
+            };
+            *slot = Some(wv);
+            true
+        };
+        if !plain_words(&raw.text, self.cfg.lex.max_digits, PLAIN_LETTERS, each) {
+            return None;
         }
+        // The motion in force after the block: rapid or linear only.
         let mode = match p.g {
             Some((g, _)) => match g.means {
                 Means::Motion(m) => m,
@@ -116,7 +116,10 @@ impl Interp {
             },
             None => self.modal.motion.means,
         };
-        matches!(mode, MotionMode::Rapid | MotionMode::Linear).then_some(p)
+        if !matches!(mode, MotionMode::Rapid | MotionMode::Linear) {
+            return None;
+        }
+        Some(self.run_plain(&p))
     }
 
     /// The plain block `p` executed (see the module documentation for

@@ -49,9 +49,6 @@ pub(super) struct Program {
     pub(super) block: Box<Block>,
     /// Parsed blocks of text executed again (loops, jumps back).
     pub(super) cache: BlockCache,
-    /// The words of the block in hand when it was read as a plain block
-    /// (interp/plain.rs).
-    pub(super) plain: kerf_lang::PlainWords,
     /// The WHILE/DO loops open in this call level, outermost first.
     pub(super) loops: Vec<LoopFrame>,
     /// Recent loop scans: (file, loop head offset, open labels) → after END.
