@@ -89,7 +89,10 @@ mod tests {
     const XYZ: u32 = letter_bit(b'X') | letter_bit(b'Y') | letter_bit(b'Z');
     const GXYZF: u32 = XYZ | letter_bit(b'G') | letter_bit(b'F');
 
-    fn scan(t: &str, allowed: u32) -> Option<Vec<(char, f64, bool, u8, u32)>> {
+    /// A word as (letter, value, point, digits, at).
+    type Seen = (char, f64, bool, u8, u32);
+
+    fn scan(t: &str, allowed: u32) -> Option<Vec<Seen>> {
         let mut out = Vec::new();
         let plain = plain_words(t.as_bytes(), 12, allowed, |w| {
             let n = w.num;
