@@ -430,7 +430,28 @@ impl Interp {
         )
     }
 
+    /// Queues `cmd` as an event of the block: straight onto the queue when
+    /// no path stage holds events and G96 is off, else by
+    /// [`Interp::emit_staged`].
+    #[inline]
     fn emit(&mut self, cmd: Canon) {
+        if !self.modal.css.means && self.common.corner.is_none() && self.common.comp.is_none() {
+            // Built where it is pushed: one copy of the command fewer.
+            self.queue.push_back(Event {
+                src: self.prog.cur,
+                tool: self.tool.number,
+                cmd,
+                prog: self.common.comp_prog.map(Box::new),
+            });
+            return;
+        }
+        self.emit_staged(cmd);
+    }
+
+    /// [`Interp::emit`] under G96 or with a path stage that may hold the
+    /// event.
+    #[inline(never)]
+    fn emit_staged(&mut self, cmd: Canon) {
         // G96 on a lathe: the spindle follows X (interp/lathe.rs).
         if self.modal.css.means
             && matches!(
@@ -559,6 +580,11 @@ impl Interp {
                     .insert(self.prog.file_id, &self.prog.raw, &self.prog.block, next);
             }
         }
+        self.run_parsed()
+    }
+
+    /// Executes the parsed block in hand (`next_block` has read it).
+    fn run_parsed(&mut self) -> R<bool> {
         if self.prog.block.percent {
             return self.percent_block();
         }

@@ -60,8 +60,26 @@ pub(super) struct Frames {
 /// The origins kept between moves. Worked out from the frames, not part
 /// of their state: its `Debug` shows no value, so a snapshot of the
 /// frames (interp/runtime_hooks.rs) is the same whether it is filled.
+///
+/// Each origin is its own cell, read alone (a move reads one at a time:
+/// one `Option` of both copied per read cost more than the read).
 #[derive(Clone, Default)]
-struct KeptOrigins(Cell<Option<Origins>>);
+struct KeptOrigins {
+    /// The two origins below are those of the frames as they are.
+    valid: Cell<bool>,
+    /// [`Origins::work_tlo`].
+    work_tlo: Cell<Pos>,
+    /// [`Origins::prog`].
+    prog: Cell<Pos>,
+}
+
+impl KeptOrigins {
+    /// Forgets the origins (a frame may have changed).
+    #[inline]
+    fn clear(&self) {
+        self.valid.set(false);
+    }
+}
 
 impl std::fmt::Debug for KeptOrigins {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -127,7 +145,7 @@ impl Frames {
         if keep_tlo {
             fresh.tlo = self.tlo;
         }
-        fresh.origins.0.set(None);
+        fresh.origins.clear();
         fresh
     }
 
@@ -138,7 +156,7 @@ impl Frames {
 
     /// The work offset table, to change an entry or the selection.
     pub(super) fn work_mut(&mut self) -> &mut WorkOffsets {
-        self.origins.0.set(None);
+        self.origins.clear();
         &mut self.work
     }
 
@@ -149,7 +167,7 @@ impl Frames {
 
     /// The G92 / G50 shift, to change it.
     pub(super) fn shift_mut(&mut self) -> &mut Pos {
-        self.origins.0.set(None);
+        self.origins.clear();
         &mut self.shift
     }
 
@@ -160,7 +178,7 @@ impl Frames {
 
     /// The G52 local offset, to change it.
     pub(super) fn local_mut(&mut self) -> &mut Pos {
-        self.origins.0.set(None);
+        self.origins.clear();
         &mut self.local
     }
 
@@ -171,19 +189,20 @@ impl Frames {
 
     /// The tool length offset vector, to change it.
     pub(super) fn tlo_mut(&mut self) -> &mut Pos {
-        self.origins.0.set(None);
+        self.origins.clear();
         &mut self.tlo
     }
 
     /// The origins, worked out again only after a change.
     #[inline]
-    fn origins(&self) -> Origins {
-        if let Some(o) = self.origins.0.get() {
-            return o;
+    fn origins(&self) -> &KeptOrigins {
+        if !self.origins.valid.get() {
+            let o = self.work_out_origins();
+            self.origins.work_tlo.set(o.work_tlo);
+            self.origins.prog.set(o.prog);
+            self.origins.valid.set(true);
         }
-        let o = self.work_out_origins();
-        self.origins.0.set(Some(o));
-        o
+        &self.origins
     }
 
     #[cold]
@@ -212,13 +231,13 @@ impl Frames {
     /// [`Frames::origin`] plus the tool length offset: the origin of the
     /// work coordinates of the tool tip.
     pub(super) fn origin_with_tlo(&self) -> Pos {
-        self.origins().work_tlo
+        self.origins().work_tlo.get()
     }
 
     /// Origin of programmed coordinates: the work origin plus the G52
     /// local offset and the tool length offset.
     pub(super) fn prog_origin(&self) -> Pos {
-        self.origins().prog
+        self.origins().prog.get()
     }
 
     /// Current position in programmed coordinates (tool tip).
