@@ -435,6 +435,14 @@ impl Interp {
     /// [`Interp::emit_staged`].
     #[inline]
     fn emit(&mut self, cmd: Canon) {
+        self.emit_here(cmd);
+    }
+
+    /// [`Interp::emit`] inlined where it is called (the move seam's
+    /// commit, which every move takes: the command is then built where
+    /// it is queued).
+    #[inline(always)]
+    fn emit_here(&mut self, cmd: Canon) {
         if !self.modal.css.means && self.common.corner.is_none() && self.common.comp.is_none() {
             // Built where it is pushed: one copy of the command fewer.
             self.queue.push_back(Event {

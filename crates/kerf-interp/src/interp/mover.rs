@@ -159,9 +159,10 @@ impl Interp {
     }
 
     /// Takes the position `mto` and emits `cmd` (already checked).
+    #[inline(always)]
     fn commit(&mut self, mto: Pos, cmd: Canon) {
         self.frames.mover.pos = mto;
-        self.emit(cmd);
+        self.emit_here(cmd);
     }
 
     fn motion_to(&self, mto: Pos) -> Motion {
