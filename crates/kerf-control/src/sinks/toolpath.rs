@@ -4,7 +4,7 @@
 
 use std::io::{self, Write};
 
-use kerf_canon::{Axis, Canon, Event, Feed, Pos, NAXES};
+use kerf_canon::{Axis, Event, Pos, NAXES};
 
 use crate::sink::{Context, Live, Sink, Timed};
 
@@ -25,6 +25,7 @@ pub struct Toolpath<W: Write> {
 
 pub use super::number::num;
 use super::number::{int, put_fixed, Memo};
+use super::toolpath_rec::{Kind, Rec};
 
 /// `,"KEY":{` of the memo rows (to, mto, prog, center), padded to a fixed
 /// size with the length used.
@@ -122,75 +123,59 @@ impl<W: Write> Toolpath<W> {
         t: f64,
         feed_mm_min: Option<f64>,
     ) -> io::Result<()> {
-        let kind = match &e.cmd {
-            Canon::Rapid { .. } => "rapid",
-            Canon::Feed { .. } => "feed",
-            Canon::Arc { .. } => "arc",
-            Canon::Thread { .. } => "thread",
-            Canon::Dwell { .. } => "dwell",
-            _ => return Ok(()),
-        };
+        match Rec::of(e, here, t, feed_mm_min) {
+            Some(r) => self.line(&r, head),
+            None => Ok(()),
+        }
+    }
+
+    /// Writes the line of `r`, `head` its file's `{"file":…,"line":`.
+    fn line(&mut self, r: &Rec, head: &[u8]) -> io::Result<()> {
         self.buf.clear();
         self.buf.extend_from_slice(head);
-        int(&mut self.buf, u64::from(e.src.line));
-        self.buf.extend_from_slice(b",\"kind\":\"");
-        self.buf.extend_from_slice(kind.as_bytes());
-        self.buf.push(b'"');
-        match &e.cmd {
-            Canon::Rapid { m, .. }
-            | Canon::Feed { m, .. }
-            | Canon::Thread { m, .. }
-            | Canon::Arc { m, .. } => {
-                let (to, mto) = (m.to, m.mto);
-                self.pos(0, &to);
-                self.pos(1, &mto);
-                if let Some(p) = e.prog.as_deref() {
-                    self.pos(2, p);
+        int(&mut self.buf, u64::from(r.line));
+        let (key, len) = r.kind.key();
+        put_fixed(&mut self.buf, key, len);
+        self.pos(0, &r.to);
+        if r.kind != Kind::Dwell {
+            self.pos(1, &r.mto);
+            if let Some(p) = r.prog.as_deref() {
+                self.pos(2, p);
+            }
+        }
+        match r.kind {
+            Kind::Dwell => {
+                self.buf.extend_from_slice(b",\"seconds\":");
+                num(&mut self.buf, r.main);
+                if r.value > 0.0 {
+                    self.buf.extend_from_slice(b",\"revolutions\":");
+                    num(&mut self.buf, r.value);
                 }
             }
-            Canon::Dwell {
-                seconds,
-                revolutions,
-            } => {
-                let p = *here;
-                self.pos(0, &p);
-                self.buf.extend_from_slice(b",\"seconds\":");
-                num(&mut self.buf, *seconds);
-                if *revolutions > 0.0 {
-                    self.buf.extend_from_slice(b",\"revolutions\":");
-                    num(&mut self.buf, *revolutions);
-                }
+            Kind::Arc => {
+                self.pos(3, &r.center);
+                self.buf.extend_from_slice(b",\"dir\":\"");
+                self.buf.extend_from_slice(r.dir.name().as_bytes());
+                self.buf.push(b'"');
             }
             _ => {}
         }
-        if let Canon::Arc { center, dir, .. } = &e.cmd {
-            let c = *center;
-            self.pos(3, &c);
-            self.buf.extend_from_slice(b",\"dir\":\"");
-            self.buf.extend_from_slice(dir.name().as_bytes());
-            self.buf.push(b'"');
-        }
-        let feed = match &e.cmd {
-            Canon::Feed { feed, m } | Canon::Arc { feed, m, .. } => Some((*feed, m)),
-            _ => None,
-        };
-        if let Some((f, _)) = feed {
+        if matches!(r.kind, Kind::Feed | Kind::Arc) {
             self.buf.extend_from_slice(b",\"feed\":");
-            self.feed_memo
-                .put(&mut self.buf, feed_mm_min.unwrap_or(0.0));
-            if let Feed::PerRev(v) = f {
+            self.feed_memo.put(&mut self.buf, r.main);
+            if r.per_rev {
                 self.buf.extend_from_slice(b",\"feed_per_rev\":");
-                num(&mut self.buf, v);
+                num(&mut self.buf, r.value);
             }
         }
-        if let Canon::Thread { lead, .. } = &e.cmd {
+        if r.kind == Kind::Thread {
             self.buf.extend_from_slice(b",\"lead\":");
-            num(&mut self.buf, *lead);
+            num(&mut self.buf, r.main);
         }
         self.buf.extend_from_slice(b",\"tool\":");
-        int(&mut self.buf, u64::from(e.tool));
+        int(&mut self.buf, u64::from(r.tool));
         self.buf.extend_from_slice(b",\"t_end\":");
-        num(&mut self.buf, t);
+        num(&mut self.buf, r.t_end);
         self.buf.extend_from_slice(b"}\n");
         self.w.write_all(&self.buf)
     }
@@ -208,16 +193,10 @@ impl<W: Write> Toolpath<W> {
         self.heads[id] = Some(h);
     }
 
-    /// The record of a timed event whose file was named by
+    /// The line of a record whose file was named by
     /// [`Toolpath::name_file`] (as [`Sink::timed`] writes it).
-    pub(crate) fn write_named(
-        &mut self,
-        e: &Event,
-        to: &Pos,
-        t_end: f64,
-        feed_mm_min: Option<f64>,
-    ) -> io::Result<()> {
-        let id = e.src.file as usize;
+    pub(crate) fn write_named(&mut self, r: &Rec) -> io::Result<()> {
+        let id = r.file as usize;
         if self.heads.len() <= id {
             self.heads.resize(id + 1, None);
         }
@@ -227,7 +206,7 @@ impl<W: Write> Toolpath<W> {
             head_of(&mut h, "");
             h
         });
-        let r = self.record(e, &head, to, t_end, feed_mm_min);
+        let r = self.line(r, &head);
         self.heads[id] = Some(head);
         r
     }
