@@ -86,7 +86,7 @@ fn round(x: f64) -> i64 {
 
 /// The text of a number: at most 23 bytes, kept in a fixed array so that
 /// it is copied by a few moves.
-type Text = [u8; 24];
+pub type Text = [u8; 24];
 
 /// Number of decimal digits of `n` < 10^9 (at least 1), by comparisons.
 #[inline]
@@ -231,6 +231,21 @@ impl Default for Memo {
 }
 
 impl Memo {
+    /// The text [`num`] writes for `v` and its length (made only when
+    /// `v` is not the last value), or None where `num` takes the `{}`
+    /// path.
+    #[inline]
+    pub fn text(&mut self, v: f64) -> Option<(&Text, usize)> {
+        let bits = v.to_bits();
+        if bits != self.bits {
+            let (text, len) = fast(v)?;
+            self.text = text;
+            self.len = len as u8;
+            self.bits = bits;
+        }
+        Some((&self.text, self.len as usize))
+    }
+
     /// Appends `v` as [`num`] does.
     #[inline]
     pub fn put(&mut self, out: &mut Vec<u8>, v: f64) {
@@ -415,6 +430,19 @@ mod tests {
             b.push(b' ');
         }
         assert_eq!(a, b);
+    }
+
+    #[test]
+    fn a_memo_text_is_what_num_writes() {
+        let mut m = Memo::default();
+        for v in [1.5, 1.5, -0.0, 0.0, 2.25, 1e300, 2.25, f64::NAN, 2.25, 0.1 + 0.2] {
+            let mut b = Vec::new();
+            num(&mut b, v);
+            match m.text(v) {
+                Some((t, len)) => assert_eq!(&t[..len], &b[..], "{v:e}"),
+                None => assert!(!v.is_finite() || v.abs() >= 1e9, "{v:e}"),
+            }
+        }
     }
 
     #[test]

@@ -27,13 +27,13 @@ pub use super::number::num;
 use super::number::{int, put_fixed, Memo};
 use super::toolpath_rec::{Kind, Rec};
 
-/// `,"KEY":{` of the memo rows (to, mto, prog, center), padded to a fixed
-/// size with the length used.
+/// `,"KEY":` of the memo rows (to, mto, prog, center), padded to a fixed
+/// size with the length used (the object's brace follows).
 const KEYS: [([u8; 12], usize); 4] = [
-    (*b",\"to\":{\0\0\0\0\0", 7),
-    (*b",\"mto\":{\0\0\0\0", 8),
-    (*b",\"prog\":{\0\0\0", 9),
-    (*b",\"center\":{\0", 11),
+    (*b",\"to\":\0\0\0\0\0\0", 6),
+    (*b",\"mto\":\0\0\0\0\0", 7),
+    (*b",\"prog\":\0\0\0\0", 8),
+    (*b",\"center\":\0\0", 10),
 ];
 
 /// `{"file":"NAME","line":`
@@ -74,18 +74,48 @@ impl<W: Write> Toolpath<W> {
     }
 
     /// `,"KEY":{"x":…}`; `slot` picks the memo row (0 to, 1 mto, 2 prog,
-    /// 3 center) and its key.
+    /// 3 center) and its key. Made in a fixed array by copies of fixed
+    /// size and appended at once.
+    #[inline]
     fn pos(&mut self, slot: usize, p: &Pos) {
+        if self.axes.is_empty() {
+            return self.pos_slow(slot, p);
+        }
+        // The key (12), per axis its key (5) and text (24), the brace.
+        let mut t = [0u8; 192];
         let (key, len) = &KEYS[slot];
-        put_fixed(&mut self.buf, key, *len);
+        t[..12].copy_from_slice(key);
+        let mut n = *len;
         let memo = &mut self.memo[slot];
         for (i, (a, k)) in self.axes.iter().zip(&self.keys).enumerate() {
+            t[n..n + 5].copy_from_slice(k);
             if i == 0 {
-                // The first key without its comma.
-                self.buf.extend_from_slice(&[k[1], k[2], k[3], k[4]]);
-            } else {
-                self.buf.extend_from_slice(k);
+                // The first key opens the object where its comma was.
+                t[n] = b'{';
             }
+            n += 5;
+            let Some((text, len)) = memo[i].text(p[*a as usize]) else {
+                return self.pos_slow(slot, p);
+            };
+            t[n..n + 24].copy_from_slice(text);
+            n += len;
+        }
+        t[n] = b'}';
+        put_fixed(&mut self.buf, &t, n + 1);
+    }
+
+    /// [`Toolpath::pos`] where a value takes `num`'s `{}` path (NaN,
+    /// infinite, 1e9 or more), or without axes.
+    #[cold]
+    #[inline(never)]
+    fn pos_slow(&mut self, slot: usize, p: &Pos) {
+        let (key, len) = &KEYS[slot];
+        put_fixed(&mut self.buf, key, *len);
+        self.buf.push(b'{');
+        let memo = &mut self.memo[slot];
+        for (i, (a, k)) in self.axes.iter().zip(&self.keys).enumerate() {
+            let k = if i == 0 { &k[1..] } else { &k[..] };
+            self.buf.extend_from_slice(k);
             memo[i].put(&mut self.buf, p[*a as usize]);
         }
         self.buf.push(b'}');
@@ -249,5 +279,63 @@ impl<W: Write> Sink for Toolpath<W> {
 
     fn finish(&mut self, _cx: &Context, _alarm: Option<&kerf_canon::Alarm>) -> io::Result<()> {
         self.w.flush()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kerf_canon::{Canon, Feed, Motion, SrcRef};
+
+    fn line(tp: &mut Toolpath<Vec<u8>>, to: Pos, mto: Pos) -> String {
+        let e = Event {
+            src: SrcRef {
+                file: 0,
+                line: 12,
+                col: 1,
+            },
+            tool: 3,
+            cmd: Canon::Feed {
+                m: Motion { to, mto },
+                feed: Feed::PerMin(100.0),
+            },
+            prog: None,
+        };
+        tp.w.clear();
+        tp.write(&e, "a.nc", &to, 2.5, Some(100.0)).unwrap();
+        String::from_utf8(tp.w.clone()).unwrap()
+    }
+
+    #[test]
+    fn positions_by_the_fixed_array_and_by_the_slow_path() {
+        let mut tp = Toolpath::new(Vec::new());
+        tp.set_axes(vec![Axis::X, Axis::Y, Axis::Z]);
+        let mut to = [0.0; NAXES];
+        to[0] = 1.25;
+        to[1] = -0.0;
+        to[2] = 123_456.000_000_4;
+        let mut mto = to;
+        mto[0] = -998.75;
+        let head = "{\"file\":\"a.nc\",\"line\":12,\"kind\":\"feed\"";
+        let tail = ",\"feed\":100.0,\"tool\":3,\"t_end\":2.5}\n";
+        assert_eq!(
+            line(&mut tp, to, mto),
+            format!(
+                "{head},\"to\":{{\"x\":1.25,\"y\":0.0,\"z\":123456.0}},\
+                 \"mto\":{{\"x\":-998.75,\"y\":0.0,\"z\":123456.0}}{tail}"
+            )
+        );
+        // The same again (every text from the memo), then values past 1e9
+        // and NaN (the `{}` path) in the middle of a position.
+        assert_eq!(line(&mut tp, to, mto), line(&mut tp, to, mto));
+        to[1] = 2e9;
+        mto[1] = f64::NAN;
+        assert_eq!(
+            line(&mut tp, to, mto),
+            format!(
+                "{head},\"to\":{{\"x\":1.25,\"y\":2000000000.0,\"z\":123456.0}},\
+                 \"mto\":{{\"x\":-998.75,\"y\":NaN,\"z\":123456.0}}{tail}"
+            )
+        );
     }
 }

@@ -101,7 +101,7 @@ mod tests {
     use super::*;
     use crate::sinks::behind::{BATCH, IN_FLIGHT};
 
-    use kerf_canon::{Canon, Motion, SrcRef};
+    use kerf_canon::{Canon, Event, Motion, SrcRef};
     use kerf_interp::{Interp, Profile, Settings};
     use kerf_motion::{Dynamics, Planner};
 
