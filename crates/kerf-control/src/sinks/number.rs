@@ -7,9 +7,10 @@
 //! for |v| < 1e9 the rounded value `x/10^6` has at most 15 significant
 //! digits, so it is the only decimal of that length naming its double, and
 //! its digits are those of the integer `x` with the point six places in.
-//! Below 1e8 the integer part and the decimals are each made as eight
-//! digits at once in the lanes of one `u64` ([`swar8`]), the leading and
-//! trailing zeros counted by its zero bytes. Larger or non-finite values
+//! Below 1e8 the decimals (and an integer part of 1000 or more; a smaller
+//! one is read from a table) are made as eight digits at once in the
+//! lanes of one `u64` ([`swar8`]), the leading and trailing zeros counted
+//! by its zero bytes. Larger or non-finite values
 //! take the `{}` path.
 
 /// Pairs of digits "00".."99", for writing two digits per division.
@@ -117,9 +118,27 @@ fn swar8(n: u64) -> u64 {
 /// `'0'` in every byte.
 const ZEROS: u64 = 0x3030_3030_3030_3030;
 
+/// The digits of 0..1000 (padded to four bytes) and their number.
+const SMALL: [([u8; 4], u8); 1000] = {
+    let mut t = [([0u8; 4], 0u8); 1000];
+    let mut n = 0;
+    while n < 1000 {
+        let (h, d, u) = ((n / 100) as u8, (n / 10 % 10) as u8, (n % 10) as u8);
+        t[n] = if n >= 100 {
+            ([b'0' + h, b'0' + d, b'0' + u, 0], 3)
+        } else if n >= 10 {
+            ([b'0' + d, b'0' + u, 0, 0], 2)
+        } else {
+            ([b'0' + u, 0, 0, 0], 1)
+        };
+        n += 1;
+    }
+    t
+};
+
 /// The text [`num`] writes for `v` and its length, or None where it takes
 /// the `{}` path (NaN, infinite, |v| ≥ 1e9).
-#[inline]
+#[inline(always)]
 fn fast(v: f64) -> Option<(Text, usize)> {
     let x = v * 1e6;
     // Below 1e14 - 1 the rounded whole part has at most 8 digits.
@@ -139,11 +158,18 @@ fn fast(v: f64) -> Option<(Text, usize)> {
     let a = n.unsigned_abs();
     let whole = a / 1_000_000;
     let frac = a - whole * 1_000_000;
-    let w = swar8(whole);
-    // Leading zero digits (the low bytes), keeping at least one digit.
-    let lz = (w.trailing_zeros() / 8).min(7);
-    buf[i..i + 8].copy_from_slice(&((w + ZEROS) >> (8 * lz)).to_le_bytes());
-    i += 8 - lz as usize;
+    if whole < 1000 {
+        // Most coordinates: the integer part from the table.
+        let (d, len) = SMALL[whole as usize];
+        buf[i..i + 4].copy_from_slice(&d);
+        i += len as usize;
+    } else {
+        let w = swar8(whole);
+        // Leading zero digits (the low bytes), keeping at least one digit.
+        let lz = (w.trailing_zeros() / 8).min(7);
+        buf[i..i + 8].copy_from_slice(&((w + ZEROS) >> (8 * lz)).to_le_bytes());
+        i += 8 - lz as usize;
+    }
     buf[i] = b'.';
     i += 1;
     if frac == 0 {
@@ -356,6 +382,13 @@ mod tests {
     }
 
     #[test]
+    fn the_small_table_holds_the_digits() {
+        for (n, (d, len)) in SMALL.iter().enumerate() {
+            assert_eq!(&d[..*len as usize], n.to_string().as_bytes());
+        }
+    }
+
+    #[test]
     fn edges_of_the_rounding_and_of_the_eight_digits() {
         for v in [
             -0.0,
@@ -372,6 +405,10 @@ mod tests {
             0.5,
             -0.999_999_5,
             9.999_999_5,
+            999.999_999_4,
+            999.999_999_5,
+            -999.999_999_5,
+            1000.000_000_4,
             99_999_999.999_999,
             99_999_999.999_999_5,
             -99_999_999.999_999_9,
