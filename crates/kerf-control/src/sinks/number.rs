@@ -64,7 +64,18 @@ fn fill(buf: &mut [u8], mut n: u64, len: usize) {
 }
 
 /// Appends the decimal digits of `n`.
+#[inline]
 pub fn int(out: &mut Vec<u8>, n: u64) {
+    if n < 1000 {
+        let (d, len) = SMALL[n as usize];
+        return put_fixed(out, &d, len as usize);
+    }
+    if n < 100_000_000 {
+        let w = swar8(n);
+        let lz = w.trailing_zeros() / 8;
+        let text = ((w + ZEROS) >> (8 * lz)).to_le_bytes();
+        return put_fixed(out, &text, 8 - lz as usize);
+    }
     let mut buf = [0u8; 20];
     let len = digits(n);
     fill(&mut buf, n, len);
@@ -503,10 +514,31 @@ mod tests {
     #[test]
     fn integers() {
         let mut s = Vec::new();
-        for n in [0, 7, 10, 99, 100, 1234567890, u64::MAX] {
+        for n in [
+            0,
+            7,
+            10,
+            99,
+            100,
+            999,
+            1000,
+            65_535,
+            99_999_999,
+            100_000_000,
+            1234567890,
+            u64::MAX,
+        ] {
             int(&mut s, n);
             s.push(b',');
         }
-        assert_eq!(s, b"0,7,10,99,100,1234567890,18446744073709551615,");
+        assert_eq!(
+            s,
+            b"0,7,10,99,100,999,1000,65535,99999999,100000000,1234567890,18446744073709551615,"
+        );
+        for n in (0..2_000_000).chain((0..100_000_000).step_by(9_973)) {
+            let mut a = Vec::new();
+            int(&mut a, n);
+            assert_eq!(a, n.to_string().as_bytes());
+        }
     }
 }
