@@ -40,6 +40,7 @@ mod block_dims;
 pub mod dynamics;
 pub mod job;
 pub mod lint;
+mod lint_lines;
 pub mod offsets;
 pub mod runner;
 pub mod runtime;

@@ -5,9 +5,10 @@
 //! point is set). In a program that otherwise writes its dimensions
 //! with a point, the few without one are almost always a slip.
 //!
-//! The check reads the program text with kerf-lang's reader (a second
-//! pass, run beside the interpreter on its own thread by
-//! [`crate::Job::load`]), plain blocks with `block_dims.rs`
+//! The check reads the program text a second time (beside the
+//! interpreter, on its own thread started by [`crate::Job::load`]), its
+//! blocks as kerf-lang's reader makes them but out of the read buffer
+//! (`lint_lines.rs`), plain blocks with `block_dims.rs`
 //! and the rest with kerf-lang's parser; it looks at literal X Y Z U V W I J words, K on
 //! the lathes (on the HX K is a cycle's repeat count) and R on the HX
 //! (an arc radius or a cycle's R level; on the lathes R counts or is
@@ -19,9 +20,10 @@
 use std::io;
 
 use kerf_interp::{Dialect, DialectId, Profile};
-use kerf_lang::{parse_block, Block, LexOptions, LineSource, ProgramRead, RawBlock};
+use kerf_lang::{parse_block, Block, LexOptions, ProgramRead};
 
 use crate::block_dims::{BlockDims, Letters};
+use crate::lint_lines::Lines;
 
 use crate::warnings::Warning;
 
@@ -68,14 +70,15 @@ pub fn decimal_points(
         b"XYZUVWIJK"
     });
     let mut inch = false;
-    let mut src = LineSource::new(reader, profile.max_block_chars.max(1), d.hurco_syntax);
-    let (mut raw, mut block) = (RawBlock::default(), Block::default());
+    let mut src = Lines::new(reader, profile.max_block_chars.max(1), d.hurco_syntax);
+    let mut block = Block::default();
     let mut words = BlockDims::default();
     let mut t = Tally::default();
-    while src.next_block(&mut raw)? {
+    while src.next_block()? {
+        let text = src.text();
         // Plain blocks without the parser; the rest through it.
-        if !words.read_plain(&raw.text, letters, opts.max_digits) {
-            if parse_block(&raw.text, &opts, &mut block).is_err() {
+        if !words.read_plain(text, letters, opts.max_digits) {
+            if parse_block(text, &opts, &mut block).is_err() {
                 continue;
             }
             words.read_parsed(&block, letters);
@@ -91,7 +94,7 @@ pub fn decimal_points(
             }
             t.without += 1;
             if t.first.len() < MAX_SHOWN {
-                let (line, col) = raw.line_col(w.at as usize);
+                let (line, col) = src.line_col(w.at as usize);
                 t.first.push((line, col, (w.letter as char, w.value, inch)));
             }
         }

@@ -24,6 +24,7 @@ pub mod sample;
 pub mod sim;
 pub mod toolpath;
 pub mod toolpath_behind;
+mod toolpath_rec;
 
 pub use expand::Expand;
 pub use expand_behind::ExpandBehind;

@@ -7,7 +7,11 @@
 //! for |v| < 1e9 the rounded value `x/10^6` has at most 15 significant
 //! digits, so it is the only decimal of that length naming its double, and
 //! its digits are those of the integer `x` with the point six places in.
-//! Larger or non-finite values take the `{}` path.
+//! Below 1e8 the decimals (and an integer part of 1000 or more; a smaller
+//! one is read from a table) are made as eight digits at once in the
+//! lanes of one `u64` ([`swar8`]), the leading and trailing zeros counted
+//! by its zero bytes. Larger or non-finite values
+//! take the `{}` path.
 
 /// Pairs of digits "00".."99", for writing two digits per division.
 const PAIRS: &[u8; 200] = b"\
@@ -60,7 +64,18 @@ fn fill(buf: &mut [u8], mut n: u64, len: usize) {
 }
 
 /// Appends the decimal digits of `n`.
+#[inline]
 pub fn int(out: &mut Vec<u8>, n: u64) {
+    if n < 1000 {
+        let (d, len) = SMALL[n as usize];
+        return put_fixed(out, &d, len as usize);
+    }
+    if n < 100_000_000 {
+        let w = swar8(n);
+        let lz = w.trailing_zeros() / 8;
+        let text = ((w + ZEROS) >> (8 * lz)).to_le_bytes();
+        return put_fixed(out, &text, 8 - lz as usize);
+    }
     let mut buf = [0u8; 20];
     let len = digits(n);
     fill(&mut buf, n, len);
@@ -83,7 +98,7 @@ fn round(x: f64) -> i64 {
 
 /// The text of a number: at most 23 bytes, kept in a fixed array so that
 /// it is copied by a few moves.
-type Text = [u8; 24];
+pub type Text = [u8; 24];
 
 /// Number of decimal digits of `n` < 10^9 (at least 1), by comparisons.
 #[inline]
@@ -98,13 +113,48 @@ fn digits9(n: u64) -> usize {
         + usize::from(n >= 100_000_000)
 }
 
+/// The eight decimal digits of `n` < 10^8, most significant first, one
+/// per byte of the little-endian word (0..=9, not ASCII): the halves,
+/// quarters and digits split in parallel lanes of one `u64` (x/100 as
+/// `x·5243 >> 19` for x < 10^4, x/10 as `x·103 >> 10` for x < 100).
+#[inline]
+fn swar8(n: u64) -> u64 {
+    let x = (n / 10_000) | ((n % 10_000) << 32);
+    let q = ((x * 5243) >> 19) & 0x0000_007F_0000_007F;
+    let y = q | ((x - q * 100) << 16);
+    let t = ((y * 103) >> 10) & 0x000F_000F_000F_000F;
+    t | ((y - t * 10) << 8)
+}
+
+/// `'0'` in every byte.
+const ZEROS: u64 = 0x3030_3030_3030_3030;
+
+/// The digits of 0..1000 (padded to four bytes) and their number.
+const SMALL: [([u8; 4], u8); 1000] = {
+    let mut t = [([0u8; 4], 0u8); 1000];
+    let mut n = 0;
+    while n < 1000 {
+        let (h, d, u) = ((n / 100) as u8, (n / 10 % 10) as u8, (n % 10) as u8);
+        t[n] = if n >= 100 {
+            ([b'0' + h, b'0' + d, b'0' + u, 0], 3)
+        } else if n >= 10 {
+            ([b'0' + d, b'0' + u, 0, 0], 2)
+        } else {
+            ([b'0' + u, 0, 0, 0], 1)
+        };
+        n += 1;
+    }
+    t
+};
+
 /// The text [`num`] writes for `v` and its length, or None where it takes
 /// the `{}` path (NaN, infinite, |v| ≥ 1e9).
-#[inline]
+#[inline(always)]
 fn fast(v: f64) -> Option<(Text, usize)> {
     let x = v * 1e6;
-    if x.is_nan() || x.abs() >= 1e15 {
-        return None;
+    // Below 1e14 - 1 the rounded whole part has at most 8 digits.
+    if x.is_nan() || x.abs() >= 99_999_999_999_999.0 {
+        return wide(v);
     }
     let mut buf = [0u8; 24];
     let n = round(x);
@@ -112,7 +162,49 @@ fn fast(v: f64) -> Option<(Text, usize)> {
         buf[..3].copy_from_slice(b"0.0");
         return Some((buf, 3));
     }
-    // Sign, at most 9 integer digits, the point, 6 decimals: 17 bytes.
+    // Sign, at most 8 integer digits, the point, 8 decimal places of
+    // which the last two are zero: at most 18 bytes.
+    let mut i = usize::from(n < 0);
+    buf[0] = b'-';
+    let a = n.unsigned_abs();
+    let whole = a / 1_000_000;
+    let frac = a - whole * 1_000_000;
+    if whole < 1000 {
+        // Most coordinates: the integer part from the table.
+        let (d, len) = SMALL[whole as usize];
+        buf[i..i + 4].copy_from_slice(&d);
+        i += len as usize;
+    } else {
+        let w = swar8(whole);
+        // Leading zero digits (the low bytes), keeping at least one digit.
+        let lz = (w.trailing_zeros() / 8).min(7);
+        buf[i..i + 8].copy_from_slice(&((w + ZEROS) >> (8 * lz)).to_le_bytes());
+        i += 8 - lz as usize;
+    }
+    buf[i] = b'.';
+    i += 1;
+    if frac == 0 {
+        buf[i] = b'0';
+        return Some((buf, i + 1));
+    }
+    let f = swar8(frac * 100);
+    buf[i..i + 8].copy_from_slice(&(f + ZEROS).to_le_bytes());
+    // Trailing zero digits (the high bytes): at least the two added, at
+    // most seven as frac is not 0.
+    let tz = (f.leading_zeros() / 8) as usize;
+    Some((buf, i + 8 - tz))
+}
+
+/// [`fast`] for 1e8 ≤ |v| < 1e9 (and None beyond): digit pairs.
+#[cold]
+fn wide(v: f64) -> Option<(Text, usize)> {
+    let x = v * 1e6;
+    if x.is_nan() || x.abs() >= 1e15 {
+        return None;
+    }
+    let mut buf = [0u8; 24];
+    let n = round(x);
+    // Sign, 9 integer digits, the point, 6 decimals: 17 bytes.
     let mut i = usize::from(n < 0);
     buf[0] = b'-';
     let a = n.unsigned_abs();
@@ -136,22 +228,11 @@ fn fast(v: f64) -> Option<(Text, usize)> {
         PAIRS[r],
         PAIRS[r + 1],
     ]);
-    // Trailing zeros off: frac is not 0, so at most 5 of them.
-    // Most have none: the first test decides.
-    let tz = if !frac.is_multiple_of(10) {
-        0
-    } else if !frac.is_multiple_of(100) {
-        1
-    } else if !frac.is_multiple_of(1_000) {
-        2
-    } else if !frac.is_multiple_of(10_000) {
-        3
-    } else if !frac.is_multiple_of(100_000) {
-        4
-    } else {
-        5
-    };
-    Some((buf, i + 6 - tz))
+    let mut len = i + 6;
+    while buf[len - 1] == b'0' {
+        len -= 1;
+    }
+    Some((buf, len))
 }
 
 /// Appends `v` rounded to 1e-6: no `-0`, no exponent, at least one digit
@@ -187,6 +268,21 @@ impl Default for Memo {
 }
 
 impl Memo {
+    /// The text [`num`] writes for `v` and its length (made only when
+    /// `v` is not the last value), or None where `num` takes the `{}`
+    /// path.
+    #[inline]
+    pub fn text(&mut self, v: f64) -> Option<(&Text, usize)> {
+        let bits = v.to_bits();
+        if bits != self.bits {
+            let (text, len) = fast(v)?;
+            self.text = text;
+            self.len = len as u8;
+            self.bits = bits;
+        }
+        Some((&self.text, self.len as usize))
+    }
+
     /// Appends `v` as [`num`] does.
     #[inline]
     pub fn put(&mut self, out: &mut Vec<u8>, v: f64) {
@@ -275,6 +371,84 @@ mod tests {
     }
 
     #[test]
+    fn eight_digits_at_once_are_the_digits() {
+        // Every n below 10^6 (all the decimals), and a stride over 10^8.
+        let check = |n: u64| {
+            let w = swar8(n);
+            let want = format!("{n:08}");
+            let got: String = w.to_le_bytes().iter().map(|d| (b'0' + d) as char).collect();
+            assert_eq!(got, want, "{n}");
+        };
+        for n in 0..1_000_000 {
+            check(n);
+        }
+        let mut n = 0u64;
+        while n < 100_000_000 {
+            check(n);
+            n += 997;
+        }
+        for n in [9_999_999, 10_000_000, 99_999_999, 12_345_678, 10_000, 9_999] {
+            check(n);
+        }
+    }
+
+    #[test]
+    fn the_small_table_holds_the_digits() {
+        for (n, (d, len)) in SMALL.iter().enumerate() {
+            assert_eq!(&d[..*len as usize], n.to_string().as_bytes());
+        }
+    }
+
+    #[test]
+    fn edges_of_the_rounding_and_of_the_eight_digits() {
+        for v in [
+            -0.0,
+            0.0,
+            1e-7,
+            -1e-7,
+            5e-7,
+            -5e-7,
+            4.999_999e-7,
+            1.5e-6,
+            0.000_001,
+            0.1,
+            0.000_01,
+            0.5,
+            -0.999_999_5,
+            9.999_999_5,
+            999.999_999_4,
+            999.999_999_5,
+            -999.999_999_5,
+            1000.000_000_4,
+            99_999_999.999_999,
+            99_999_999.999_999_5,
+            -99_999_999.999_999_9,
+            100_000_000.0,
+            10_000_000.0,
+            12_345_678.901_234,
+            1e-300,
+            f64::MIN_POSITIVE,
+            f64::MAX,
+            f64::NEG_INFINITY,
+        ] {
+            let (mut a, mut b, mut c) = (Vec::new(), Vec::new(), Vec::new());
+            num(&mut a, v);
+            slow(&mut b, v);
+            let mut m = Memo::default();
+            m.put(&mut c, v);
+            m.put(&mut c, v);
+            assert_eq!(a, b, "{v:e}");
+            assert_eq!([&b[..], &b[..]].concat(), c, "{v:e}");
+        }
+        let mut s = Vec::new();
+        num(&mut s, -0.0);
+        num(&mut s, 4e-7);
+        num(&mut s, -5e-7);
+        num(&mut s, 12.5);
+        assert_eq!(s, b"0.00.0-0.00000112.5");
+    }
+
+    #[test]
     fn rounding_matches_f64_round() {
         for x in [
             0.5,
@@ -307,6 +481,19 @@ mod tests {
     }
 
     #[test]
+    fn a_memo_text_is_what_num_writes() {
+        let mut m = Memo::default();
+        for v in [1.5, 1.5, -0.0, 0.0, 2.25, 1e300, 2.25, f64::NAN, 2.25, 0.1 + 0.2] {
+            let mut b = Vec::new();
+            num(&mut b, v);
+            match m.text(v) {
+                Some((t, len)) => assert_eq!(&t[..len], &b[..], "{v:e}"),
+                None => assert!(!v.is_finite() || v.abs() >= 1e9, "{v:e}"),
+            }
+        }
+    }
+
+    #[test]
     fn digit_counts_by_comparison_are_the_counts() {
         for n in [
             0,
@@ -327,10 +514,31 @@ mod tests {
     #[test]
     fn integers() {
         let mut s = Vec::new();
-        for n in [0, 7, 10, 99, 100, 1234567890, u64::MAX] {
+        for n in [
+            0,
+            7,
+            10,
+            99,
+            100,
+            999,
+            1000,
+            65_535,
+            99_999_999,
+            100_000_000,
+            1234567890,
+            u64::MAX,
+        ] {
             int(&mut s, n);
             s.push(b',');
         }
-        assert_eq!(s, b"0,7,10,99,100,1234567890,18446744073709551615,");
+        assert_eq!(
+            s,
+            b"0,7,10,99,100,999,1000,65535,99999999,100000000,1234567890,18446744073709551615,"
+        );
+        for n in (0..2_000_000).chain((0..100_000_000).step_by(9_973)) {
+            let mut a = Vec::new();
+            int(&mut a, n);
+            assert_eq!(a, n.to_string().as_bytes());
+        }
     }
 }

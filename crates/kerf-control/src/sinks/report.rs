@@ -274,16 +274,18 @@ impl Summary {
             self.last_cut_to = [f64::NAN; NAXES];
             return;
         }
-        let mut pts = [*from, m.to, m.to, m.to];
         // A line's box is its two ends, and a start that ended the last
         // cutting move (the same bits) is in the box already: a point
-        // added twice changes no minimum or maximum.
+        // added twice changes no minimum or maximum. The points are added
+        // in the order start, end, an arc's two corners.
         let same = from
             .iter()
             .zip(&self.last_cut_to)
             .all(|(a, b)| a.to_bits() == b.to_bits());
-        let first = usize::from(same);
-        let mut last = 2;
+        if !same {
+            self.add(from);
+        }
+        self.add(&m.to);
         if let Canon::Arc {
             center, plane, dir, ..
         } = &e.cmd
@@ -295,19 +297,24 @@ impl Summary {
                 (center[a1], center[a2]),
                 matches!(dir, kerf_canon::ArcDir::Ccw),
             );
-            pts[2][a1] = u0;
-            pts[2][a2] = v0;
-            pts[3][a1] = u1;
-            pts[3][a2] = v1;
-            last = 4;
+            let (mut c0, mut c1) = (m.to, m.to);
+            c0[a1] = u0;
+            c0[a2] = v0;
+            c1[a1] = u1;
+            c1[a2] = v1;
+            self.add(&c0);
+            self.add(&c1);
         }
         self.last_cut_to = m.to;
-        for p in &pts[first..last] {
-            let b = self.bbox.get_or_insert((*p, *p));
-            for (i, v) in p.iter().enumerate() {
-                b.0[i] = b.0[i].min(*v);
-                b.1[i] = b.1[i].max(*v);
-            }
+    }
+
+    /// Grows the box to take in `p`.
+    #[inline]
+    fn add(&mut self, p: &Pos) {
+        let b = self.bbox.get_or_insert((*p, *p));
+        for (i, v) in p.iter().enumerate() {
+            b.0[i] = b.0[i].min(*v);
+            b.1[i] = b.1[i].max(*v);
         }
     }
 

@@ -4,7 +4,7 @@
 
 use std::io::{self, Write};
 
-use kerf_canon::{Axis, Canon, Event, Feed, Pos, NAXES};
+use kerf_canon::{Axis, Event, Pos, NAXES};
 
 use crate::sink::{Context, Live, Sink, Timed};
 
@@ -25,14 +25,15 @@ pub struct Toolpath<W: Write> {
 
 pub use super::number::num;
 use super::number::{int, put_fixed, Memo};
+use super::toolpath_rec::{Kind, Rec};
 
-/// `,"KEY":{` of the memo rows (to, mto, prog, center), padded to a fixed
-/// size with the length used.
+/// `,"KEY":` of the memo rows (to, mto, prog, center), padded to a fixed
+/// size with the length used (the object's brace follows).
 const KEYS: [([u8; 12], usize); 4] = [
-    (*b",\"to\":{\0\0\0\0\0", 7),
-    (*b",\"mto\":{\0\0\0\0", 8),
-    (*b",\"prog\":{\0\0\0", 9),
-    (*b",\"center\":{\0", 11),
+    (*b",\"to\":\0\0\0\0\0\0", 6),
+    (*b",\"mto\":\0\0\0\0\0", 7),
+    (*b",\"prog\":\0\0\0\0", 8),
+    (*b",\"center\":\0\0", 10),
 ];
 
 /// `{"file":"NAME","line":`
@@ -73,18 +74,48 @@ impl<W: Write> Toolpath<W> {
     }
 
     /// `,"KEY":{"x":…}`; `slot` picks the memo row (0 to, 1 mto, 2 prog,
-    /// 3 center) and its key.
+    /// 3 center) and its key. Made in a fixed array by copies of fixed
+    /// size and appended at once.
+    #[inline]
     fn pos(&mut self, slot: usize, p: &Pos) {
+        if self.axes.is_empty() {
+            return self.pos_slow(slot, p);
+        }
+        // The key (12), per axis its key (5) and text (24), the brace.
+        let mut t = [0u8; 192];
         let (key, len) = &KEYS[slot];
-        put_fixed(&mut self.buf, key, *len);
+        t[..12].copy_from_slice(key);
+        let mut n = *len;
         let memo = &mut self.memo[slot];
         for (i, (a, k)) in self.axes.iter().zip(&self.keys).enumerate() {
+            t[n..n + 5].copy_from_slice(k);
             if i == 0 {
-                // The first key without its comma.
-                self.buf.extend_from_slice(&[k[1], k[2], k[3], k[4]]);
-            } else {
-                self.buf.extend_from_slice(k);
+                // The first key opens the object where its comma was.
+                t[n] = b'{';
             }
+            n += 5;
+            let Some((text, len)) = memo[i].text(p[*a as usize]) else {
+                return self.pos_slow(slot, p);
+            };
+            t[n..n + 24].copy_from_slice(text);
+            n += len;
+        }
+        t[n] = b'}';
+        put_fixed(&mut self.buf, &t, n + 1);
+    }
+
+    /// [`Toolpath::pos`] where a value takes `num`'s `{}` path (NaN,
+    /// infinite, 1e9 or more), or without axes.
+    #[cold]
+    #[inline(never)]
+    fn pos_slow(&mut self, slot: usize, p: &Pos) {
+        let (key, len) = &KEYS[slot];
+        put_fixed(&mut self.buf, key, *len);
+        self.buf.push(b'{');
+        let memo = &mut self.memo[slot];
+        for (i, (a, k)) in self.axes.iter().zip(&self.keys).enumerate() {
+            let k = if i == 0 { &k[1..] } else { &k[..] };
+            self.buf.extend_from_slice(k);
             memo[i].put(&mut self.buf, p[*a as usize]);
         }
         self.buf.push(b'}');
@@ -122,75 +153,59 @@ impl<W: Write> Toolpath<W> {
         t: f64,
         feed_mm_min: Option<f64>,
     ) -> io::Result<()> {
-        let kind = match &e.cmd {
-            Canon::Rapid { .. } => "rapid",
-            Canon::Feed { .. } => "feed",
-            Canon::Arc { .. } => "arc",
-            Canon::Thread { .. } => "thread",
-            Canon::Dwell { .. } => "dwell",
-            _ => return Ok(()),
-        };
+        match Rec::of(e, here, t, feed_mm_min) {
+            Some(r) => self.line(&r, head),
+            None => Ok(()),
+        }
+    }
+
+    /// Writes the line of `r`, `head` its file's `{"file":…,"line":`.
+    fn line(&mut self, r: &Rec, head: &[u8]) -> io::Result<()> {
         self.buf.clear();
         self.buf.extend_from_slice(head);
-        int(&mut self.buf, u64::from(e.src.line));
-        self.buf.extend_from_slice(b",\"kind\":\"");
-        self.buf.extend_from_slice(kind.as_bytes());
-        self.buf.push(b'"');
-        match &e.cmd {
-            Canon::Rapid { m, .. }
-            | Canon::Feed { m, .. }
-            | Canon::Thread { m, .. }
-            | Canon::Arc { m, .. } => {
-                let (to, mto) = (m.to, m.mto);
-                self.pos(0, &to);
-                self.pos(1, &mto);
-                if let Some(p) = e.prog.as_deref() {
-                    self.pos(2, p);
+        int(&mut self.buf, u64::from(r.line));
+        let (key, len) = r.kind.key();
+        put_fixed(&mut self.buf, key, len);
+        self.pos(0, &r.to);
+        if r.kind != Kind::Dwell {
+            self.pos(1, &r.mto);
+            if let Some(p) = r.prog.as_deref() {
+                self.pos(2, p);
+            }
+        }
+        match r.kind {
+            Kind::Dwell => {
+                self.buf.extend_from_slice(b",\"seconds\":");
+                num(&mut self.buf, r.main);
+                if r.value > 0.0 {
+                    self.buf.extend_from_slice(b",\"revolutions\":");
+                    num(&mut self.buf, r.value);
                 }
             }
-            Canon::Dwell {
-                seconds,
-                revolutions,
-            } => {
-                let p = *here;
-                self.pos(0, &p);
-                self.buf.extend_from_slice(b",\"seconds\":");
-                num(&mut self.buf, *seconds);
-                if *revolutions > 0.0 {
-                    self.buf.extend_from_slice(b",\"revolutions\":");
-                    num(&mut self.buf, *revolutions);
-                }
+            Kind::Arc => {
+                self.pos(3, &r.center);
+                self.buf.extend_from_slice(b",\"dir\":\"");
+                self.buf.extend_from_slice(r.dir.name().as_bytes());
+                self.buf.push(b'"');
             }
             _ => {}
         }
-        if let Canon::Arc { center, dir, .. } = &e.cmd {
-            let c = *center;
-            self.pos(3, &c);
-            self.buf.extend_from_slice(b",\"dir\":\"");
-            self.buf.extend_from_slice(dir.name().as_bytes());
-            self.buf.push(b'"');
-        }
-        let feed = match &e.cmd {
-            Canon::Feed { feed, m } | Canon::Arc { feed, m, .. } => Some((*feed, m)),
-            _ => None,
-        };
-        if let Some((f, _)) = feed {
+        if matches!(r.kind, Kind::Feed | Kind::Arc) {
             self.buf.extend_from_slice(b",\"feed\":");
-            self.feed_memo
-                .put(&mut self.buf, feed_mm_min.unwrap_or(0.0));
-            if let Feed::PerRev(v) = f {
+            self.feed_memo.put(&mut self.buf, r.main);
+            if r.per_rev {
                 self.buf.extend_from_slice(b",\"feed_per_rev\":");
-                num(&mut self.buf, v);
+                num(&mut self.buf, r.value);
             }
         }
-        if let Canon::Thread { lead, .. } = &e.cmd {
+        if r.kind == Kind::Thread {
             self.buf.extend_from_slice(b",\"lead\":");
-            num(&mut self.buf, *lead);
+            num(&mut self.buf, r.main);
         }
         self.buf.extend_from_slice(b",\"tool\":");
-        int(&mut self.buf, u64::from(e.tool));
+        int(&mut self.buf, u64::from(r.tool));
         self.buf.extend_from_slice(b",\"t_end\":");
-        num(&mut self.buf, t);
+        num(&mut self.buf, r.t_end);
         self.buf.extend_from_slice(b"}\n");
         self.w.write_all(&self.buf)
     }
@@ -208,16 +223,10 @@ impl<W: Write> Toolpath<W> {
         self.heads[id] = Some(h);
     }
 
-    /// The record of a timed event whose file was named by
+    /// The line of a record whose file was named by
     /// [`Toolpath::name_file`] (as [`Sink::timed`] writes it).
-    pub(crate) fn write_named(
-        &mut self,
-        e: &Event,
-        to: &Pos,
-        t_end: f64,
-        feed_mm_min: Option<f64>,
-    ) -> io::Result<()> {
-        let id = e.src.file as usize;
+    pub(crate) fn write_named(&mut self, r: &Rec) -> io::Result<()> {
+        let id = r.file as usize;
         if self.heads.len() <= id {
             self.heads.resize(id + 1, None);
         }
@@ -227,7 +236,7 @@ impl<W: Write> Toolpath<W> {
             head_of(&mut h, "");
             h
         });
-        let r = self.record(e, &head, to, t_end, feed_mm_min);
+        let r = self.line(r, &head);
         self.heads[id] = Some(head);
         r
     }
@@ -270,5 +279,63 @@ impl<W: Write> Sink for Toolpath<W> {
 
     fn finish(&mut self, _cx: &Context, _alarm: Option<&kerf_canon::Alarm>) -> io::Result<()> {
         self.w.flush()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kerf_canon::{Canon, Feed, Motion, SrcRef};
+
+    fn line(tp: &mut Toolpath<Vec<u8>>, to: Pos, mto: Pos) -> String {
+        let e = Event {
+            src: SrcRef {
+                file: 0,
+                line: 12,
+                col: 1,
+            },
+            tool: 3,
+            cmd: Canon::Feed {
+                m: Motion { to, mto },
+                feed: Feed::PerMin(100.0),
+            },
+            prog: None,
+        };
+        tp.w.clear();
+        tp.write(&e, "a.nc", &to, 2.5, Some(100.0)).unwrap();
+        String::from_utf8(tp.w.clone()).unwrap()
+    }
+
+    #[test]
+    fn positions_by_the_fixed_array_and_by_the_slow_path() {
+        let mut tp = Toolpath::new(Vec::new());
+        tp.set_axes(vec![Axis::X, Axis::Y, Axis::Z]);
+        let mut to = [0.0; NAXES];
+        to[0] = 1.25;
+        to[1] = -0.0;
+        to[2] = 123_456.000_000_4;
+        let mut mto = to;
+        mto[0] = -998.75;
+        let head = "{\"file\":\"a.nc\",\"line\":12,\"kind\":\"feed\"";
+        let tail = ",\"feed\":100.0,\"tool\":3,\"t_end\":2.5}\n";
+        assert_eq!(
+            line(&mut tp, to, mto),
+            format!(
+                "{head},\"to\":{{\"x\":1.25,\"y\":0.0,\"z\":123456.0}},\
+                 \"mto\":{{\"x\":-998.75,\"y\":0.0,\"z\":123456.0}}{tail}"
+            )
+        );
+        // The same again (every text from the memo), then values past 1e9
+        // and NaN (the `{}` path) in the middle of a position.
+        assert_eq!(line(&mut tp, to, mto), line(&mut tp, to, mto));
+        to[1] = 2e9;
+        mto[1] = f64::NAN;
+        assert_eq!(
+            line(&mut tp, to, mto),
+            format!(
+                "{head},\"to\":{{\"x\":1.25,\"y\":2000000000.0,\"z\":123456.0}},\
+                 \"mto\":{{\"x\":-998.75,\"y\":NaN,\"z\":123456.0}}{tail}"
+            )
+        );
     }
 }

@@ -4,18 +4,19 @@
 //! caller's thread, the JSON text (about 2,000 instructions a record, half
 //! the interpreter's block) and the system calls on the other.
 //!
-//! The caller's side copies each timed record (the event, its end point,
-//! time and feed) into the batch; nothing is allocated per record but an
-//! event's boxed programmed end point (`Event::prog`). A file name is sent
+//! The caller's side copies what each timed record's line shows (a
+//! [`Rec`]: the end points, time, feed and the few numbers of its kind,
+//! not the whole event) into the batch; nothing is allocated per record
+//! but a compensated move's boxed programmed end point. A file name is sent
 //! once, before its first record. The records are the same bytes, in the
 //! same order, as [`Toolpath`] writes on its own.
 
 use std::io::{self, Write};
 
-use kerf_canon::{Event, Pos};
 
 use super::behind::{Behind, Named};
 use super::toolpath::Toolpath;
+use super::toolpath_rec::Rec;
 use crate::sink::{Context, Live, Sink, Timed};
 
 /// What the thread is handed. Nearly every item is the large variant, so
@@ -25,12 +26,7 @@ enum Item {
     /// A file id and its name, before the file's first record.
     Name(u32, String),
     /// One timed record.
-    Rec {
-        event: Event,
-        to: Pos,
-        t_end: f64,
-        feed_mm_min: Option<f64>,
-    },
+    Rec(Rec),
 }
 
 fn take<W: Write>(tp: &mut Toolpath<W>, item: Item) -> io::Result<()> {
@@ -39,12 +35,7 @@ fn take<W: Write>(tp: &mut Toolpath<W>, item: Item) -> io::Result<()> {
             tp.name_file(id, &name);
             Ok(())
         }
-        Item::Rec {
-            event,
-            to,
-            t_end,
-            feed_mm_min,
-        } => tp.write_named(&event, &to, t_end, feed_mm_min),
+        Item::Rec(r) => tp.write_named(&r),
     }
 }
 
@@ -91,12 +82,10 @@ impl<W: Write + Send + 'static> Sink for ToolpathBehind<W> {
         if self.named.first(id) {
             b.push(Item::Name(id, cx.file(id).to_string()))?;
         }
-        b.push(Item::Rec {
-            event: t.event.clone(),
-            to: t.to,
-            t_end: t.t_end,
-            feed_mm_min: t.feed_mm_min,
-        })
+        match Rec::of(t.event, &t.to, t.t_end, t.feed_mm_min) {
+            Some(r) => b.push(Item::Rec(r)),
+            None => Ok(()),
+        }
     }
 
     fn finish(&mut self, _cx: &Context, _alarm: Option<&kerf_canon::Alarm>) -> io::Result<()> {
@@ -112,7 +101,7 @@ mod tests {
     use super::*;
     use crate::sinks::behind::{BATCH, IN_FLIGHT};
 
-    use kerf_canon::{Canon, Motion, SrcRef};
+    use kerf_canon::{Canon, Event, Motion, SrcRef};
     use kerf_interp::{Interp, Profile, Settings};
     use kerf_motion::{Dynamics, Planner};
 
