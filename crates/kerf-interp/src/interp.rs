@@ -1,7 +1,9 @@
 //! The interpreter: a resumable step machine. [`Interp::step`] reads and
 //! executes blocks until it has the next canonical command, an alarm, or
 //! the end of the program. A block's commands are queued in execution
-//! order and handed out one per call.
+//! order and handed out one per call ([`Interp::step_into`]: a batch at
+//! a time, onto the caller's vector). A plain block takes the direct
+//! path of interp/plain.rs.
 
 use kerf_canon::*;
 use kerf_lang::{parse_block, Addr, Block, LexErrorKind, Mark, ProgramRead, RawBlock, Stmt, Val};

@@ -4,6 +4,8 @@
 //! reads and executes blocks until it has the next canonical command
 //! ([`kerf_canon::Event`]), an alarm, or the end. A batch run is a loop over
 //! `step()`; single block, feed hold and the like fall out of that shape.
+//! [`Interp::step_into`] runs the same loop a batch at a time, the events
+//! pushed straight onto the caller's vector.
 //!
 //! Module map:
 //! - [`dialect`]: per-control G/M tables and language switches (data);

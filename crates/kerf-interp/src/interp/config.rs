@@ -208,6 +208,22 @@ mod tests {
     }
 
     #[test]
+    fn the_plain_path_runs_on_the_hx_mill_only() {
+        let hx = cfg("hx-mc");
+        assert!(hx.plain_ok);
+        // Its G00 and G01: rapid and linear motion, value × 10 0 and 10.
+        assert_eq!(hx.plain_g.map(|g| g.map(|g| g.code10)), [Some(0), Some(10)]);
+        // The lathes have no Y axis, other phase orders and (the PUMA)
+        // U/W and direct drawing.
+        assert!(!cfg("puma-lathe").plain_ok);
+        assert!(!cfg("hurco-lathe").plain_ok);
+        // A mill without a Z axis: an axis word would be an alarm.
+        let mut p = Profile::builtin("hx-mc").unwrap();
+        p.axes.remove("z");
+        assert!(!Config::new(p).plain_ok);
+    }
+
+    #[test]
     fn travel_limits_and_axes_come_out_per_slot() {
         for name in ["hx-mc", "puma-lathe"] {
             let c = cfg(name);
