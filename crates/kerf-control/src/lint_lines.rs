@@ -247,7 +247,10 @@ mod tests {
         let mut raw = RawBlock::default();
         let mut n = 0;
         loop {
-            let (x, y) = (src.next_block(&mut raw).unwrap(), lines.next_block().unwrap());
+            let (x, y) = (
+                src.next_block(&mut raw).unwrap(),
+                lines.next_block().unwrap(),
+            );
             assert_eq!(x, y, "block {n}");
             if !x {
                 break;

@@ -13,7 +13,6 @@
 
 use std::io::{self, Write};
 
-
 use super::behind::{Behind, Named};
 use super::toolpath::Toolpath;
 use super::toolpath_rec::Rec;

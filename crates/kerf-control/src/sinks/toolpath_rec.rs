@@ -177,7 +177,10 @@ mod tests {
         let r = Rec::of(&e, &[9.0; NAXES], 1.5, Some(120.0)).unwrap();
         assert_eq!((r.file, r.line, r.tool, r.kind), (3, 7, 4, Kind::Arc));
         assert_eq!((r.to, r.mto, r.center), (to, c, c));
-        assert_eq!((r.dir, r.per_rev, r.value, r.main), (ArcDir::Ccw, true, 0.2, 120.0));
+        assert_eq!(
+            (r.dir, r.per_rev, r.value, r.main),
+            (ArcDir::Ccw, true, 0.2, 120.0)
+        );
         assert_eq!(r.prog.as_deref(), Some(&c));
         let d = Event {
             cmd: Canon::Dwell {
@@ -188,7 +191,10 @@ mod tests {
             ..e.clone()
         };
         let r = Rec::of(&d, &[9.0; NAXES], 1.5, None).unwrap();
-        assert_eq!((r.kind, r.to, r.main, r.value), (Kind::Dwell, [9.0; NAXES], 2.0, 3.0));
+        assert_eq!(
+            (r.kind, r.to, r.main, r.value),
+            (Kind::Dwell, [9.0; NAXES], 2.0, 3.0)
+        );
         let m = Event {
             cmd: Canon::Message("hi".into()),
             ..d
