@@ -9,10 +9,15 @@ use kerf_canon::{ArcDir, Canon, Event, Feed, Pos, NAXES};
 /// The kind of a record (`"kind"` in docs/formats.md).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Kind {
+    /// `Canon::Rapid`.
     Rapid,
+    /// `Canon::Feed`.
     Feed,
+    /// `Canon::Arc`.
     Arc,
+    /// `Canon::Thread`.
     Thread,
+    /// `Canon::Dwell`.
     Dwell,
 }
 
@@ -33,9 +38,13 @@ impl Kind {
 /// One toolpath line's values.
 #[derive(Clone, Debug)]
 pub(crate) struct Rec {
+    /// The event's file id (`SrcRef::file`).
     pub file: u32,
+    /// Its line.
     pub line: u32,
+    /// Its tool.
     pub tool: u32,
+    /// What it is.
     pub kind: Kind,
     /// An arc's direction (`Cw` otherwise).
     pub dir: ArcDir,
@@ -49,6 +58,7 @@ pub(crate) struct Rec {
     pub center: Pos,
     /// The programmed end point of a compensated move.
     pub prog: Option<Box<Pos>>,
+    /// Seconds from program start when it ends.
     pub t_end: f64,
     /// The effective feed in mm/min (feed, arc; 0 when not given), the
     /// lead (thread) or the seconds (dwell).
