@@ -133,9 +133,18 @@ impl<'a> Pass<'a> {
     #[inline]
     pub fn run(&mut self, h: &mut [f32], idx: u32, x0: f64, dx: f64, y: f64, floor: f32) -> bool {
         match self.kernel {
-            Kernel::LevelFlat(z) if h.len() <= CHUNK => {
-                let env = [z; CHUNK];
-                self.lower(h, idx, &env[..h.len()], floor)
+            Kernel::LevelFlat(z) if h.len() <= CHUNK && self.undo.is_none() => {
+                #[cfg(target_arch = "x86_64")]
+                let (sum, any) = if crate::ball_row::avx2() {
+                    // SAFETY: the CPU has AVX2 and FMA (checked at run time).
+                    unsafe { level_avx2(h, z, floor, (self.zmin, self.tol), self.write) }
+                } else {
+                    lower_body(h, |_| z, floor, (self.zmin, self.tol), self.write)
+                };
+                #[cfg(not(target_arch = "x86_64"))]
+                let (sum, any) = lower_body(h, |_| z, floor, (self.zmin, self.tol), self.write);
+                self.removed += sum;
+                any && self.write
             }
             Kernel::LevelFlat(z) => self.level_flat(h, idx, z, floor),
             Kernel::Vertical { x, y: ya, z } => {
@@ -226,10 +235,14 @@ impl<'a> Pass<'a> {
             // SAFETY: the CPU has AVX2 and FMA (checked at run time).
             unsafe { lower_avx2(h, env, floor, (zmin, self.tol), self.write) }
         } else {
-            lower_body(h, env, floor, (zmin, self.tol), self.write)
+            let h = &mut h[..env.len().min(CHUNK)];
+            lower_body(h, |k| env[k], floor, (zmin, self.tol), self.write)
         };
         #[cfg(not(target_arch = "x86_64"))]
-        let (sum, any) = lower_body(h, env, floor, (zmin, self.tol), self.write);
+        let (sum, any) = {
+            let h = &mut h[..env.len().min(CHUNK)];
+            lower_body(h, |k| env[k], floor, (zmin, self.tol), self.write)
+        };
         self.removed += sum;
         any && self.write
     }
@@ -274,30 +287,39 @@ impl<'a> Pass<'a> {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 fn lower_avx2(h: &mut [f32], env: &[f64], floor: f32, zt: (f64, f64), write: bool) -> (f64, bool) {
-    lower_body(h, env, floor, zt, write)
+    let h = &mut h[..env.len().min(CHUNK)];
+    lower_body(h, |k| env[k], floor, zt, write)
 }
 
-/// The cells of `h` above `floor` and above the stock's bottom `zmin`
-/// lowered (when `write`) to `env`, not below `zmin`, where that is lower
-/// by more than `tol`: Σ (old - new) in four lanes, and whether a
-/// height changed.
+/// [`lower_body`] of a level flat end mill: every cell's envelope is `z`.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn level_avx2(h: &mut [f32], z: f64, floor: f32, zt: (f64, f64), write: bool) -> (f64, bool) {
+    lower_body(h, |_| z, floor, zt, write)
+}
+
+/// The cells of `h` (at most [`CHUNK`]) above `floor` and above the
+/// stock's bottom `zmin` lowered (when `write`) to `env(k)`, not below
+/// `zmin`, where that is lower by more than `tol`: Σ (old - new) in four
+/// lanes, and whether a height changed.
 #[inline(always)]
 fn lower_body(
     h: &mut [f32],
-    env: &[f64],
+    env: impl Fn(usize) -> f64,
     floor: f32,
     (zmin, tol): (f64, f64),
     write: bool,
 ) -> (f64, bool) {
-    let n = h.len().min(env.len()).min(CHUNK);
-    let (h, env) = (&mut h[..n], &env[..n]);
+    let n = h.len().min(CHUNK);
+    let h = &mut h[..n];
     let lim = zmin + tol;
     let mut cut = [0.0f64; CHUNK];
     let mut any = 0u32;
     for k in 0..n {
         let v = h[k];
         let old = v as f64;
-        let z = if env[k] > zmin { env[k] } else { zmin };
+        let e = env(k);
+        let z = if e > zmin { e } else { zmin };
         let c = (v > floor) & (old > lim) & (z < old - tol);
         cut[k] = if c { old - z } else { 0.0 };
         if write {
