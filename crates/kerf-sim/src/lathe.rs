@@ -326,8 +326,8 @@ pub fn bbox(c: &[[f64; 2]]) -> Bbox {
 }
 
 /// What a region holds of the stock: the volume (removed, when written)
-/// and the part of it that is material for a crash check
-/// ([`Section::meets`]), mm³.
+/// and, when not written, the part of it that is material for a crash
+/// check ([`Section::meets`]), mm³.
 #[derive(Clone, Copy, Debug, Default)]
 struct Swept {
     removed: f64,
@@ -343,7 +343,8 @@ fn contact_tol(clips: &[Contour], step: f64) -> f64 {
     for c in clips {
         for (i, p) in c.iter().enumerate() {
             let q = c[(i + 1) % c.len()];
-            perimeter += (q[0] - p[0]).hypot(q[1] - p[1]);
+            let (dz, dr) = (q[0] - p[0], q[1] - p[1]);
+            perimeter += (dz * dz + dr * dr).sqrt();
             r = r.max(p[1].abs());
         }
     }
@@ -389,7 +390,8 @@ impl Frame {
             let removed = t.vol - v;
             if removed > VOL_EPS {
                 total.removed += removed;
-                if removed > contact_tol(clips, 1.0 / self.scale) {
+                // (A check only: a cut is written whatever its depth.)
+                if !write && removed > contact_tol(clips, 1.0 / self.scale) {
                     total.material += removed;
                 }
                 if write {
