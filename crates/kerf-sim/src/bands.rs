@@ -54,12 +54,12 @@ pub struct Scan<'a> {
     bmin: f64,
     shape: Shape,
     zmin: f64,
+    tol: f64,
 }
 
 impl<'a> Scan<'a> {
-    /// The scan of `tool` along `s` (its pass `pass`) over a stock whose
-    /// bottom is `zmin`.
-    pub fn new(tool: &MillTool, s: &'a Sweep, pass: &Pass, zmin: f64) -> Scan<'a> {
+    /// The scan of `tool` along `s` (its pass `pass`).
+    pub fn new(tool: &MillTool, s: &'a Sweep, pass: &Pass) -> Scan<'a> {
         Scan {
             s,
             reach: tool.reach(),
@@ -69,7 +69,8 @@ impl<'a> Scan<'a> {
             zlow: s.p0[2].min(s.p1[2]),
             bmin: pass.guards.lowest(),
             shape: pass.shape,
-            zmin,
+            zmin: pass.zmin,
+            tol: pass.tol,
         }
     }
 
@@ -191,7 +192,7 @@ pub fn run(
             let (raw, out) = (Shared::of(&mut cells), SumsPtr(sums.as_mut_ptr()));
             let (next, write) = (AtomicUsize::new(0), pass.write);
             helper.run(&|| {
-                let mut p = Pass::new(tool, scan.s, scan.zmin, write, None);
+                let mut p = Pass::new(tool, scan.s, (scan.zmin, scan.tol), write, None);
                 loop {
                     let k = next.fetch_add(1, Ordering::Relaxed);
                     let Some(t) = todo.get(k) else { break };

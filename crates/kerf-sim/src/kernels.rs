@@ -16,7 +16,7 @@ use crate::ball_row::BallLanes;
 use crate::envelope::Sweep;
 use crate::shape::Shape;
 use crate::tool::{MillKind, MillTool};
-use crate::zmap::{CHUNK, EPS};
+use crate::zmap::CHUNK;
 
 /// The evaluation a move uses.
 #[derive(Clone, Copy, Debug)]
@@ -75,6 +75,8 @@ pub struct Pass<'a> {
     pub guards: Guards,
     pub kernel: Kernel,
     pub zmin: f64,
+    /// The least lowering that is material (`ZMap::tol`).
+    pub tol: f64,
     pub write: bool,
     pub undo: Option<&'a mut Vec<(u32, f32)>>,
     /// Σ (old - new) of the cutting part and of the guards, mm.
@@ -83,11 +85,12 @@ pub struct Pass<'a> {
 }
 
 impl<'a> Pass<'a> {
-    /// The pass of `tool` along `s` over a stock whose bottom is `zmin`.
+    /// The pass of `tool` along `s` over a stock whose bottom is `zmin`
+    /// and whose heights are lowered only by more than `tol` ([`crate::zmap::threshold`]).
     pub fn new(
         tool: &MillTool,
         s: &'a Sweep,
-        zmin: f64,
+        (zmin, tol): (f64, f64),
         write: bool,
         undo: Option<&'a mut Vec<(u32, f32)>>,
     ) -> Pass<'a> {
@@ -116,6 +119,7 @@ impl<'a> Pass<'a> {
             guards,
             kernel,
             zmin,
+            tol,
             write,
             undo,
             removed: 0.0,
@@ -129,9 +133,18 @@ impl<'a> Pass<'a> {
     #[inline]
     pub fn run(&mut self, h: &mut [f32], idx: u32, x0: f64, dx: f64, y: f64, floor: f32) -> bool {
         match self.kernel {
-            Kernel::LevelFlat(z) if h.len() <= CHUNK => {
-                let env = [z; CHUNK];
-                self.lower(h, idx, &env[..h.len()], floor)
+            Kernel::LevelFlat(z) if h.len() <= CHUNK && self.undo.is_none() => {
+                #[cfg(target_arch = "x86_64")]
+                let (sum, any) = if crate::ball_row::avx2() {
+                    // SAFETY: the CPU has AVX2 and FMA (checked at run time).
+                    unsafe { level_avx2(h, z, floor, (self.zmin, self.tol), self.write) }
+                } else {
+                    lower_body(h, |_| z, floor, (self.zmin, self.tol), self.write)
+                };
+                #[cfg(not(target_arch = "x86_64"))]
+                let (sum, any) = lower_body(h, |_| z, floor, (self.zmin, self.tol), self.write);
+                self.removed += sum;
+                any && self.write
             }
             Kernel::LevelFlat(z) => self.level_flat(h, idx, z, floor),
             Kernel::Vertical { x, y: ya, z } => {
@@ -153,17 +166,18 @@ impl<'a> Pass<'a> {
             }
             Kernel::General => {
                 let (s, shape, guards, zmin) = (self.s, self.shape, self.guards, self.zmin);
+                let tol = self.tol;
                 let mut met = 0.0;
                 let changed = self.each(h, idx, floor, |k, old| {
                     let x = x0 + k as f64 * dx;
                     for &(r, b, l) in guards.all() {
                         if let Some(z) = s.flat(x, y, r, b) {
-                            if old > z + EPS {
+                            if old > z + tol {
                                 met += old.min(z + l) - z;
                             }
                         }
                     }
-                    s.tool_above(&shape, x, y, old - EPS).map(|z| z.max(zmin))
+                    s.tool_above(&shape, x, y, old - tol).map(|z| z.max(zmin))
                 });
                 self.holder += met;
                 changed
@@ -189,7 +203,7 @@ impl<'a> Pass<'a> {
         let mut changed = false;
         for (k, v) in h.iter_mut().enumerate() {
             let old = *v as f64;
-            if *v <= floor || z >= old - EPS {
+            if *v <= floor || z >= old - self.tol {
                 continue;
             }
             removed += old - z;
@@ -219,12 +233,16 @@ impl<'a> Pass<'a> {
         #[cfg(target_arch = "x86_64")]
         let (sum, any) = if crate::ball_row::avx2() {
             // SAFETY: the CPU has AVX2 and FMA (checked at run time).
-            unsafe { lower_avx2(h, env, floor, zmin, self.write) }
+            unsafe { lower_avx2(h, env, floor, (zmin, self.tol), self.write) }
         } else {
-            lower_body(h, env, floor, zmin, self.write)
+            let h = &mut h[..env.len().min(CHUNK)];
+            lower_body(h, |k| env[k], floor, (zmin, self.tol), self.write)
         };
         #[cfg(not(target_arch = "x86_64"))]
-        let (sum, any) = lower_body(h, env, floor, zmin, self.write);
+        let (sum, any) = {
+            let h = &mut h[..env.len().min(CHUNK)];
+            lower_body(h, |k| env[k], floor, (zmin, self.tol), self.write)
+        };
         self.removed += sum;
         any && self.write
     }
@@ -243,13 +261,13 @@ impl<'a> Pass<'a> {
         let mut changed = false;
         for (k, v) in h.iter_mut().enumerate() {
             let old = *v as f64;
-            if *v <= floor || old <= self.zmin + EPS {
+            if *v <= floor || old <= self.zmin + self.tol {
                 continue;
             }
             let Some(z) = f(k, old) else {
                 continue;
             };
-            if z >= old - EPS {
+            if z >= old - self.tol {
                 continue;
             }
             removed += old - z;
@@ -268,26 +286,41 @@ impl<'a> Pass<'a> {
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn lower_avx2(h: &mut [f32], env: &[f64], floor: f32, zmin: f64, write: bool) -> (f64, bool) {
-    lower_body(h, env, floor, zmin, write)
+fn lower_avx2(h: &mut [f32], env: &[f64], floor: f32, zt: (f64, f64), write: bool) -> (f64, bool) {
+    let h = &mut h[..env.len().min(CHUNK)];
+    lower_body(h, |k| env[k], floor, zt, write)
 }
 
-/// The cells of `h` above `floor` and above the stock's bottom `zmin`
-/// lowered (when `write`) to `env`, not below `zmin`, where that is lower
-/// by more than [`EPS`]: Σ (old - new) in four lanes, and whether a
-/// height changed.
+/// [`lower_body`] of a level flat end mill: every cell's envelope is `z`.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn level_avx2(h: &mut [f32], z: f64, floor: f32, zt: (f64, f64), write: bool) -> (f64, bool) {
+    lower_body(h, |_| z, floor, zt, write)
+}
+
+/// The cells of `h` (at most [`CHUNK`]) above `floor` and above the
+/// stock's bottom `zmin` lowered (when `write`) to `env(k)`, not below
+/// `zmin`, where that is lower by more than `tol`: Σ (old - new) in four
+/// lanes, and whether a height changed.
 #[inline(always)]
-fn lower_body(h: &mut [f32], env: &[f64], floor: f32, zmin: f64, write: bool) -> (f64, bool) {
-    let n = h.len().min(env.len()).min(CHUNK);
-    let (h, env) = (&mut h[..n], &env[..n]);
-    let lim = zmin + EPS;
+fn lower_body(
+    h: &mut [f32],
+    env: impl Fn(usize) -> f64,
+    floor: f32,
+    (zmin, tol): (f64, f64),
+    write: bool,
+) -> (f64, bool) {
+    let n = h.len().min(CHUNK);
+    let h = &mut h[..n];
+    let lim = zmin + tol;
     let mut cut = [0.0f64; CHUNK];
     let mut any = 0u32;
     for k in 0..n {
         let v = h[k];
         let old = v as f64;
-        let z = if env[k] > zmin { env[k] } else { zmin };
-        let c = (v > floor) & (old > lim) & (z < old - EPS);
+        let e = env(k);
+        let z = if e > zmin { e } else { zmin };
+        let c = (v > floor) & (old > lim) & (z < old - tol);
         cut[k] = if c { old - z } else { 0.0 };
         if write {
             h[k] = if c { z as f32 } else { v };

@@ -35,6 +35,9 @@ pub const TILE: f64 = 8.0;
 /// leaves the polygons as they were, exactly; one that only grazes them
 /// may merge collinear edges).
 pub const VOL_EPS: f64 = 1e-12;
+/// Depth, in grid steps, that a region's removal from a tile must exceed
+/// to be material for a crash check ([`Section::meets`]).
+pub const CONTACT_STEPS: f64 = 2.0;
 /// Margin of a tile's integer frame beyond its own Z range and the
 /// stock's radius, mm.
 const MARGIN: f64 = 1.0;
@@ -185,14 +188,39 @@ impl Section {
         if !p.is_empty() && region.iter().any(|c| p.meets(&bbox(c))) {
             self.settle();
         }
-        self.frame.sweep(self.tiles.get_mut(), region, write)
+        self.frame
+            .sweep(self.tiles.get_mut(), region, write)
+            .removed
     }
 
-    /// The volume of `region` in the stock as it was before the pending
-    /// cut: at least what [`Self::sweep_regions`] finds (the pending cut
-    /// only removes material), so 0 here means 0 there.
-    pub fn sweep_unsettled(&mut self, region: &[Contour]) -> f64 {
-        self.frame.sweep(self.tiles.get_mut(), region, false)
+    /// The material `region` meets, for a crash check (nothing changes):
+    /// the volume it holds in the tiles where that is more than a layer
+    /// [`CONTACT_STEPS`] grid steps deep along the outline of the region
+    /// clipped to the tile's material box, revolved at its greatest
+    /// radius; 0 when it meets none. The boolean snaps the stock's edges
+    /// and the region's to the grid, so a region that only meets the
+    /// stock along a surface already cut (a rapid along a finished face,
+    /// diameter or taper) may hold a sliver up to about a step wide along
+    /// the edges they share, which this leaves out; anything deeper is
+    /// material (on a 50 mm bar two steps are 1.2·10⁻⁷ mm). The pending
+    /// cut is applied first where it may change the material inside the
+    /// region's box.
+    pub fn meets(&mut self, region: &[Contour]) -> f64 {
+        let p = self.pending.get_mut();
+        if !p.is_empty() && region.iter().any(|c| p.meets(&bbox(c))) {
+            self.settle();
+        }
+        self.frame
+            .sweep(self.tiles.get_mut(), region, false)
+            .material
+    }
+
+    /// [`Self::meets`] on the stock as it was before the pending cut: 0
+    /// here means 0 there (the pending cut only removes material).
+    pub fn meets_unsettled(&mut self, region: &[Contour]) -> f64 {
+        self.frame
+            .sweep(self.tiles.get_mut(), region, false)
+            .material
     }
 
     /// Removes, later, what the convex `outline` (counter-clockwise)
@@ -234,7 +262,8 @@ impl Section {
         if let Some(regions) = p.regions() {
             let v = self
                 .frame
-                .sweep(&mut self.tiles.borrow_mut(), regions, true);
+                .sweep(&mut self.tiles.borrow_mut(), regions, true)
+                .removed;
             p.removed += v;
         }
         p.clear();
@@ -296,23 +325,49 @@ pub fn bbox(c: &[[f64; 2]]) -> Bbox {
     b
 }
 
+/// What a region holds of the stock: the volume (removed, when written)
+/// and, when not written, the part of it that is material for a crash
+/// check ([`Section::meets`]), mm³.
+#[derive(Clone, Copy, Debug, Default)]
+struct Swept {
+    removed: f64,
+    material: f64,
+}
+
+/// The least volume of a tile that the contours `clips` (a region
+/// clipped to its material box) hold that is material: a layer
+/// [`CONTACT_STEPS`] grid steps of `step` deep along their outline,
+/// revolved at their greatest radius.
+fn contact_tol(clips: &[Contour], step: f64) -> f64 {
+    let (mut perimeter, mut r) = (0.0, 0.0f64);
+    for c in clips {
+        for (i, p) in c.iter().enumerate() {
+            let q = c[(i + 1) % c.len()];
+            let (dz, dr) = (q[0] - p[0], q[1] - p[1]);
+            perimeter += (dz * dz + dr * dr).sqrt();
+            r = r.max(p[1].abs());
+        }
+    }
+    2.0 * PI * r * perimeter * CONTACT_STEPS * step
+}
+
 impl Frame {
     /// Removes (when `write`) the material of `tiles` inside `region` and
     /// its mirror about the axis; returns the volume it holds.
-    fn sweep(&self, tiles: &mut [Tile], region: &[Contour], write: bool) -> f64 {
+    fn sweep(&self, tiles: &mut [Tile], region: &[Contour], write: bool) -> Swept {
+        let mut total = Swept::default();
         let boxes: Vec<Bbox> = region.iter().map(|c| bbox(c)).collect();
         let za = boxes.iter().map(|b| b[0]).fold(f64::INFINITY, f64::min);
         let zb = boxes.iter().map(|b| b[1]).fold(f64::NEG_INFINITY, f64::max);
         if za > zb {
-            return 0.0;
+            return total;
         }
         let k0 = ((za - self.z0) / TILE).floor().max(0.0) as usize;
         let k1 = ((zb - self.z0) / TILE).floor();
         if k1 < 0.0 || k0 >= tiles.len() {
-            return 0.0;
+            return total;
         }
         let k1 = (k1 as usize).min(tiles.len() - 1);
-        let mut total = 0.0;
         let half_step = 0.5 / self.scale;
         let below_axis = boxes.iter().any(|b| b[2] < 0.0);
         let mut clips: Vec<Contour> = Vec::new();
@@ -334,7 +389,11 @@ impl Frame {
             let v = volume(&shapes);
             let removed = t.vol - v;
             if removed > VOL_EPS {
-                total += removed;
+                total.removed += removed;
+                // (A check only: a cut is written whatever its depth.)
+                if !write && removed > contact_tol(clips, 1.0 / self.scale) {
+                    total.material += removed;
+                }
                 if write {
                     t.set(shapes, v);
                 }

@@ -302,7 +302,7 @@ impl Sim {
             } else if !self.spindle_on {
                 found.push((EventKind::SpindleOffCut, cut.removed));
             }
-            let plunge = descends && centre_before.is_some_and(|h| h > p1[2] + crate::zmap::EPS);
+            let plunge = descends && centre_before.is_some_and(|h| h > p1[2] + z.tol);
             if !tool.centre_cutting && plunge {
                 found.push((EventKind::PlungeNonCentreCutting, cut.removed));
             }
@@ -354,9 +354,15 @@ impl Sim {
         let at = |f: f64| (a.0 + (b.0 - a.0) * f, a.1 + (b.1 - a.1) * f);
         let mut found: Vec<(EventKind, f64, f64)> = Vec::new();
         let region = &mut self.region;
+        // The volume removed (write) or the material met (a check).
         let mut sweep_of = |sec: &mut Section, shape: &[[f64; 2]], f: f64, write: bool| {
             swept_ccw(shape, a, at(f), region);
-            sec.sweep_regions(std::slice::from_ref(region), write)
+            let r = std::slice::from_ref(region);
+            if write {
+                sec.sweep_regions(r, true)
+            } else {
+                sec.meets(r)
+            }
         };
         // Every check is against the stock before the move: the pending
         // cut is applied first where it may change what the check reads
@@ -383,10 +389,11 @@ impl Sim {
         let mut holder_hit = false;
         if !holder.is_empty() {
             let met_region = |f: f64| holder_first(&pts(outline), &pts(holder), a, at(f));
-            if sec.sweep_unsettled(&met_region(1.0)) > 0.0 {
-                let v = sec.sweep_regions(&met_region(1.0), false);
+            let whole = met_region(1.0);
+            if sec.meets_unsettled(&whole) > 0.0 {
+                let v = sec.meets(&whole);
                 if v > 0.0 {
-                    let f = first_contact(|f| sec.sweep_regions(&met_region(f), false) > 0.0);
+                    let f = first_contact(|f| sec.meets(&met_region(f)) > 0.0);
                     found.push((EventKind::HolderCollision, v, f));
                     holder_hit = true;
                 }

@@ -23,8 +23,29 @@ pub const BLOCK: usize = 16;
 /// Cells per run of a row whose greatest height is kept (the runs a
 /// move cannot lower are skipped with one comparison each).
 pub const CHUNK: usize = 16;
-/// Height changes below this are not material (mm).
+/// Height changes below this are never material (mm); the threshold of
+/// a height field is the greater of this and the f32 step of its heights
+/// ([`ZMap::tol`]).
 pub const EPS: f64 = 1e-6;
+
+/// The spacing of f32 values at the magnitude `m` (the step above `|m|`
+/// rounded to f32, the larger of its two neighbours' distances): the
+/// resolution at which heights up to `|m|` are stored.
+pub fn f32_step(m: f64) -> f64 {
+    let m = (m.abs() as f32).max(f32::MIN_POSITIVE);
+    (f32::from_bits(m.to_bits() + 1) - m) as f64
+}
+
+/// The least lowering of a stored height that is material on a stock
+/// whose heights lie within `zmin..=ztop`: the f32 step of the largest
+/// magnitude, and at least [`EPS`]. A stored height is the exact envelope
+/// rounded to f32 (within half a step) and a second evaluation of the
+/// same envelope differs from the first by rounding of f64 (far below
+/// [`EPS`] / 2), so a move that retraces material already cut lowers no
+/// height by this much, and every lowering by more is material.
+pub fn threshold(zmin: f64, ztop: f64) -> f64 {
+    f32_step(zmin.abs().max(ztop.abs())).max(EPS)
+}
 
 /// The height field.
 #[derive(Clone, Debug)]
@@ -34,6 +55,9 @@ pub struct ZMap {
     /// Stock bottom and top.
     pub zmin: f64,
     pub ztop: f64,
+    /// A height lowered by this much or less is left as it is: the
+    /// model's resolution in Z ([`threshold`]).
+    pub tol: f64,
     /// Heights, row-major (`grid.nx` per row).
     pub h: Vec<f32>,
     /// An upper bound of the heights in each run of [`CHUNK`] cells of a
@@ -104,6 +128,7 @@ impl ZMap {
             },
             zmin: min[2],
             ztop: max[2],
+            tol: threshold(min[2], max[2]),
             h: vec![max[2] as f32; nx * ny],
             cmax: vec![max[2] as f32; nc * ny],
             bmax: vec![max[2] as f32; nc * ny.div_ceil(BLOCK)],
@@ -150,9 +175,9 @@ impl ZMap {
         write: bool,
         undo: Option<&mut Vec<(u32, f32)>>,
     ) -> Cut {
-        let zmin = self.zmin;
-        let mut pass = Pass::new(tool, s, zmin, write, undo);
-        let scan = Scan::new(tool, s, &pass, zmin);
+        let (zmin, tol) = (self.zmin, self.tol);
+        let mut pass = Pass::new(tool, s, (zmin, tol), write, undo);
+        let scan = Scan::new(tool, s, &pass);
         let grid = self.grid;
         let Some(((i0, i1), (j0, j1))) = grid.bounds(s, scan.reach) else {
             return Cut::default();
@@ -251,7 +276,7 @@ mod tests {
     /// general envelope only (no skipped squares or runs, no fast kernel),
     /// and the material removed, mm³.
     fn reference(z: &ZMap, tool: &MillTool, moves: &[([f64; 3], [f64; 3])]) -> (Vec<f32>, f64) {
-        let (g, mut h, mut removed) = (z.grid, z.h.clone(), 0.0);
+        let (g, mut h, mut removed, eps) = (z.grid, z.h.clone(), 0.0, z.tol);
         let shape = Shape::of(tool);
         for &(a, b) in moves {
             let s = Sweep::new(a, b);
@@ -260,14 +285,14 @@ mod tests {
                     let (x, y) = g.centre(i, j);
                     let v = &mut h[j * g.nx + i];
                     let old = *v as f64;
-                    if old <= z.zmin + EPS {
+                    if old <= z.zmin + eps {
                         continue;
                     }
-                    let Some(n) = s.tool_above(&shape, x, y, old - EPS) else {
+                    let Some(n) = s.tool_above(&shape, x, y, old - eps) else {
                         continue;
                     };
                     let n = n.max(z.zmin);
-                    if n < old - EPS {
+                    if n < old - eps {
                         removed += old - n;
                         *v = n as f32;
                     }
