@@ -146,8 +146,8 @@ impl<W: Write> Expander<W> {
         self.start = self.buf.len();
         self.multi = false;
         let done = match &e.cmd {
-            Canon::Rapid { m, .. } => self.linear(0, m, None),
-            Canon::Feed { m, feed } => self.linear(1, m, Some(*feed)),
+            Canon::Rapid { m, .. } => return self.line_move(m, None, file, e.src.line),
+            Canon::Feed { m, feed } => return self.line_move(m, Some(*feed), file, e.src.line),
             Canon::Arc {
                 m,
                 center,
@@ -172,6 +172,24 @@ impl<W: Write> Expander<W> {
                 Ok(())
             }
         }
+    }
+
+    /// Writes a rapid (`feed` None) or a feed move as [`Expander::event`]
+    /// writes the `Canon::Rapid` or `Canon::Feed` event, from its motion,
+    /// feed and source line alone (a writer on another thread is handed
+    /// these, not the whole event).
+    #[inline]
+    pub fn line_move(
+        &mut self,
+        m: &Motion,
+        feed: Option<Feed>,
+        file: &str,
+        line: u32,
+    ) -> io::Result<()> {
+        self.start = self.buf.len();
+        self.multi = false;
+        self.linear(u8::from(feed.is_some()), m, feed);
+        self.end_block(file, line)
     }
 
     /// Writes where the program stopped on an alarm, as a comment.

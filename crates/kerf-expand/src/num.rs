@@ -18,9 +18,56 @@ pub fn unscaled(n: i64, dec: u32) -> f64 {
 }
 
 /// Appends the scaled integer `n` (value × 10^dec) as decimal text.
+///
+/// The common case (at most 8 decimals, fewer than 10^8 in the whole part)
+/// is written without a digit loop: the whole part below 1000 from a
+/// table, above as eight digits at once in the lanes of one `u64`
+/// ([`swar8`]), the fraction as eight digits likewise, its trailing zeros
+/// counted by the word's zero bytes. The rest goes by [`put_scaled_plain`],
+/// which writes the same text one digit at a time.
+#[inline]
 pub fn put_scaled(out: &mut Vec<u8>, n: i64, dec: u32) {
+    let u = n.unsigned_abs();
+    if dec > 8 {
+        return put_scaled_plain(out, n, dec);
+    }
+    let p = POW10_U[dec as usize];
+    let whole = u / p;
+    if whole >= 100_000_000 {
+        return put_scaled_plain(out, n, dec);
+    }
+    let frac = u - whole * p;
+    // Sign, at most 8 whole digits, the point, 8 decimals: 18 bytes.
+    let mut buf = [0u8; 24];
+    buf[0] = b'-';
+    let mut i = usize::from(n < 0);
+    if whole < 1000 {
+        let (d, len) = SMALL[whole as usize];
+        buf[i..i + 4].copy_from_slice(&d);
+        i += len as usize;
+    } else {
+        let w = swar8(whole);
+        // Leading zero digits (the low bytes); whole ≥ 1000 has at most 4.
+        let lz = w.trailing_zeros() / 8;
+        buf[i..i + 8].copy_from_slice(&((w + ZEROS) >> (8 * lz)).to_le_bytes());
+        i += 8 - lz as usize;
+    }
+    buf[i] = b'.';
+    i += 1;
+    if frac != 0 {
+        let f = swar8(frac * POW10_U[8 - dec as usize]);
+        buf[i..i + 8].copy_from_slice(&(f + ZEROS).to_le_bytes());
+        // Trailing zero digits are the high bytes; frac ≠ 0 leaves one.
+        i += 8 - (f.leading_zeros() / 8) as usize;
+    }
+    put_fixed(out, &buf, i);
+}
+
+/// [`put_scaled`] one digit at a time: any `n` and `dec`, the reference
+/// the fast path is tested against.
+pub fn put_scaled_plain(out: &mut Vec<u8>, n: i64, dec: u32) {
     // Built right to left in a stack buffer, appended once.
-    let mut text = [0u8; 32];
+    let mut text = [0u8; 48];
     let mut at = text.len();
     let mut u = n.unsigned_abs();
     // The fraction without its trailing zeros.
@@ -51,13 +98,85 @@ pub fn put_scaled(out: &mut Vec<u8>, n: i64, dec: u32) {
     out.extend_from_slice(&text[at..]);
 }
 
+/// Appends `text[..len]`: the whole fixed-size array is copied (a copy of
+/// known size compiles to a few moves, where a short copy of unknown size
+/// is a call) and the tail cut off again.
+#[inline]
+fn put_fixed<const N: usize>(out: &mut Vec<u8>, text: &[u8; N], len: usize) {
+    let at = out.len();
+    out.extend_from_slice(text);
+    out.truncate(at + len);
+}
+
+/// The eight decimal digits of `n` < 10^8, most significant first, one
+/// per byte of the little-endian word (0..=9, not ASCII): the halves,
+/// quarters and digits split in parallel lanes of one `u64` (x/100 as
+/// `x·5243 >> 19` for x < 10^4, x/10 as `x·103 >> 10` for x < 100).
+#[inline]
+fn swar8(n: u64) -> u64 {
+    let x = (n / 10_000) | ((n % 10_000) << 32);
+    let q = ((x * 5243) >> 19) & 0x0000_007F_0000_007F;
+    let y = q | ((x - q * 100) << 16);
+    let t = ((y * 103) >> 10) & 0x000F_000F_000F_000F;
+    t | ((y - t * 10) << 8)
+}
+
+/// `'0'` in every byte.
+const ZEROS: u64 = 0x3030_3030_3030_3030;
+
+/// The digits of 0..1000 (padded to four bytes) and their number.
+const SMALL: [([u8; 4], u8); 1000] = {
+    let mut t = [([0u8; 4], 0u8); 1000];
+    let mut n = 0;
+    while n < 1000 {
+        let (h, d, u) = ((n / 100) as u8, (n / 10 % 10) as u8, (n % 10) as u8);
+        t[n] = if n >= 100 {
+            ([b'0' + h, b'0' + d, b'0' + u, 0], 3)
+        } else if n >= 10 {
+            ([b'0' + d, b'0' + u, 0, 0], 2)
+        } else {
+            ([b'0' + u, 0, 0, 0], 1)
+        };
+        n += 1;
+    }
+    t
+};
+
+const POW10_U: [u64; 9] = [
+    1,
+    10,
+    100,
+    1_000,
+    10_000,
+    100_000,
+    1_000_000,
+    10_000_000,
+    100_000_000,
+];
+
 /// Appends `v` rounded to `dec` decimals.
 pub fn put(out: &mut Vec<u8>, v: f64, dec: u32) {
     put_scaled(out, scaled(v, dec), dec);
 }
 
-/// Appends an unsigned integer (M, T, O numbers).
-pub fn put_uint(out: &mut Vec<u8>, mut u: u64, min_digits: usize) {
+/// Appends an unsigned integer (M, T, O numbers, source lines), with
+/// leading zeros to `min_digits`.
+#[inline]
+pub fn put_uint(out: &mut Vec<u8>, u: u64, min_digits: usize) {
+    if min_digits <= 1 && u < 100_000_000 {
+        if u < 1000 {
+            let (d, len) = SMALL[u as usize];
+            return put_fixed(out, &d, len as usize);
+        }
+        let w = swar8(u);
+        let lz = w.trailing_zeros() / 8;
+        return put_fixed(out, &((w + ZEROS) >> (8 * lz)).to_le_bytes(), 8 - lz as usize);
+    }
+    put_uint_plain(out, u, min_digits);
+}
+
+/// [`put_uint`] one digit at a time (any value and width).
+pub fn put_uint_plain(out: &mut Vec<u8>, mut u: u64, min_digits: usize) {
     let mut digits = [0u8; 20];
     let mut len = 0;
     loop {
@@ -106,6 +225,73 @@ mod tests {
         assert_eq!(scaled(f64::NAN, 3), 0);
         assert_eq!(scaled(1e30, 3), 1_000_000_000_000_000);
         assert_eq!(unscaled(-12345, 3), -12.345);
+    }
+
+    fn plain(n: i64, dec: u32) -> Vec<u8> {
+        let mut out = Vec::new();
+        put_scaled_plain(&mut out, n, dec);
+        out
+    }
+
+    fn fast(n: i64, dec: u32) -> Vec<u8> {
+        // Written after other text, as in a block.
+        let mut out = b"X".to_vec();
+        put_scaled(&mut out, n, dec);
+        out.remove(0);
+        out
+    }
+
+    #[test]
+    fn the_fast_text_at_its_edges() {
+        // Worked by hand: the table's end, the eight-digit word's ends, the
+        // fraction's full width and the fallback beyond.
+        let cases: [(i64, u32, &str); 16] = [
+            (0, 3, "0."),
+            (999_999, 3, "999.999"),
+            (1_000_000, 3, "1000."),
+            (-1_000_001, 3, "-1000.001"),
+            (99_999_999_999, 3, "99999999.999"),
+            (100_000_000_000, 3, "100000000."),
+            (1_000_000_000_000_000, 3, "1000000000000."),
+            (-1_000_000_000_000_000, 3, "-1000000000000."),
+            (5, 4, "0.0005"),
+            (120, 4, "0.012"),
+            (7, 0, "7."),
+            (-123_456_789, 8, "-1.23456789"),
+            (1, 9, "0.000000001"),
+            (10, 1, "1."),
+            (i64::MIN + 1, 3, "-9223372036854775.807"),
+            (1234, 2, "12.34"),
+        ];
+        for (n, dec, want) in cases {
+            assert_eq!(String::from_utf8(fast(n, dec)).unwrap(), want, "{n} {dec}");
+            assert_eq!(String::from_utf8(plain(n, dec)).unwrap(), want, "{n} {dec}");
+        }
+    }
+
+    #[test]
+    fn the_fast_text_is_the_plain_text() {
+        // Random values of every size (a xorshift), every decimal count.
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        for k in 0..200_000u64 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let bits = 1 + (k % 60) as u32;
+            let mut n = (x >> (64 - bits)) as i64;
+            if x & 1 == 1 {
+                n = -n;
+            }
+            let dec = (k / 60 % 10) as u32;
+            assert_eq!(fast(n, dec), plain(n, dec), "{n} {dec}");
+            let u = n.unsigned_abs();
+            for min in [0, 1, 4] {
+                let (mut a, mut b) = (Vec::new(), Vec::new());
+                put_uint(&mut a, u, min);
+                put_uint_plain(&mut b, u, min);
+                assert_eq!(a, b, "{u} {min}");
+            }
+        }
     }
 
     #[test]

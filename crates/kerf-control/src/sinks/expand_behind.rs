@@ -1,31 +1,61 @@
 //! [`ExpandBehind`]: the expansion sink ([`super::Expand`]) with kerf-expand's
 //! writer on a thread of its own ([`Behind`]), so that `kerf expand`
 //! uses both cores: the interpreter on the caller's thread, the G-code
-//! text (about 1,150 instructions an output block) and the writes on the
-//! other. The caller's side copies each event into the batch (a message
-//! event copies its text); a file name is sent once, before its first
+//! text and the writes on the other. The caller's side copies a rapid or
+//! feed move into the batch as a small record ([`Item::Move`]: its motion,
+//! feed and source line) and any other event whole, boxed; a file name is sent once, before its first
 //! event; the alarm that stopped the run is written after the last one.
 //! The output is the same bytes as [`super::Expand`] writes on its own.
 
 use std::io::{self, Write};
 
-use kerf_canon::{Alarm, Event, Pos};
+use kerf_canon::{Alarm, Canon, Event, Feed, Motion, Pos};
 use kerf_expand::{Expander, Target};
 
 use super::behind::{Behind, Named};
 use super::expand::started;
 use crate::sink::{Context, Live, Sink};
 
-/// What the thread is handed. Nearly every item is the large variant, so
-/// it is kept inline: a box would be an allocation per item.
-#[allow(clippy::large_enum_variant)]
+/// What the thread is handed. A rapid or feed move (nearly every item)
+/// is a small record of what its block needs; any other event goes whole,
+/// boxed, so that the item stays small.
 enum Item {
     /// A file id and its name, before the file's first event.
     Name(u32, String),
-    /// One canonical command.
-    Event(Event),
+    /// A `Canon::Rapid` (`feed` None) or `Canon::Feed`, from file `file`
+    /// line `line`.
+    Move {
+        file: u32,
+        line: u32,
+        feed: Option<Feed>,
+        m: Motion,
+    },
+    /// Any other canonical command.
+    Event(Box<Event>),
     /// The alarm that stopped the run, after the last event.
-    Alarm(Alarm),
+    Alarm(Box<Alarm>),
+}
+
+impl Item {
+    /// The item for `e`.
+    #[inline]
+    fn of(e: &Event) -> Item {
+        match &e.cmd {
+            Canon::Rapid { m, .. } => Item::Move {
+                file: e.src.file,
+                line: e.src.line,
+                feed: None,
+                m: *m,
+            },
+            Canon::Feed { m, feed } => Item::Move {
+                file: e.src.file,
+                line: e.src.line,
+                feed: Some(*feed),
+                m: *m,
+            },
+            _ => Item::Event(Box::new(e.clone())),
+        }
+    }
 }
 
 /// The writer and the file names it has been sent.
@@ -48,6 +78,16 @@ impl<W: Write> Writer<W> {
                 }
                 self.names[i] = name;
                 Ok(())
+            }
+            Item::Move {
+                file,
+                line,
+                feed,
+                m,
+            } => {
+                let Writer { x, names } = self;
+                let file = names.get(file as usize).map_or("", String::as_str);
+                x.line_move(&m, feed, file, line)
             }
             Item::Event(e) => {
                 let Writer { x, names } = self;
@@ -74,6 +114,8 @@ pub struct ExpandBehind<W: Write + Send + 'static> {
     out: Option<W>,
     behind: Option<Behind<Item, u64>>,
     named: Named,
+    /// The file id of the previous event (its name has been sent).
+    last_file: u32,
     blocks: u64,
 }
 
@@ -86,6 +128,7 @@ impl<W: Write + Send + 'static> ExpandBehind<W> {
             out: Some(out),
             behind: None,
             named: Named::default(),
+            last_file: u32::MAX,
             blocks: 0,
         }
     }
@@ -125,9 +168,12 @@ impl<W: Write + Send + 'static> Sink for ExpandBehind<W> {
     }
 
     fn event(&mut self, e: &Event, _from: &Pos, cx: &Live) -> io::Result<()> {
-        self.name(e.src.file, cx.file(e.src.file))?;
+        if e.src.file != self.last_file {
+            self.last_file = e.src.file;
+            self.name(e.src.file, cx.file(e.src.file))?;
+        }
         match self.behind.as_mut() {
-            Some(b) => b.push(Item::Event(e.clone())),
+            Some(b) => b.push(Item::of(e)),
             None => Ok(()),
         }
     }
@@ -136,7 +182,7 @@ impl<W: Write + Send + 'static> Sink for ExpandBehind<W> {
         if let Some(a) = alarm {
             self.name(a.src.file, cx.file(a.src.file))?;
             if let Some(b) = self.behind.as_mut() {
-                b.push(Item::Alarm(a.clone()))?;
+                b.push(Item::Alarm(Box::new(a.clone())))?;
             }
         }
         if let Some(b) = self.behind.take() {
