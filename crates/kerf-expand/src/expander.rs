@@ -49,6 +49,8 @@ pub struct Expander<W: Write> {
     motion: Option<u8>,
     feed_mode: Option<usize>,
     feed: Option<i64>,
+    /// The last feed value given to `feed_word` (its bits) and its scaled F.
+    feed_memo: Option<(u64, i64)>,
     plane: Option<Plane>,
     /// The original's G112/G107 in force (rotary.rs).
     pub(crate) rotary: RotaryMode,
@@ -93,6 +95,7 @@ impl<W: Write> Expander<W> {
             motion: None,
             feed_mode: None,
             feed: None,
+            feed_memo: None,
             plane: None,
             rotary: RotaryMode::Off,
             spindle: Default::default(),
@@ -354,8 +357,17 @@ impl<W: Write> Expander<W> {
 
     fn feed_word(&mut self, f: Feed) {
         let (mode, v) = feed_parts(f);
-        let dec = self.digits_for(v, self.sp.feed_decimals);
-        let n = num::scaled(v, dec) * 10i64.pow(self.sp.feed_decimals - dec);
+        // The scaled F of a value depends on nothing else: the last one is
+        // kept (a program's feed seldom changes).
+        let n = match self.feed_memo {
+            Some((bits, n)) if bits == v.to_bits() => n,
+            _ => {
+                let dec = self.digits_for(v, self.sp.feed_decimals);
+                let n = num::scaled(v, dec) * 10i64.pow(self.sp.feed_decimals - dec);
+                self.feed_memo = Some((v.to_bits(), n));
+                n
+            }
+        };
         // Inverse time needs F in every block.
         if self.feed != Some(n) || mode == 2 {
             self.feed = Some(n);

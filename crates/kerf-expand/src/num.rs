@@ -22,8 +22,9 @@ pub fn unscaled(n: i64, dec: u32) -> f64 {
 /// The common case (at most 8 decimals, fewer than 10^8 in the whole part)
 /// is written without a digit loop: the whole part below 1000 from a
 /// table, above as eight digits at once in the lanes of one `u64`
-/// ([`swar8`]), the fraction as eight digits likewise, its trailing zeros
-/// counted by the word's zero bytes. The rest goes by [`put_scaled_plain`],
+/// ([`swar8`]), the fraction of three places or fewer from a table, of
+/// more as eight digits likewise, its trailing zeros counted by the word's
+/// zero bytes. The rest goes by [`put_scaled_plain`],
 /// which writes the same text one digit at a time.
 #[inline]
 pub fn put_scaled(out: &mut Vec<u8>, n: i64, dec: u32) {
@@ -54,7 +55,12 @@ pub fn put_scaled(out: &mut Vec<u8>, n: i64, dec: u32) {
     }
     buf[i] = b'.';
     i += 1;
-    if frac != 0 {
+    if frac != 0 && dec <= 3 {
+        // Three places or fewer (millimetres): the digits from a table.
+        let (d, len) = FRAC3[(frac * POW10_U[3 - dec as usize]) as usize];
+        buf[i..i + 4].copy_from_slice(&d);
+        i += len as usize;
+    } else if frac != 0 {
         let f = swar8(frac * POW10_U[8 - dec as usize]);
         buf[i..i + 8].copy_from_slice(&(f + ZEROS).to_le_bytes());
         // Trailing zero digits are the high bytes; frac ≠ 0 leaves one.
@@ -137,6 +143,31 @@ const SMALL: [([u8; 4], u8); 1000] = {
         } else {
             ([b'0' + u, 0, 0, 0], 1)
         };
+        n += 1;
+    }
+    t
+};
+
+/// The three decimal places of 0..1000 (`7` → `007`) without their
+/// trailing zeros (`120` → `12`), padded to four bytes, and their number.
+const FRAC3: [([u8; 4], u8); 1000] = {
+    let mut t = [([0u8; 4], 0u8); 1000];
+    let mut n = 0;
+    while n < 1000 {
+        let d = [
+            b'0' + (n / 100) as u8,
+            b'0' + (n / 10 % 10) as u8,
+            b'0' + (n % 10) as u8,
+            0,
+        ];
+        let len = if n % 100 == 0 {
+            1
+        } else if n % 10 == 0 {
+            2
+        } else {
+            3
+        };
+        t[n] = (d, len);
         n += 1;
     }
     t
