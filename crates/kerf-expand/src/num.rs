@@ -201,7 +201,11 @@ pub fn put_uint(out: &mut Vec<u8>, u: u64, min_digits: usize) {
         }
         let w = swar8(u);
         let lz = w.trailing_zeros() / 8;
-        return put_fixed(out, &((w + ZEROS) >> (8 * lz)).to_le_bytes(), 8 - lz as usize);
+        return put_fixed(
+            out,
+            &((w + ZEROS) >> (8 * lz)).to_le_bytes(),
+            8 - lz as usize,
+        );
     }
     put_uint_plain(out, u, min_digits);
 }
