@@ -61,6 +61,8 @@ pub struct Expander<W: Write> {
     /// The file the cached comment head is for, and `(NAME:` for it.
     comment_file: String,
     comment_head: Vec<u8>,
+    /// The last source line number's text (counted up in place).
+    line_text: num::LineText,
 }
 
 /// How an event maps to an output block: the words go to `buf`, then the
@@ -104,6 +106,7 @@ impl<W: Write> Expander<W> {
             blocks: 0,
             comment_file: String::new(),
             comment_head: b"(:".to_vec(),
+            line_text: num::LineText::default(),
         }
     }
 
@@ -263,7 +266,7 @@ impl<W: Write> Expander<W> {
         if !std::mem::take(&mut self.multi) {
             self.sep();
             self.buf.extend_from_slice(&self.comment_head);
-            num::put_uint(&mut self.buf, line as u64, 1);
+            self.line_text.put(&mut self.buf, line as u64);
             self.buf.extend_from_slice(b")\n");
             self.blocks += 1;
         } else {

@@ -210,6 +210,72 @@ pub fn put_uint(out: &mut Vec<u8>, u: u64, min_digits: usize) {
     put_uint_plain(out, u, min_digits);
 }
 
+/// The text of the last source line number written, kept so that the next
+/// line (nearly always the last one plus one) is its text counted up by
+/// one in place instead of written anew.
+#[derive(Debug, Clone)]
+pub struct LineText {
+    /// The number `text[..len]` spells; `len` 0 before the first.
+    n: u64,
+    text: [u8; 24],
+    len: usize,
+}
+
+impl Default for LineText {
+    fn default() -> LineText {
+        LineText {
+            n: 0,
+            text: [0; 24],
+            len: 0,
+        }
+    }
+}
+
+impl LineText {
+    /// Appends `u` as [`put_uint`]`(out, u, 1)` does.
+    #[inline]
+    pub fn put(&mut self, out: &mut Vec<u8>, u: u64) {
+        if !(self.len > 0 && Some(u) == self.n.checked_add(1) && self.count_up()) {
+            self.spell(u);
+        }
+        self.n = u;
+        put_fixed(out, &self.text, self.len);
+    }
+
+    /// The text counted up by one; false where it gains a digit (all 9s).
+    #[inline]
+    fn count_up(&mut self) -> bool {
+        let mut i = self.len;
+        while i > 0 {
+            i -= 1;
+            if self.text[i] != b'9' {
+                self.text[i] += 1;
+                return true;
+            }
+            self.text[i] = b'0';
+        }
+        false
+    }
+
+    /// The text of `u` made anew (a jump: a loop, a call, the first line).
+    fn spell(&mut self, mut u: u64) {
+        let mut rev = [0u8; 20];
+        let mut k = 0;
+        loop {
+            rev[k] = b'0' + (u % 10) as u8;
+            u /= 10;
+            k += 1;
+            if u == 0 {
+                break;
+            }
+        }
+        for j in 0..k {
+            self.text[j] = rev[k - 1 - j];
+        }
+        self.len = k;
+    }
+}
+
 /// [`put_uint`] one digit at a time (any value and width).
 pub fn put_uint_plain(out: &mut Vec<u8>, mut u: u64, min_digits: usize) {
     let mut digits = [0u8; 20];
@@ -327,6 +393,31 @@ mod tests {
                 assert_eq!(a, b, "{u} {min}");
             }
         }
+    }
+
+    #[test]
+    fn the_counted_line_text_is_the_plain_text() {
+        // Runs of consecutive lines across every carry (9, 99, 999999,
+        // u64::MAX - 1), jumps back and forward, repeats.
+        let starts = [0u64, 1, 5, 95, 995, 999_990, 12_345, u64::MAX - 3];
+        let mut lt = LineText::default();
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        for s in starts {
+            for u in (s..s.saturating_add(20)).chain([s, s, 7, s.wrapping_add(2)]) {
+                lt.put(&mut a, u);
+                a.push(b' ');
+                put_uint_plain(&mut b, u, 1);
+                b.push(b' ');
+            }
+        }
+        assert_eq!(String::from_utf8(a).unwrap(), String::from_utf8(b).unwrap());
+        let mut one = Vec::new();
+        let mut lt = LineText::default();
+        for u in [9, 10, 11, 99, 100] {
+            lt.put(&mut one, u);
+            one.push(b',');
+        }
+        assert_eq!(one, b"9,10,11,99,100,");
     }
 
     #[test]
