@@ -213,22 +213,12 @@ pub fn put_uint(out: &mut Vec<u8>, u: u64, min_digits: usize) {
 /// The text of the last source line number written, kept so that the next
 /// line (nearly always the last one plus one) is its text counted up by
 /// one in place instead of written anew.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub struct LineText {
     /// The number `text[..len]` spells; `len` 0 before the first.
     n: u64,
     text: [u8; 24],
     len: usize,
-}
-
-impl Default for LineText {
-    fn default() -> LineText {
-        LineText {
-            n: 0,
-            text: [0; 24],
-            len: 0,
-        }
-    }
 }
 
 impl LineText {
