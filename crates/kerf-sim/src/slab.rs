@@ -11,16 +11,21 @@ use crate::lathe::{Contour, Shapes};
 
 /// The material `shapes` less `clips` (each counter-clockwise), on the
 /// grid of `scale` steps per mm, when both are slabs as above; None
-/// otherwise. The rectangles come out as the boolean gives them: from
+/// otherwise. The rectangles come out as the boolean gives them, even
+/// when nothing is cut (so that a tile left as it was compares equal, and
+/// one reordered does not, exactly as with the boolean): from
 /// the lowest r up, each counter-clockwise from its corner of least z
 /// and greatest r.
 pub fn difference(shapes: &Shapes, clips: &[Contour], scale: f64) -> Option<Shapes> {
     let (zs, mut rs) = slabs(shapes)?;
     let snap = |v: f64| (v * scale).round() / scale;
-    let mut changed = false;
     // Regions that are not bands: each must stay clear of what the bands
     // leave (their snapped boxes a whole step away from it).
     let mut others = 0;
+    if clips.iter().any(|c| signed_area(c) <= 0.0) {
+        // A hole of the region (or nothing): the boolean's.
+        return None;
+    }
     for c in clips {
         let Some(b) = rectangle(c) else {
             others += 1;
@@ -33,7 +38,7 @@ pub fn difference(shapes: &Shapes, clips: &[Contour], scale: f64) -> Option<Shap
         if r1 <= r0 {
             continue;
         }
-        changed |= cut(&mut rs, (r0, r1));
+        cut(&mut rs, (r0, r1));
     }
     if others > 0 {
         let step = 1.0 / scale;
@@ -48,9 +53,6 @@ pub fn difference(shapes: &Shapes, clips: &[Contour], scale: f64) -> Option<Shap
             }
         }
     }
-    if !changed {
-        return Some(shapes.clone());
-    }
     Some(
         rs.iter()
             .map(|&(a, b)| vec![vec![[zs.0, b], [zs.0, a], [zs.1, a], [zs.1, b]]])
@@ -58,9 +60,12 @@ pub fn difference(shapes: &Shapes, clips: &[Contour], scale: f64) -> Option<Shap
     )
 }
 
+/// A slab's z range and its r intervals.
+type Slabs = ((f64, f64), Vec<(f64, f64)>);
+
 /// The z range and the sorted r intervals of `shapes` when each is one
 /// axis-parallel rectangle (no hole) and all span the same z range.
-fn slabs(shapes: &Shapes) -> Option<((f64, f64), Vec<(f64, f64)>)> {
+fn slabs(shapes: &Shapes) -> Option<Slabs> {
     let mut zs = None;
     let mut rs = Vec::with_capacity(shapes.len());
     for s in shapes {
@@ -101,11 +106,20 @@ fn rectangle(c: &[[f64; 2]]) -> Option<[f64; 4]> {
     ((area - full).abs() <= 1e-9 * full).then_some(b)
 }
 
-/// Removes the r interval `cut` from the sorted disjoint intervals `rs`;
-/// whether any changed.
-fn cut(rs: &mut Vec<(f64, f64)>, cut: (f64, f64)) -> bool {
+/// Twice the signed area of a closed contour (positive counter-clockwise).
+fn signed_area(c: &[[f64; 2]]) -> f64 {
+    (0..c.len())
+        .map(|i| {
+            let (p, q) = (c[i], c[(i + 1) % c.len()]);
+            p[0] * q[1] - q[0] * p[1]
+        })
+        .sum()
+}
+
+/// Removes the r interval `cut` from the sorted disjoint intervals `rs`.
+fn cut(rs: &mut Vec<(f64, f64)>, cut: (f64, f64)) {
     if !rs.iter().any(|&(a, b)| cut.0 < b && a < cut.1) {
-        return false;
+        return;
     }
     let mut out = Vec::with_capacity(rs.len() + 1);
     for &(a, b) in rs.iter() {
@@ -121,7 +135,6 @@ fn cut(rs: &mut Vec<(f64, f64)>, cut: (f64, f64)) -> bool {
         }
     }
     *rs = out;
-    true
 }
 
 #[cfg(test)]
