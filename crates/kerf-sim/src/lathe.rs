@@ -92,6 +92,9 @@ struct Frame {
     /// Whether a swept region is clipped to the tile's material box (true;
     /// false clips to the tile's frame only, the tests' reference).
     tight_clip: bool,
+    /// Whether a slab's cut skips the boolean (slab.rs; true, false the
+    /// tests' reference).
+    slabs: bool,
 }
 
 /// The half section, with the cut still pending on it (deferred.rs):
@@ -135,10 +138,18 @@ impl Section {
                 rr,
                 scale,
                 tight_clip: true,
+                slabs: true,
             },
             tiles: RefCell::new(tiles),
             pending: RefCell::new(Pending::default()),
         }
+    }
+
+    /// Whether a slab's cut skips the boolean (slab.rs; false: the
+    /// boolean throughout, the tests' reference).
+    #[cfg(test)]
+    pub(crate) fn use_slabs(&mut self, on: bool) {
+        self.frame.slabs = on;
     }
 
     /// The grid step of the coordinates, mm.
@@ -382,7 +393,13 @@ impl Frame {
             if clips.is_empty() || reach.0 > t.hi - half_step || reach.1 < t.lo + half_step {
                 continue;
             }
-            let shapes = self.difference(t, clips);
+            // A slab less whole-width bands without the boolean (slab.rs);
+            // the reference (no tight clip) keeps the boolean throughout.
+            let fast = self.tight_clip && self.slabs;
+            let shapes = fast
+                .then(|| crate::slab::difference(&t.shapes, clips, self.scale))
+                .flatten()
+                .unwrap_or_else(|| self.difference(t, clips));
             if shapes == t.shapes {
                 continue;
             }

@@ -34,6 +34,7 @@ pub mod path;
 pub mod render;
 pub mod shape;
 pub mod sim;
+pub mod slab;
 pub mod stl;
 pub mod stock;
 pub mod tool;
