@@ -1,7 +1,8 @@
 #!/bin/sh
 # The whole pipeline against LinuxCNC rs274 in the same run: for each input,
 # rs274 (`rs274 -g -t TOOLS FILE /dev/null`), then `kerf run` with no
-# output, --report, --toolpath and --plot, RUNS times each, alternating.
+# output, --report, --toolpath and --plot, and `kerf expand`, RUNS times
+# each, alternating.
 # Prints the median wall time, the median CPU time (user + system), blocks/s
 # and the ratio to rs274 for each, and the peak RSS.
 #
@@ -47,17 +48,22 @@ for f in "$@"; do
         one k_report "$KERF" run "$f" -q --report "$tmp/out.json"
         one k_toolpath "$KERF" run "$f" -q --toolpath "$tmp/out.jsonl"
         one k_plot "$KERF" run "$f" -q --plot "$tmp/out.svg"
+        one k_expand "$KERF" expand "$f" -q -o "$tmp/out.nc"
         i=$((i+1))
     done
     rw=$(med "$tmp/r_rs274" 1); rc=$(med "$tmp/r_rs274" 2)
     echo "$base ($blocks blocks), median of $runs:"
     printf '  %-18s %8s %8s %12s %9s %9s %9s\n' run "wall s" "cpu s" "blocks/s" "x rs274" "(cpu)" "peak kB"
-    for k in r_rs274 k_run k_report k_toolpath k_plot; do
+    for k in r_rs274 k_run k_report k_toolpath k_plot k_expand; do
         w=$(med "$tmp/$k" 1); c=$(med "$tmp/$k" 2); m=$(med "$tmp/$k" 3)
         awk -v k="$k" -v w="$w" -v c="$c" -v m="$m" -v b="$blocks" -v rw="$rw" -v rc="$rc" \
             'BEGIN{printf "  %-18s %8.2f %8.2f %12d %9.1f %9.1f %9d\n", substr(k,3), w, c, b/(c>0?c:w), rw/w, rc/(c>0?c:1e-9), m}'
     done
     [ -f "$tmp/out.svg" ] && echo "  plot: $(wc -c < "$tmp/out.svg") bytes of SVG"
     [ -f "$tmp/out.jsonl" ] && echo "  toolpath: $(wc -l < "$tmp/out.jsonl") records"
+    if [ -f "$tmp/out.nc" ]; then
+        n=$(wc -l < "$tmp/out.nc"); w=$(med "$tmp/k_expand" 1)
+        awk -v n="$n" -v w="$w" 'BEGIN{printf "  expand: %d output blocks, %.2f M output blocks/s (median wall)\n", n, n/w/1e6}'
+    fi
 done
 rm -rf "$tmp"
