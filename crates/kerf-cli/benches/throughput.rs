@@ -5,7 +5,8 @@
 //!
 //! - `parse`: the lexer/parser alone (`LineSource` + `parse_block`);
 //! - `interp`: the interpreter through its library API, every canonical
-//!   command taken from `step()` and dropped (no output sinks);
+//!   command taken in batches of 512 from `step_into()`, as the runner's
+//!   interpreter thread takes them, and dropped (no output sinks);
 //!
 //! - `macro`: a custom-macro program generated in memory (a WHILE loop of
 //!   `KERF_BENCH_MACRO_ITERS` inner iterations, default 1 000 000, with
@@ -27,7 +28,7 @@ use std::hint::black_box;
 use std::path::PathBuf;
 use std::time::Instant;
 
-use kerf_interp::{Interp, Profile, Settings, Step};
+use kerf_interp::{Filled, Interp, Profile, Settings, Step};
 use kerf_motion::Planner;
 
 use kerf_control::dynamics;
@@ -105,15 +106,18 @@ fn run_reader(
         }
     }
     it.load_main(name, r);
-    let mut events = 0u64;
+    // Batches of 512 events, as the runner's interpreter thread fills
+    // them (`Interp::step_into`).
+    let (mut events, mut batch) = (0u64, Vec::with_capacity(512));
     let note = loop {
-        match it.step() {
-            Step::Event(e) => {
-                black_box(&e);
-                events += 1;
-            }
-            Step::End => break String::new(),
-            Step::Alarm(a) => {
+        let filled = it.step_into(&mut batch, 512);
+        events += batch.len() as u64;
+        black_box(&batch);
+        batch.clear();
+        match filled {
+            Filled::Room => {}
+            Filled::End => break String::new(),
+            Filled::Alarm(a) => {
                 break format!(
                 "STOPPED ON ALARM at line {} col {}: {} (figures cover only the blocks before it)",
                 a.src.line, a.src.col, a
