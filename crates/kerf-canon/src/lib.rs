@@ -3,7 +3,8 @@
 //!
 //! Everything downstream of the interpreter (planner, simulator, toolpath
 //! writers, plotters) consumes [`Event`]s and never re-reads G-code. This
-//! crate holds types only; there is no logic here beyond small helpers.
+//! crate holds types only; there is no logic here beyond small helpers
+//! (`geom`, and `digits` for the text writers).
 //!
 //! Units are fixed: millimetres, degrees, seconds, mm/min. Lathe X is the
 //! physical radius (distance from the spindle centre line) whatever the
@@ -11,6 +12,7 @@
 
 use std::fmt;
 
+pub mod digits;
 pub mod geom;
 
 /// Number of axis slots carried in a [`Pos`]: X Y Z A B C.

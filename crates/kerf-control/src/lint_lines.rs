@@ -9,7 +9,7 @@
 
 use std::io::{self, ErrorKind};
 
-use kerf_lang::ProgramRead;
+use kerf_lang::{ends_with_backslash, ProgramRead};
 
 /// Bytes read at a time (as `LineSource`'s buffer).
 const CAP: usize = 64 * 1024;
@@ -199,20 +199,6 @@ impl Lines {
             }
         }
         (line, (idx - start) as u32 + 1)
-    }
-}
-
-/// A backslash at the end (blanks after it allowed), outside a comment:
-/// kerf-lang's rule for a continued line.
-fn ends_with_backslash(t: &[u8]) -> bool {
-    let trimmed = t.iter().rposition(|&c| c != b' ' && c != b'\t');
-    match trimmed {
-        Some(i) if t[i] == b'\\' => {
-            let opens = t[..i].iter().filter(|&&c| c == b'(').count();
-            let closes = t[..i].iter().filter(|&&c| c == b')').count();
-            opens <= closes
-        }
-        _ => false,
     }
 }
 

@@ -3,6 +3,8 @@
 //! exponent, no `-0`, trailing zeros dropped. Written straight into a byte
 //! buffer without going through `fmt`, since every output block has several.
 
+use kerf_canon::digits::{put_fixed, swar8, SMALL, ZEROS};
+
 /// The integer `v × 10^dec` rounded half away from zero, saturating at
 /// ±10^15 (no axis, feed or speed comes near; it keeps the text bounded).
 pub fn scaled(v: f64, dec: u32) -> i64 {
@@ -22,7 +24,7 @@ pub fn unscaled(n: i64, dec: u32) -> f64 {
 /// The common case (at most 8 decimals, fewer than 10^8 in the whole part)
 /// is written without a digit loop: the whole part below 1000 from a
 /// table, above as eight digits at once in the lanes of one `u64`
-/// ([`swar8`]), the fraction of three places or fewer from a table, of
+/// (kerf-canon's `digits::swar8`), the fraction of three places or fewer from a table, of
 /// more as eight digits likewise, its trailing zeros counted by the word's
 /// zero bytes. The rest goes by [`put_scaled_plain`],
 /// which writes the same text one digit at a time.
@@ -103,50 +105,6 @@ pub fn put_scaled_plain(out: &mut Vec<u8>, n: i64, dec: u32) {
     }
     out.extend_from_slice(&text[at..]);
 }
-
-/// Appends `text[..len]`: the whole fixed-size array is copied (a copy of
-/// known size compiles to a few moves, where a short copy of unknown size
-/// is a call) and the tail cut off again.
-#[inline]
-fn put_fixed<const N: usize>(out: &mut Vec<u8>, text: &[u8; N], len: usize) {
-    let at = out.len();
-    out.extend_from_slice(text);
-    out.truncate(at + len);
-}
-
-/// The eight decimal digits of `n` < 10^8, most significant first, one
-/// per byte of the little-endian word (0..=9, not ASCII): the halves,
-/// quarters and digits split in parallel lanes of one `u64` (x/100 as
-/// `x·5243 >> 19` for x < 10^4, x/10 as `x·103 >> 10` for x < 100).
-#[inline]
-fn swar8(n: u64) -> u64 {
-    let x = (n / 10_000) | ((n % 10_000) << 32);
-    let q = ((x * 5243) >> 19) & 0x0000_007F_0000_007F;
-    let y = q | ((x - q * 100) << 16);
-    let t = ((y * 103) >> 10) & 0x000F_000F_000F_000F;
-    t | ((y - t * 10) << 8)
-}
-
-/// `'0'` in every byte.
-const ZEROS: u64 = 0x3030_3030_3030_3030;
-
-/// The digits of 0..1000 (padded to four bytes) and their number.
-const SMALL: [([u8; 4], u8); 1000] = {
-    let mut t = [([0u8; 4], 0u8); 1000];
-    let mut n = 0;
-    while n < 1000 {
-        let (h, d, u) = ((n / 100) as u8, (n / 10 % 10) as u8, (n % 10) as u8);
-        t[n] = if n >= 100 {
-            ([b'0' + h, b'0' + d, b'0' + u, 0], 3)
-        } else if n >= 10 {
-            ([b'0' + d, b'0' + u, 0, 0], 2)
-        } else {
-            ([b'0' + u, 0, 0, 0], 1)
-        };
-        n += 1;
-    }
-    t
-};
 
 /// The three decimal places of 0..1000 (`7` → `007`) without their
 /// trailing zeros (`120` → `12`), padded to four bytes, and their number.

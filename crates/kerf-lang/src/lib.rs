@@ -23,7 +23,7 @@ pub use parse::{
     LexErrorKind, LexOptions, PlainDigits,
 };
 pub use plain::{letter_bit, plain_words, PlainWord};
-pub use source::{LineSource, Mark, ProgramRead, RawBlock};
+pub use source::{ends_with_backslash, LineSource, Mark, ProgramRead, RawBlock};
 
 #[cfg(test)]
 mod tests;

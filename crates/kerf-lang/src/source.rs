@@ -203,8 +203,10 @@ impl LineSource {
     }
 }
 
-fn ends_with_backslash(t: &[u8]) -> bool {
-    // A backslash inside a comment does not continue the line.
+/// Whether a line continues on the next: a backslash at its end (blanks
+/// after it allowed), outside a comment (a backslash inside a comment
+/// does not continue the line).
+pub fn ends_with_backslash(t: &[u8]) -> bool {
     let trimmed = t.iter().rposition(|&c| c != b' ' && c != b'\t');
     match trimmed {
         Some(i) if t[i] == b'\\' => {
