@@ -37,6 +37,7 @@
 #![allow(clippy::needless_range_loop)]
 
 mod block_dims;
+mod block_points;
 pub mod dynamics;
 pub mod job;
 pub mod lint;
