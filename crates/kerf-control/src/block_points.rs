@@ -19,39 +19,193 @@ use kerf_lang::is_blank;
 
 use crate::block_dims::Letters;
 
-/// Byte classes. The word letters come last (`k >= DIM`).
-const OTHER: u8 = 0;
-const BLANK: u8 = 1;
-const DIGIT: u8 = 2;
-const POINT: u8 = 3;
-const SEMI: u8 = 4;
-/// The end of the text (no byte has it).
-const END: u8 = 5;
-/// A dimension letter of the profile.
-const DIM: u8 = 6;
-const G: u8 = 7;
-const M: u8 = 8;
-/// Any other letter the plain reader takes (not N or O).
-const LETTER: u8 = 9;
+/// Byte classes: the ten digits are their own (`0..=9`).
+const BLANK: u8 = 10;
+const POINT: u8 = 11;
+const MINUS: u8 = 12;
+const SEMI: u8 = 13;
+/// A dimension letter of the profile, G, M, any other letter the plain
+/// reader takes (not N or O).
+const DIM: u8 = 14;
+const G: u8 = 15;
+const M: u8 = 16;
+const LETTER: u8 = 17;
+const OTHER: u8 = 18;
+const CLASSES: u8 = 19;
+
+/// The longest number the scan follows, in digits (longer ones, or the
+/// profile's limit when it is lower, go the general way).
+const CAP: usize = 8;
+
+/// States. A number's: its kind (a dimension whose digits are all zero
+/// so far, a dimension with a digit that is not, anything else), whether
+/// its point has been read and its digits so far (`0..=CAP`).
+const FAIL: usize = 0;
+/// Before a word (at the start, or after a number and blanks).
+const WORD: usize = 1;
+/// After `;`: the rest is not read.
+const DONE: usize = 2;
+const AFTER_DIM: usize = 3;
+const AFTER_LETTER: usize = 4;
+const SIGN_DIM: usize = 5;
+const SIGN_LETTER: usize = 6;
+const AFTER_G: usize = 7;
+const AFTER_M: usize = 8;
+/// G or M and two digits that make no code the check notes.
+const CODE_DONE: usize = 9;
+/// G or M and one digit (`+ digit`).
+const G_DIGIT: usize = 10;
+const M_DIGIT: usize = 20;
+const NUMBER: usize = 30;
+const STATES: usize = NUMBER + 6 * (CAP + 1);
+
+/// A number's kinds.
+const ZERO_DIM: usize = 0;
+const DIM_NZ: usize = 1;
+const OTHER_NUM: usize = 2;
+
+fn number(kind: usize, point: bool, digits: usize) -> usize {
+    NUMBER + (kind * 2 + usize::from(point)) * (CAP + 1) + digits
+}
+
+/// The entry of a table: the next state times 256 (the index of its row),
+/// and [`COUNT`] when the byte makes the word a non-zero dimension
+/// with a point.
+const COUNT: u16 = 1 << 15;
 
 /// The fast path of one check (its profile's dimension letters and digit
 /// limit); see the module documentation.
 pub(crate) struct PointScan {
-    class: [u8; 256],
-    /// The longest number in digits (`read_plain`'s `max_digits.min(18)`).
-    max: usize,
+    /// `STATES` rows of 256 entries, padded to 128 rows (the index is
+    /// masked, so it needs no bounds check).
+    table: Box<[u16; 1 << 15]>,
+    /// The states the text may end in.
+    ends: [bool; STATES],
+    /// Whether the scan is used (a digit limit of at least 2).
+    on: bool,
+}
+
+/// Where a word starting with a letter of class `k` goes.
+fn start(k: u8) -> usize {
+    match k {
+        DIM => AFTER_DIM,
+        G => AFTER_G,
+        M => AFTER_M,
+        LETTER => AFTER_LETTER,
+        _ => FAIL,
+    }
+}
+
+/// The end of a word at a byte of class `k`.
+fn end_word(k: u8) -> usize {
+    match k {
+        BLANK => WORD,
+        SEMI => DONE,
+        _ => start(k),
+    }
+}
+
+/// Whether G (`g`) or M code `v` is one the check notes (G04, G10, G20,
+/// G21, G65, G66, M98).
+fn noted(g: bool, v: usize) -> bool {
+    if g {
+        matches!(v, 4 | 10 | 20 | 21 | 65 | 66)
+    } else {
+        v == 98
+    }
+}
+
+/// The automaton: the state after `s` and a byte of class `k`, and
+/// whether that byte completes a counted word; `cap` the digits a number
+/// may have.
+fn step(s: usize, k: u8, cap: usize) -> (usize, bool) {
+    let digit = k < 10;
+    let d = usize::from(k);
+    let ends = matches!(k, BLANK | SEMI | DIM | G | M | LETTER);
+    match s {
+        FAIL => (FAIL, false),
+        DONE => (DONE, false),
+        WORD => (
+            if digit || k == POINT {
+                FAIL
+            } else {
+                end_word(k)
+            },
+            false,
+        ),
+        AFTER_DIM | SIGN_DIM | AFTER_LETTER | SIGN_LETTER => {
+            let dim = s == AFTER_DIM || s == SIGN_DIM;
+            let kind = match (dim, d) {
+                (false, _) => OTHER_NUM,
+                (true, 0) => ZERO_DIM,
+                (true, _) => DIM_NZ,
+            };
+            let next = match k {
+                _ if digit => number(kind, false, 1),
+                POINT => number(if dim { ZERO_DIM } else { OTHER_NUM }, true, 0),
+                MINUS if s == AFTER_DIM => SIGN_DIM,
+                MINUS if s == AFTER_LETTER => SIGN_LETTER,
+                _ => FAIL,
+            };
+            (next, false)
+        }
+        AFTER_G | AFTER_M if digit => ((if s == AFTER_G { G_DIGIT } else { M_DIGIT }) + d, false),
+        AFTER_G | AFTER_M => (FAIL, false),
+        _ if (G_DIGIT..NUMBER).contains(&s) => {
+            let (g, first) = (s < M_DIGIT, (s - G_DIGIT) % 10);
+            let next = match k {
+                _ if digit && !noted(g, first * 10 + d) => CODE_DONE,
+                _ if ends && !noted(g, first) => end_word(k),
+                _ => FAIL,
+            };
+            (next, false)
+        }
+        CODE_DONE => (if ends { end_word(k) } else { FAIL }, false),
+        _ => {
+            let i = s - NUMBER;
+            let (kind, point, n) = (i / (2 * (CAP + 1)), i / (CAP + 1) % 2 == 1, i % (CAP + 1));
+            match k {
+                _ if digit && n < cap => {
+                    let kind = if kind == ZERO_DIM && d != 0 {
+                        DIM_NZ
+                    } else {
+                        kind
+                    };
+                    let counted = point && kind == DIM_NZ && s != number(DIM_NZ, true, n);
+                    (number(kind, point, n + 1), counted)
+                }
+                POINT if !point => (number(kind, true, n), kind == DIM_NZ),
+                // A dimension without a point, or no digit.
+                _ if ends && n > 0 && (point || kind != DIM_NZ) => (end_word(k), false),
+                _ => (FAIL, false),
+            }
+        }
+    }
+}
+
+/// Whether a text may end in state `s`.
+fn may_end(s: usize) -> bool {
+    match s {
+        WORD | DONE | CODE_DONE => true,
+        _ if (G_DIGIT..M_DIGIT).contains(&s) => s != G_DIGIT + 4,
+        _ if (M_DIGIT..NUMBER).contains(&s) => true,
+        _ if s >= NUMBER => step(s, BLANK, CAP).0 == WORD,
+        _ => false,
+    }
 }
 
 impl PointScan {
     /// For the dimension letters `letters` and the parser's digit limit.
     pub fn new(letters: Letters, max_digits: u8) -> PointScan {
+        let cap = usize::from(max_digits).min(CAP);
         let mut class = [OTHER; 256];
         for c in 0..=255u8 {
             let up = c.to_ascii_uppercase();
             class[usize::from(c)] = match c {
                 _ if is_blank(c) => BLANK,
-                b'0'..=b'9' => DIGIT,
+                b'0'..=b'9' => c - b'0',
                 b'.' => POINT,
+                b'-' => MINUS,
                 b';' => SEMI,
                 _ if !up.is_ascii_uppercase() || up == b'N' || up == b'O' => OTHER,
                 _ if letters.has(up) => DIM,
@@ -60,15 +214,28 @@ impl PointScan {
                 _ => LETTER,
             };
         }
-        PointScan {
-            class,
-            max: usize::from(max_digits).min(18),
+        let mut rows = [[(FAIL, false); CLASSES as usize]; STATES];
+        for (s, row) in rows.iter_mut().enumerate() {
+            for (k, e) in row.iter_mut().enumerate() {
+                *e = step(s, k as u8, cap);
+            }
         }
-    }
-
-    #[inline(always)]
-    fn class_at(&self, text: &[u8], i: usize) -> u8 {
-        text.get(i).map_or(END, |&c| self.class[usize::from(c)])
+        let mut table: Box<[u16; 1 << 15]> = vec![0; 1 << 15].try_into().unwrap();
+        for (s, row) in rows.iter().enumerate() {
+            for c in 0..256 {
+                let (next, counted) = row[usize::from(class[c])];
+                table[s * 256 + c] = (next * 256) as u16 | if counted { COUNT } else { 0 };
+            }
+        }
+        let mut ends = [false; STATES];
+        for (s, e) in ends.iter_mut().enumerate() {
+            *e = may_end(s);
+        }
+        PointScan {
+            table,
+            ends,
+            on: max_digits >= 2,
+        }
     }
 
     /// The number of non-zero dimension words of `text` (all written with
@@ -77,88 +244,14 @@ impl PointScan {
     /// point; `None` when the block must be read the general way.
     #[inline]
     pub fn points(&self, text: &[u8]) -> Option<u64> {
-        let mut n = 0;
-        let mut i = 0;
-        loop {
-            let mut k = self.class_at(text, i);
-            while k == BLANK {
-                i += 1;
-                k = self.class_at(text, i);
-            }
-            if k == END || k == SEMI {
-                return Some(n);
-            }
-            if k < DIM {
-                return None;
-            }
-            i += 1;
-            i += usize::from(text.get(i) == Some(&b'-'));
-            let s = i;
-            let mut nz = 0u8;
-            while let Some(d) = text
-                .get(i)
-                .map(|c| c.wrapping_sub(b'0'))
-                .filter(|d| *d < 10)
-            {
-                nz |= d;
-                i += 1;
-            }
-            let int_end = i;
-            let point = text.get(i) == Some(&b'.');
-            if point {
-                i += 1;
-                while let Some(d) = text
-                    .get(i)
-                    .map(|c| c.wrapping_sub(b'0'))
-                    .filter(|d| *d < 10)
-                {
-                    nz |= d;
-                    i += 1;
-                }
-            }
-            let digits = i - s - usize::from(point);
-            if digits == 0 || digits > self.max {
-                return None;
-            }
-            // Blanks after a number are read with it; digits or a first
-            // point after them would continue it (`plain_digits`).
-            let mut next = self.class_at(text, i);
-            while next == BLANK {
-                i += 1;
-                next = self.class_at(text, i);
-            }
-            if next == DIGIT || (next == POINT && !point) {
-                return None;
-            }
-            match k {
-                DIM if nz != 0 => {
-                    if !point {
-                        return None;
-                    }
-                    n += 1;
-                }
-                G | M if point || noted(k, &text[s..int_end]) => return None,
-                _ => {}
-            }
+        let mut s = WORD * 256;
+        let mut n = 0u64;
+        for &c in text {
+            let e = self.table[(s + usize::from(c)) & 0x7fff];
+            s = usize::from(e & !COUNT);
+            n += u64::from(e >> 15);
         }
-    }
-}
-
-/// Whether the G (`k == G`) or M word of integer digits `digits` is one
-/// the check notes (G04, G10, G20, G21, G65, G66, M98), or has more than
-/// three digits (left to the general path too).
-#[inline]
-fn noted(k: u8, digits: &[u8]) -> bool {
-    if digits.len() > 3 {
-        return true;
-    }
-    let v = digits
-        .iter()
-        .fold(0u32, |v, c| v * 10 + u32::from(c - b'0'));
-    if k == G {
-        matches!(v, 4 | 10 | 20 | 21 | 65 | 66)
-    } else {
-        v == 98
+        (self.on && self.ends[s >> 8]).then_some(n)
     }
 }
 
@@ -254,11 +347,13 @@ mod tests {
             (Letters::new(b"XYZUVWIJK"), 8),
             (Letters::new(b"XYZUVWIJK"), 3),
         ];
+        let scans = profiles.map(|(l, max)| PointScan::new(l, max));
         let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
         let (mut answered, mut plain) = (0, 0);
         for _ in 0..300_000 {
             let r = next(&mut x);
             let (letters, max) = profiles[(r % 3) as usize];
+            let scan = &scans[(r % 3) as usize];
             let len = (r >> 8) % 28;
             let body: Vec<u8> = (0..len)
                 .map(|_| ALPHA[(next(&mut x) >> 20) as usize % ALPHA.len()])
@@ -269,7 +364,7 @@ mod tests {
             text.extend_from_slice(&body);
             let text = String::from_utf8_lossy(&text).into_owned();
             let want = general(&text, letters, max);
-            let got = PointScan::new(letters, max).points(text.as_bytes());
+            let got = scan.points(text.as_bytes());
             if got.is_some() {
                 assert_eq!(got, want, "{text:?}");
                 answered += 1;
