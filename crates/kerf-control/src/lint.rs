@@ -252,7 +252,7 @@ mod tests {
                     x ^= x << 13;
                     x ^= x >> 7;
                     x ^= x << 17;
-                    text.push_str(if x % 3 == 0 { "G01" } else { "G00" });
+                    text.push_str(if x.is_multiple_of(3) { "G01" } else { "G00" });
                     for k in 0..(x >> 8) % 5 {
                         // Points far more often than not (the check warns
                         // only then), words without one now and then.
