@@ -246,10 +246,19 @@ impl PointScan {
     pub fn points(&self, text: &[u8]) -> Option<u64> {
         let mut s = WORD * 256;
         let mut n = 0u64;
-        for &c in text {
+        let mut step = |c: u8| {
             let e = self.table[(s + usize::from(c)) & 0x7fff];
             s = usize::from(e & !COUNT);
             n += u64::from(e >> 15);
+        };
+        // Two bytes a turn (half the loop's own tests).
+        let mut pairs = text.chunks_exact(2);
+        for p in &mut pairs {
+            step(p[0]);
+            step(p[1]);
+        }
+        if let [c] = pairs.remainder() {
+            step(*c);
         }
         (self.on && self.ends[s >> 8]).then_some(n)
     }
