@@ -251,14 +251,16 @@ impl PointScan {
             s = usize::from(e & !COUNT);
             n += u64::from(e >> 15);
         };
-        // Two bytes a turn (half the loop's own tests).
-        let mut pairs = text.chunks_exact(2);
-        for p in &mut pairs {
-            step(p[0]);
-            step(p[1]);
+        // Four bytes a turn (a quarter of the loop's own tests).
+        let mut quads = text.chunks_exact(4);
+        for q in &mut quads {
+            step(q[0]);
+            step(q[1]);
+            step(q[2]);
+            step(q[3]);
         }
-        if let [c] = pairs.remainder() {
-            step(*c);
+        for &c in quads.remainder() {
+            step(c);
         }
         (self.on && self.ends[s >> 8]).then_some(n)
     }
