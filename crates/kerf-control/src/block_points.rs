@@ -3,7 +3,9 @@
 //! dimensions all have a point (`G01 X6.7292 Y0.0000 Z43.0946 F1500.`):
 //! there the check has nothing to note but how many non-zero dimension
 //! words were written with a point. [`PointScan::points`] decides that in
-//! one loop over the bytes, by a table of byte classes, without the
+//! one loop over the bytes, an automaton whose table (made once per check
+//! from the byte classes and [`step`]) gives for a state and a byte the
+//! next state and whether the word is a counted dimension, without the
 //! numbers' values or the [`crate::block_dims::BlockDims`] list; for
 //! anything else (a dimension without a point, a G or M word the check
 //! looks at, a word [`crate::block_dims::BlockDims::read_plain`] refuses,
