@@ -79,7 +79,7 @@ pub struct ZMap {
     /// [`Self::add_removed`], mm³, in program order.
     total: Cell<f64>,
     /// The worker that owns the odd bands, once a move was queued.
-    pipe: Option<Pipe>,
+    pipe: Option<Box<Pipe>>,
 }
 
 impl Clone for ZMap {
@@ -227,7 +227,7 @@ impl ZMap {
                 [&mut self.h, &mut self.cmax, &mut self.bmax],
             );
             let zt = (self.zmin, self.tol);
-            self.pipe = Pipe::start(raw, zt, self.grid.cell_area(), self.queue);
+            self.pipe = Pipe::start(raw, zt, self.grid.cell_area(), self.queue).map(Box::new);
         }
         match &mut self.pipe {
             Some(p) if self.threads > 1 => p.cut(tool, s, &self.total),
@@ -241,7 +241,7 @@ impl ZMap {
     /// The worker, if started (tests).
     #[cfg(test)]
     pub(crate) fn pipe_mut(&mut self) -> Option<&mut Pipe> {
-        self.pipe.as_mut()
+        self.pipe.as_deref_mut()
     }
 
     /// Material left, mm³.
