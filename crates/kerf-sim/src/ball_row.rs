@@ -48,7 +48,7 @@ pub struct BallLanes {
 }
 
 /// The terms of one row (constant y).
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub struct LaneRow {
     b: f64,
     e: f64,
@@ -127,12 +127,7 @@ impl BallLanes {
     /// its rim.
     #[inline]
     pub fn with_slope(&self, y: f64, x: f64) -> Option<(f64, f64)> {
-        self.with_slope_on(&self.row(y), x)
-    }
-
-    /// [`Self::with_slope`] on a row worked out once ([`Self::row`]).
-    #[inline]
-    pub fn with_slope_on(&self, row: &LaneRow, x: f64) -> Option<(f64, f64)> {
+        let row = self.row(y);
         let wx = x - self.c0[0];
         let b = wx * self.bx + row.b;
         let e = wx * self.ex + row.e;
@@ -174,7 +169,7 @@ impl BallLanes {
     }
 
     #[inline(always)]
-    pub(crate) fn envelope_body(&self, row: &LaneRow, x0: f64, dx: f64, out: &mut [f64]) {
+    fn envelope_body(&self, row: &LaneRow, x0: f64, dx: f64, out: &mut [f64]) {
         let n = out.len();
         let wx0 = x0 - self.c0[0];
         let wxn = wx0 + (n as f64 - 1.0) * dx;

@@ -7,7 +7,7 @@
 //! so are the volumes: each band's removed volume is summed on its own and
 //! the bands' sums are added in band order.
 
-use crate::ball_row::{floor_between, LaneRow};
+use crate::ball_row::floor_between;
 use crate::envelope::Sweep;
 use crate::grid::Grid;
 use crate::kernels::Pass;
@@ -118,13 +118,6 @@ impl<'a> Cells<'a> {
         let hi = rows.iter().map(|r| r.3).max().unwrap_or(0);
         let floor = rows.iter().map(|r| r.4).fold(f32::INFINITY, f32::min);
         let ball = pass.ball();
-        // Each row's terms of the ball's envelope, worked out once.
-        let mut lane = [LaneRow::default(); BLOCK];
-        if let Some(b) = &ball {
-            for (l, r) in lane.iter_mut().zip(rows) {
-                *l = b.row(r.1);
-            }
-        }
         // Each row's last envelope and slope worked out: (cell, value).
         let mut memo = [(usize::MAX, None); BLOCK];
         for c in lo / CHUNK..=hi / CHUNK {
@@ -142,10 +135,9 @@ impl<'a> Cells<'a> {
                 // A run at or below the ball's lowest point over it (from
                 // its first cell to the next run's first, whose envelope
                 // the next run reuses).
-                if let Some(ball) = &ball {
+                if let Some(ball) = ball {
                     let end = if last < b { last + 1 } else { last };
-                    let row = &lane[ri];
-                    let at = |k: usize| ball.with_slope_on(row, g.x0 + (k as f64 + 0.5) * g.dx);
+                    let at = |k: usize| ball.with_slope(y, g.x0 + (k as f64 + 0.5) * g.dx);
                     let m = &mut memo[ri];
                     let left = if m.0 == first { m.1 } else { at(first) };
                     *m = (end, at(end));
@@ -156,12 +148,7 @@ impl<'a> Cells<'a> {
                     }
                 }
                 let h = &mut self.h[lj * nx + first..=lj * nx + last];
-                let idx = (j * nx + first) as u32;
-                let lowered = match &ball {
-                    Some(bl) => pass.run_ball(bl, &lane[ri], h, idx, (x0, g.dx), floor),
-                    None => pass.run(h, idx, x0, g.dx, y, floor),
-                };
-                if lowered {
+                if pass.run(h, (j * nx + first) as u32, x0, g.dx, y, floor) {
                     let run = &self.h[lj * nx + c * CHUNK..lj * nx + ((c + 1) * CHUNK).min(nx)];
                     self.cmax[lj * nc + c] = greatest(run);
                     changed = true;

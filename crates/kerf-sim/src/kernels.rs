@@ -12,7 +12,7 @@
 //! - anything else: the general envelope and the holder's cylinders.
 
 use crate::ball::BallSweep;
-use crate::ball_row::{BallLanes, LaneRow};
+use crate::ball_row::BallLanes;
 use crate::envelope::Sweep;
 use crate::shape::Shape;
 use crate::tool::{MillKind, MillTool};
@@ -158,7 +158,12 @@ impl<'a> Pass<'a> {
                     (e2 <= r2).then(|| (z + shape.profile(e2.sqrt())).max(zmin))
                 })
             }
-            Kernel::Ball(b) => self.run_ball(&b, &b.row(y), h, idx, (x0, dx), floor),
+            Kernel::Ball(b) => {
+                let mut env = [0.0; CHUNK];
+                let env = &mut env[..h.len().min(CHUNK)];
+                b.envelope(&b.row(y), x0, dx, env);
+                self.lower(h, idx, env, floor)
+            }
             Kernel::General => {
                 let (s, shape, guards, zmin) = (self.s, self.shape, self.guards, self.zmin);
                 let tol = self.tol;
@@ -178,41 +183,6 @@ impl<'a> Pass<'a> {
                 changed
             }
         }
-    }
-
-    /// [`Self::run`] of a ball move (`b`, this pass's kernel) on a row
-    /// whose terms are worked out (`row`, [`BallLanes::row`]).
-    #[inline]
-    pub fn run_ball(
-        &mut self,
-        b: &BallLanes,
-        row: &LaneRow,
-        h: &mut [f32],
-        idx: u32,
-        (x0, dx): (f64, f64),
-        floor: f32,
-    ) -> bool {
-        #[cfg(target_arch = "x86_64")]
-        if self.undo.is_none() && h.len() <= CHUNK && crate::ball_row::avx2() {
-            // SAFETY: the CPU has AVX2 and FMA (checked at run time).
-            let (sum, any) = unsafe {
-                ball_avx2(
-                    b,
-                    row,
-                    h,
-                    (x0, dx),
-                    floor,
-                    (self.zmin, self.tol),
-                    self.write,
-                )
-            };
-            self.removed += sum;
-            return any && self.write;
-        }
-        let mut env = [0.0; CHUNK];
-        let env = &mut env[..h.len().min(CHUNK)];
-        b.envelope(row, x0, dx, env);
-        self.lower(h, idx, env, floor)
     }
 
     /// The ball move's row kernel, whose envelope bounds a run from
@@ -319,27 +289,6 @@ impl<'a> Pass<'a> {
 fn lower_avx2(h: &mut [f32], env: &[f64], floor: f32, zt: (f64, f64), write: bool) -> (f64, bool) {
     let h = &mut h[..env.len().min(CHUNK)];
     lower_body(h, |k| env[k], floor, zt, write)
-}
-
-/// A ball's run (at most [`CHUNK`] cells): its envelope
-/// ([`BallLanes::envelope`]) and the lowering ([`lower_avx2`]) in one
-/// function, the envelope kept in registers, the same arithmetic.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn ball_avx2(
-    b: &BallLanes,
-    row: &LaneRow,
-    h: &mut [f32],
-    (x0, dx): (f64, f64),
-    floor: f32,
-    zt: (f64, f64),
-    write: bool,
-) -> (f64, bool) {
-    let n = h.len().min(CHUNK);
-    let mut env = [0.0; CHUNK];
-    let env = &mut env[..n];
-    b.envelope_body(row, x0, dx, env);
-    lower_body(&mut h[..n], |k| env[k], floor, zt, write)
 }
 
 /// [`lower_body`] of a level flat end mill: every cell's envelope is `z`.
