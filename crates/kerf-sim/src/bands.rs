@@ -1,26 +1,19 @@
 //! The rows of a move's capsule on the height field, band by band (16
-//! rows, a square's height): on one thread, or split between two at a
-//! band boundary for a move with many cells to evaluate (each thread owns
-//! its bands' heights, run maxima and square maxima, so nothing is
-//! shared). The heights are the same either way (each cell is worked
-//! out on its own), and so are the volumes: each band's removed volume is
-//! summed on its own and the bands' sums are added in band order, on one
-//! thread or two.
+//! rows, a square's height): every band of the move on one thread, or
+//! the bands of one parity only ([`cut_parity`]: with two threads each
+//! owns the bands of one parity, their heights, run maxima and square
+//! maxima, pipe.rs). The heights are the same either way (each cell is
+//! worked out on its own, from the moves before it in program order), and
+//! so are the volumes: each band's removed volume is summed on its own and
+//! the bands' sums are added in band order.
 
 use crate::ball_row::floor_between;
 use crate::envelope::Sweep;
 use crate::grid::Grid;
-use crate::helper::Helper;
 use crate::kernels::Pass;
 use crate::shape::Shape;
 use crate::tool::MillTool;
 use crate::zmap::{BLOCK, CHUNK};
-use std::sync::atomic::{AtomicUsize, Ordering};
-
-/// Cells to evaluate (rows of the bands not skipped by the span of the
-/// capsule's columns) from which a move's bands are shared with the
-/// helper thread (some 10,000 instructions to publish a job and wake it).
-pub const SPLIT_CELLS: usize = 16_384;
 
 /// The rows of one band that a move covers: (row, y, first, last, floor).
 type Band = [(usize, f64, usize, usize, f32); BLOCK];
@@ -54,7 +47,6 @@ pub struct Scan<'a> {
     bmin: f64,
     shape: Shape,
     zmin: f64,
-    tol: f64,
 }
 
 impl<'a> Scan<'a> {
@@ -70,7 +62,6 @@ impl<'a> Scan<'a> {
             bmin: pass.guards.lowest(),
             shape: pass.shape,
             zmin: pass.zmin,
-            tol: pass.tol,
         }
     }
 
@@ -100,7 +91,7 @@ impl<'a> Cells<'a> {
     }
 
     /// Works one band: its removed and holder sums.
-    fn work_one(&mut self, pass: &mut Pass, scan: &Scan, todo: &Todo) -> (f64, f64) {
+    pub fn work_one(&mut self, pass: &mut Pass, scan: &Scan, todo: &Todo) -> (f64, f64) {
         let grid = self.grid;
         let mut band: Band = [(0, 0.0, 0, 0, 0.0); BLOCK];
         let &(_, first, last) = todo;
@@ -173,43 +164,69 @@ impl<'a> Cells<'a> {
     }
 }
 
-/// Works the bands `todo` of `cells` with `pass`, the pass of `tool`
-/// (with `helper`, when given and no old heights are kept, both threads
-/// claiming the bands one at a time, each with a pass of its own);
-/// returns the removed and holder sums added in band order.
-pub fn run(
-    mut cells: Cells,
-    pass: &mut Pass,
-    tool: &MillTool,
-    scan: &Scan,
-    todo: &[Todo],
-    helper: Option<&Helper>,
-) -> (f64, f64) {
+/// Works the bands `todo` of `cells` with `pass`; returns the removed and
+/// holder sums added in band order.
+pub fn run(mut cells: Cells, pass: &mut Pass, scan: &Scan, todo: &[Todo]) -> (f64, f64) {
     let mut sums = Vec::with_capacity(todo.len());
-    match helper {
-        Some(helper) if todo.len() >= 2 && pass.undo.is_none() => {
-            sums.resize(todo.len(), (0.0, 0.0));
-            let (raw, out) = (Shared::of(&mut cells), SumsPtr(sums.as_mut_ptr()));
-            let (next, write) = (AtomicUsize::new(0), pass.write);
-            helper.run(&|| {
-                let mut p = Pass::new(tool, scan.s, (scan.zmin, scan.tol), write, None);
-                loop {
-                    let k = next.fetch_add(1, Ordering::Relaxed);
-                    let Some(t) = todo.get(k) else { break };
-                    // SAFETY: band k is claimed by this thread alone (the
-                    // counter), its cells are its own (raw.band), and the
-                    // caller's borrows outlive the job (Helper::run).
-                    unsafe {
-                        let r = raw.band(t.0).work_one(&mut p, scan, t);
-                        out.put(k, r);
-                    }
-                }
-            });
-        }
-        _ => cells.work(pass, scan, todo, &mut sums),
-    }
+    cells.work(pass, scan, todo, &mut sums);
     sums.iter()
         .fold((0.0, 0.0), |(r, h), &(dr, dh)| (r + dr, h + dh))
+}
+
+/// The rows of band `bj` within the move's rows `j0..=j1`, and whether
+/// the band can change: not when its squares over the capsule's columns
+/// `i0..=i1` (`squares`, the band's square maxima) are all at or below
+/// its lowest floor (that of its row nearest the move's Y range).
+#[inline]
+pub fn band_rows(
+    grid: &Grid,
+    scan: &Scan,
+    squares: &[f32],
+    bj: usize,
+    (i0, i1): (usize, usize),
+    (j0, j1): (usize, usize),
+) -> Option<Todo> {
+    let rows = ((bj * BLOCK).max(j0), (bj * BLOCK + BLOCK - 1).min(j1));
+    let low = scan.floor(grid.centre(0, rows.0).1, grid.centre(0, rows.1).1);
+    let squares = &squares[i0 / CHUNK..=i1 / CHUNK];
+    (!squares.iter().all(|&m| m <= low)).then_some((bj, rows.0, rows.1))
+}
+
+/// Cuts the move `s` of `tool` (heights written, no old heights kept)
+/// over the bands of one parity only (`parity`: 0 the even bands, 1 the
+/// odd ones), pushing each band worked and its removed sum (cell heights,
+/// mm) to `out`, in band order. The holder sums are 0: a tool with a
+/// shank or holder is never cut this way (its moves may be events).
+///
+/// # Safety
+/// No other thread uses the cells of these bands meanwhile, and `raw`'s
+/// arrays are alive.
+pub unsafe fn cut_parity(
+    raw: &Raw,
+    tool: &MillTool,
+    s: &Sweep,
+    zt: (f64, f64),
+    parity: usize,
+    out: &mut Vec<(u32, f64)>,
+) {
+    let mut pass = Pass::new(tool, s, zt, true, None);
+    let scan = Scan::new(tool, s, &pass);
+    let grid = raw.grid;
+    let Some((cols, rows)) = grid.bounds(s, scan.reach) else {
+        return;
+    };
+    let first = rows.0 / BLOCK;
+    let first = first + (first % 2 != parity) as usize;
+    for bj in (first..=rows.1 / BLOCK).step_by(2) {
+        // SAFETY: band bj is of this thread's parity (the caller's
+        // contract).
+        let mut cells = unsafe { raw.band(bj) };
+        if let Some(t) = band_rows(&grid, &scan, cells.bmax, bj, cols, rows) {
+            let (r, h) = cells.work_one(&mut pass, &scan, &t);
+            debug_assert_eq!(h, 0.0);
+            out.push((bj as u32, r));
+        }
+    }
 }
 
 /// The greatest of `v` (heights are never NaN), in a loop the compiler
@@ -230,24 +247,10 @@ fn greatest(v: &[f32]) -> f32 {
         .fold(f32::NEG_INFINITY, |a, &b| if b > a { b } else { a })
 }
 
-/// Each band's sums, written by whichever thread works it.
-#[derive(Clone, Copy)]
-struct SumsPtr(*mut (f64, f64));
-// SAFETY: each slot is written by one thread (its band's claimant).
-unsafe impl Sync for SumsPtr {}
-unsafe impl Send for SumsPtr {}
-
-impl SumsPtr {
-    /// # Safety
-    /// `k` within the sums, written by one thread.
-    unsafe fn put(&self, k: usize, r: (f64, f64)) {
-        unsafe { self.0.add(k).write(r) }
-    }
-}
-
 /// [`Cells`] as raw parts, from which each thread makes the cells of the
-/// bands it claims.
-struct Shared {
+/// bands it owns.
+#[derive(Clone, Copy)]
+pub struct Raw {
     grid: Grid,
     nc: usize,
     band0: usize,
@@ -257,18 +260,21 @@ struct Shared {
 }
 // SAFETY: the bands made from it are disjoint and each is used by one
 // thread at a time.
-unsafe impl Sync for Shared {}
-unsafe impl Send for Shared {}
+unsafe impl Sync for Raw {}
+unsafe impl Send for Raw {}
 
-impl Shared {
-    fn of(c: &mut Cells) -> Shared {
-        Shared {
-            grid: c.grid,
-            nc: c.nc,
-            band0: c.band0,
-            h: (c.h.as_mut_ptr(), c.h.len()),
-            cmax: (c.cmax.as_mut_ptr(), c.cmax.len()),
-            bmax: (c.bmax.as_mut_ptr(), c.bmax.len()),
+impl Raw {
+    /// The raw parts of a whole height field (heights, run maxima, square
+    /// maxima), valid while those arrays are neither freed nor resized
+    /// (`Vec::as_mut_ptr`, which other calls of it leave valid).
+    pub fn of(grid: Grid, nc: usize, [h, cmax, bmax]: [&mut Vec<f32>; 3]) -> Raw {
+        Raw {
+            grid,
+            nc,
+            band0: 0,
+            h: (h.as_mut_ptr(), h.len()),
+            cmax: (cmax.as_mut_ptr(), cmax.len()),
+            bmax: (bmax.as_mut_ptr(), bmax.len()),
         }
     }
 
@@ -277,7 +283,7 @@ impl Shared {
     /// # Safety
     /// No other live reference to that band's cells.
     #[allow(clippy::mut_from_ref)]
-    unsafe fn band(&self, bj: usize) -> Cells<'_> {
+    pub unsafe fn band(&self, bj: usize) -> Cells<'_> {
         let (nx, nc) = (self.grid.nx, self.nc);
         let r0 = (bj - self.band0) * BLOCK;
         let rows = BLOCK.min(self.grid.ny - bj * BLOCK);

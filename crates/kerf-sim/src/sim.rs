@@ -125,8 +125,10 @@ impl Sim {
         self.current = None;
     }
 
-    /// The stock model (for the STL and the picture).
+    /// The stock model (for the STL and the picture), after every move
+    /// so far.
     pub fn model(&self) -> &Model {
+        self.settle();
         &self.model
     }
 
@@ -284,7 +286,6 @@ impl Sim {
             return;
         };
         let s = Sweep::new(p0, p1);
-        let centre_before = z.height_at(p1[0], p1[1]);
         let descends = p1[2] < p0[2] - crate::zmap::EPS;
         // The old heights are kept only when the move can be an event (its
         // first contact is then located on the stock before the move).
@@ -292,9 +293,14 @@ impl Sim {
             || !self.spindle_on
             || (descends && !tool.centre_cutting)
             || tool.flute_length < 1.0e4;
+        if !may_collide {
+            // No event: the move may be cut later on the worker's bands.
+            z.cut_queued(tool, &s);
+            return;
+        }
+        let centre_before = z.height_at(p1[0], p1[1]);
         self.undo.clear();
-        let undo = may_collide.then_some(&mut self.undo);
-        let cut = z.cut(tool, &s, true, undo);
+        let cut = z.cut(tool, &s, true, Some(&mut self.undo));
         let mut found: Vec<(EventKind, f64)> = Vec::new();
         if cut.removed > 0.0 {
             if rapid {
@@ -310,7 +316,7 @@ impl Sim {
         if cut.holder > 0.0 {
             found.push((EventKind::HolderCollision, cut.holder));
         }
-        self.removed += cut.removed;
+        z.add_removed(cut.removed);
         if found.is_empty() {
             return;
         }
@@ -424,20 +430,32 @@ impl Sim {
         }
     }
 
-    /// Threads a height field move's bands may be shared between (1 or 2;
-    /// the default is 1, or `KERF_SIM_THREADS`). The result is the same
-    /// either way.
+    /// Threads the height field is cut by (1 or 2; the default is 2 on a
+    /// machine with two cores or more, or `KERF_SIM_THREADS`; pipe.rs).
+    /// The result is the same either way. Before the first move.
     pub fn set_threads(&mut self, n: usize) {
         if let Model::Mill(z) = &mut self.model {
+            z.settle();
             z.threads = n.clamp(1, 2);
         }
     }
 
-    /// Applies the lathe's pending cut (every read of the model does so
-    /// itself; this is for timing a run to its end).
+    /// The length in moves of the queue the second thread of the height
+    /// field is handed its moves through (pipe.rs; tests make it short).
+    /// Before the first move.
+    pub fn set_queue(&mut self, moves: usize) {
+        if let Model::Mill(z) = &mut self.model {
+            z.queue = moves.max(1);
+        }
+    }
+
+    /// Applies the pending cut: the lathe's, or the height field's queued
+    /// moves (every read of the model does so itself; this is for timing a
+    /// run to its end).
     pub fn settle(&self) {
-        if let Model::Lathe(s) = &self.model {
-            s.settle();
+        match &self.model {
+            Model::Lathe(s) => s.settle(),
+            Model::Mill(z) => z.settle(),
         }
     }
 
@@ -447,13 +465,15 @@ impl Sim {
             Model::Mill(z) => z.volume(),
             Model::Lathe(s) => s.volume(),
         };
-        let later = match &self.model {
-            Model::Mill(_) => 0.0,
-            Model::Lathe(s) => s.removed_later(),
+        // The height field's moves add to its own total (in program
+        // order, whichever thread cut them).
+        let removed = match &self.model {
+            Model::Mill(z) => z.removed(),
+            Model::Lathe(s) => self.removed + s.removed_later(),
         };
         SimReport {
             stock_mm3: self.stock.volume(),
-            removed_mm3: self.removed + later,
+            removed_mm3: removed,
             remaining_mm3: remaining,
             resolution_mm: self.res,
             events: self.events.clone(),

@@ -2,12 +2,13 @@
 //! at cell centres over the stock's XY rectangle, each column of
 //! material running from the stock bottom up to its height.
 
-use crate::bands::{self, Cells, Scan, Todo, SPLIT_CELLS};
+use crate::bands::{self, band_rows, Cells, Raw, Scan, Todo};
 use crate::envelope::Sweep;
 use crate::grid::Grid;
-use crate::helper::LazyHelper;
-use crate::kernels::{Kernel, Pass};
+use crate::kernels::Pass;
+use crate::pipe::{Pipe, QUEUE};
 use crate::tool::MillTool;
+use std::cell::Cell;
 
 /// Most cells a height field may have: 54.5 million, 218 MB of f32 heights
 /// plus 14 MB of run and square maxima, so that a run at the largest grid
@@ -48,7 +49,7 @@ pub fn threshold(zmin: f64, ztop: f64) -> f64 {
 }
 
 /// The height field.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct ZMap {
     /// The cell layout.
     pub grid: Grid,
@@ -67,15 +68,48 @@ pub struct ZMap {
     cmax: Vec<f32>,
     bmax: Vec<f32>,
     nc: usize,
-    /// Threads a move's rows may be split between (1 or 2; bands.rs).
+    /// Threads the moves of [`Self::cut_queued`] are cut by (1 or 2;
+    /// pipe.rs).
     pub threads: usize,
-    /// Cells from which a move is split ([`SPLIT_CELLS`]; the tests
-    /// split every move).
-    split_cells: usize,
+    /// The queue's length in moves ([`QUEUE`]; the tests make it short).
+    pub queue: usize,
     /// The bands of the move being cut.
     todo: Vec<Todo>,
-    /// The thread that shares a big move's bands.
-    helper: LazyHelper,
+    /// The material removed so far by [`Self::cut_queued`] and
+    /// [`Self::add_removed`], mm³, in program order.
+    total: Cell<f64>,
+    /// The worker that owns the odd bands, once a move was queued.
+    pipe: Option<Box<Pipe>>,
+}
+
+impl Clone for ZMap {
+    /// The heights after every queued move; the copy starts its own
+    /// worker when it queues a move.
+    fn clone(&self) -> ZMap {
+        self.settle();
+        ZMap {
+            grid: self.grid,
+            zmin: self.zmin,
+            ztop: self.ztop,
+            tol: self.tol,
+            h: self.h.clone(),
+            cmax: self.cmax.clone(),
+            bmax: self.bmax.clone(),
+            nc: self.nc,
+            threads: self.threads,
+            queue: self.queue,
+            todo: Vec::new(),
+            total: self.total.clone(),
+            pipe: None,
+        }
+    }
+}
+
+impl Drop for ZMap {
+    /// The worker is stopped before the arrays it cuts are freed.
+    fn drop(&mut self) {
+        self.pipe = None;
+    }
 }
 
 /// What one move does to the stock.
@@ -134,9 +168,10 @@ impl ZMap {
             bmax: vec![max[2] as f32; nc * ny.div_ceil(BLOCK)],
             nc,
             threads: default_threads(),
-            split_cells: SPLIT_CELLS,
+            queue: QUEUE,
             todo: Vec::new(),
-            helper: LazyHelper::default(),
+            total: Cell::new(0.0),
+            pipe: None,
         })
     }
 
@@ -151,11 +186,67 @@ impl ZMap {
     /// Height of cell (i, j).
     #[inline]
     pub fn at(&self, i: usize, j: usize) -> f64 {
+        self.settle();
         self.h[j * self.grid.nx + i] as f64
+    }
+
+    /// Waits for the queued moves to be cut (by both threads; their
+    /// volumes added to [`Self::removed`]): every read of the heights and
+    /// every move not queued does so first. `h` may be read directly only
+    /// after it.
+    #[inline]
+    pub fn settle(&self) {
+        if let Some(p) = &self.pipe {
+            p.settle(&self.total);
+        }
+    }
+
+    /// The material removed by the moves queued and those added, mm³
+    /// (after every queued move).
+    pub fn removed(&self) -> f64 {
+        self.settle();
+        self.total.get()
+    }
+
+    /// Adds a move's removed volume to [`Self::removed`] (a move cut
+    /// with [`Self::cut`]), after the queued moves'.
+    pub fn add_removed(&mut self, v: f64) {
+        self.settle();
+        self.total.set(self.total.get() + v);
+    }
+
+    /// Cuts the move `s` of `tool` (which has no shank or holder, and
+    /// whose move is no event: the old heights are not kept), adding its
+    /// volume to [`Self::removed`]; with two threads the caller's bands
+    /// are cut now and the worker's later (pipe.rs).
+    pub fn cut_queued(&mut self, tool: &MillTool, s: &Sweep) {
+        if self.threads > 1 && self.pipe.is_none() {
+            let raw = Raw::of(
+                self.grid,
+                self.nc,
+                [&mut self.h, &mut self.cmax, &mut self.bmax],
+            );
+            let zt = (self.zmin, self.tol);
+            self.pipe = Pipe::start(raw, zt, self.grid.cell_area(), self.queue).map(Box::new);
+        }
+        match &mut self.pipe {
+            Some(p) if self.threads > 1 => p.cut(tool, s, &self.total),
+            _ => {
+                let c = self.cut(tool, s, true, None);
+                self.add_removed(c.removed);
+            }
+        }
+    }
+
+    /// The worker, if started (tests).
+    #[cfg(test)]
+    pub(crate) fn pipe_mut(&mut self) -> Option<&mut Pipe> {
+        self.pipe.as_deref_mut()
     }
 
     /// Material left, mm³.
     pub fn volume(&self) -> f64 {
+        self.settle();
         let s: f64 = self
             .h
             .iter()
@@ -175,29 +266,20 @@ impl ZMap {
         write: bool,
         undo: Option<&mut Vec<(u32, f32)>>,
     ) -> Cut {
+        self.settle();
         let (zmin, tol) = (self.zmin, self.tol);
         let mut pass = Pass::new(tool, s, (zmin, tol), write, undo);
         let scan = Scan::new(tool, s, &pass);
         let grid = self.grid;
-        let Some(((i0, i1), (j0, j1))) = grid.bounds(s, scan.reach) else {
+        let Some((cols, rows)) = grid.bounds(s, scan.reach) else {
             return Cut::default();
         };
-        // A band whose squares over the capsule's columns are all at or
-        // below its lowest floor (that of its row nearest the move's Y
-        // range) cannot change.
         self.todo.clear();
-        for bj in j0 / BLOCK..=j1 / BLOCK {
-            let rows = ((bj * BLOCK).max(j0), (bj * BLOCK + BLOCK - 1).min(j1));
-            let low = scan.floor(grid.centre(0, rows.0).1, grid.centre(0, rows.1).1);
-            let squares = &self.bmax[bj * self.nc..][i0 / CHUNK..=i1 / CHUNK];
-            if !squares.iter().all(|&m| m <= low) {
-                self.todo.push((bj, rows.0, rows.1));
-            }
+        for bj in rows.0 / BLOCK..=rows.1 / BLOCK {
+            let squares = &self.bmax[bj * self.nc..][..self.nc];
+            self.todo
+                .extend(band_rows(&grid, &scan, squares, bj, cols, rows));
         }
-        let cells = self.todo.len() * BLOCK * (i1 - i0 + 1);
-        let split = self.threads > 1
-            && cells >= self.split_cells
-            && !matches!(pass.kernel, Kernel::LevelFlat(_));
         let part = Cells {
             grid,
             nc: self.nc,
@@ -206,8 +288,7 @@ impl ZMap {
             cmax: &mut self.cmax,
             bmax: &mut self.bmax,
         };
-        let helper = if split { self.helper.get() } else { None };
-        let (removed, holder) = bands::run(part, &mut pass, tool, &scan, &self.todo, helper);
+        let (removed, holder) = bands::run(part, &mut pass, &scan, &self.todo);
         let a = grid.cell_area();
         Cut {
             removed: removed * a,
@@ -217,6 +298,7 @@ impl ZMap {
 
     /// Puts back the heights a [`Self::cut`] changed.
     pub fn restore(&mut self, undo: &mut Vec<(u32, f32)>) {
+        self.settle();
         for &(i, z) in undo.iter().rev() {
             let i = i as usize;
             self.h[i] = z;
@@ -235,15 +317,14 @@ impl ZMap {
     }
 }
 
-/// Threads a move's bands may be shared between: `KERF_SIM_THREADS` (1
-/// or 2) if set, else 1. The helper is kept for the run and claims bands
-/// as it gets time (helper.rs), but on the shared 2-core machine it gave
-/// no run that was reliably shorter (docs/benchmarks.md), so it is asked
-/// for, not assumed.
+/// Threads the queued moves are cut by: `KERF_SIM_THREADS` (1 or 2) if
+/// set, else 2 where the machine has two cores or more.
 fn default_threads() -> usize {
     let env = std::env::var("KERF_SIM_THREADS").ok();
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     env.and_then(|v| v.trim().parse::<usize>().ok())
-        .map_or(1, |n| n.clamp(1, 2))
+        .map_or(cores, |n| n)
+        .clamp(1, 2)
 }
 
 /// A `--sim-res` refused.
@@ -327,38 +408,40 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(60))]
-        /// Random moves of any tool, with a shank and holder or without,
-        /// every one without old heights kept shared with the helper
-        /// thread band by band: the same heights, bit for bit, and the
-        /// same removed and holder volumes as on one thread (a move whose
-        /// old heights are kept stays on one thread).
+        /// Random moves of any tool without shank or holder queued (the
+        /// odd bands cut by the worker, with a queue of 1 to 8 moves), some
+        /// with a move cut at once in between (a barrier, its old heights
+        /// kept): the same heights, run and square maxima, bit for bit,
+        /// and the same removed volume as on one thread.
         #[test]
         fn two_threads_give_what_one_gives(
             kind in 0u8..4,
             r in 0.4f64..4.0,
-            guarded in any::<bool>(),
-            moves in prop::collection::vec((a_move(), any::<bool>()), 1..6),
+            queue in 1usize..9,
+            moves in prop::collection::vec((a_move(), any::<bool>()), 1..12),
         ) {
             let mut one = ZMap::new([0.0, 0.0, -5.0], [20.0, 15.0, 0.0], 0.1).unwrap();
             one.threads = 1;
             let mut two = one.clone();
-            (two.threads, two.split_cells) = (2, 0);
-            let mut t = tool(kind, r);
-            if guarded {
-                (t.flute_length, t.holder) = (1.5, vec![(r + 1.0, 2.0)]);
-            }
-            for &((a, b), keep) in &moves {
+            (two.threads, two.queue) = (2, queue);
+            let t = tool(kind, r);
+            for &((a, b), barrier) in &moves {
                 let s = Sweep::new(a, b);
-                let (mut u1, mut u2) = (Vec::new(), Vec::new());
-                let (c1, c2) = if keep {
-                    (one.cut(&t, &s, true, Some(&mut u1)), two.cut(&t, &s, true, Some(&mut u2)))
+                if barrier {
+                    let (mut u1, mut u2) = (Vec::new(), Vec::new());
+                    let c1 = one.cut(&t, &s, true, Some(&mut u1));
+                    let c2 = two.cut(&t, &s, true, Some(&mut u2));
+                    prop_assert_eq!(c1, c2);
+                    prop_assert_eq!(&u1, &u2);
+                    one.add_removed(c1.removed);
+                    two.add_removed(c2.removed);
                 } else {
-                    (one.cut(&t, &s, true, None), two.cut(&t, &s, true, None))
-                };
-                prop_assert_eq!(c1, c2);
-                prop_assert_eq!(&u1, &u2);
-                prop_assert!(one.h == two.h && one.cmax == two.cmax && one.bmax == two.bmax);
+                    one.cut_queued(&t, &s);
+                    two.cut_queued(&t, &s);
+                }
             }
+            prop_assert_eq!(one.removed().to_bits(), two.removed().to_bits());
+            prop_assert!(one.h == two.h && one.cmax == two.cmax && one.bmax == two.bmax);
         }
     }
 
