@@ -928,13 +928,22 @@ pub fn plain_number(t: &[u8], s: usize, max: usize) -> Option<(Num, usize)> {
 /// [`plain_number`] is this with the value worked out.
 #[inline(always)]
 pub fn plain_digits(t: &[u8], s: usize, max: usize) -> Option<PlainDigits> {
+    let mut i = s;
+    let mut mant: u64 = 0;
     // Wrapping: a run long enough to overflow is past the digit limit and
     // refused below.
-    let (mut mant, mut i) = digit_run(t, s, 0);
+    while let Some(d) = t.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d < 10) {
+        mant = mant.wrapping_mul(10).wrapping_add(d as u64);
+        i += 1;
+    }
     let int_end = i;
     let point = t.get(i) == Some(&b'.');
     if point {
-        (mant, i) = digit_run(t, i + 1, mant);
+        i += 1;
+        while let Some(d) = t.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d < 10) {
+            mant = mant.wrapping_mul(10).wrapping_add(d as u64);
+            i += 1;
+        }
     }
     let frac = i - int_end - point as usize;
     let digits = int_end - s + frac;
@@ -959,73 +968,6 @@ pub fn plain_digits(t: &[u8], s: usize, max: usize) -> Option<PlainDigits> {
         count: digits,
         end: j,
     })
-}
-
-/// Powers of ten for a run of up to eight digits.
-const POW10_U: [u64; 9] = [
-    1,
-    10,
-    100,
-    1_000,
-    10_000,
-    100_000,
-    1_000_000,
-    10_000_000,
-    100_000_000,
-];
-
-/// The eight bytes of `t` from `i` as a little-endian word, the bytes
-/// past the end of `t` zero (not digits); None for a `t` shorter than
-/// eight bytes.
-#[inline(always)]
-fn load8(t: &[u8], i: usize) -> Option<u64> {
-    if let Some(w) = t.get(i..i + 8) {
-        return Some(u64::from_le_bytes(w.try_into().ok()?));
-    }
-    let last = t.get(t.len().checked_sub(8)?..)?;
-    let w = u64::from_le_bytes(last.try_into().ok()?);
-    // Bytes i.. are the top of `last`: shift them down, zeros above.
-    let shift = (i + 8 - t.len()) * 8;
-    Some(if shift >= 64 { 0 } else { w >> shift })
-}
-
-/// The value of eight digit values (0-9 in each byte, the first digit in
-/// the lowest byte).
-#[inline(always)]
-fn eight_digits(d: u64) -> u64 {
-    let v = d.wrapping_mul(10 * 256 + 1) >> 8;
-    let v = (v & 0x00FF_00FF_00FF_00FF).wrapping_mul(100 * 65_536 + 1) >> 16;
-    (v & 0x0000_FFFF_0000_FFFF).wrapping_mul(10_000 * (1 << 32) + 1) >> 32
-}
-
-/// The run of ASCII digits at `i` in `t` appended to `mant` (wrapping):
-/// the new value and the index after the run. Reads eight bytes at a
-/// time (the digits found by their nibbles: high 3, low at most 9);
-/// the same as a loop over the bytes (`mant * 10 + digit` each).
-#[inline(always)]
-fn digit_run(t: &[u8], mut i: usize, mut mant: u64) -> (u64, usize) {
-    const LO: u64 = 0x0F0F_0F0F_0F0F_0F0F;
-    loop {
-        let Some(w) = load8(t, i) else {
-            while let Some(d) = t.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d < 10) {
-                mant = mant.wrapping_mul(10).wrapping_add(d as u64);
-                i += 1;
-            }
-            return (mant, i);
-        };
-        let bad = ((w & !LO) ^ 0x3030_3030_3030_3030)
-            | (((w & LO) + 0x0606_0606_0606_0606) & 0x1010_1010_1010_1010);
-        let n = (bad.trailing_zeros() / 8) as usize;
-        if n > 0 {
-            // The run's n digits moved to the top bytes: leading zeros.
-            let d = (w & LO) << (64 - 8 * n as u32);
-            mant = mant.wrapping_mul(POW10_U[n]).wrapping_add(eight_digits(d));
-        }
-        i += n;
-        if n < 8 {
-            return (mant, i);
-        }
-    }
 }
 
 const POW10: [f64; 19] = [
@@ -1064,58 +1006,6 @@ pub fn loop_command(text: &[u8]) -> Option<LoopCmd> {
 
 #[cfg(test)]
 mod tests {
-
-    /// The digit run read byte by byte.
-    fn digit_run_bytes(t: &[u8], mut i: usize, mut mant: u64) -> (u64, usize) {
-        while let Some(d) = t.get(i).map(|c| c.wrapping_sub(b'0')).filter(|d| *d < 10) {
-            mant = mant.wrapping_mul(10).wrapping_add(d as u64);
-            i += 1;
-        }
-        (mant, i)
-    }
-
-    #[test]
-    fn the_eight_byte_digit_run_is_the_byte_loop() {
-        // Every byte next to digits: the ones around '0'..'9' in the
-        // nibble test (/, :, ?, 0x39+0x10, 0x29...) and ordinary text.
-        let alphabet = b"0123456789./:?I)9 \t\x00\xb0\xb9\x3a\x29X-";
-        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
-        let mut t = Vec::new();
-        for _ in 0..20_000 {
-            t.clear();
-            let len = (next() % 30) as usize;
-            let digits_only = next() % 3 == 0;
-            for _ in 0..len {
-                let r = next() as usize;
-                t.push(if digits_only && r % 5 != 0 {
-                    b'0' + (r % 10) as u8
-                } else {
-                    alphabet[r % alphabet.len()]
-                });
-            }
-            for i in 0..=t.len() {
-                let m = next() % 1000;
-                assert_eq!(
-                    digit_run(&t, i, m),
-                    digit_run_bytes(&t, i, m),
-                    "{t:?} at {i}"
-                );
-            }
-        }
-        // Runs longer than eight, the digit values at both ends.
-        let t = b"1234567890123456789 99999999.00000000";
-        for i in 0..t.len() {
-            assert_eq!(digit_run(t, i, 0), digit_run_bytes(t, i, 0));
-        }
-        assert_eq!(digit_run(b"X00000009", 1, 0), (9, 9));
-        assert_eq!(digit_run(b"99999999", 0, 7), (799_999_999, 8));
-    }
     use super::*;
     use proptest::prelude::*;
 
