@@ -293,3 +293,105 @@ fn work(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::letter_bit;
+    use std::io::Cursor;
+
+    const SPEC: ScanSpec = ScanSpec {
+        max_digits: 12,
+        allowed: letter_bit(b'G') | letter_bit(b'X') | letter_bit(b'Y'),
+    };
+
+    fn source(text: &str, ahead: bool) -> LineSource {
+        let mut s = LineSource::new(Box::new(Cursor::new(text.as_bytes().to_vec())), 16, true);
+        if ahead {
+            s.read_ahead(SPEC).unwrap();
+            assert!(s.reads_ahead());
+        }
+        s
+    }
+
+    /// Reads `n` blocks (or to the end) and notes each, then the end.
+    fn read(s: &mut LineSource, n: usize, out: &mut Vec<String>) {
+        let mut raw = RawBlock::default();
+        for _ in 0..n {
+            match s.next_block(&mut raw) {
+                Ok(true) => out.push(format!(
+                    "{:?} {:?} {:?} {} -> {:?}",
+                    String::from_utf8_lossy(&raw.text),
+                    raw.mark,
+                    raw.continuations,
+                    raw.overlong,
+                    s.tell()
+                )),
+                Ok(false) => {
+                    out.push(format!("end at {:?}", s.tell()));
+                    return;
+                }
+                Err(e) => out.push(format!("error {e}")),
+            }
+        }
+    }
+
+    /// The same reads and seeks on a source read here and one read ahead.
+    fn both(text: &str, plan: &[(usize, Option<usize>)]) {
+        let run = |ahead| {
+            let mut s = source(text, ahead);
+            let mut out = Vec::new();
+            let mut marks = vec![s.tell()];
+            for &(n, seek) in plan {
+                read(&mut s, n, &mut out);
+                marks.push(s.tell());
+                if let Some(k) = seek {
+                    s.seek(marks[k % marks.len()]).unwrap();
+                }
+            }
+            out
+        };
+        assert_eq!(run(false), run(true), "{text:?} {plan:?}");
+    }
+
+    #[test]
+    fn reads_and_seeks_as_the_source_itself() {
+        let long: String = (0..3000).map(|i| format!("G01 X{i} Y-{i}.5\n")).collect();
+        // Forward, back to the start, to remembered marks (one of them
+        // the end, after reading past it), over batch boundaries, and a
+        // seek to where the source already is.
+        let plan = [
+            (5, Some(0)),
+            (700, Some(1)),
+            (3, Some(2)),
+            (5000, Some(1)),
+            (2, Some(3)),
+            (10, None),
+            (1, Some(5)),
+            (4000, Some(0)),
+            (3, None),
+        ];
+        both(&long, &plan);
+        // Continuation lines, an over-long line, CR LF, no final newline.
+        let odd = "G01 X1 \\\n Y2\r\nX123456789012345678901\n(NOTE)\nG00 X1 \\\nY3";
+        both(odd, &plan);
+        both("", &plan);
+    }
+
+    #[test]
+    fn the_scan_comes_with_the_block() {
+        let mut s = source("G01 X1.5 Y2\nG01 X1 (C)\nZ1\n", true);
+        let mut raw = RawBlock::default();
+        s.next_block(&mut raw).unwrap();
+        assert!(matches!(raw.scan, PlainScan::Words { n: 3, .. }));
+        s.next_block(&mut raw).unwrap();
+        assert_eq!(raw.scan, PlainScan::No);
+        // Z is not in the spec's letters.
+        s.next_block(&mut raw).unwrap();
+        assert_eq!(raw.scan, PlainScan::No);
+        // Read here, nothing is scanned.
+        let mut here = source("G01 X1.5\n", false);
+        here.next_block(&mut raw).unwrap();
+        assert_eq!(raw.scan, PlainScan::Unknown);
+    }
+}
