@@ -7,6 +7,9 @@
 //! - `interp`: the interpreter through its library API, every canonical
 //!   command taken in batches of 512 from `step_into()`, as the runner's
 //!   interpreter thread takes them, and dropped (no output sinks);
+//! - `interp_ahead`: the same with the main program read ahead
+//!   (`Interp::set_read_ahead`: the lines read and scanned on a second
+//!   thread), and its ratio to `interp`;
 //!
 //! - `macro`: a custom-macro program generated in memory (a WHILE loop of
 //!   `KERF_BENCH_MACRO_ITERS` inner iterations, default 1 000 000, with
@@ -70,9 +73,15 @@ fn parse_only(path: &PathBuf) -> Sample {
     }
 }
 
-fn interp(path: &PathBuf, machine: &str) -> Sample {
+fn interp(path: &PathBuf, machine: &str, ahead: bool) -> Sample {
     let f = File::open(path).expect("open input");
-    run_reader(Box::new(f), &path.display().to_string(), machine, None)
+    run_reader(
+        Box::new(f),
+        &path.display().to_string(),
+        machine,
+        None,
+        ahead,
+    )
 }
 
 /// The program text with `G41 D1` after its first rapid (a line starting
@@ -95,11 +104,13 @@ fn run_reader(
     name: &str,
     machine: &str,
     d1: Option<f64>,
+    ahead: bool,
 ) -> Sample {
     let profile =
         Profile::builtin(machine).unwrap_or_else(|| panic!("no built-in machine {machine}"));
     let t = Instant::now();
     let mut it = Interp::new(profile, Settings::default());
+    it.set_read_ahead(ahead);
     if let Some(v) = d1 {
         if let Some(d) = it.offsets_mut().d_mut(1) {
             d.geom = v;
@@ -265,6 +276,13 @@ fn median(mut v: Vec<Sample>) -> Sample {
     v.swap_remove(n / 2)
 }
 
+/// The median run's blocks/s.
+fn rate(runs: &[Sample]) -> f64 {
+    let mut v: Vec<f64> = runs.iter().map(|s| s.blocks as f64 / s.secs).collect();
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
 fn report(what: &str, runs: Vec<Sample>, bytes: u64) {
     let all: Vec<String> = runs.iter().map(|s| format!("{:.3}", s.secs)).collect();
     let m = median(runs);
@@ -276,7 +294,7 @@ fn report(what: &str, runs: Vec<Sample>, bytes: u64) {
         "     n/a MB/s".into()
     };
     println!(
-        "{what:<7} median {:>7.3} s  {:>10} blocks  {:>12.0} blocks/s  {mbps}   (runs: {})",
+        "{what:<12} median {:>7.3} s  {:>10} blocks  {:>12.0} blocks/s  {mbps}   (runs: {})",
         m.secs,
         m.blocks,
         bps,
@@ -351,12 +369,19 @@ fn main() {
             bytes,
         );
     }
+    let mut single = None;
     if want("interp") {
-        report(
-            "interp",
-            (0..runs).map(|_| interp(&path, &machine)).collect(),
-            bytes,
-        );
+        let r: Vec<Sample> = (0..runs).map(|_| interp(&path, &machine, false)).collect();
+        single = Some(rate(&r));
+        report("interp", r, bytes);
+    }
+    if want("interp_ahead") {
+        let r: Vec<Sample> = (0..runs).map(|_| interp(&path, &machine, true)).collect();
+        let ahead = rate(&r);
+        report("interp_ahead", r, bytes);
+        if let Some(one) = single {
+            println!("        read ahead / one thread: {:.2}x", ahead / one);
+        }
     }
     if want("comp") {
         let d: f64 = std::env::var("KERF_BENCH_COMP_D")
@@ -371,6 +396,7 @@ fn main() {
                 "mem",
                 &machine,
                 d1,
+                false,
             )
         };
         let a: Vec<Sample> = (0..runs).map(|_| mem(&plain, None)).collect();

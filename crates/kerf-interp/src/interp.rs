@@ -177,6 +177,9 @@ pub struct Interp {
     /// Plain blocks take the direct path (interp/plain.rs); off only to
     /// show that both paths give the same results.
     plain_path: bool,
+    /// The main program is read and scanned on a thread of its own
+    /// (kerf-lang's `LineSource::read_ahead`).
+    read_ahead: bool,
 }
 
 type R<T> = Result<T, Alarm>;
@@ -219,6 +222,7 @@ impl Interp {
             hurco,
             quiet_walk: true,
             plain_path: true,
+            read_ahead: false,
         }
     }
 
@@ -236,12 +240,27 @@ impl Interp {
         self.plain_path = on;
     }
 
+    /// Reads the main programs loaded from now on ahead of their
+    /// execution, on a thread of their own (off by default): the reading
+    /// of each line and the plain-block scan move off the interpreter's
+    /// thread; every step, event, end and alarm is the same.
+    pub fn set_read_ahead(&mut self, on: bool) {
+        self.read_ahead = on;
+    }
+
     /// Loads the main program from a reader; `name` is used in source
     /// references and messages.
     pub fn load_main(&mut self, name: &str, reader: Box<dyn ProgramRead>) {
         let max = self.cfg.profile.max_block_chars;
         let hurco = self.cfg.dialect.hurco_syntax;
         self.prog.load(name, reader, max, hurco);
+        if self.read_ahead {
+            let spec = self.plain_scan_spec();
+            if let Some(src) = self.prog.src.as_mut() {
+                // Not started (no thread to be had): read here.
+                let _ = src.read_ahead(spec);
+            }
+        }
         self.calls_main_loaded();
     }
 

@@ -12,17 +12,19 @@
 //! [`plain_words`] recognises a block made only of simple number words and
 //! reads it in one pass, with the words [`parse_block`] would give.
 
+pub mod ahead;
 pub mod block;
 pub mod parse;
 pub mod plain;
 pub mod source;
 
+pub use ahead::ScanSpec;
 pub use block::{Addr, BinOp, Block, Expr, ExprId, Func, LoopCmd, Num, Stmt, Val, Word};
 pub use parse::{
     is_blank, loop_command, parse_block, parse_block_general, plain_digits, plain_number, LexError,
     LexErrorKind, LexOptions, PlainDigits,
 };
-pub use plain::{letter_bit, plain_words, PlainWord};
+pub use plain::{letter_bit, plain_words, PlainScan, PlainWord, SCAN_WORDS};
 pub use source::{ends_with_backslash, LineSource, Mark, ProgramRead, RawBlock};
 
 #[cfg(test)]

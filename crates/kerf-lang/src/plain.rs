@@ -82,6 +82,78 @@ pub fn plain_words(
     seen != 0
 }
 
+/// Words a [`PlainScan`] holds at most (a plain block has each letter
+/// once; the interpreter's plain blocks have at most five).
+pub const SCAN_WORDS: usize = 6;
+
+/// A block's text scanned ahead of its execution (by the read-ahead
+/// thread, `crate::source::LineSource::read_ahead`): what [`plain_words`]
+/// with every word taken said of it.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum PlainScan {
+    /// Not scanned (or more than [`SCAN_WORDS`] words): scan the text.
+    #[default]
+    Unknown,
+    /// Not a plain block.
+    No,
+    /// A plain block: its first `n` words, in the order written.
+    Words {
+        n: u8,
+        words: [PlainWord; SCAN_WORDS],
+    },
+}
+
+impl PlainScan {
+    /// `text` scanned as [`plain_words`] would with `max_digits` and
+    /// `allowed`, every word kept.
+    pub fn of(text: &[u8], max_digits: u8, allowed: u32) -> PlainScan {
+        let none = PlainWord {
+            letter: 0,
+            num: Num {
+                value: 0.0,
+                point: false,
+                digits: 0,
+            },
+            at: 0,
+        };
+        let mut words = [none; SCAN_WORDS];
+        let (mut n, mut room) = (0usize, true);
+        let plain = plain_words(text, max_digits, allowed, |w| {
+            if n == SCAN_WORDS {
+                room = false;
+                return false;
+            }
+            words[n] = w;
+            n += 1;
+            true
+        });
+        match (room, plain) {
+            (false, _) => PlainScan::Unknown,
+            (true, false) => PlainScan::No,
+            (true, true) => PlainScan::Words { n: n as u8, words },
+        }
+    }
+
+    /// What [`plain_words`] over the scanned text with the scan's
+    /// `max_digits` and `allowed` returns, `each` called on the same
+    /// words in the same order; `text` is read only when the scan is
+    /// [`PlainScan::Unknown`].
+    #[inline]
+    pub fn words(
+        &self,
+        text: &[u8],
+        max_digits: u8,
+        allowed: u32,
+        mut each: impl FnMut(PlainWord) -> bool,
+    ) -> bool {
+        match self {
+            PlainScan::Unknown => plain_words(text, max_digits, allowed, each),
+            PlainScan::No => false,
+            PlainScan::Words { n, words } => words[..*n as usize].iter().all(|&w| each(w)),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -158,5 +230,33 @@ mod tests {
         assert_eq!(scan("A1 N1", u32::MAX), None);
         // The caller may refuse a word.
         assert!(!plain_words(b"X1 Y2", 12, XYZ, |w| w.letter != b'Y'));
+    }
+
+    #[test]
+    fn a_scan_ahead_gives_what_the_scanner_gives() {
+        let all = |t: &str| {
+            let mut out = Vec::new();
+            let scan = PlainScan::of(t.as_bytes(), 12, GXYZF);
+            let plain = scan.words(b"not read", 12, GXYZF, |w| {
+                out.push(w);
+                true
+            });
+            (scan, plain, out)
+        };
+        let (scan, plain, out) = all("G01 X6.7292 Y0 Z-4.5");
+        assert!(plain && matches!(scan, PlainScan::Words { n: 4, .. }));
+        assert_eq!(out[3].at, 15);
+        assert_eq!(out[3].num.value, -4.5);
+        let (scan, plain, out) = all("G01 X1 (c)");
+        assert_eq!((scan, plain, out.len()), (PlainScan::No, false, 0));
+        // Six words fit, a seventh does not: the text is scanned again.
+        let six = PlainScan::of(b"A1 B1 C1 D1 E1 F1", 12, u32::MAX);
+        assert!(matches!(six, PlainScan::Words { n: 6, .. }));
+        let seven = PlainScan::of(b"A1 B1 C1 D1 E1 F1 G1", 12, u32::MAX);
+        assert_eq!(seven, PlainScan::Unknown);
+        assert!(seven.words(b"A1 B1 C1 D1 E1 F1 G1", 12, u32::MAX, |_| true));
+        // The caller may refuse a scanned word.
+        let s = PlainScan::of(b"X1 Y2", 12, XYZ);
+        assert!(!s.words(b"", 12, XYZ, |w| w.letter != b'Y'));
     }
 }

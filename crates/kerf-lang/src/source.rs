@@ -5,6 +5,9 @@
 
 use std::io::{self, BufRead, BufReader, Read, Seek, SeekFrom};
 
+use crate::ahead::{ReadAhead, ScanSpec};
+use crate::plain::PlainScan;
+
 /// Anything a program can be read from (`Send`, so that an interpreter
 /// can run on a thread of its own).
 pub trait ProgramRead: Read + Seek + Send {}
@@ -32,6 +35,9 @@ pub struct RawBlock {
     /// True when the block was longer than the reader's limit; `text` then
     /// holds only the first `max_len` bytes.
     pub overlong: bool,
+    /// The plain-block scan of `text` made by a read-ahead thread
+    /// ([`LineSource::read_ahead`]); [`PlainScan::Unknown`] otherwise.
+    pub scan: PlainScan,
 }
 
 impl RawBlock {
@@ -41,6 +47,7 @@ impl RawBlock {
         self.mark = other.mark;
         self.continuations.clone_from(&other.continuations);
         self.overlong = other.overlong;
+        self.scan = other.scan;
     }
 
     /// Maps a byte index of `text` to (line, 1-based column).
@@ -68,6 +75,8 @@ pub struct LineSource {
     /// Where the underlying reader is (`offset` may differ after a
     /// [`LineSource::seek`] until the next read).
     phys: u64,
+    /// The reading done on another thread ([`LineSource::read_ahead`]).
+    ahead: Option<Box<ReadAhead>>,
 }
 
 impl LineSource {
@@ -75,15 +84,54 @@ impl LineSource {
     /// blocks are flagged, not stored); `continuation` enables the Hurco
     /// trailing-backslash line continuation.
     pub fn new(r: Box<dyn ProgramRead>, max_len: usize, continuation: bool) -> LineSource {
+        LineSource::with_buffer(r, 64 * 1024, max_len, continuation)
+    }
+
+    /// [`LineSource::new`] with a read buffer of `cap` bytes.
+    fn with_buffer(
+        r: Box<dyn ProgramRead>,
+        cap: usize,
+        max_len: usize,
+        continuation: bool,
+    ) -> LineSource {
         LineSource {
-            inner: BufReader::with_capacity(64 * 1024, r),
+            inner: BufReader::with_capacity(cap, r),
             offset: 0,
             line: 0,
             max_len,
             continuation,
             eof: false,
             phys: 0,
+            ahead: None,
         }
+    }
+
+    /// Moves the reading to a thread of its own, which reads ahead of
+    /// the caller from the current position and scans every block for
+    /// the plain-block path as `spec` says (the scan is in each block's
+    /// [`RawBlock::scan`]). Every read gives what it gives without (the
+    /// same blocks, marks, ends and errors, after any seek); see
+    /// `ahead.rs`. Does nothing if the source already reads ahead; an
+    /// error (the thread could not be started) leaves it reading on the
+    /// caller's thread.
+    pub fn read_ahead(&mut self, spec: ScanSpec) -> io::Result<()> {
+        if self.ahead.is_some() {
+            return Ok(());
+        }
+        let mut a = ReadAhead::spawn(spec)?;
+        // The source moves to the thread; this one keeps its position.
+        let none: Box<dyn ProgramRead> = Box::new(io::Cursor::new(Vec::new()));
+        let mut src = LineSource::with_buffer(none, 0, self.max_len, self.continuation);
+        std::mem::swap(self, &mut src);
+        (self.offset, self.line) = (src.offset, src.line);
+        a.give(src);
+        self.ahead = Some(Box::new(a));
+        Ok(())
+    }
+
+    /// Whether the source reads ahead on a thread of its own.
+    pub fn reads_ahead(&self) -> bool {
+        self.ahead.is_some()
     }
 
     /// The position of the next line to be read.
@@ -164,6 +212,21 @@ impl LineSource {
 
     /// Reads the next logical block into `raw`. Returns false at end of text.
     pub fn next_block(&mut self, raw: &mut RawBlock) -> io::Result<bool> {
+        if let Some(a) = self.ahead.as_mut() {
+            let pos = Mark {
+                offset: self.offset,
+                line: self.line + 1,
+            };
+            return match a.next_block(pos, raw)? {
+                Some(next) => {
+                    self.offset = next.offset;
+                    self.line = next.line - 1;
+                    Ok(true)
+                }
+                None => Ok(false),
+            };
+        }
+        raw.scan = PlainScan::Unknown;
         raw.text.clear();
         raw.continuations.clear();
         raw.overlong = false;

@@ -27,7 +27,7 @@
 //! with the path on and off (`Interp::set_plain_path`) and compares
 //! every step.
 
-use kerf_lang::{letter_bit, plain_words, PlainWord};
+use kerf_lang::{letter_bit, PlainWord, ScanSpec};
 
 use super::*;
 
@@ -45,6 +45,16 @@ struct Plain {
 }
 
 impl Interp {
+    /// What a read-ahead thread scans each block for: the plain path's
+    /// letters and the parser's digit limit, as [`Interp::plain_block`]
+    /// reads them.
+    pub(super) fn plain_scan_spec(&self) -> ScanSpec {
+        ScanSpec {
+            max_digits: self.cfg.lex.max_digits,
+            allowed: PLAIN_LETTERS,
+        }
+    }
+
     /// Whether a block read now may take the plain path: the path is on,
     /// the control allows it, and nothing is in force that a plain block
     /// would pass through (see the module documentation).
@@ -105,7 +115,11 @@ impl Interp {
             *slot = Some(wv);
             true
         };
-        if !plain_words(&raw.text, self.cfg.lex.max_digits, PLAIN_LETTERS, each) {
+        // Scanned ahead by the read-ahead thread, or here.
+        if !raw
+            .scan
+            .words(&raw.text, self.cfg.lex.max_digits, PLAIN_LETTERS, each)
+        {
             return None;
         }
         // The motion in force after the block: rapid or linear only.
