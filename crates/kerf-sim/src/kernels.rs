@@ -82,6 +82,8 @@ pub struct Pass<'a> {
     /// Σ (old - new) of the cutting part and of the guards, mm.
     pub removed: f64,
     pub holder: f64,
+    /// The CPU has AVX2 and FMA (looked up once a move).
+    simd: bool,
 }
 
 impl<'a> Pass<'a> {
@@ -124,6 +126,7 @@ impl<'a> Pass<'a> {
             undo,
             removed: 0.0,
             holder: 0.0,
+            simd: crate::ball_row::simd(),
         }
     }
 
@@ -135,7 +138,7 @@ impl<'a> Pass<'a> {
         match self.kernel {
             Kernel::LevelFlat(z) if h.len() <= CHUNK && self.undo.is_none() => {
                 #[cfg(target_arch = "x86_64")]
-                let (sum, any) = if crate::ball_row::avx2() {
+                let (sum, any) = if self.simd {
                     // SAFETY: the CPU has AVX2 and FMA (checked at run time).
                     unsafe { level_avx2(h, z, floor, (self.zmin, self.tol), self.write) }
                 } else {
@@ -231,7 +234,7 @@ impl<'a> Pass<'a> {
             });
         }
         #[cfg(target_arch = "x86_64")]
-        let (sum, any) = if crate::ball_row::avx2() {
+        let (sum, any) = if self.simd {
             // SAFETY: the CPU has AVX2 and FMA (checked at run time).
             unsafe { lower_avx2(h, env, floor, (zmin, self.tol), self.write) }
         } else {
