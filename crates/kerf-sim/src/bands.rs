@@ -317,3 +317,37 @@ impl Raw {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_cell_centre_through_u32_is_the_grid_s_centre() {
+        // The grid of surface_1m's stock at 0.05 mm and a skewed one: the
+        // same f64, bit for bit, as Grid::centre's usize conversion.
+        let grids = [
+            Grid {
+                x0: 0.0,
+                y0: 0.0,
+                dx: 0.05,
+                dy: 0.05,
+                nx: 6000,
+                ny: 4000,
+            },
+            Grid {
+                x0: -3.7,
+                y0: 1.0,
+                dx: 0.013,
+                dy: 0.2,
+                nx: 7_000_000,
+                ny: 3,
+            },
+        ];
+        for g in grids {
+            for i in [0, 1, 15, 16, 4095, 5999, 6000, 6_999_999] {
+                assert_eq!(cell_x(&g, i).to_bits(), g.centre(i, 0).0.to_bits(), "{i}");
+            }
+        }
+    }
+}

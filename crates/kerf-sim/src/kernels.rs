@@ -161,7 +161,7 @@ impl<'a> Pass<'a> {
                     (e2 <= r2).then(|| (z + shape.profile(e2.sqrt())).max(zmin))
                 })
             }
-            Kernel::Ball(b) => {
+            Kernel::Ball(ref b) => {
                 let mut env = [0.0; CHUNK];
                 let env = &mut env[..h.len().min(CHUNK)];
                 b.envelope(&b.row(y), x0, dx, env);
@@ -315,7 +315,10 @@ fn lower_body(
 ) -> (f64, bool) {
     let n = h.len().min(CHUNK);
     let h = &mut h[..n];
-    let lim = zmin + tol;
+    // `v > floor` and `old > zmin + tol` as one comparison in f64 (f32 to
+    // f64 is exact and keeps the order): no f32 lanes to widen.
+    let (lim, f) = (zmin + tol, floor as f64);
+    let lim = if f > lim { f } else { lim };
     let mut cut = [0.0f64; CHUNK];
     let mut any = 0u32;
     for k in 0..n {
@@ -323,7 +326,7 @@ fn lower_body(
         let old = v as f64;
         let e = env(k);
         let z = if e > zmin { e } else { zmin };
-        let c = (v > floor) & (old > lim) & (z < old - tol);
+        let c = (old > lim) & (z < old - tol);
         cut[k] = if c { old - z } else { 0.0 };
         if write {
             h[k] = if c { z as f32 } else { v };
