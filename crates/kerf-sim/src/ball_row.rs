@@ -45,6 +45,9 @@ pub struct BallLanes {
     /// none is on the end sphere.
     b0_max: f64,
     b1_min: f64,
+    /// The CPU has AVX2 and FMA ([`avx2`], looked up once a move rather
+    /// than once a run).
+    simd: bool,
 }
 
 /// The terms of one row (constant y).
@@ -91,6 +94,7 @@ impl BallLanes {
             l3_l: l3 / l,
             b0_max: if kappa > 0.0 { kappa * r } else { 0.0 } + B_MARGIN,
             b1_min: 1.0 + if kappa < 0.0 { kappa * r } else { 0.0 } - B_MARGIN,
+            simd: simd(),
         }
     }
 
@@ -114,7 +118,7 @@ impl BallLanes {
         let n = out.len().min(CHUNK);
         let out = &mut out[..n];
         #[cfg(target_arch = "x86_64")]
-        if avx2() {
+        if self.simd {
             // SAFETY: the CPU has AVX2 and FMA (checked at run time).
             unsafe { self.envelope_avx2(row, x0, dx, out) };
             return;
@@ -127,7 +131,12 @@ impl BallLanes {
     /// its rim.
     #[inline]
     pub fn with_slope(&self, y: f64, x: f64) -> Option<(f64, f64)> {
-        let row = self.row(y);
+        self.slope_on(&self.row(y), x)
+    }
+
+    /// [`Self::with_slope`] on a row worked out before ([`Self::row`]).
+    #[inline]
+    pub fn slope_on(&self, row: &LaneRow, x: f64) -> Option<(f64, f64)> {
         let wx = x - self.c0[0];
         let b = wx * self.bx + row.b;
         let e = wx * self.ex + row.e;
@@ -172,7 +181,7 @@ impl BallLanes {
     fn envelope_body(&self, row: &LaneRow, x0: f64, dx: f64, out: &mut [f64]) {
         let n = out.len();
         let wx0 = x0 - self.c0[0];
-        let wxn = wx0 + (n as f64 - 1.0) * dx;
+        let wxn = wx0 + (n as u32 as f64 - 1.0) * dx;
         let (ba, bb) = (wx0 * self.bx + row.b, wxn * self.bx + row.b);
         let (blo, bhi) = if ba < bb { (ba, bb) } else { (bb, ba) };
         let (r2, c0z, dz) = (self.r2, self.c0[2], self.d[2]);
@@ -231,6 +240,15 @@ pub fn floor_between(xa: f64, a: Option<(f64, f64)>, xb: f64, b: Option<(f64, f6
     };
     // The rounding of the two evaluations, with room to spare.
     low - 1e-9 * (1.0 + low.abs())
+}
+
+/// [`avx2`] where it exists, else false.
+#[inline]
+pub fn simd() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    return avx2();
+    #[cfg(not(target_arch = "x86_64"))]
+    false
 }
 
 /// True when the CPU has AVX2 and FMA (checked once).

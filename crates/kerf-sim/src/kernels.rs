@@ -82,6 +82,8 @@ pub struct Pass<'a> {
     /// Σ (old - new) of the cutting part and of the guards, mm.
     pub removed: f64,
     pub holder: f64,
+    /// The CPU has AVX2 and FMA (looked up once a move).
+    simd: bool,
 }
 
 impl<'a> Pass<'a> {
@@ -124,6 +126,7 @@ impl<'a> Pass<'a> {
             undo,
             removed: 0.0,
             holder: 0.0,
+            simd: crate::ball_row::simd(),
         }
     }
 
@@ -135,7 +138,7 @@ impl<'a> Pass<'a> {
         match self.kernel {
             Kernel::LevelFlat(z) if h.len() <= CHUNK && self.undo.is_none() => {
                 #[cfg(target_arch = "x86_64")]
-                let (sum, any) = if crate::ball_row::avx2() {
+                let (sum, any) = if self.simd {
                     // SAFETY: the CPU has AVX2 and FMA (checked at run time).
                     unsafe { level_avx2(h, z, floor, (self.zmin, self.tol), self.write) }
                 } else {
@@ -158,7 +161,7 @@ impl<'a> Pass<'a> {
                     (e2 <= r2).then(|| (z + shape.profile(e2.sqrt())).max(zmin))
                 })
             }
-            Kernel::Ball(b) => {
+            Kernel::Ball(ref b) => {
                 let mut env = [0.0; CHUNK];
                 let env = &mut env[..h.len().min(CHUNK)];
                 b.envelope(&b.row(y), x0, dx, env);
@@ -231,7 +234,7 @@ impl<'a> Pass<'a> {
             });
         }
         #[cfg(target_arch = "x86_64")]
-        let (sum, any) = if crate::ball_row::avx2() {
+        let (sum, any) = if self.simd {
             // SAFETY: the CPU has AVX2 and FMA (checked at run time).
             unsafe { lower_avx2(h, env, floor, (zmin, self.tol), self.write) }
         } else {
@@ -312,7 +315,10 @@ fn lower_body(
 ) -> (f64, bool) {
     let n = h.len().min(CHUNK);
     let h = &mut h[..n];
-    let lim = zmin + tol;
+    // `v > floor` and `old > zmin + tol` as one comparison in f64 (f32 to
+    // f64 is exact and keeps the order): no f32 lanes to widen.
+    let (lim, f) = (zmin + tol, floor as f64);
+    let lim = if f > lim { f } else { lim };
     let mut cut = [0.0f64; CHUNK];
     let mut any = 0u32;
     for k in 0..n {
@@ -320,7 +326,7 @@ fn lower_body(
         let old = v as f64;
         let e = env(k);
         let z = if e > zmin { e } else { zmin };
-        let c = (v > floor) & (old > lim) & (z < old - tol);
+        let c = (old > lim) & (z < old - tol);
         cut[k] = if c { old - z } else { 0.0 };
         if write {
             h[k] = if c { z as f32 } else { v };
