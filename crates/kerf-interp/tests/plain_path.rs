@@ -11,6 +11,9 @@
 use kerf_interp::{Filled, Interp, Profile, Settings, Step};
 use proptest::prelude::*;
 
+mod common;
+use common::gen::coord;
+
 fn interp(plain: bool) -> Interp {
     let mut it = Interp::new(Profile::builtin("hx-mc").unwrap(), Settings::default());
     it.set_plain_path(plain);
@@ -43,17 +46,6 @@ fn steps(text: &str, plain: bool) -> Vec<String> {
     }
     out.push(format!("blocks {}", it.blocks()));
     out
-}
-
-/// A coordinate as the generator writes it: with a point, a bare point,
-/// without one (least input increment), negative, with many digits.
-fn coord() -> impl Strategy<Value = String> {
-    prop_oneof![
-        (-160i32..160).prop_map(|v| format!("{:.4}", v as f64 / 8.0)),
-        (-20i32..20).prop_map(|v| format!("{v}.")),
-        (-20000i32..20000).prop_map(|v| v.to_string()),
-        (-9i32..9).prop_map(|v| format!("{v}.123456789")),
-    ]
 }
 
 /// A block the plain path may take (or, for the last few, one that only

@@ -11,6 +11,9 @@
 use kerf_interp::{Filled, Interp, Profile, Settings, Step};
 use proptest::prelude::*;
 
+mod common;
+use common::gen::coord;
+
 /// Every step of `text` on `machine` (block delete level 1 on when
 /// `skip`), read ahead or not, then the blocks executed.
 fn steps(machine: &str, text: &str, ahead: bool, skip: bool) -> Vec<String> {
@@ -64,14 +67,6 @@ fn batched(machine: &str, text: &str, ahead: bool, room: usize) -> Vec<String> {
     }
     out.push(format!("blocks {}", it.blocks()));
     out
-}
-
-fn coord() -> impl Strategy<Value = String> {
-    prop_oneof![
-        (-160i32..160).prop_map(|v| format!("{:.4}", v as f64 / 8.0)),
-        (-20i32..20).prop_map(|v| format!("{v}.")),
-        (-20000i32..20000).prop_map(|v| v.to_string()),
-    ]
 }
 
 /// A block: plain ones mostly, and the ones that make the reader seek or

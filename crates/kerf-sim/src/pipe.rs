@@ -120,6 +120,23 @@ fn wait<'a>(c: &Condvar, g: MutexGuard<'a, State>) -> MutexGuard<'a, State> {
     c.wait(g).unwrap_or_else(|e| e.into_inner())
 }
 
+/// Locks the state and waits (waking an idle worker) until `ready` holds
+/// of it. Panics if the worker did.
+fn wait_until(s: &Shared, ready: impl Fn(&State) -> bool) -> MutexGuard<'_, State> {
+    let mut st = lock(s);
+    check(&st);
+    while !ready(&st) {
+        st.waiting = true;
+        if st.idle {
+            s.wake.notify_one();
+        }
+        st = wait(&s.ready, st);
+        check(&st);
+    }
+    st.waiting = false;
+    st
+}
+
 /// Panics in the caller when the worker has.
 fn check(st: &State) {
     if st.panicked {
@@ -162,17 +179,8 @@ impl Pipe {
         }
         let mine = self.mine.get_mut();
         {
-            let mut st = lock(&self.shared);
-            check(&st);
-            while st.in_flight >= self.cap {
-                st.waiting = true;
-                if st.idle {
-                    self.shared.wake.notify_one();
-                }
-                st = wait(&self.shared.ready, st);
-                check(&st);
-            }
-            st.waiting = false;
+            let cap = self.cap;
+            let mut st = wait_until(&self.shared, |st| st.in_flight < cap);
             if new_tool {
                 st.queue.push_back(Msg::Tool(Box::new(tool.clone())));
             }
@@ -202,17 +210,7 @@ impl Pipe {
         }
         let mut mine = self.mine.borrow_mut();
         {
-            let mut st = lock(&self.shared);
-            while st.in_flight > 0 {
-                check(&st);
-                st.waiting = true;
-                if st.idle {
-                    self.shared.wake.notify_one();
-                }
-                st = wait(&self.shared.ready, st);
-            }
-            check(&st);
-            st.waiting = false;
+            let mut st = wait_until(&self.shared, |st| st.in_flight == 0);
             mine.theirs.append(&mut st.done);
         }
         merge(&mut mine, self.area, total);

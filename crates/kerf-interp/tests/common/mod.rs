@@ -3,6 +3,7 @@
 
 use kerf_interp::{run_text, Profile, Run, Settings};
 
+pub mod gen;
 pub mod lathe;
 
 /// Runs program text on a built-in machine with default switches.
