@@ -12,7 +12,7 @@ use kerf_interp::{Filled, Interp, Profile, Settings, Step};
 use proptest::prelude::*;
 
 mod common;
-use common::gen::coord;
+use common::gen::{coord, trace};
 
 fn interp(plain: bool) -> Interp {
     let mut it = Interp::new(Profile::builtin("hx-mc").unwrap(), Settings::default());
@@ -35,15 +35,7 @@ fn load(it: &mut Interp, text: &str) {
 fn steps(text: &str, plain: bool) -> Vec<String> {
     let mut it = interp(plain);
     load(&mut it, text);
-    let mut out = Vec::new();
-    for _ in 0..5000 {
-        let s = it.step();
-        let end = !matches!(s, Step::Event(_));
-        out.push(format!("{s:?}"));
-        if end {
-            break;
-        }
-    }
+    let mut out = trace(&mut it, 5000, |_| String::new());
     out.push(format!("blocks {}", it.blocks()));
     out
 }

@@ -7,6 +7,9 @@
 use kerf_interp::{Interp, Profile, Settings, Step};
 use proptest::prelude::*;
 
+mod common;
+use common::gen::trace;
+
 /// Every step of `text` on hx-mc, with the short walk on or off.
 fn steps(text: &str, quiet: bool) -> Vec<String> {
     let mut it = Interp::new(Profile::builtin("hx-mc").unwrap(), Settings::default());
@@ -17,16 +20,7 @@ fn steps(text: &str, quiet: bool) -> Vec<String> {
         "q.nc",
         Box::new(std::io::Cursor::new(text.as_bytes().to_vec())),
     );
-    let mut out = Vec::new();
-    for _ in 0..5000 {
-        let s = it.step();
-        let end = !matches!(s, Step::Event(_));
-        out.push(format!("{s:?}"));
-        if end {
-            break;
-        }
-    }
-    out
+    trace(&mut it, 5000, |_| String::new())
 }
 
 /// D1 = 2 mm and D2 = 1 mm: compensation that moves the path.

@@ -8,11 +8,11 @@
 //! a last line without its newline; and on Hurco programs with
 //! continuation lines and a program that has no plain block at all.
 
-use kerf_interp::{Filled, Interp, Profile, Settings, Step};
+use kerf_interp::{Filled, Interp, Profile, Settings};
 use proptest::prelude::*;
 
 mod common;
-use common::gen::coord;
+use common::gen::{coord, trace};
 
 /// Every step of `text` on `machine` (block delete level 1 on when
 /// `skip`), read ahead or not, then the blocks executed.
@@ -27,15 +27,9 @@ fn steps(machine: &str, text: &str, ahead: bool, skip: bool) -> Vec<String> {
         "p.nc",
         Box::new(std::io::Cursor::new(text.as_bytes().to_vec())),
     );
-    let mut out = Vec::new();
-    for _ in 0..20_000 {
-        let s = it.step();
-        let end = !matches!(s, Step::Event(_));
-        out.push(format!("{s:?} at {:?}", it.next_block_at()));
-        if end {
-            break;
-        }
-    }
+    let mut out = trace(&mut it, 20_000, |it| {
+        format!(" at {:?}", it.next_block_at())
+    });
     out.push(format!("blocks {}", it.blocks()));
     out
 }

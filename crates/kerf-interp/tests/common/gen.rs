@@ -12,3 +12,23 @@ pub fn coord() -> impl Strategy<Value = String> {
         (-9i32..9).prop_map(|v| format!("{v}.123456789")),
     ]
 }
+
+/// Every step of a loaded interpreter, at most `max` (each as `{:?}`
+/// followed by `note` of the interpreter after it), up to its end or
+/// alarm.
+pub fn trace(
+    it: &mut kerf_interp::Interp,
+    max: usize,
+    note: impl Fn(&kerf_interp::Interp) -> String,
+) -> Vec<String> {
+    let mut out = Vec::new();
+    for _ in 0..max {
+        let s = it.step();
+        let end = !matches!(s, kerf_interp::Step::Event(_));
+        out.push(format!("{s:?}{}", note(it)));
+        if end {
+            break;
+        }
+    }
+    out
+}
