@@ -48,6 +48,8 @@ pub struct BallLanes {
     /// The CPU has AVX2 and FMA ([`avx2`], looked up once a move rather
     /// than once a run).
     simd: bool,
+    /// The start sphere is left out ([`Self::without_start`]).
+    trimmed: bool,
 }
 
 /// The terms of one row (constant y).
@@ -95,7 +97,77 @@ impl BallLanes {
             b0_max: if kappa > 0.0 { kappa * r } else { 0.0 } + B_MARGIN,
             b1_min: 1.0 + if kappa < 0.0 { kappa * r } else { 0.0 } - B_MARGIN,
             simd: simd(),
+            trimmed: false,
         }
+    }
+
+    /// The same move without its start sphere, for a move that starts
+    /// where the previous move of the same tool ended, with nothing
+    /// written to the heights in between but moves (heights only go
+    /// down). That move left every cell at or below the ball there, within
+    /// the height field's threshold (its stored height is its envelope, at
+    /// most the ball's at its end, rounded to f32), so wherever the start
+    /// sphere is this move's lowest point the cell stays as it is: the
+    /// envelope less the start sphere lowers the same cells to the same
+    /// heights, and the cells only the start sphere covers need not be
+    /// visited ([`Self::trim_cols`]). The bounds ([`Self::slope_on`]) stay
+    /// those of the whole capsule, below the envelope without it.
+    pub fn without_start(mut self) -> BallLanes {
+        self.b0_max = f64::NEG_INFINITY;
+        self.trimmed = true;
+        self
+    }
+
+    /// The columns `a..=b` of the row at `y` (`row` its terms) of grid
+    /// `g` narrowed to those the move without its start sphere can cover
+    /// (all of them when the start sphere is kept), or None when none
+    /// are. A cell of the cylinder has `t = b - κ √a` in [0, 1] with
+    /// √a in [0, R], so `b >= min(κ R, 0)`; the others are on the end
+    /// sphere's disc or on the start sphere alone.
+    #[inline]
+    pub fn trim_cols(
+        &self,
+        row: &LaneRow,
+        g: &crate::grid::Grid,
+        (a, b): (usize, usize),
+        y: f64,
+    ) -> Option<(usize, usize)> {
+        if !self.trimmed {
+            return Some((a, b));
+        }
+        let bmin = (self.kappa * self.r2.sqrt()).min(0.0) - B_MARGIN;
+        let c1x = self.c0[0] + self.d[0];
+        let wy1 = y - (self.c0[1] + self.d[1]);
+        let disc = self.r2 - wy1 * wy1;
+        let w = if disc >= 0.0 { disc.sqrt() } else { f64::NAN };
+        // Column of a cell centre x, as f64 (clamped before any rounding).
+        let col = |x: f64| ((x - g.x0) / g.dx - 0.5).clamp(-1.0, g.nx as f64);
+        // The first column kept, at the start of its run: each run's
+        // first cell is then the one it has with the start sphere, and so
+        // is the order of its sums (lower_body's lanes), bit for bit.
+        let first = |x: f64| ((col(x).ceil() - 1.0).max(0.0) as usize) / CHUNK * CHUNK;
+        if self.bx.abs() < 1e-300 {
+            // A move along Y: b is the row's.
+            if row.b >= bmin {
+                return Some((a, b));
+            }
+            if w.is_nan() {
+                return None;
+            }
+            let hi = col(c1x + w).floor() + 1.0;
+            let (a, b) = (a.max(first(c1x - w)), b.min(hi.max(0.0) as usize));
+            return (a <= b).then_some((a, b));
+        }
+        // b(x) = (x - c0x) bx + row.b reaches bmin at xb.
+        let xb = self.c0[0] + (bmin - row.b) / self.bx;
+        let (a, b) = if self.bx > 0.0 {
+            let lo = if w.is_nan() { xb } else { xb.min(c1x - w) };
+            (a.max(first(lo)), b)
+        } else {
+            let hi = if w.is_nan() { xb } else { xb.max(c1x + w) };
+            (a, b.min((col(hi).floor() + 1.0).max(0.0) as usize))
+        };
+        (a <= b).then_some((a, b))
     }
 
     /// The row at `y`.
@@ -369,6 +441,46 @@ mod tests {
                     let e = (wx - t * d[0]).hypot(wy - t * d[1]);
                     prop_assert!((e - r).abs() < 1e-6, "{k}: {z} vs {want} at {e} of {r}");
                 }
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(2000))]
+        /// The columns a move without its start sphere leaves out of a
+        /// row are those where its envelope is nowhere: on a grid, every
+        /// cell of the row outside them is infinite.
+        #[test]
+        fn the_trimmed_columns_hold_every_cell_the_trimmed_move_covers(
+            p0 in prop::array::uniform3(-10.0f64..10.0),
+            d in prop::array::uniform3(-6.0f64..6.0),
+            y in -16.0f64..16.0,
+            dx in 0.05f64..0.7,
+            r in 0.2f64..6.0,
+            along in 0u8..3,
+        ) {
+            let mut d = d;
+            match along {
+                0 => d[0] = 0.0,
+                1 => d[1] = 0.0,
+                _ => {}
+            }
+            let p1 = [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]];
+            let s = Sweep::new(p0, p1);
+            if crate::ball::BallSweep::new(&s, r).is_none() {
+                return Ok(());
+            }
+            let lanes = BallLanes::new(&s, r).without_start();
+            let g = crate::grid::Grid { x0: -20.0, y0: -20.0, dx, dy: dx, nx: (40.0 / dx) as usize, ny: 1 };
+            let row = lanes.row(y);
+            let kept = lanes.trim_cols(&row, &g, (0, g.nx - 1), y);
+            for i in 0..g.nx {
+                if kept.is_some_and(|(a, b)| (a..=b).contains(&i)) {
+                    continue;
+                }
+                let mut out = [0.0];
+                lanes.envelope(&row, g.centre(i, 0).0, dx, &mut out);
+                prop_assert_eq!(out[0], f64::INFINITY, "cell {} of {:?}", i, kept);
             }
         }
     }

@@ -96,9 +96,16 @@ impl<'a> Cells<'a> {
         let mut band: Band = [(0, 0.0, 0, 0, 0.0); BLOCK];
         let &(_, first, last) = todo;
         let mut n = 0;
+        let ball = pass.ball();
         grid.for_rows_in(scan.s, scan.reach, (first, last), |j, y, a, b| {
-            band[n] = (j, y, a, b, scan.floor(y, y));
-            n += 1;
+            let cols = match &ball {
+                Some(ball) => ball.trim_cols(&ball.row(y), &grid, (a, b), y),
+                None => Some((a, b)),
+            };
+            if let Some((a, b)) = cols {
+                band[n] = (j, y, a, b, scan.floor(y, y));
+                n += 1;
+            }
         });
         (pass.removed, pass.holder) = (0.0, 0.0);
         if n > 0 {
@@ -121,6 +128,11 @@ impl<'a> Cells<'a> {
         // Each row's last envelope and slope worked out: (cell, value);
         // and each row's terms of the ball's bound, worked out once.
         let mut memo = [(usize::MAX, None); BLOCK];
+        // Each row's last run that reached the kernel lowered cells: the
+        // next one most likely does too (the move's new material is one
+        // stretch of the row), so its bound is not worked out (a bound only
+        // saves work; the kernel lowers nothing where it would skip).
+        let mut hot = [false; BLOCK];
         let mut terms = [None; BLOCK];
         if let Some(ball) = ball {
             for (t, r) in terms.iter_mut().zip(rows) {
@@ -142,7 +154,9 @@ impl<'a> Cells<'a> {
                 // A run at or below the ball's lowest point over it (from
                 // its first cell to the next run's first, whose envelope
                 // the next run reuses).
-                if let (Some(ball), Some(row)) = (ball, &terms[ri]) {
+                if hot[ri] {
+                    memo[ri].0 = usize::MAX;
+                } else if let (Some(ball), Some(row)) = (ball, &terms[ri]) {
                     let end = if last < b { last + 1 } else { last };
                     let at = |k: usize| ball.slope_on(row, cell_x(&g, k));
                     let m = &mut memo[ri];
@@ -155,7 +169,8 @@ impl<'a> Cells<'a> {
                     }
                 }
                 let h = &mut self.h[lj * nx + first..=lj * nx + last];
-                if pass.run(h, (j * nx + first) as u32, x0, g.dx, y, floor) {
+                hot[ri] = pass.run(h, (j * nx + first) as u32, x0, g.dx, y, floor);
+                if hot[ri] {
                     let run = &self.h[lj * nx + c * CHUNK..lj * nx + ((c + 1) * CHUNK).min(nx)];
                     self.cmax[lj * nc + c] = greatest(run);
                     changed = true;
@@ -204,19 +219,23 @@ pub fn band_rows(
 /// odd ones), pushing each band worked and its removed sum (cell heights,
 /// mm) to `out`, in band order. The holder sums are 0: a tool with a
 /// shank or holder is never cut this way (its moves may be events).
+/// `follows`: the move starts where the previous one of the same tool
+/// ended ([`Pass::without_start`]).
 ///
 /// # Safety
 /// No other thread uses the cells of these bands meanwhile, and `raw`'s
 /// arrays are alive.
 pub unsafe fn cut_parity(
     raw: &Raw,
-    tool: &MillTool,
-    s: &Sweep,
+    (tool, s, follows): (&MillTool, &Sweep, bool),
     zt: (f64, f64),
     parity: usize,
     out: &mut Vec<(u32, f64)>,
 ) {
     let mut pass = Pass::new(tool, s, zt, true, None);
+    if follows {
+        pass = pass.without_start();
+    }
     let scan = Scan::new(tool, s, &pass);
     let grid = raw.grid;
     let Some((cols, rows)) = grid.bounds(s, scan.reach) else {

@@ -188,6 +188,16 @@ impl<'a> Pass<'a> {
         }
     }
 
+    /// Leaves out a ball's start sphere ([`BallLanes::without_start`]):
+    /// for a move that starts where the previous move of the same tool
+    /// ended, nothing else having raised a height since (none can).
+    pub fn without_start(mut self) -> Self {
+        if let Kernel::Ball(b) = self.kernel {
+            self.kernel = Kernel::Ball(b.without_start());
+        }
+        self
+    }
+
     /// The ball move's row kernel, whose envelope bounds a run from
     /// below ([`BallLanes::with_slope`]), if the move has one.
     #[inline]

@@ -35,8 +35,9 @@ const BATCH: usize = 64;
 enum Msg {
     /// The tool of the moves that follow.
     Tool(Box<MillTool>),
-    /// A move to cut over the worker's bands.
-    Move(Sweep),
+    /// A move to cut over the worker's bands, and whether it follows the
+    /// previous one ([`crate::kernels::Pass::without_start`]).
+    Move(Sweep, bool),
     /// Makes the worker panic (tests of the panic's propagation).
     #[cfg(test)]
     Fail,
@@ -172,7 +173,9 @@ impl Pipe {
     /// Cuts `s` of `tool` (no shank or holder; heights written, no old
     /// heights kept): the caller's bands now, the worker's when it gets
     /// there. Adds every move both threads are past to `total`, mm³.
-    pub fn cut(&mut self, tool: &MillTool, s: &Sweep, total: &Cell<f64>) {
+    /// `follows`: the move starts where the previous one of the same tool
+    /// ended.
+    pub fn cut(&mut self, tool: &MillTool, s: &Sweep, follows: bool, total: &Cell<f64>) {
         let new_tool = self.last_tool.as_ref() != Some(tool);
         if new_tool {
             self.last_tool = Some(tool.clone());
@@ -184,7 +187,7 @@ impl Pipe {
             if new_tool {
                 st.queue.push_back(Msg::Tool(Box::new(tool.clone())));
             }
-            st.queue.push_back(Msg::Move(*s));
+            st.queue.push_back(Msg::Move(*s, follows));
             st.in_flight += 1;
             if st.idle && st.queue.len() >= WAKE.min(self.cap) {
                 self.shared.wake.notify_one();
@@ -195,7 +198,7 @@ impl Pipe {
         mine.scratch.clear();
         // SAFETY: the even bands are this thread's alone (the worker cuts
         // the odd ones only), and the arrays outlive the pipe.
-        unsafe { cut_parity(&self.raw, tool, s, self.zt, 0, &mut mine.scratch) };
+        unsafe { cut_parity(&self.raw, (tool, s, follows), self.zt, 0, &mut mine.scratch) };
         mine.own.push(&mine.scratch);
         merge(mine, self.area, total);
     }
@@ -289,11 +292,11 @@ fn serve(s: &Shared, raw: &Raw, zt: (f64, f64)) {
             for m in batch.drain(..) {
                 match m {
                     Msg::Tool(t) => tool = Some(t),
-                    Msg::Move(sw) => {
+                    Msg::Move(sw, follows) => {
                         let t = tool.as_deref().expect("a tool before the first move");
                         scratch.clear();
                         // SAFETY: the odd bands are this thread's alone.
-                        unsafe { cut_parity(raw, t, &sw, zt, 1, &mut scratch) };
+                        unsafe { cut_parity(raw, (t, &sw, follows), zt, 1, &mut scratch) };
                         out.push(&scratch);
                     }
                     #[cfg(test)]
