@@ -243,6 +243,34 @@ impl BallLanes {
         floor_between(xa, self.with_slope(y, xa), xb, self.with_slope(y, xb))
     }
 
+    /// Whether every height `h[k]` (the cells at `x0 + k dx`, at most
+    /// [`CHUNK`]) is at or below both tangents of the envelope at the two
+    /// ends `xa` and `xb` of the row (`a` and `b`, [`Self::slope_on`];
+    /// false when either is unknown): the envelope is convex along the
+    /// row, above each tangent, so no such cell is above it. Sharper than
+    /// [`floor_between`] against the greatest height where the heights
+    /// follow the envelope's slope (a pass beside a sloped surface).
+    #[inline]
+    pub fn under_tangents(
+        &self,
+        h: &[f32],
+        (x0, dx): (f64, f64),
+        (xa, a): (f64, Option<(f64, f64)>),
+        (xb, b): (f64, Option<(f64, f64)>),
+    ) -> bool {
+        let (Some(a), Some(b)) = (a, b) else {
+            return false;
+        };
+        let h = &h[..h.len().min(CHUNK)];
+        let at = ((x0, dx), (xa, a), (xb, b));
+        #[cfg(target_arch = "x86_64")]
+        if self.simd {
+            // SAFETY: the CPU has AVX2 and FMA (checked at run time).
+            return unsafe { under_avx2(h, at) };
+        }
+        under_body(h, at)
+    }
+
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
     fn envelope_avx2(&self, row: &LaneRow, x0: f64, dx: f64, out: &mut [f64]) {
@@ -312,6 +340,33 @@ pub fn floor_between(xa: f64, a: Option<(f64, f64)>, xb: f64, b: Option<(f64, f6
     };
     // The rounding of the two evaluations, with room to spare.
     low - 1e-9 * (1.0 + low.abs())
+}
+
+/// The ends of a run and the tangents at the two ends of a row's span
+/// ([`BallLanes::under_tangents`]).
+type Tangents = ((f64, f64), (f64, (f64, f64)), (f64, (f64, f64)));
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn under_avx2(h: &[f32], at: Tangents) -> bool {
+    under_body(h, at)
+}
+
+#[inline(always)]
+fn under_body(h: &[f32], ((x0, dx), (xa, (za, sa)), (xb, (zb, sb))): Tangents) -> bool {
+    // The rounding of the two evaluations over the run, with room to
+    // spare, once.
+    let reach = (sa.abs() + sb.abs()) * ((xb - xa).abs() + 16.0 * dx);
+    let margin = 1e-9 * (1.0 + za.abs() + zb.abs() + reach);
+    let mut above = 0u32;
+    for (&v, &k) in h.iter().zip(&IDX) {
+        let x = x0 + k * dx;
+        let ta = za + sa * (x - xa);
+        let tb = zb + sb * (x - xb);
+        let t = if ta > tb { ta } else { tb };
+        above |= (v as f64 > t - margin) as u32;
+    }
+    above == 0
 }
 
 /// [`avx2`] where it exists, else false.
@@ -481,6 +536,60 @@ mod tests {
                 let mut out = [0.0];
                 lanes.envelope(&row, g.centre(i, 0).0, dx, &mut out);
                 prop_assert_eq!(out[0], f64::INFINITY, "cell {} of {:?}", i, kept);
+            }
+        }
+    }
+
+    #[test]
+    fn heights_under_the_tangents_of_a_slot_by_hand() {
+        // R 3 along X at z 0 from x 0 to 10, the row 2 mm off the path:
+        // the envelope is 3 - √5 = 0.7639 over x 2..8 (both tangents
+        // flat). Heights of 0.76 there are under it, one of 0.77 is not;
+        // nor is anything where an end is off the ball's footprint.
+        let s = Sweep::new([0.0, 0.0, 0.0], [10.0, 0.0, 0.0]);
+        let b = BallLanes::new(&s, 3.0);
+        let row = b.row(2.0);
+        let ends = (b.slope_on(&row, 2.0), b.slope_on(&row, 8.0));
+        let mut h = [0.76f32; 16];
+        assert!(b.under_tangents(&h, (2.0, 0.4), (2.0, ends.0), (8.0, ends.1)));
+        h[9] = 0.77;
+        assert!(!b.under_tangents(&h, (2.0, 0.4), (2.0, ends.0), (8.0, ends.1)));
+        let off = b.slope_on(&row, 13.5);
+        assert!(!b.under_tangents(&[0.0; 4], (12.0, 0.5), (12.0, ends.1), (13.5, off)));
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+        /// Heights near the envelope along a run: when they are found
+        /// under the tangents, none is above the envelope (the per-point
+        /// capsule, ball.rs).
+        #[test]
+        fn heights_under_the_tangents_are_under_the_envelope(
+            p0 in prop::array::uniform3(-10.0f64..10.0),
+            d in prop::array::uniform3(-6.0f64..6.0),
+            q in prop::array::uniform2(-16.0f64..16.0),
+            dx in 0.01f64..0.5,
+            r in 0.2f64..6.0,
+            below in prop::collection::vec(-0.3f64..0.002, 16),
+        ) {
+            let p1 = [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]];
+            let s = Sweep::new(p0, p1);
+            let Some(one) = BallSweep::new(&s, r) else { return Ok(()); };
+            let lanes = BallLanes::new(&s, r);
+            let row = lanes.row(q[1]);
+            let xe = q[0] + 16.0 * dx;
+            let (a, b) = (lanes.slope_on(&row, q[0]), lanes.slope_on(&row, xe));
+            let mut h = [0.0f32; 16];
+            let mut env = [f64::INFINITY; 16];
+            for k in 0..16 {
+                let x = q[0] + k as f64 * dx;
+                env[k] = one.lowest(&one.row(q[1]), x).unwrap_or(f64::INFINITY);
+                h[k] = if env[k].is_finite() { (env[k] + below[k]) as f32 } else { 0.0 };
+            }
+            if lanes.under_tangents(&h, (q[0], dx), (q[0], a), (xe, b)) {
+                for k in 0..16 {
+                    prop_assert!(h[k] as f64 <= env[k] + 1e-7, "{} above {} at {}", h[k], env[k], k);
+                }
             }
         }
     }

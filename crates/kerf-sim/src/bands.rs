@@ -167,6 +167,10 @@ impl<'a> Cells<'a> {
                     if self.cmax[lj * nc + c] as f64 <= low {
                         continue;
                     }
+                    let h = &self.h[lj * nx + first..=lj * nx + last];
+                    if ball.under_tangents(h, (x0, g.dx), (x0, left), (xe, m.1)) {
+                        continue;
+                    }
                 }
                 let h = &mut self.h[lj * nx + first..=lj * nx + last];
                 hot[ri] = pass.run(h, (j * nx + first) as u32, x0, g.dx, y, floor);
@@ -278,8 +282,16 @@ fn greatest(v: &[f32]) -> f32 {
     for &x in it.remainder() {
         m[0] = if x > m[0] { x } else { m[0] };
     }
-    m.iter()
-        .fold(f32::NEG_INFINITY, |a, &b| if b > a { b } else { a })
+    // Halves, quarters, eighths: three vector steps, not seven scalar.
+    let mx = |a: f32, b: f32| if a > b { a } else { b };
+    let m4 = [
+        mx(m[0], m[4]),
+        mx(m[1], m[5]),
+        mx(m[2], m[6]),
+        mx(m[3], m[7]),
+    ];
+    let m2 = [mx(m4[0], m4[2]), mx(m4[1], m4[3])];
+    mx(m2[0], m2[1])
 }
 
 /// [`Cells`] as raw parts, from which each thread makes the cells of the
