@@ -274,7 +274,11 @@ impl BallLanes {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
     fn envelope_avx2(&self, row: &LaneRow, x0: f64, dx: f64, out: &mut [f64]) {
-        self.envelope_body(row, x0, dx, out);
+        // A whole run as an array: loops of known length, unrolled.
+        match <&mut [f64; CHUNK]>::try_from(&mut *out) {
+            Ok(run) => self.envelope_body(row, x0, dx, run),
+            Err(_) => self.envelope_body(row, x0, dx, out),
+        }
     }
 
     #[inline(always)]
@@ -349,7 +353,11 @@ type Tangents = ((f64, f64), (f64, (f64, f64)), (f64, (f64, f64)));
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 fn under_avx2(h: &[f32], at: Tangents) -> bool {
-    under_body(h, at)
+    // A whole run as an array: a loop of known length, unrolled.
+    match <&[f32; CHUNK]>::try_from(h) {
+        Ok(run) => under_body(run, at),
+        Err(_) => under_body(h, at),
+    }
 }
 
 #[inline(always)]

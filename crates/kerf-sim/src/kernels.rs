@@ -301,7 +301,14 @@ impl<'a> Pass<'a> {
 #[target_feature(enable = "avx2,fma")]
 fn lower_avx2(h: &mut [f32], env: &[f64], floor: f32, zt: (f64, f64), write: bool) -> (f64, bool) {
     let h = &mut h[..env.len().min(CHUNK)];
-    lower_body(h, |k| env[k], floor, zt, write)
+    // A whole run as arrays: a loop of known length, unrolled.
+    match (
+        <&mut [f32; CHUNK]>::try_from(&mut *h),
+        <&[f64; CHUNK]>::try_from(env),
+    ) {
+        (Ok(h), Ok(env)) => lower_body(h, |k| env[k], floor, zt, write),
+        _ => lower_body(h, |k| env[k], floor, zt, write),
+    }
 }
 
 /// [`lower_body`] of a level flat end mill: every cell's envelope is `z`.
