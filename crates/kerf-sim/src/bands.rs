@@ -272,6 +272,15 @@ fn cell_x(g: &Grid, i: usize) -> f64 {
 /// makes vector code of (`f32::max` orders NaN, which costs a branch).
 #[inline]
 fn greatest(v: &[f32]) -> f32 {
+    // A whole run as an array: a loop of known length, unrolled.
+    match <&[f32; CHUNK]>::try_from(v) {
+        Ok(run) => greatest_of(run),
+        Err(_) => greatest_of(v),
+    }
+}
+
+#[inline(always)]
+fn greatest_of(v: &[f32]) -> f32 {
     let mut m = [f32::NEG_INFINITY; 8];
     let mut it = v.chunks_exact(8);
     for q in &mut it {
