@@ -346,6 +346,17 @@ pub fn floor_between(xa: f64, a: Option<(f64, f64)>, xb: f64, b: Option<(f64, f6
     low - 1e-9 * (1.0 + low.abs())
 }
 
+/// The lowest point over [xa, xb] (`xa <= xb`) of the line through
+/// `(xm, zm)` with slope `sm`, a tangent of a convex function (so a lower
+/// bound of it everywhere), less a margin for the rounding.
+#[inline]
+pub fn under_line((xm, zm, sm): (f64, f64, f64), xa: f64, xb: f64) -> f64 {
+    let x = if sm >= 0.0 { xa } else { xb };
+    let dz = sm * (x - xm);
+    let low = zm + dz;
+    low - 1e-9 * (1.0 + zm.abs() + dz.abs())
+}
+
 /// The ends of a run and the tangents at the two ends of a row's span
 /// ([`BallLanes::under_tangents`]).
 type Tangents = ((f64, f64), (f64, (f64, f64)), (f64, (f64, f64)));
@@ -599,6 +610,28 @@ mod tests {
                     prop_assert!(h[k] as f64 <= env[k] + 1e-7, "{} above {} at {}", h[k], env[k], k);
                 }
             }
+        }
+    }
+
+    #[test]
+    fn the_lowest_point_of_a_tangent_over_an_interval_by_hand() {
+        // Through (2, 1) with slope 0.5 the lowest point over x 0..4 is
+        // at x 0: 0; with slope -0.5 at x 4: 0; level: 1. Each a hair
+        // below (the rounding margin), never above.
+        for (s, want) in [(0.5, 0.0), (-0.5, 0.0), (0.0, 1.0)] {
+            let low = under_line((2.0, 1.0, s), 0.0, 4.0);
+            assert!(low <= want && low > want - 1e-8, "{s}: {low}");
+        }
+        // A ball's tangent on a row bounds its envelope at every cell.
+        let s = Sweep::new([0.0, 0.0, 0.0], [10.0, 0.0, 3.0]);
+        let b = BallLanes::new(&s, 3.0);
+        let row = b.row(1.0);
+        let (z, sl) = b.slope_on(&row, 5.0).unwrap();
+        let mut out = [0.0; 16];
+        b.envelope(&row, -2.0, 1.0, &mut out);
+        for (k, &e) in out.iter().enumerate() {
+            let x = -2.0 + k as f64;
+            assert!(under_line((5.0, z, sl), x, x) <= e, "{x}");
         }
     }
 }

@@ -7,7 +7,7 @@
 //! so are the volumes: each band's removed volume is summed on its own and
 //! the bands' sums are added in band order.
 
-use crate::ball_row::floor_between;
+use crate::ball_row::{floor_between, under_line};
 use crate::envelope::Sweep;
 use crate::grid::Grid;
 use crate::kernels::Pass;
@@ -134,9 +134,16 @@ impl<'a> Cells<'a> {
         // saves work; the kernel lowers nothing where it would skip).
         let mut hot = [false; BLOCK];
         let mut terms = [None; BLOCK];
+        // Each row's tangent at the middle of its span: the envelope is
+        // convex along the row, so above it everywhere (along a straight
+        // stretch of the cylinder, exactly on it).
+        let mut tangent = [None; BLOCK];
         if let Some(ball) = ball {
-            for (t, r) in terms.iter_mut().zip(rows) {
-                *t = Some(ball.row(r.1));
+            for ((t, l), r) in terms.iter_mut().zip(&mut tangent).zip(rows) {
+                let row = ball.row(r.1);
+                let xm = cell_x(&g, (r.2 + r.3) / 2);
+                *l = ball.slope_on(&row, xm).map(|(z, s)| (xm, z, s));
+                *t = Some(row);
             }
         }
         for c in lo / CHUNK..=hi / CHUNK {
@@ -158,6 +165,12 @@ impl<'a> Cells<'a> {
                     memo[ri].0 = usize::MAX;
                 } else if let (Some(ball), Some(row)) = (ball, &terms[ri]) {
                     let end = if last < b { last + 1 } else { last };
+                    if let Some(t) = tangent[ri] {
+                        let low = under_line(t, x0, cell_x(&g, end));
+                        if self.cmax[lj * nc + c] as f64 <= low {
+                            continue;
+                        }
+                    }
                     let at = |k: usize| ball.slope_on(row, cell_x(&g, k));
                     let m = &mut memo[ri];
                     let left = if m.0 == first { m.1 } else { at(first) };
