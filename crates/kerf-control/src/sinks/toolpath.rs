@@ -20,8 +20,16 @@ pub struct Toolpath<W: Write> {
     /// of the feed.
     memo: [[Memo; NAXES]; 4],
     feed_memo: Memo,
+    /// Lines not yet handed to `w`: they go in pieces of [`PIECE`] bytes
+    /// or more (one `write_all` per piece, not per line), and the rest at
+    /// [`Toolpath::flush`], at `finish` or when the sink is dropped.
     buf: Vec<u8>,
 }
+
+/// Bytes of lines gathered before they are handed to the writer: a
+/// file needs no `BufWriter` of its own (which would copy every byte once
+/// more).
+const PIECE: usize = 1 << 20;
 
 pub use super::number::num;
 use super::number::{int, put_fixed, Memo};
@@ -69,8 +77,15 @@ impl<W: Write> Toolpath<W> {
             heads: Vec::new(),
             memo: [[Memo::default(); NAXES]; 4],
             feed_memo: Memo::default(),
-            buf: Vec::with_capacity(512),
+            buf: Vec::new(),
         }
+    }
+
+    /// Hands the gathered lines to the writer.
+    fn spill(&mut self) -> io::Result<()> {
+        let r = self.w.write_all(&self.buf);
+        self.buf.clear();
+        r
     }
 
     /// `,"KEY":{"x":…}`; `slot` picks the memo row (0 to, 1 mto, 2 prog,
@@ -142,7 +157,8 @@ impl<W: Write> Toolpath<W> {
     ) -> io::Result<()> {
         let mut head = Vec::new();
         head_of(&mut head, file);
-        self.record(e, &head, here, t, feed_mm_min)
+        self.record(e, &head, here, t, feed_mm_min)?;
+        self.spill()
     }
 
     fn record(
@@ -161,7 +177,11 @@ impl<W: Write> Toolpath<W> {
 
     /// Writes the line of `r`, `head` its file's `{"file":…,"line":`.
     fn line(&mut self, r: &Rec, head: &[u8]) -> io::Result<()> {
-        self.buf.clear();
+        if self.buf.capacity() == 0 {
+            // Room for a piece and the line that fills it, so that the
+            // buffer is not grown again.
+            self.buf.reserve(PIECE + 16 * 1024);
+        }
         self.buf.extend_from_slice(head);
         int(&mut self.buf, u64::from(r.line));
         let (key, len) = r.kind.key();
@@ -207,7 +227,10 @@ impl<W: Write> Toolpath<W> {
         self.buf.extend_from_slice(b",\"t_end\":");
         num(&mut self.buf, r.t_end);
         self.buf.extend_from_slice(b"}\n");
-        self.w.write_all(&self.buf)
+        if self.buf.len() >= PIECE {
+            return self.spill();
+        }
+        Ok(())
     }
 }
 
@@ -241,8 +264,9 @@ impl<W: Write> Toolpath<W> {
         r
     }
 
-    /// Flushes the writer.
+    /// Hands the gathered lines to the writer and flushes it.
     pub(crate) fn flush(&mut self) -> io::Result<()> {
+        self.spill()?;
         self.w.flush()
     }
 }
@@ -278,7 +302,19 @@ impl<W: Write> Sink for Toolpath<W> {
     }
 
     fn finish(&mut self, _cx: &Context, _alarm: Option<&kerf_canon::Alarm>) -> io::Result<()> {
-        self.w.flush()
+        self.flush()
+    }
+}
+
+impl<W: Write> Drop for Toolpath<W> {
+    /// The lines gathered and not yet handed to the writer go to it (a
+    /// run stopped by another sink's error has not called `finish`), as
+    /// when each line was written at once; an error here is not seen, as
+    /// with `BufWriter`.
+    fn drop(&mut self) {
+        if !self.buf.is_empty() {
+            let _ = self.spill();
+        }
     }
 }
 

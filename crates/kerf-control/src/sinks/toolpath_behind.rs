@@ -28,13 +28,13 @@ enum Item {
     Rec(Rec),
 }
 
-fn take<W: Write>(tp: &mut Toolpath<W>, item: Item) -> io::Result<()> {
+fn take<W: Write>(tp: &mut Toolpath<W>, item: &mut Item) -> io::Result<()> {
     match item {
         Item::Name(id, name) => {
-            tp.name_file(id, &name);
+            tp.name_file(*id, name);
             Ok(())
         }
-        Item::Rec(r) => tp.write_named(&r),
+        Item::Rec(r) => tp.write_named(r),
     }
 }
 
