@@ -17,9 +17,11 @@ use std::sync::mpsc::{self, Receiver, SyncSender, TryRecvError};
 use std::thread::{self, JoinHandle};
 
 /// Items in one batch.
-pub const BATCH: usize = 1024;
-/// Batches handed to the thread and not yet returned, at most.
-pub const IN_FLIGHT: usize = 2;
+pub const BATCH: usize = 2048;
+/// Batches handed to the thread and not yet returned, at most: enough
+/// for the thread to go on for some milliseconds while the caller waits
+/// for a core, and the other way round (about 4 MB of toolpath records).
+pub const IN_FLIGHT: usize = 8;
 
 /// Items of type `T` handed to a thread that ends with an `R`.
 pub(crate) struct Behind<T: Send + 'static, R: Send + 'static> {
