@@ -8,7 +8,10 @@ use kerf_canon::{Axis, Event, Pos, NAXES};
 
 use crate::sink::{Context, Live, Sink, Timed};
 
-/// Writes JSON Lines.
+/// Writes JSON Lines. The lines are gathered in the sink and handed to
+/// the writer in pieces of 1 MiB (so a file needs no `BufWriter`), the
+/// rest at `finish` or when the sink is dropped; [`Toolpath::write`]
+/// hands its line over at once.
 pub struct Toolpath<W: Write> {
     w: W,
     axes: Vec<Axis>,
@@ -340,6 +343,70 @@ mod tests {
         tp.w.clear();
         tp.write(&e, "a.nc", &to, 2.5, Some(100.0)).unwrap();
         String::from_utf8(tp.w.clone()).unwrap()
+    }
+
+    /// Keeps the bytes and counts the calls that brought them.
+    #[derive(Default)]
+    struct Calls {
+        bytes: Vec<u8>,
+        calls: usize,
+    }
+
+    impl Write for Calls {
+        fn write(&mut self, b: &[u8]) -> io::Result<usize> {
+            self.calls += 1;
+            self.bytes.extend_from_slice(b);
+            Ok(b.len())
+        }
+        fn flush(&mut self) -> io::Result<()> {
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn lines_go_in_pieces_and_the_rest_when_dropped() {
+        // 30,000 records of about 170 bytes: some 5 MB, so a few pieces
+        // and a part-filled one that only the drop hands over (no
+        // `finish`, as when another sink's error stops a run).
+        let (mut pieces, mut one_by_one) = (Calls::default(), Calls::default());
+        let mut a = Toolpath::new(&mut pieces);
+        let mut b = Toolpath::new(&mut one_by_one);
+        let mut head = Vec::new();
+        head_of(&mut head, "a.nc");
+        for tp in [&mut a, &mut b] {
+            tp.set_axes(vec![Axis::X, Axis::Y, Axis::Z]);
+        }
+        for i in 0..30_000u32 {
+            let mut to = [0.0; NAXES];
+            to[0] = f64::from(i) * 0.125;
+            to[2] = -f64::from(i) / 3.0;
+            let e = Event {
+                src: SrcRef {
+                    file: 0,
+                    line: i + 1,
+                    col: 1,
+                },
+                tool: 1,
+                cmd: Canon::Feed {
+                    m: Motion { to, mto: to },
+                    feed: Feed::PerMin(600.0),
+                },
+                prog: None,
+            };
+            let t = f64::from(i) * 0.01;
+            a.record(&e, &head, &to, t, Some(600.0)).unwrap();
+            b.write(&e, "a.nc", &to, t, Some(600.0)).unwrap();
+        }
+        let held = a.buf.len();
+        assert!(held > 0 && held < PIECE);
+        drop((a, b));
+        // Every line one write call when handed over at once.
+        assert_eq!(one_by_one.calls, 30_000);
+        let total = one_by_one.bytes.len();
+        assert!(total > 3 * PIECE, "{total} bytes");
+        // Whole pieces of at least PIECE bytes, then the rest.
+        assert_eq!(pieces.calls, (total - held) / PIECE + 1);
+        assert!(pieces.bytes == one_by_one.bytes, "the bytes differ");
     }
 
     #[test]
