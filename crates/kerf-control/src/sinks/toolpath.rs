@@ -23,6 +23,8 @@ pub struct Toolpath<W: Write> {
     /// of the feed.
     memo: [[Memo; NAXES]; 4],
     feed_memo: Memo,
+    /// The last line number and its text.
+    line_memo: Counted,
     /// Lines not yet handed to `w`: they go in pieces of [`PIECE`] bytes
     /// or more (one `write_all` per piece, not per line), and the rest at
     /// [`Toolpath::flush`], at `finish` or when the sink is dropped.
@@ -35,7 +37,7 @@ pub struct Toolpath<W: Write> {
 const PIECE: usize = 1 << 20;
 
 pub use super::number::num;
-use super::number::{int, put_fixed, Memo};
+use super::number::{int, put_fixed, Counted, Memo};
 use super::toolpath_rec::{Kind, Rec};
 
 /// `,"KEY":` of the memo rows (to, mto, prog, center), padded to a fixed
@@ -80,6 +82,7 @@ impl<W: Write> Toolpath<W> {
             heads: Vec::new(),
             memo: [[Memo::default(); NAXES]; 4],
             feed_memo: Memo::default(),
+            line_memo: Counted::default(),
             buf: Vec::new(),
         }
     }
@@ -186,7 +189,7 @@ impl<W: Write> Toolpath<W> {
             self.buf.reserve(PIECE + 16 * 1024);
         }
         self.buf.extend_from_slice(head);
-        int(&mut self.buf, u64::from(r.line));
+        self.line_memo.put(&mut self.buf, u64::from(r.line));
         let (key, len) = r.kind.key();
         put_fixed(&mut self.buf, key, len);
         self.pos(0, &r.to);
