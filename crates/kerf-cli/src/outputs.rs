@@ -24,10 +24,11 @@ fn create(path: &Path) -> Result<Out, String> {
 }
 
 /// The toolpath: formatted and written by a thread of its own (the
-/// interpreter and the planner keep this one), in 1 MiB writes.
-fn toolpath(path: &Path) -> Result<ToolpathBehind<Out>, String> {
+/// interpreter and the planner keep this one), in 1 MiB writes (the
+/// sink gathers its lines itself: no `BufWriter`).
+fn toolpath(path: &Path) -> Result<ToolpathBehind<File>, String> {
     File::create(path)
-        .map(|f| ToolpathBehind::new(Toolpath::new(BufWriter::with_capacity(1 << 20, f))))
+        .map(|f| ToolpathBehind::new(Toolpath::new(f)))
         .map_err(|e| format!("{}: {}", path.display(), io_reason(&e)))
 }
 

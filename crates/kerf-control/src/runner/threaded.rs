@@ -32,9 +32,14 @@ use crate::sink::{Files, Sink};
 use crate::sinks::behind::Named;
 
 /// Events in one batch.
-pub(crate) const BATCH: usize = 512;
-/// Batches sent and not yet taken back, at most.
-pub(crate) const IN_FLIGHT: usize = 2;
+pub(crate) const BATCH: usize = 1024;
+/// Batches sent and not yet taken back, at most. With four threads on two
+/// cores a thread often waits for a core for a few milliseconds; eight
+/// batches (about 2 MB of events) let the interpreter run that far ahead
+/// and the planner work through them when it gets its core back, where
+/// two of 512 left it waiting after half a millisecond (docs/benchmarks.md,
+/// "Deeper queues between the threads").
+pub(crate) const IN_FLIGHT: usize = 8;
 
 /// How the program ended.
 pub(crate) enum End {

@@ -17,9 +17,11 @@ use std::sync::mpsc::{self, Receiver, SyncSender, TryRecvError};
 use std::thread::{self, JoinHandle};
 
 /// Items in one batch.
-pub const BATCH: usize = 1024;
-/// Batches handed to the thread and not yet returned, at most.
-pub const IN_FLIGHT: usize = 2;
+pub const BATCH: usize = 2048;
+/// Batches handed to the thread and not yet returned, at most: enough
+/// for the thread to go on for some milliseconds while the caller waits
+/// for a core, and the other way round (about 4 MB of toolpath records).
+pub const IN_FLIGHT: usize = 8;
 
 /// Items of type `T` handed to a thread that ends with an `R`.
 pub(crate) struct Behind<T: Send + 'static, R: Send + 'static> {
@@ -33,20 +35,24 @@ pub(crate) struct Behind<T: Send + 'static, R: Send + 'static> {
 
 impl<T: Send + 'static, R: Send + 'static> Behind<T, R> {
     /// Starts the thread: it gives every item, in order, to `each` with
-    /// `state`, and after the last one makes the result with `end`.
+    /// `state` (in place in its batch: `each` may take what it keeps out
+    /// of it, the rest is dropped with the batch's items after the last
+    /// one), and after the last one makes the result with `end`.
     pub fn spawn<S, E, F>(mut state: S, mut each: E, end: F) -> Behind<T, R>
     where
         S: Send + 'static,
-        E: FnMut(&mut S, T) -> io::Result<()> + Send + 'static,
+        E: FnMut(&mut S, &mut T) -> io::Result<()> + Send + 'static,
         F: FnOnce(S) -> io::Result<R> + Send + 'static,
     {
         let (full, full_rx) = mpsc::sync_channel::<Vec<T>>(IN_FLIGHT);
         let (empty_tx, empty) = mpsc::sync_channel::<Vec<T>>(IN_FLIGHT + 1);
         let thread = thread::spawn(move || {
             for mut b in full_rx {
-                for item in b.drain(..) {
+                // In place: moving each item out of the batch would copy it.
+                for item in b.iter_mut() {
                     each(&mut state, item)?;
                 }
+                b.clear();
                 // The caller may have finished and stopped taking them back.
                 let _ = empty_tx.send(b);
             }
@@ -155,7 +161,8 @@ mod tests {
         let n = BATCH * (IN_FLIGHT + 3) + 5;
         let mut b: Behind<u64, (u64, u64)> = Behind::spawn(
             (0u64, 0u64),
-            |s: &mut (u64, u64), x: u64| {
+            |s: &mut (u64, u64), x: &mut u64| {
+                let x = *x;
                 // Out of order would break the running check.
                 assert_eq!(x, s.0);
                 s.0 += 1;

@@ -69,14 +69,14 @@ impl<W: Write> Writer<W> {
         self.names.get(id as usize).map_or("", String::as_str)
     }
 
-    fn take(&mut self, item: Item) -> io::Result<()> {
+    fn take(&mut self, item: &mut Item) -> io::Result<()> {
         match item {
             Item::Name(id, name) => {
-                let i = id as usize;
+                let i = *id as usize;
                 if self.names.len() <= i {
                     self.names.resize(i + 1, String::new());
                 }
-                self.names[i] = name;
+                self.names[i] = std::mem::take(name);
                 Ok(())
             }
             Item::Move {
@@ -86,17 +86,17 @@ impl<W: Write> Writer<W> {
                 m,
             } => {
                 let Writer { x, names } = self;
-                let file = names.get(file as usize).map_or("", String::as_str);
-                x.line_move(&m, feed, file, line)
+                let file = names.get(*file as usize).map_or("", String::as_str);
+                x.line_move(m, *feed, file, *line)
             }
             Item::Event(e) => {
                 let Writer { x, names } = self;
                 let file = names.get(e.src.file as usize).map_or("", String::as_str);
-                x.event(&e, file)
+                x.event(e, file)
             }
             Item::Alarm(a) => {
                 let file = self.name(a.src.file).to_string();
-                self.x.alarm(&a, &file)
+                self.x.alarm(a, &file)
             }
         }
     }

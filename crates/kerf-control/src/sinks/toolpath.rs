@@ -8,7 +8,10 @@ use kerf_canon::{Axis, Event, Pos, NAXES};
 
 use crate::sink::{Context, Live, Sink, Timed};
 
-/// Writes JSON Lines.
+/// Writes JSON Lines. The lines are gathered in the sink and handed to
+/// the writer in pieces of 1 MiB (so a file needs no `BufWriter`), the
+/// rest at `finish` or when the sink is dropped; [`Toolpath::write`]
+/// hands its line over at once.
 pub struct Toolpath<W: Write> {
     w: W,
     axes: Vec<Axis>,
@@ -20,11 +23,21 @@ pub struct Toolpath<W: Write> {
     /// of the feed.
     memo: [[Memo; NAXES]; 4],
     feed_memo: Memo,
+    /// The last line number and its text.
+    line_memo: Counted,
+    /// Lines not yet handed to `w`: they go in pieces of [`PIECE`] bytes
+    /// or more (one `write_all` per piece, not per line), and the rest at
+    /// [`Toolpath::flush`], at `finish` or when the sink is dropped.
     buf: Vec<u8>,
 }
 
+/// Bytes of lines gathered before they are handed to the writer: a
+/// file needs no `BufWriter` of its own (which would copy every byte once
+/// more).
+const PIECE: usize = 1 << 20;
+
 pub use super::number::num;
-use super::number::{int, put_fixed, Memo};
+use super::number::{int, put_fixed, Counted, Memo};
 use super::toolpath_rec::{Kind, Rec};
 
 /// `,"KEY":` of the memo rows (to, mto, prog, center), padded to a fixed
@@ -69,8 +82,16 @@ impl<W: Write> Toolpath<W> {
             heads: Vec::new(),
             memo: [[Memo::default(); NAXES]; 4],
             feed_memo: Memo::default(),
-            buf: Vec::with_capacity(512),
+            line_memo: Counted::default(),
+            buf: Vec::new(),
         }
+    }
+
+    /// Hands the gathered lines to the writer.
+    fn spill(&mut self) -> io::Result<()> {
+        let r = self.w.write_all(&self.buf);
+        self.buf.clear();
+        r
     }
 
     /// `,"KEY":{"x":…}`; `slot` picks the memo row (0 to, 1 mto, 2 prog,
@@ -142,7 +163,8 @@ impl<W: Write> Toolpath<W> {
     ) -> io::Result<()> {
         let mut head = Vec::new();
         head_of(&mut head, file);
-        self.record(e, &head, here, t, feed_mm_min)
+        self.record(e, &head, here, t, feed_mm_min)?;
+        self.spill()
     }
 
     fn record(
@@ -161,9 +183,13 @@ impl<W: Write> Toolpath<W> {
 
     /// Writes the line of `r`, `head` its file's `{"file":…,"line":`.
     fn line(&mut self, r: &Rec, head: &[u8]) -> io::Result<()> {
-        self.buf.clear();
+        if self.buf.capacity() == 0 {
+            // Room for a piece and the line that fills it, so that the
+            // buffer is not grown again.
+            self.buf.reserve(PIECE + 16 * 1024);
+        }
         self.buf.extend_from_slice(head);
-        int(&mut self.buf, u64::from(r.line));
+        self.line_memo.put(&mut self.buf, u64::from(r.line));
         let (key, len) = r.kind.key();
         put_fixed(&mut self.buf, key, len);
         self.pos(0, &r.to);
@@ -207,7 +233,10 @@ impl<W: Write> Toolpath<W> {
         self.buf.extend_from_slice(b",\"t_end\":");
         num(&mut self.buf, r.t_end);
         self.buf.extend_from_slice(b"}\n");
-        self.w.write_all(&self.buf)
+        if self.buf.len() >= PIECE {
+            return self.spill();
+        }
+        Ok(())
     }
 }
 
@@ -241,8 +270,9 @@ impl<W: Write> Toolpath<W> {
         r
     }
 
-    /// Flushes the writer.
+    /// Hands the gathered lines to the writer and flushes it.
     pub(crate) fn flush(&mut self) -> io::Result<()> {
+        self.spill()?;
         self.w.flush()
     }
 }
@@ -278,7 +308,19 @@ impl<W: Write> Sink for Toolpath<W> {
     }
 
     fn finish(&mut self, _cx: &Context, _alarm: Option<&kerf_canon::Alarm>) -> io::Result<()> {
-        self.w.flush()
+        self.flush()
+    }
+}
+
+impl<W: Write> Drop for Toolpath<W> {
+    /// The lines gathered and not yet handed to the writer go to it (a
+    /// run stopped by another sink's error has not called `finish`), as
+    /// when each line was written at once; an error here is not seen, as
+    /// with `BufWriter`.
+    fn drop(&mut self) {
+        if !self.buf.is_empty() {
+            let _ = self.spill();
+        }
     }
 }
 
@@ -304,6 +346,70 @@ mod tests {
         tp.w.clear();
         tp.write(&e, "a.nc", &to, 2.5, Some(100.0)).unwrap();
         String::from_utf8(tp.w.clone()).unwrap()
+    }
+
+    /// Keeps the bytes and counts the calls that brought them.
+    #[derive(Default)]
+    struct Calls {
+        bytes: Vec<u8>,
+        calls: usize,
+    }
+
+    impl Write for Calls {
+        fn write(&mut self, b: &[u8]) -> io::Result<usize> {
+            self.calls += 1;
+            self.bytes.extend_from_slice(b);
+            Ok(b.len())
+        }
+        fn flush(&mut self) -> io::Result<()> {
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn lines_go_in_pieces_and_the_rest_when_dropped() {
+        // 30,000 records of about 170 bytes: some 5 MB, so a few pieces
+        // and a part-filled one that only the drop hands over (no
+        // `finish`, as when another sink's error stops a run).
+        let (mut pieces, mut one_by_one) = (Calls::default(), Calls::default());
+        let mut a = Toolpath::new(&mut pieces);
+        let mut b = Toolpath::new(&mut one_by_one);
+        let mut head = Vec::new();
+        head_of(&mut head, "a.nc");
+        for tp in [&mut a, &mut b] {
+            tp.set_axes(vec![Axis::X, Axis::Y, Axis::Z]);
+        }
+        for i in 0..30_000u32 {
+            let mut to = [0.0; NAXES];
+            to[0] = f64::from(i) * 0.125;
+            to[2] = -f64::from(i) / 3.0;
+            let e = Event {
+                src: SrcRef {
+                    file: 0,
+                    line: i + 1,
+                    col: 1,
+                },
+                tool: 1,
+                cmd: Canon::Feed {
+                    m: Motion { to, mto: to },
+                    feed: Feed::PerMin(600.0),
+                },
+                prog: None,
+            };
+            let t = f64::from(i) * 0.01;
+            a.record(&e, &head, &to, t, Some(600.0)).unwrap();
+            b.write(&e, "a.nc", &to, t, Some(600.0)).unwrap();
+        }
+        let held = a.buf.len();
+        assert!(held > 0 && held < PIECE);
+        drop((a, b));
+        // Every line one write call when handed over at once.
+        assert_eq!(one_by_one.calls, 30_000);
+        let total = one_by_one.bytes.len();
+        assert!(total > 3 * PIECE, "{total} bytes");
+        // Whole pieces of at least PIECE bytes, then the rest.
+        assert_eq!(pieces.calls, (total - held) / PIECE + 1);
+        assert!(pieces.bytes == one_by_one.bytes, "the bytes differ");
     }
 
     #[test]

@@ -28,13 +28,13 @@ enum Item {
     Rec(Rec),
 }
 
-fn take<W: Write>(tp: &mut Toolpath<W>, item: Item) -> io::Result<()> {
+fn take<W: Write>(tp: &mut Toolpath<W>, item: &mut Item) -> io::Result<()> {
     match item {
         Item::Name(id, name) => {
-            tp.name_file(id, &name);
+            tp.name_file(*id, name);
             Ok(())
         }
-        Item::Rec(r) => tp.write_named(&r),
+        Item::Rec(r) => tp.write_named(r),
     }
 }
 
@@ -45,6 +45,8 @@ pub struct ToolpathBehind<W: Write + Send + 'static> {
     idle: Option<Toolpath<W>>,
     behind: Option<Behind<Item, ()>>,
     named: Named,
+    /// The file of the last record (its name has been sent).
+    last_file: u32,
 }
 
 impl<W: Write + Send + 'static> ToolpathBehind<W> {
@@ -55,6 +57,7 @@ impl<W: Write + Send + 'static> ToolpathBehind<W> {
             idle: Some(tp),
             behind: None,
             named: Named::default(),
+            last_file: u32::MAX,
         }
     }
 }
@@ -78,8 +81,11 @@ impl<W: Write + Send + 'static> Sink for ToolpathBehind<W> {
             return Err(io::Error::other("the toolpath was not started"));
         };
         let id = t.event.src.file;
-        if self.named.first(id) {
-            b.push(Item::Name(id, cx.file(id).to_string()))?;
+        if id != self.last_file {
+            self.last_file = id;
+            if self.named.first(id) {
+                b.push(Item::Name(id, cx.file(id).to_string()))?;
+            }
         }
         match Rec::of(t.event, &t.to, t.t_end, t.feed_mm_min) {
             Some(r) => b.push(Item::Rec(r)),
