@@ -375,7 +375,7 @@ fn under_avx2(h: &[f32], at: Tangents) -> bool {
 fn under_body(h: &[f32], ((x0, dx), (xa, (za, sa)), (xb, (zb, sb))): Tangents) -> bool {
     // The rounding of the two evaluations over the run, with room to
     // spare, once.
-    let reach = (sa.abs() + sb.abs()) * ((xb - xa).abs() + 16.0 * dx);
+    let reach = (sa.abs() + sb.abs()) * ((xb - xa).abs() + CHUNK as f64 * dx);
     let margin = 1e-9 * (1.0 + za.abs() + zb.abs() + reach);
     let mut above = 0u32;
     for (&v, &k) in h.iter().zip(&IDX) {

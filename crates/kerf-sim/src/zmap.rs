@@ -11,7 +11,7 @@ use crate::tool::MillTool;
 use std::cell::Cell;
 
 /// Most cells a height field may have: 54.5 million, 218 MB of f32 heights
-/// plus 14 MB of run and square maxima, so that a run at the largest grid
+/// plus 7 MB of run and square maxima, so that a run at the largest grid
 /// stays under 256 MB of peak memory with the STL and the picture
 /// (measured: docs/benchmarks.md, "Simulation").
 pub const MAX_CELLS: usize = 52 << 20;
@@ -22,8 +22,11 @@ pub const DEFAULT_CELLS: usize = 16 << 20;
 /// by 2, 4, 8 or 16.
 pub const BLOCK: usize = 16;
 /// Cells per run of a row whose greatest height is kept (the runs a
-/// move cannot lower are skipped with one comparison each).
-pub const CHUNK: usize = 16;
+/// move cannot lower are skipped with one comparison each). 32 took the
+/// fewest instructions on surface_1m's ball moves (16, 24, 32, 48 and 64
+/// measured: docs/benchmarks.md, "Simulation"): fewer runs to visit
+/// than 16, fewer cells worked out for nothing than 48 or 64.
+pub const CHUNK: usize = 32;
 /// Height changes below this are never material (mm); the threshold of
 /// a height field is the greater of this and the f32 step of its heights
 /// ([`ZMap::tol`]).
