@@ -290,16 +290,32 @@ impl BallLanes {
         let (blo, bhi) = if ba < bb { (ba, bb) } else { (bb, ba) };
         let (r2, c0z, dz) = (self.r2, self.c0[2], self.d[2]);
         let (bx, ex, kappa, l3_l) = (self.bx, self.ex, self.kappa, self.l3_l);
-        for (o, &k) in out.iter_mut().zip(&IDX) {
-            let wx = wx0 + k * dx;
-            let b = wx * bx + row.b;
-            let e = wx * ex + row.e;
+        if ex == 0.0 {
+            // A move along X: e is the row's at every cell (wx 0 + e is
+            // e exactly), and so are a and √a, worked out once.
+            let e = row.e;
             let a = r2 - e * e;
             let sa = if a > 0.0 { a } else { 0.0 }.sqrt();
-            let t = b - kappa * sa;
-            let cyl = c0z + b * dz - l3_l * sa;
-            let ok = a >= 0.0 && (0.0..=1.0).contains(&t);
-            *o = if ok { cyl } else { f64::INFINITY };
+            for (o, &k) in out.iter_mut().zip(&IDX) {
+                let wx = wx0 + k * dx;
+                let b = wx * bx + row.b;
+                let t = b - kappa * sa;
+                let cyl = c0z + b * dz - l3_l * sa;
+                let ok = a >= 0.0 && (0.0..=1.0).contains(&t);
+                *o = if ok { cyl } else { f64::INFINITY };
+            }
+        } else {
+            for (o, &k) in out.iter_mut().zip(&IDX) {
+                let wx = wx0 + k * dx;
+                let b = wx * bx + row.b;
+                let e = wx * ex + row.e;
+                let a = r2 - e * e;
+                let sa = if a > 0.0 { a } else { 0.0 }.sqrt();
+                let t = b - kappa * sa;
+                let cyl = c0z + b * dz - l3_l * sa;
+                let ok = a >= 0.0 && (0.0..=1.0).contains(&t);
+                *o = if ok { cyl } else { f64::INFINITY };
+            }
         }
         if blo < self.b0_max && row.wy2 <= r2 {
             for (o, &k) in out.iter_mut().zip(&IDX) {
@@ -494,7 +510,10 @@ mod tests {
             q in prop::array::uniform2(-16.0f64..16.0),
             dx in 0.01f64..1.0,
             r in 0.2f64..6.0,
+            along_x in any::<bool>(),
         ) {
+            // Half the moves along X (the row's e the same at every cell).
+            let d = if along_x { [d[0], 0.0, d[2]] } else { d };
             let p1 = [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]];
             let s = Sweep::new(p0, p1);
             let Some(one) = BallSweep::new(&s, r) else { return Ok(()); };
