@@ -48,9 +48,86 @@ pub fn put_fixed<const N: usize>(out: &mut Vec<u8>, text: &[u8; N], len: usize) 
     out.truncate(at + len);
 }
 
+/// The text of the last line number written, kept so that the next one
+/// costs a copy (the same line again: a canned cycle's motions in a
+/// toolpath) or a count up by one in place (the next line: nearly always,
+/// in a toolpath or an expansion); any other number is spelled anew.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct LineText {
+    /// The number `text[..len]` spells; `len` 0 before the first.
+    n: u64,
+    text: [u8; 24],
+    len: usize,
+}
+
+impl LineText {
+    /// Appends the decimal digits of `u` (no padding).
+    #[inline]
+    pub fn put(&mut self, out: &mut Vec<u8>, u: u64) {
+        if u != self.n || self.len == 0 {
+            if !(self.len > 0 && Some(u) == self.n.checked_add(1) && self.count_up()) {
+                self.spell(u);
+            }
+            self.n = u;
+        }
+        put_fixed(out, &self.text, self.len);
+    }
+
+    /// The text counted up by one; false where it gains a digit (all 9s).
+    #[inline]
+    fn count_up(&mut self) -> bool {
+        let mut i = self.len;
+        while i > 0 {
+            i -= 1;
+            if self.text[i] != b'9' {
+                self.text[i] += 1;
+                return true;
+            }
+            self.text[i] = b'0';
+        }
+        false
+    }
+
+    /// The text of `u` made anew (a jump: a loop, a call, the first line).
+    fn spell(&mut self, mut u: u64) {
+        let mut rev = [0u8; 20];
+        let mut k = 0;
+        loop {
+            rev[k] = b'0' + (u % 10) as u8;
+            u /= 10;
+            k += 1;
+            if u == 0 {
+                break;
+            }
+        }
+        for j in 0..k {
+            self.text[j] = rev[k - 1 - j];
+        }
+        self.len = k;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_line_text_is_the_number_s_digits() {
+        // Repeats, steps of one across every carry up to 10^6 (and one
+        // more digit), jumps back and forth, zero, the largest u64: the
+        // same text as the standard formatting.
+        let mut c = LineText::default();
+        let mut seq: Vec<u64> = vec![0, 0, 1, 1, 1, 2, 9, 10, 10, 11];
+        seq.extend(0..1_000_000);
+        seq.extend(9_999_990..10_000_010);
+        seq.extend([5, 4, 4, 99, 100, 7, u64::MAX - 1, u64::MAX, 0, 1]);
+        let mut got = Vec::new();
+        for n in seq {
+            got.clear();
+            c.put(&mut got, n);
+            assert_eq!(got, n.to_string().as_bytes(), "{n}");
+        }
+    }
 
     #[test]
     fn eight_digits_at_once_are_the_digits() {

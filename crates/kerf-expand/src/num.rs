@@ -3,6 +3,7 @@
 //! exponent, no `-0`, trailing zeros dropped. Written straight into a byte
 //! buffer without going through `fmt`, since every output block has several.
 
+pub use kerf_canon::digits::LineText;
 use kerf_canon::digits::{put_fixed, swar8, SMALL, ZEROS};
 
 /// The integer `v × 10^dec` rounded half away from zero, saturating at
@@ -166,62 +167,6 @@ pub fn put_uint(out: &mut Vec<u8>, u: u64, min_digits: usize) {
         );
     }
     put_uint_plain(out, u, min_digits);
-}
-
-/// The text of the last source line number written, kept so that the next
-/// line (nearly always the last one plus one) is its text counted up by
-/// one in place instead of written anew.
-#[derive(Debug, Clone, Default)]
-pub struct LineText {
-    /// The number `text[..len]` spells; `len` 0 before the first.
-    n: u64,
-    text: [u8; 24],
-    len: usize,
-}
-
-impl LineText {
-    /// Appends `u` as [`put_uint`]`(out, u, 1)` does.
-    #[inline]
-    pub fn put(&mut self, out: &mut Vec<u8>, u: u64) {
-        if !(self.len > 0 && Some(u) == self.n.checked_add(1) && self.count_up()) {
-            self.spell(u);
-        }
-        self.n = u;
-        put_fixed(out, &self.text, self.len);
-    }
-
-    /// The text counted up by one; false where it gains a digit (all 9s).
-    #[inline]
-    fn count_up(&mut self) -> bool {
-        let mut i = self.len;
-        while i > 0 {
-            i -= 1;
-            if self.text[i] != b'9' {
-                self.text[i] += 1;
-                return true;
-            }
-            self.text[i] = b'0';
-        }
-        false
-    }
-
-    /// The text of `u` made anew (a jump: a loop, a call, the first line).
-    fn spell(&mut self, mut u: u64) {
-        let mut rev = [0u8; 20];
-        let mut k = 0;
-        loop {
-            rev[k] = b'0' + (u % 10) as u8;
-            u /= 10;
-            k += 1;
-            if u == 0 {
-                break;
-            }
-        }
-        for j in 0..k {
-            self.text[j] = rev[k - 1 - j];
-        }
-        self.len = k;
-    }
 }
 
 /// [`put_uint`] one digit at a time (any value and width).

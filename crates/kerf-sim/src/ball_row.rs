@@ -138,8 +138,9 @@ impl BallLanes {
         let bmin = (self.kappa * self.r2.sqrt()).min(0.0) - B_MARGIN;
         let c1x = self.c0[0] + self.d[0];
         let wy1 = y - (self.c0[1] + self.d[1]);
+        // The end disc's half width on the row, if it reaches the row.
         let disc = self.r2 - wy1 * wy1;
-        let w = if disc >= 0.0 { disc.sqrt() } else { f64::NAN };
+        let w = (disc >= 0.0).then(|| disc.sqrt());
         // Column of a cell centre x, as f64 (clamped before any rounding).
         let col = |x: f64| ((x - g.x0) / g.dx - 0.5).clamp(-1.0, g.nx as f64);
         // The first column kept, at the start of its run: each run's
@@ -151,9 +152,7 @@ impl BallLanes {
             if row.b >= bmin {
                 return Some((a, b));
             }
-            if w.is_nan() {
-                return None;
-            }
+            let w = w?;
             let hi = col(c1x + w).floor() + 1.0;
             let (a, b) = (a.max(first(c1x - w)), b.min(hi.max(0.0) as usize));
             return (a <= b).then_some((a, b));
@@ -161,10 +160,10 @@ impl BallLanes {
         // b(x) = (x - c0x) bx + row.b reaches bmin at xb.
         let xb = self.c0[0] + (bmin - row.b) / self.bx;
         let (a, b) = if self.bx > 0.0 {
-            let lo = if w.is_nan() { xb } else { xb.min(c1x - w) };
+            let lo = w.map_or(xb, |w| xb.min(c1x - w));
             (a.max(first(lo)), b)
         } else {
-            let hi = if w.is_nan() { xb } else { xb.max(c1x + w) };
+            let hi = w.map_or(xb, |w| xb.max(c1x + w));
             (a, b.min((col(hi).floor() + 1.0).max(0.0) as usize))
         };
         (a <= b).then_some((a, b))
@@ -281,6 +280,29 @@ impl BallLanes {
         }
     }
 
+    /// The capsule's cylinder over the cells at `wx0 + k dx` (x less the
+    /// start's), `root(wx)` giving `a = R² - e²` and `√a` there: infinite
+    /// where the contact point is not between the move's ends.
+    #[inline(always)]
+    fn cylinder(
+        &self,
+        row: &LaneRow,
+        (wx0, dx): (f64, f64),
+        out: &mut [f64],
+        root: impl Fn(f64) -> (f64, f64),
+    ) {
+        let (c0z, dz, bx, kappa, l3_l) = (self.c0[2], self.d[2], self.bx, self.kappa, self.l3_l);
+        for (o, &k) in out.iter_mut().zip(&IDX) {
+            let wx = wx0 + k * dx;
+            let b = wx * bx + row.b;
+            let (a, sa) = root(wx);
+            let t = b - kappa * sa;
+            let cyl = c0z + b * dz - l3_l * sa;
+            let ok = a >= 0.0 && (0.0..=1.0).contains(&t);
+            *o = if ok { cyl } else { f64::INFINITY };
+        }
+    }
+
     #[inline(always)]
     fn envelope_body(&self, row: &LaneRow, x0: f64, dx: f64, out: &mut [f64]) {
         let n = out.len();
@@ -289,33 +311,19 @@ impl BallLanes {
         let (ba, bb) = (wx0 * self.bx + row.b, wxn * self.bx + row.b);
         let (blo, bhi) = if ba < bb { (ba, bb) } else { (bb, ba) };
         let (r2, c0z, dz) = (self.r2, self.c0[2], self.d[2]);
-        let (bx, ex, kappa, l3_l) = (self.bx, self.ex, self.kappa, self.l3_l);
+        let ex = self.ex;
+        // a = R² - e² and √a.
+        let root = |e: f64| {
+            let a = r2 - e * e;
+            (a, if a > 0.0 { a } else { 0.0 }.sqrt())
+        };
         if ex == 0.0 {
             // A move along X: e is the row's at every cell (wx 0 + e is
             // e exactly), and so are a and √a, worked out once.
-            let e = row.e;
-            let a = r2 - e * e;
-            let sa = if a > 0.0 { a } else { 0.0 }.sqrt();
-            for (o, &k) in out.iter_mut().zip(&IDX) {
-                let wx = wx0 + k * dx;
-                let b = wx * bx + row.b;
-                let t = b - kappa * sa;
-                let cyl = c0z + b * dz - l3_l * sa;
-                let ok = a >= 0.0 && (0.0..=1.0).contains(&t);
-                *o = if ok { cyl } else { f64::INFINITY };
-            }
+            let at = root(row.e);
+            self.cylinder(row, (wx0, dx), out, |_| at);
         } else {
-            for (o, &k) in out.iter_mut().zip(&IDX) {
-                let wx = wx0 + k * dx;
-                let b = wx * bx + row.b;
-                let e = wx * ex + row.e;
-                let a = r2 - e * e;
-                let sa = if a > 0.0 { a } else { 0.0 }.sqrt();
-                let t = b - kappa * sa;
-                let cyl = c0z + b * dz - l3_l * sa;
-                let ok = a >= 0.0 && (0.0..=1.0).contains(&t);
-                *o = if ok { cyl } else { f64::INFINITY };
-            }
+            self.cylinder(row, (wx0, dx), out, |wx| root(wx * ex + row.e));
         }
         if blo < self.b0_max && row.wy2 <= r2 {
             for (o, &k) in out.iter_mut().zip(&IDX) {
@@ -437,6 +445,13 @@ mod tests {
     use crate::ball::BallSweep;
     use proptest::prelude::*;
 
+    /// A ball of radius `r` from `p0` by `d`, as the per-point capsule and
+    /// as the row kernel; None where the capsule does not apply.
+    fn ball_move(p0: [f64; 3], d: [f64; 3], r: f64) -> Option<(BallSweep, BallLanes)> {
+        let s = Sweep::new(p0, [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]]);
+        Some((BallSweep::new(&s, r)?, BallLanes::new(&s, r)))
+    }
+
     #[test]
     fn a_level_slot_by_hand() {
         // R 3 along X at z 0 from x 0 to 10: 2 mm off the path the
@@ -468,10 +483,7 @@ mod tests {
             w in 0.0f64..3.0,
             r in 0.2f64..6.0,
         ) {
-            let p1 = [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]];
-            let s = Sweep::new(p0, p1);
-            let Some(one) = BallSweep::new(&s, r) else { return Ok(()); };
-            let lanes = BallLanes::new(&s, r);
+            let Some((one, lanes)) = ball_move(p0, d, r) else { return Ok(()); };
             let low = lanes.floor_over(q[1], q[0], q[0] + w);
             for k in 0..=63 {
                 let x = q[0] + w * k as f64 / 63.0;
@@ -514,10 +526,7 @@ mod tests {
         ) {
             // Half the moves along X (the row's e the same at every cell).
             let d = if along_x { [d[0], 0.0, d[2]] } else { d };
-            let p1 = [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]];
-            let s = Sweep::new(p0, p1);
-            let Some(one) = BallSweep::new(&s, r) else { return Ok(()); };
-            let lanes = BallLanes::new(&s, r);
+            let Some((one, lanes)) = ball_move(p0, d, r) else { return Ok(()); };
             let mut out = [0.0; CHUNK];
             lanes.envelope(&lanes.row(q[1]), q[0], dx, &mut out);
             for (k, &z) in out.iter().enumerate() {
@@ -558,12 +567,8 @@ mod tests {
                 1 => d[1] = 0.0,
                 _ => {}
             }
-            let p1 = [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]];
-            let s = Sweep::new(p0, p1);
-            if crate::ball::BallSweep::new(&s, r).is_none() {
-                return Ok(());
-            }
-            let lanes = BallLanes::new(&s, r).without_start();
+            let Some((_, lanes)) = ball_move(p0, d, r) else { return Ok(()); };
+            let lanes = lanes.without_start();
             let g = crate::grid::Grid { x0: -20.0, y0: -20.0, dx, dy: dx, nx: (40.0 / dx) as usize, ny: 1 };
             let row = lanes.row(y);
             let kept = lanes.trim_cols(&row, &g, (0, g.nx - 1), y);
@@ -610,10 +615,7 @@ mod tests {
             r in 0.2f64..6.0,
             below in prop::collection::vec(-0.3f64..0.002, 16),
         ) {
-            let p1 = [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]];
-            let s = Sweep::new(p0, p1);
-            let Some(one) = BallSweep::new(&s, r) else { return Ok(()); };
-            let lanes = BallLanes::new(&s, r);
+            let Some((one, lanes)) = ball_move(p0, d, r) else { return Ok(()); };
             let row = lanes.row(q[1]);
             let xe = q[0] + 16.0 * dx;
             let (a, b) = (lanes.slope_on(&row, q[0]), lanes.slope_on(&row, xe));

@@ -7,7 +7,7 @@
 //! so are the volumes: each band's removed volume is summed on its own and
 //! the bands' sums are added in band order.
 
-use crate::ball_row::{floor_between, under_line};
+use crate::ball_row::{floor_between, under_line, LaneRow};
 use crate::envelope::Sweep;
 use crate::grid::Grid;
 use crate::kernels::Pass;
@@ -95,29 +95,39 @@ impl<'a> Cells<'a> {
         let grid = self.grid;
         let mut band: Band = [(0, 0.0, 0, 0, 0.0); BLOCK];
         let &(_, first, last) = todo;
+        // Each row's terms of the ball's kernel and bounds, worked out once.
+        let mut terms = [None; BLOCK];
         let mut n = 0;
         let ball = pass.ball();
         grid.for_rows_in(scan.s, scan.reach, (first, last), |j, y, a, b| {
-            let cols = match &ball {
-                Some(ball) => ball.trim_cols(&ball.row(y), &grid, (a, b), y),
-                None => Some((a, b)),
+            let row = ball.map(|ball| ball.row(y));
+            let cols = match (&ball, &row) {
+                (Some(ball), Some(row)) => ball.trim_cols(row, &grid, (a, b), y),
+                _ => Some((a, b)),
             };
             if let Some((a, b)) = cols {
                 band[n] = (j, y, a, b, scan.floor(y, y));
+                terms[n] = row;
                 n += 1;
             }
         });
         (pass.removed, pass.holder) = (0.0, 0.0);
         if n > 0 {
-            self.band(pass, &band[..n]);
+            self.band(pass, &band[..n], &terms[..n]);
         }
         (pass.removed, pass.holder)
     }
 
     /// The rows of one band, square by square: a square whose greatest
     /// height is at or below every row's floor is skipped, then each row's
-    /// run whose greatest height is at or below its floor.
-    fn band(&mut self, pass: &mut Pass, rows: &[(usize, f64, usize, usize, f32)]) {
+    /// run whose greatest height is at or below its floor. `terms`: each
+    /// row's terms of the ball's kernel (None for other tools).
+    fn band(
+        &mut self,
+        pass: &mut Pass,
+        rows: &[(usize, f64, usize, usize, f32)],
+        terms: &[Option<LaneRow>],
+    ) {
         let (nx, nc, g) = (self.grid.nx, self.nc, self.grid);
         let bj = rows[0].0 / BLOCK;
         let (lb, row0) = (bj - self.band0, self.band0 * BLOCK);
@@ -125,25 +135,21 @@ impl<'a> Cells<'a> {
         let hi = rows.iter().map(|r| r.3).max().unwrap_or(0);
         let floor = rows.iter().map(|r| r.4).fold(f32::INFINITY, f32::min);
         let ball = pass.ball();
-        // Each row's last envelope and slope worked out: (cell, value);
-        // and each row's terms of the ball's bound, worked out once.
+        // Each row's last envelope and slope worked out: (cell, value).
         let mut memo = [(usize::MAX, None); BLOCK];
         // Each row's last run that reached the kernel lowered cells: the
         // next one most likely does too (the move's new material is one
         // stretch of the row), so its bound is not worked out (a bound only
         // saves work; the kernel lowers nothing where it would skip).
         let mut hot = [false; BLOCK];
-        let mut terms = [None; BLOCK];
         // Each row's tangent at the middle of its span: the envelope is
         // convex along the row, so above it everywhere (along a straight
         // stretch of the cylinder, exactly on it).
         let mut tangent = [None; BLOCK];
         if let Some(ball) = ball {
-            for ((t, l), r) in terms.iter_mut().zip(&mut tangent).zip(rows) {
-                let row = ball.row(r.1);
+            for ((l, t), r) in tangent.iter_mut().zip(terms).zip(rows) {
                 let xm = cell_x(&g, (r.2 + r.3) / 2);
-                *l = ball.slope_on(&row, xm).map(|(z, s)| (xm, z, s));
-                *t = Some(row);
+                *l = t.and_then(|row| ball.slope_on(&row, xm).map(|(z, s)| (xm, z, s)));
             }
         }
         for c in lo / CHUNK..=hi / CHUNK {

@@ -270,50 +270,6 @@ fn slow(out: &mut Vec<u8>, v: f64) {
     }
 }
 
-/// The last integer written in one place of a record (a line number)
-/// with its text: a toolpath's next record is nearly always of the same
-/// line (a canned cycle's motions) or of the next, so the text is copied
-/// or counted up by one in place; any other number is written anew.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Counted {
-    n: u64,
-    /// Bytes of `text` used; 0 before the first number.
-    len: u8,
-    text: Text,
-}
-
-impl Counted {
-    /// Appends the decimal digits of `n`, as [`int`] does.
-    #[inline]
-    pub fn put(&mut self, out: &mut Vec<u8>, n: u64) {
-        if n != self.n || self.len == 0 {
-            if !(self.len > 0 && Some(n) == self.n.checked_add(1) && self.count_up()) {
-                let len = digits(n);
-                fill(&mut self.text, n, len);
-                self.len = len as u8;
-            }
-            self.n = n;
-        }
-        put_fixed(out, &self.text, self.len as usize);
-    }
-
-    /// The text counted up by one; false where it gains a digit (all
-    /// nines, left as zeros for the caller to write anew).
-    #[inline]
-    fn count_up(&mut self) -> bool {
-        let mut i = self.len as usize;
-        while i > 0 {
-            i -= 1;
-            if self.text[i] != b'9' {
-                self.text[i] += 1;
-                return true;
-            }
-            self.text[i] = b'0';
-        }
-        false
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -322,7 +278,7 @@ mod tests {
     fn a_counted_number_is_its_digits() {
         // Repeats, steps of one across every carry up to 10^7 (and one
         // more digit), jumps back and forth, zero, the largest u64.
-        let mut c = Counted::default();
+        let mut c = kerf_canon::digits::LineText::default();
         let mut seq: Vec<u64> = vec![0, 0, 1, 1, 1, 2, 9, 10, 10, 11];
         seq.extend(0..1_000_000);
         seq.extend(9_999_990..10_000_010);

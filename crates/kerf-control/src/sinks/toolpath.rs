@@ -24,7 +24,7 @@ pub struct Toolpath<W: Write> {
     memo: [[Memo; NAXES]; 4],
     feed_memo: Memo,
     /// The last line number and its text.
-    line_memo: Counted,
+    line_memo: LineText,
     /// Lines not yet handed to `w`: they go in pieces of [`PIECE`] bytes
     /// or more (one `write_all` per piece, not per line), and the rest at
     /// [`Toolpath::flush`], at `finish` or when the sink is dropped.
@@ -37,8 +37,9 @@ pub struct Toolpath<W: Write> {
 const PIECE: usize = 1 << 20;
 
 pub use super::number::num;
-use super::number::{int, put_fixed, Counted, Memo};
+use super::number::{int, put_fixed, Memo};
 use super::toolpath_rec::{Kind, Rec};
+use kerf_canon::digits::LineText;
 
 /// `,"KEY":` of the memo rows (to, mto, prog, center), padded to a fixed
 /// size with the length used (the object's brace follows).
@@ -82,7 +83,7 @@ impl<W: Write> Toolpath<W> {
             heads: Vec::new(),
             memo: [[Memo::default(); NAXES]; 4],
             feed_memo: Memo::default(),
-            line_memo: Counted::default(),
+            line_memo: LineText::default(),
             buf: Vec::new(),
         }
     }
